@@ -1,0 +1,98 @@
+// probecycle-bench: the core's speed targets (issue 2). Run on one core:
+//   probecycle-bench --benchmark_min_time=0.5
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "cycle.h"
+#include "motion.h"
+#include "sweep.h"
+#include "units.h"
+
+namespace {
+
+using namespace probecycle;
+
+struct MoveCase {
+    double distance_mm;
+    double feed_mm_s;
+};
+
+// Realistic moves: 0.01-500 mm at 10-30000 mm/min, log-uniform, fixed seed.
+std::vector<MoveCase> random_moves() {
+    std::mt19937_64 rng(42);
+    std::uniform_real_distribution<double> log_d(std::log(0.01), std::log(500.0));
+    std::uniform_real_distribution<double> log_f(std::log(10.0), std::log(30000.0));
+    std::vector<MoveCase> moves(4096);
+    for (MoveCase& m : moves) {
+        m.distance_mm = std::exp(log_d(rng));
+        m.feed_mm_s = mm_min_to_mm_s(std::exp(log_f(rng)));
+    }
+    return moves;
+}
+
+void run_moves(benchmark::State& state, const MotionLimits& limits) {
+    const std::vector<MoveCase> moves = random_moves();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const MoveCase& m = moves[i++ & (moves.size() - 1)];
+        benchmark::DoNotOptimize(move_time_s(limits, m.distance_mm, m.feed_mm_s));
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+
+void BM_MoveTime_TimeConstant(benchmark::State& state) {
+    run_moves(state, {AccelModel::time_constant, 0.06, 2000.0, 40000.0});
+}
+void BM_MoveTime_ConstantAccel(benchmark::State& state) {
+    run_moves(state, {AccelModel::constant_accel, 0.06, 2000.0, 40000.0});
+}
+void BM_MoveTime_JerkLimited(benchmark::State& state) {
+    run_moves(state, {AccelModel::jerk_limited, 0.06, 2000.0, 40000.0});
+}
+
+Scenario two_touch_bore() {
+    Scenario s;
+    s.cycle.strategy = Strategy::two_touch;
+    s.cycle.feature = Feature::bore;
+    s.cycle.feature_size_mm = 40.0;
+    return s;
+}
+
+void BM_Evaluate(benchmark::State& state) {
+    const Scenario scenario = two_touch_bore();
+    CycleResult result;
+    for (auto _ : state) {
+        evaluate_into(scenario, result);
+        benchmark::DoNotOptimize(result.total());
+    }
+}
+
+void BM_Sweep1000(benchmark::State& state) {
+    const Scenario scenario;  // the default: two-touch surface
+    const std::vector<double> feeds = log_feeds(10.0, 10000.0, 1000);
+    SweepResult sweep;
+    for (auto _ : state) {
+        sweep_feeds_into(scenario, feeds, sweep);
+        benchmark::DoNotOptimize(sweep.points.data());
+    }
+}
+
+void BM_Analyse(benchmark::State& state) {
+    const Scenario scenario = two_touch_bore();
+    for (auto _ : state) benchmark::DoNotOptimize(analyse(scenario));
+}
+
+}  // namespace
+
+BENCHMARK(BM_MoveTime_TimeConstant);
+BENCHMARK(BM_MoveTime_ConstantAccel);
+BENCHMARK(BM_MoveTime_JerkLimited);
+BENCHMARK(BM_Evaluate);
+BENCHMARK(BM_Sweep1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Analyse)->Unit(benchmark::kMicrosecond);
+
+BENCHMARK_MAIN();

@@ -1,0 +1,35 @@
+#pragma once
+
+// Text forms of results, shared by the CLI and the window so both write the
+// same bytes: evaluation JSON, sweep CSV, and the full CSV report.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "cycle.h"
+#include "scenario.h"
+#include "sweep.h"
+
+namespace probecycle {
+
+// `probecycle-cli evaluate` output: cycle_time_s, overtravel_mm, ... phases, warnings.
+std::string evaluation_to_json(const Analysis& analysis);
+
+// Header: feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm,<one column per phase>.
+std::string sweep_to_csv(const SweepResult& sweep);
+// One line: the knee and the fastest feed meeting the target.
+std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario);
+
+// Sections "# scenario", "# summary", "# phases", "# warnings", "# sweep",
+// each a CSV table, for the report an engineer hands over.
+std::string csv_report(const Scenario& scenario, const Analysis& analysis,
+                       const SweepResult& sweep);
+
+// Writes via a temporary file in the same directory and a rename, so the
+// target is either the old or the complete new file. Throws std::runtime_error.
+void write_file_atomically(const std::string& path, std::string_view contents);
+// Whole file as text. Throws std::runtime_error naming the path.
+std::string read_text_file(const std::string& path);
+
+}  // namespace probecycle

@@ -1,0 +1,162 @@
+#include "sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "units.h"
+
+// domain.md, "Cycle time versus feed": the knee is the lowest feed whose cycle
+// time is within a small tolerance (issue 2: 1 %) of the best over the range.
+
+namespace probecycle {
+
+namespace {
+
+double cycle_time_at(const Scenario& base, double feed_mm_min, CycleResult& scratch) {
+    Scenario s = base;
+    s.cycle.probe_feed_mm_min = feed_mm_min;
+    evaluate_into(s, scratch);
+    return scratch.total();
+}
+
+}  // namespace
+
+void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm_min,
+                      SweepResult& out, const SweepOptions& options) {
+    // One scratch result per thread: its buffers are reused, not reallocated.
+    thread_local CycleResult scratch;
+    out.points.resize(feeds_mm_min.size());
+    Scenario s = scenario;
+    double best_time = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < feeds_mm_min.size(); ++i) {
+        s.cycle.probe_feed_mm_min = feeds_mm_min[i];
+        evaluate_into(s, scratch);
+        if (options.recommended_backoff && s.cycle.strategy == Strategy::two_touch) {
+            // The first touch does not depend on the backoff, so one pass tells it.
+            s.cycle.backoff_mm = scratch.recommended_backoff_mm();
+            evaluate_into(s, scratch);
+        }
+        SweepPoint& point = out.points[i];
+        point.feed_mm_min = feeds_mm_min[i];
+        point.cycle_time_s = scratch.total();
+        point.overtravel_mm = scratch.overtravel_mm();
+        point.uncertainty_mm = scratch.uncertainty_mm();
+        for (Phase phase : all_phases()) {
+            point.phase_time_s[static_cast<std::size_t>(phase)] = scratch.phase_time(phase);
+        }
+        best_time = std::min(best_time, point.cycle_time_s);
+    }
+
+    out.knee_feed_mm_min.reset();
+    out.max_feed_meeting_target_mm_min.reset();
+    const double target = scenario.cycle.target_uncertainty_mm;
+    for (const SweepPoint& point : out.points) {
+        if (point.cycle_time_s <= best_time * (1.0 + kKneeTolerance) &&
+            (!out.knee_feed_mm_min || point.feed_mm_min < *out.knee_feed_mm_min)) {
+            out.knee_feed_mm_min = point.feed_mm_min;
+        }
+        if (target > 0.0 && point.uncertainty_mm <= target &&
+            (!out.max_feed_meeting_target_mm_min ||
+             point.feed_mm_min > *out.max_feed_meeting_target_mm_min)) {
+            out.max_feed_meeting_target_mm_min = point.feed_mm_min;
+        }
+    }
+}
+
+SweepResult sweep_feeds(const Scenario& scenario, std::span<const double> feeds_mm_min,
+                        const SweepOptions& options) {
+    SweepResult out;
+    sweep_feeds_into(scenario, feeds_mm_min, out, options);
+    return out;
+}
+
+std::vector<double> linear_feeds(double from_mm_min, double to_mm_min, double step_mm_min) {
+    std::vector<double> feeds;
+    if (!(step_mm_min > 0.0) || to_mm_min < from_mm_min) return feeds;
+    const double span_steps = (to_mm_min - from_mm_min) / step_mm_min;
+    const auto count = static_cast<std::size_t>(std::floor(span_steps + 1e-9)) + 1;
+    feeds.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        feeds.push_back(from_mm_min + static_cast<double>(i) * step_mm_min);
+    }
+    return feeds;
+}
+
+std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t n) {
+    std::vector<double> feeds;
+    if (n < 2 || !(from_mm_min > 0.0) || to_mm_min < from_mm_min) return feeds;
+    feeds.reserve(n);
+    const double ratio = std::log(to_mm_min / from_mm_min);
+    for (std::size_t i = 0; i < n; ++i) {
+        feeds.push_back(from_mm_min *
+                        std::exp(ratio * static_cast<double>(i) / static_cast<double>(n - 1)));
+    }
+    feeds.back() = to_mm_min;
+    return feeds;
+}
+
+std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_min,
+                                       double to_mm_min) {
+    if (!(from_mm_min > 0.0) || !(to_mm_min > from_mm_min)) return std::nullopt;
+    thread_local CycleResult scratch;
+    constexpr std::size_t kGrid = 48;
+    const std::vector<double> grid = log_feeds(from_mm_min, to_mm_min, kGrid);
+    std::array<double, kGrid> times{};
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < kGrid; ++i) {
+        times[i] = cycle_time_at(scenario, grid[i], scratch);
+        if (times[i] < times[best]) best = i;
+    }
+    // Refine the minimum between the grid neighbours (golden section).
+    double lo = grid[best == 0 ? 0 : best - 1];
+    double hi = grid[std::min(best + 1, kGrid - 1)];
+    double best_time = times[best];
+    constexpr double kInvPhi = 0.6180339887498949;
+    for (int iter = 0; iter < 40 && hi - lo > 1e-9 * hi; ++iter) {
+        const double x1 = hi - kInvPhi * (hi - lo);
+        const double x2 = lo + kInvPhi * (hi - lo);
+        const double t1 = cycle_time_at(scenario, x1, scratch);
+        const double t2 = cycle_time_at(scenario, x2, scratch);
+        best_time = std::min({best_time, t1, t2});
+        if (t1 < t2) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    const double limit = best_time * (1.0 + kKneeTolerance);
+    std::size_t first = 0;
+    while (first < kGrid && times[first] > limit) ++first;
+    if (first == 0) return grid[0];
+    if (first == kGrid) return grid[best];  // only the refined minimum itself qualifies
+    // Bisection for the crossing between the last grid feed above the limit and the first within.
+    lo = grid[first - 1];
+    hi = grid[first];
+    for (int iter = 0; iter < 50 && hi - lo > 1e-6; ++iter) {
+        const double mid = 0.5 * (lo + hi);
+        if (cycle_time_at(scenario, mid, scratch) <= limit) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    return hi;
+}
+
+Analysis analyse(const Scenario& scenario) {
+    Analysis analysis{evaluate(scenario), std::nullopt};
+    analysis.knee_feed_mm_min =
+        find_knee_mm_min(scenario, kKneeSearchFrom_mm_min, kKneeSearchTo_mm_min);
+    const double feed = scenario.cycle.probe_feed_mm_min;
+    if (analysis.knee_feed_mm_min && feed > *analysis.knee_feed_mm_min * (1.0 + 1e-6)) {
+        thread_local CycleResult scratch;
+        const double knee_time = cycle_time_at(scenario, *analysis.knee_feed_mm_min, scratch);
+        analysis.cycle.mutable_warnings().push_back(
+            {WarningCode::feed_beyond_knee, Severity::info, mm_min_to_mm_s(feed),
+             mm_min_to_mm_s(*analysis.knee_feed_mm_min), knee_time - analysis.cycle.total()});
+    }
+    return analysis;
+}
+
+}  // namespace probecycle
