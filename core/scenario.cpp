@@ -300,7 +300,9 @@ Scenario scenario_from_json(std::string_view text) {
             }
         }
     }
-    if (errors.empty()) errors = validate(scenario);
+    // Range errors too, so one run names every problem in the file (keys with
+    // the wrong type kept their defaults and are not reported twice).
+    for (FieldError& e : validate(scenario)) errors.push_back(std::move(e));
     if (!errors.empty()) throw ScenarioError(std::move(errors));
     return scenario;
 }
