@@ -383,10 +383,11 @@ void add_touch_warnings(const Scenario& scenario, const MotionLimits& limits,
                         std::vector<Warning>& warnings) {
     const double v = touch.programmed_feed_mm_s;
     if (distance_mm < reach_distance_mm(limits, v) && touch.trigger_speed_mm_s < v) {
-        // domain.md, "Acceleration models": error (v - v_t)(t_i + t_c).
-        const double error =
-            (v - touch.trigger_speed_mm_s) *
-            (scenario.probe.interface_delay_s + scenario.machine.controller_latency_s);
+        // domain.md, "Acceleration models": a slower touch misses the delay
+        // travel calibrated at full feed; the brief calls it the same error as
+        // a calibration-feed mismatch, whose formula issue 4 gives in full.
+        const double error = speed_error_mm(scenario.machine, scenario.probe, v,
+                                            touch.trigger_speed_mm_s);
         warnings.push_back({WarningCode::touch_while_accelerating, Severity::warning,
                             touch.trigger_speed_mm_s, v, error, static_cast<double>(which)});
     }
