@@ -350,9 +350,9 @@ void apply_setting(Scenario& scenario, std::string_view assignment) {
     } else if (const char* words = enum_allowed(key)) {
         if (!set_enum(scenario, key, value)) throw ScenarioError({{key, value, words}});
     } else if (key == "machine.latched_input") {
-        if (value == "true" || value == "1") {
+        if (value == "true") {
             scenario.machine.latched_input = true;
-        } else if (value == "false" || value == "0") {
+        } else if (value == "false") {
             scenario.machine.latched_input = false;
         } else {
             throw ScenarioError({{key, value, kBoolWords}});

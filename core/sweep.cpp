@@ -13,10 +13,17 @@ namespace probecycle {
 
 namespace {
 
-double cycle_time_at(const Scenario& base, double feed_mm_min, CycleResult& scratch) {
+// Evaluates `base` at a probe feed, into `scratch`; returns the cycle time.
+double cycle_time_at(const Scenario& base, double feed_mm_min, const SweepOptions& options,
+                     CycleResult& scratch) {
     Scenario s = base;
     s.cycle.probe_feed_mm_min = feed_mm_min;
     evaluate_into(s, scratch);
+    if (options.recommended_backoff && s.cycle.strategy == Strategy::two_touch) {
+        // The first touch does not depend on the backoff, so one pass tells it.
+        s.cycle.backoff_mm = scratch.recommended_backoff_mm();
+        evaluate_into(s, scratch);
+    }
     return scratch.total();
 }
 
@@ -27,19 +34,11 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
     // One scratch result per thread: its buffers are reused, not reallocated.
     thread_local CycleResult scratch;
     out.points.resize(feeds_mm_min.size());
-    Scenario s = scenario;
     double best_time = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < feeds_mm_min.size(); ++i) {
-        s.cycle.probe_feed_mm_min = feeds_mm_min[i];
-        evaluate_into(s, scratch);
-        if (options.recommended_backoff && s.cycle.strategy == Strategy::two_touch) {
-            // The first touch does not depend on the backoff, so one pass tells it.
-            s.cycle.backoff_mm = scratch.recommended_backoff_mm();
-            evaluate_into(s, scratch);
-        }
         SweepPoint& point = out.points[i];
         point.feed_mm_min = feeds_mm_min[i];
-        point.cycle_time_s = scratch.total();
+        point.cycle_time_s = cycle_time_at(scenario, feeds_mm_min[i], options, scratch);
         point.overtravel_mm = scratch.overtravel_mm();
         point.uncertainty_mm = scratch.uncertainty_mm();
         for (Phase phase : all_phases()) {
@@ -97,7 +96,7 @@ std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t 
 }
 
 std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_min,
-                                       double to_mm_min) {
+                                       double to_mm_min, const SweepOptions& options) {
     if (!(from_mm_min > 0.0) || !(to_mm_min > from_mm_min)) return std::nullopt;
     thread_local CycleResult scratch;
     constexpr std::size_t kGrid = 48;
@@ -105,7 +104,7 @@ std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_
     std::array<double, kGrid> times{};
     std::size_t best = 0;
     for (std::size_t i = 0; i < kGrid; ++i) {
-        times[i] = cycle_time_at(scenario, grid[i], scratch);
+        times[i] = cycle_time_at(scenario, grid[i], options, scratch);
         if (times[i] < times[best]) best = i;
     }
     // Refine the minimum between the grid neighbours (golden section).
@@ -116,8 +115,8 @@ std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_
     for (int iter = 0; iter < 40 && hi - lo > 1e-9 * hi; ++iter) {
         const double x1 = hi - kInvPhi * (hi - lo);
         const double x2 = lo + kInvPhi * (hi - lo);
-        const double t1 = cycle_time_at(scenario, x1, scratch);
-        const double t2 = cycle_time_at(scenario, x2, scratch);
+        const double t1 = cycle_time_at(scenario, x1, options, scratch);
+        const double t2 = cycle_time_at(scenario, x2, options, scratch);
         best_time = std::min({best_time, t1, t2});
         if (t1 < t2) {
             hi = x2;
@@ -135,7 +134,7 @@ std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_
     hi = grid[first];
     for (int iter = 0; iter < 50 && hi - lo > 1e-6; ++iter) {
         const double mid = 0.5 * (lo + hi);
-        if (cycle_time_at(scenario, mid, scratch) <= limit) {
+        if (cycle_time_at(scenario, mid, options, scratch) <= limit) {
             hi = mid;
         } else {
             lo = mid;
@@ -145,16 +144,20 @@ std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_
 }
 
 Analysis analyse(const Scenario& scenario) {
+    const SweepOptions optimised{.recommended_backoff = true};
     Analysis analysis{evaluate(scenario), std::nullopt};
     analysis.knee_feed_mm_min =
-        find_knee_mm_min(scenario, kKneeSearchFrom_mm_min, kKneeSearchTo_mm_min);
+        find_knee_mm_min(scenario, kKneeSearchFrom_mm_min, kKneeSearchTo_mm_min, optimised);
     const double feed = scenario.cycle.probe_feed_mm_min;
     if (analysis.knee_feed_mm_min && feed > *analysis.knee_feed_mm_min * (1.0 + 1e-6)) {
+        // Both times on the same (optimised) curve the knee was found on.
         thread_local CycleResult scratch;
-        const double knee_time = cycle_time_at(scenario, *analysis.knee_feed_mm_min, scratch);
+        const double knee_time =
+            cycle_time_at(scenario, *analysis.knee_feed_mm_min, optimised, scratch);
+        const double feed_time = cycle_time_at(scenario, feed, optimised, scratch);
         analysis.cycle.mutable_warnings().push_back(
             {WarningCode::feed_beyond_knee, Severity::info, mm_min_to_mm_s(feed),
-             mm_min_to_mm_s(*analysis.knee_feed_mm_min), knee_time - analysis.cycle.total()});
+             mm_min_to_mm_s(*analysis.knee_feed_mm_min), knee_time - feed_time});
     }
     return analysis;
 }

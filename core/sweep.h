@@ -51,13 +51,15 @@ std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t 
 
 // The knee searched continuously between from and to (bisection after a grid).
 std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_min,
-                                       double to_mm_min);
+                                       double to_mm_min, const SweepOptions& options = {});
 
 // Feed range in which analyse() looks for the knee.
 constexpr double kKneeSearchFrom_mm_min = 10.0;
 constexpr double kKneeSearchTo_mm_min = 10000.0;
 
-// evaluate() plus the warnings that need a sweep (feed_beyond_knee).
+// evaluate() plus the warnings that need a sweep (feed_beyond_knee). The knee
+// of a two-touch cycle is that of the optimised cycle (recommended backoff at
+// every feed): with a fixed backoff, fast first touches overtravel into it.
 struct Analysis {
     CycleResult cycle;
     std::optional<double> knee_feed_mm_min;

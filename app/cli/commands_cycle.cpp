@@ -1,5 +1,6 @@
 // The cycle-model subcommands: defaults, evaluate, move, sweep, montecarlo.
 
+#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -64,12 +65,14 @@ int run_sweep(std::span<const std::string> argv) {
     const double from = number_option(args, "--from", key.min, key.max);
     const double to = number_option(args, "--to", from, key.max);
     const double step = number_option(args, "--step", 1e-6, key.max);
-    const std::vector<double> feeds = linear_feeds(from, to, step);
-    constexpr std::size_t kMaxPoints = 1000000;
-    if (feeds.size() > kMaxPoints) {
-        throw UsageError("--step: " + std::to_string(feeds.size()) + " points; at most " +
-                         std::to_string(kMaxPoints) + " allowed");
+    // Counted before any is made, so an absurd step is refused, not allocated.
+    constexpr double kMaxPoints = 1000000;
+    const double points = std::floor((to - from) / step + 1e-9) + 1.0;
+    if (points > kMaxPoints) {
+        throw UsageError("--step: " + std::to_string(static_cast<long long>(points)) +
+                         " points from --from to --to; at most 1000000 allowed");
     }
+    const std::vector<double> feeds = linear_feeds(from, to, step);
     const SweepResult sweep =
         sweep_feeds(scenario, feeds, {.recommended_backoff = args.has("--recommended-backoff")});
     const std::string csv = sweep_to_csv(sweep);

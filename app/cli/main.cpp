@@ -25,10 +25,16 @@ Cycle model:
   montecarlo [SCENARIO.json] [--set K=V ...] [--samples N] [--seed S] [--bins B]
                                              trigger-error histogram (JSON)
 Calibration and latency lab:
-  calibrate ring FILE.csv --gauge-diameter MM
-  calibrate length ...
-  latency fit FILE.csv [--interpolation-period-s S] [--apply-to SCENARIO.json]
-  latency compensate ...
+  calibrate ring FILE.csv --gauge-diameter MM [--runout-limit MM] [--residual-limit MM]
+                                             ring-gauge calibration: centre, runout, radius
+  calibrate length --surface-z MM --trigger-z MM [--trigger-z MM ...] [--active-length MM]
+        [--nominal-length MM] [--wear-limit MM]
+                                             effective probe length, or wear
+  latency fit FILE.csv [--interpolation-period-s S] [--apply-to SCENARIO.json] [--group X+]
+                                             delay from touches at several feeds
+  latency compensate [SCENARIO.json] [--set K=V ...] [--touch constant|braking] ...
+                                             compare trigger-position compensations
+                                             ('latency help' lists every option)
 
 --set section.key=value overrides one scenario key, e.g. --set cycle.probe_feed_mm_min=1500.
 Exit status: 0 on success, 2 on bad input or usage (the message is on stderr).
