@@ -5,6 +5,7 @@
 #include <cmath>
 #include <ostream>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,56 @@ TEST(DelayFit, ExactDataBothDirections) {
     EXPECT_EQ(zm.name(), "Z-");
     EXPECT_NEAR(zm.delay_s, 0.012, kExact);
     EXPECT_NEAR(zm.zero_speed_position_mm, -123.456, 1e-11);
+}
+
+// Issue 4, "Apply": controller latency = tau - t_i - t_s/2 (no t_s/2 when latched).
+TEST(ApplyDelay, ControllerLatencyIsTheDelayLessInterfaceAndHalfScan) {
+    std::vector<DelayTouch> touches;
+    add_touches(touches, "X", +1, 10.0, 0.0085, {100, 1000, 2000}, 2);
+    add_touches(touches, "Z", -1, -5.0, 0.012, {100, 1000, 2000}, 2);
+    const DelayFit fit = fit_delay(touches);
+    Scenario scenario;  // t_i = 2 ms, t_s = 4 ms, t_c = 2 ms
+    scenario.probe.interface_delay_s = 0.002;
+    scenario.machine.scan_period_s = 0.004;
+
+    // Two groups, none chosen: the longer delay (Z-, 12 ms), the safe side.
+    const AppliedDelay longest = controller_latency_from_fit(fit, scenario);
+    EXPECT_EQ(longest.group, "Z-");
+    EXPECT_NEAR(longest.controller_latency_s, 0.012 - 0.002 - 0.002, 1e-12);
+    EXPECT_NEAR(longest.previous_s, 0.002, 0.0);
+
+    // A chosen group, case-insensitive.
+    const AppliedDelay x = controller_latency_from_fit(fit, scenario, std::string("x+"));
+    EXPECT_EQ(x.group, "X+");
+    EXPECT_NEAR(x.controller_latency_s, 0.0085 - 0.002 - 0.002, 1e-12);
+    EXPECT_NEAR(apply_delay(scenario, x).machine.controller_latency_s, 0.0045, 1e-12);
+
+    // Latched: the scan wait is not in the recorded position.
+    scenario.machine.latched_input = true;
+    EXPECT_NEAR(controller_latency_from_fit(fit, scenario, std::string("X+")).controller_latency_s,
+                0.0085 - 0.002, 1e-12);
+}
+
+TEST(ApplyDelay, RefusesAnUnknownGroupAndANegativeLatency) {
+    std::vector<DelayTouch> touches;
+    add_touches(touches, "X", +1, 10.0, 0.003, {100, 1000, 2000}, 2);
+    const DelayFit fit = fit_delay(touches);
+    Scenario scenario;
+    try {
+        (void)controller_latency_from_fit(fit, scenario, std::string("Y+"));
+        FAIL() << "an unknown group was accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("Y+"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("X+"), std::string::npos) << e.what();
+    }
+    // 3 ms < t_i (2 ms) + t_s/2 (2 ms): the latency would be -1 ms.
+    try {
+        (void)controller_latency_from_fit(fit, scenario);
+        FAIL() << "a negative controller latency was accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("negative"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW((void)controller_latency_from_fit(DelayFit{}, scenario), std::invalid_argument);
 }
 
 TEST(DelayFit, NoLagCyclesWithoutAPeriod) {
