@@ -58,6 +58,8 @@ std::string evaluation_to_json(const Analysis& analysis) {
     out["recommended_backoff_mm"] = r.recommended_backoff_mm();
     out["knee_feed_mm_min"] =
         analysis.knee_feed_mm_min ? Json(*analysis.knee_feed_mm_min) : Json(nullptr);
+    out["knee_cycle_time_s"] =
+        analysis.knee_cycle_time_s ? Json(*analysis.knee_cycle_time_s) : Json(nullptr);
     Json phases = Json::array();
     for (const PhaseRecord& p : r.phases()) {
         phases.push_back({{"name", to_string(p.phase)},
@@ -123,6 +125,9 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
     csv += "knee_feed," +
            (analysis.knee_feed_mm_min ? number(*analysis.knee_feed_mm_min) : std::string()) +
            ",mm/min\n";
+    csv += "knee_cycle_time," +
+           (analysis.knee_cycle_time_s ? number(*analysis.knee_cycle_time_s) : std::string()) +
+           ",s\n";
     csv += "\n# phases\ntouch,phase,start_s,time_s,distance_mm\n";
     for (const PhaseRecord& p : r.phases()) {
         csv += std::to_string(p.touch + 1) + ',' + to_string(p.phase) + ',' + number(p.start_s) +

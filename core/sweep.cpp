@@ -145,19 +145,20 @@ std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_
 
 Analysis analyse(const Scenario& scenario) {
     const SweepOptions optimised{.recommended_backoff = true};
-    Analysis analysis{evaluate(scenario), std::nullopt};
+    Analysis analysis{evaluate(scenario), std::nullopt, std::nullopt};
     analysis.knee_feed_mm_min =
         find_knee_mm_min(scenario, kKneeSearchFrom_mm_min, kKneeSearchTo_mm_min, optimised);
+    if (!analysis.knee_feed_mm_min) return analysis;
+    thread_local CycleResult scratch;
+    const double knee_feed = *analysis.knee_feed_mm_min;
+    analysis.knee_cycle_time_s = cycle_time_at(scenario, knee_feed, optimised, scratch);
     const double feed = scenario.cycle.probe_feed_mm_min;
-    if (analysis.knee_feed_mm_min && feed > *analysis.knee_feed_mm_min * (1.0 + 1e-6)) {
+    if (feed > knee_feed * (1.0 + 1e-6)) {
         // Both times on the same (optimised) curve the knee was found on.
-        thread_local CycleResult scratch;
-        const double knee_time =
-            cycle_time_at(scenario, *analysis.knee_feed_mm_min, optimised, scratch);
         const double feed_time = cycle_time_at(scenario, feed, optimised, scratch);
         analysis.cycle.mutable_warnings().push_back(
             {WarningCode::feed_beyond_knee, Severity::info, mm_min_to_mm_s(feed),
-             mm_min_to_mm_s(*analysis.knee_feed_mm_min), knee_time - feed_time});
+             mm_min_to_mm_s(knee_feed), *analysis.knee_cycle_time_s - feed_time});
     }
     return analysis;
 }

@@ -63,6 +63,8 @@ constexpr double kKneeSearchTo_mm_min = 10000.0;
 struct Analysis {
     CycleResult cycle;
     std::optional<double> knee_feed_mm_min;
+    // Cycle time at the knee, on the curve it was found on.
+    std::optional<double> knee_cycle_time_s;
 };
 Analysis analyse(const Scenario& scenario);
 
