@@ -1,0 +1,182 @@
+// probecycle: the desktop window.
+//
+//   probecycle [SCENARIO.json]
+//   probecycle --screenshot FILE.png [--scenario FILE.json] [--size WxH] [--language CODE]
+//   probecycle --time-startup        prints the ms from main() to the first painted window
+//
+// --screenshot renders the window offscreen to a PNG and exits; without a
+// display it selects the offscreen platform itself.
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QSaveFile>
+#include <QSettings>
+#include <QSize>
+#include <QStatusBar>
+#include <QTimer>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+
+#include "app_icon.h"
+#include "language.h"
+#include "main_window.h"
+
+#ifndef PROBECYCLE_VERSION
+#define PROBECYCLE_VERSION "0"
+#endif
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool has_flag(int argc, char** argv, const char* flag) {
+    for (int i = 1; i < argc; ++i) {
+        if (std::strncmp(argv[i], flag, std::strlen(flag)) == 0) return true;  // also --flag=value
+    }
+    return false;
+}
+
+// Offscreen rendering needs no display; pick it before QApplication exists.
+void choose_platform(int argc, char** argv) {
+    const bool headless_mode =
+        has_flag(argc, argv, "--screenshot") || has_flag(argc, argv, "--time-startup");
+    const bool has_display =
+        std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr;
+    if (headless_mode && !has_display && std::getenv("QT_QPA_PLATFORM") == nullptr) {
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    }
+}
+
+std::optional<QSize> parse_size(const QString& text) {
+    const QStringList parts = text.toLower().split(QLatin1Char('x'));
+    if (parts.size() != 2) return std::nullopt;
+    bool ok_w = false;
+    bool ok_h = false;
+    const int w = parts[0].toInt(&ok_w);
+    const int h = parts[1].toInt(&ok_h);
+    if (!ok_w || !ok_h || w < 400 || h < 300 || w > 8000 || h > 8000) return std::nullopt;
+    return QSize(w, h);
+}
+
+// Quits after the first paint of the window has been flushed, and prints the time.
+class FirstPaintProbe : public QObject {
+  public:
+    FirstPaintProbe(Clock::time_point start, QWidget* window) : start_(start) {
+        window->installEventFilter(this);
+    }
+
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        if (event->type() == QEvent::Paint && !seen_) {
+            seen_ = true;
+            // The rest of this paint pass (all children) runs before the timer fires.
+            QTimer::singleShot(0, this, [this] {
+                const double ms =
+                    std::chrono::duration<double, std::milli>(Clock::now() - start_).count();
+                std::printf("startup_ms %.1f\n", ms);
+                std::fflush(stdout);
+                QCoreApplication::quit();
+            });
+        }
+        return QObject::eventFilter(watched, event);
+    }
+
+  private:
+    Clock::time_point start_;
+    bool seen_{false};
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const Clock::time_point start = Clock::now();
+    choose_platform(argc, argv);
+    QApplication app(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("ProbeCycle"));
+    QCoreApplication::setApplicationName(QStringLiteral("ProbeCycle"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(PROBECYCLE_VERSION));
+    QApplication::setWindowIcon(probecycle::ui::app_icon());
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("Cycle time, overtravel and uncertainty of touch-trigger probing cycles."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+                                        QStringLiteral("Render the window to a PNG and exit."),
+                                        QStringLiteral("FILE"));
+    const QCommandLineOption scenario(QStringLiteral("scenario"),
+                                      QStringLiteral("Scenario JSON for --screenshot."),
+                                      QStringLiteral("FILE"));
+    const QCommandLineOption size(
+        QStringLiteral("size"), QStringLiteral("Window size for --screenshot (default 1280x800)."),
+        QStringLiteral("WxH"), QStringLiteral("1280x800"));
+    const QCommandLineOption language(QStringLiteral("language"),
+                                      QStringLiteral("Interface language: en, zh_CN or ru."),
+                                      QStringLiteral("CODE"));
+    const QCommandLineOption time_startup(
+        QStringLiteral("time-startup"),
+        QStringLiteral("Print the ms from start to the first painted window, then exit."));
+    parser.addOptions({screenshot, scenario, size, language, time_startup});
+    parser.addPositionalArgument(QStringLiteral("scenario"), QStringLiteral("Scenario to open."),
+                                 QStringLiteral("[SCENARIO.json]"));
+    parser.process(app);
+
+    const bool shooting = parser.isSet(screenshot);
+    const bool timing = parser.isSet(time_startup);
+    const bool interactive = !shooting && !timing;
+    const QString language_code =
+        parser.isSet(language)
+            ? parser.value(language)
+            : (interactive ? QSettings().value(QStringLiteral("view/language")).toString()
+                           : QStringLiteral("en"));
+    probecycle::ui::apply_language(language_code);
+
+    probecycle::ui::MainWindowOptions options;
+    options.persistent = interactive;
+    options.show_dialogs = interactive;
+    probecycle::ui::MainWindow window(options);
+
+    const QString file = shooting ? parser.value(scenario) : parser.positionalArguments().value(0);
+    if (!file.isEmpty() && !window.open_scenario(file)) {
+        if (!interactive) {
+            std::fprintf(stderr, "probecycle: %s\n", qPrintable(window.last_error()));
+            return 2;
+        }
+    }
+
+    if (shooting) {
+        const std::optional<QSize> wanted = parse_size(parser.value(size));
+        if (!wanted) {
+            std::fprintf(stderr, "probecycle: --size wants WxH, e.g. 1920x1080 (got %s)\n",
+                         qPrintable(parser.value(size)));
+            return 2;
+        }
+        window.resize(*wanted);
+        window.show();
+        window.statusBar()->clearMessage();  // no "Opened ..." in the picture
+        window.recompute_now();
+        QCoreApplication::processEvents();
+        window.recompute_now();
+        QCoreApplication::processEvents();
+        const QImage image = window.grab().toImage();
+        QSaveFile out(parser.value(screenshot));
+        if (!out.open(QIODevice::WriteOnly) || !image.save(&out, "PNG") || !out.commit()) {
+            std::fprintf(stderr, "probecycle: cannot write %s: %s\n",
+                         qPrintable(parser.value(screenshot)), qPrintable(out.errorString()));
+            return 2;
+        }
+        return 0;
+    }
+
+    window.recompute_now();  // the first paint shows results, not empty charts
+    std::optional<FirstPaintProbe> probe;
+    if (timing) probe.emplace(start, &window);
+    window.show();
+    return QApplication::exec();
+}

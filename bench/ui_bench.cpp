@@ -1,0 +1,180 @@
+// probecycle-ui-bench: the window's speed targets (issue 3), offscreen.
+//
+// BM_SliderToCharts: from a slider value change to every chart updated and
+// painted, 500 points per curve: the slider's signal, the undo command, the
+// coalesced recompute (core analysis and two 500-point sweeps), the series
+// replace()s, the chart layouts, and the event loop's paint of the window
+// until each of the four charts has painted. Two sliders: the feed (the feed
+// sweeps stay, markers, phases and motion move) and the time constant (every
+// curve of every chart changes). BM_Recompute is the core's share alone.
+// BM_LaunchToFirstPaint runs `probecycle --time-startup` and times the
+// process from spawn to exit (it exits right after its first paint); the
+// counter first_paint_ms is the program's own figure from main() to paint.
+
+#include <benchmark/benchmark.h>
+
+#include <QAbstractScrollArea>
+#include <QApplication>
+#include <QProcess>
+#include <QSlider>
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "computation.h"
+#include "main_window.h"
+
+namespace {
+
+using probecycle::ui::MainWindow;
+using probecycle::ui::MainWindowOptions;
+
+std::unique_ptr<MainWindow> make_window(int width, int height) {
+    MainWindowOptions options;
+    options.persistent = false;
+    options.show_dialogs = false;
+    options.points_per_curve = 500;
+    auto window = std::make_unique<MainWindow>(options);
+    window->resize(width, height);
+    window->show();
+    QCoreApplication::processEvents();
+    window->recompute_now();
+    window->repaint();
+    return window;
+}
+
+// The benchmark's third argument: which slider moves. The feed moves the feed
+// markers, the phases and the motion (the feed sweeps stay as they are); the
+// time constant changes every curve of every chart.
+const char* const kSliders[] = {"slider:cycle.probe_feed_mm_min", "slider:machine.time_constant_s"};
+
+QSlider* slider_for(MainWindow& window, std::int64_t which) {
+    return window.findChild<QSlider*>(QLatin1String(kSliders[which]));
+}
+
+// A drag back and forth over 40 % of the slider, 3 of its 1000 steps per
+// event (a mouse drag delivers a few steps per event), so every step really
+// changes the scenario.
+int next_position(std::int64_t i) {
+    const std::int64_t phase = (3 * i) % 800;
+    return static_cast<int>(300 + (phase < 400 ? phase : 800 - phase));
+}
+
+// Counts paint events of the charts' viewports.
+class PaintCounter : public QObject {
+  public:
+    explicit PaintCounter(QWidget* charts) {
+        for (QAbstractScrollArea* view : charts->findChildren<QAbstractScrollArea*>()) {
+            view->viewport()->installEventFilter(this);
+            painted_.push_back({view->viewport(), false});
+        }
+    }
+    void reset() {
+        for (auto& entry : painted_) entry.second = false;
+    }
+    bool all_painted() const {
+        return std::all_of(painted_.begin(), painted_.end(),
+                           [](const auto& e) { return e.second; });
+    }
+    std::size_t count() const { return painted_.size(); }
+
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        if (event->type() == QEvent::Paint) {
+            for (auto& entry : painted_) {
+                if (entry.first == watched) entry.second = true;
+            }
+        }
+        return false;
+    }
+
+  private:
+    std::vector<std::pair<QObject*, bool>> painted_;
+};
+
+void run_slider(benchmark::State& state) {
+    auto window = make_window(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+    QSlider* slider = slider_for(*window, state.range(2));
+    state.SetLabel(
+        QString::fromLatin1(kSliders[state.range(2)]).section(QLatin1Char(':'), 1).toStdString());
+    PaintCounter counter(window->charts_widget());
+    if (counter.count() != 4) {
+        state.SkipWithError("expected four chart views");
+        return;
+    }
+    std::int64_t i = 0;
+    const int before = window->recompute_count();
+    for (auto _ : state) {
+        counter.reset();
+        const int done = window->recompute_count() + 1;
+        slider->setValue(next_position(i++));
+        // The event loop runs the coalesced recompute, then lays out and paints.
+        for (int pass = 0; pass < 20; ++pass) {
+            QCoreApplication::processEvents();
+            if (window->recompute_count() >= done && counter.all_painted()) break;
+        }
+        if (!counter.all_painted()) {
+            state.SkipWithError("a chart was not repainted");
+            return;
+        }
+    }
+    if (window->recompute_count() - before != state.iterations()) {
+        state.SkipWithError("not exactly one recompute per slider change");
+    }
+    // Whatever is still queued belongs to no iteration.
+    QCoreApplication::processEvents();
+}
+
+void BM_SliderToCharts(benchmark::State& state) {
+    run_slider(state);
+}
+
+void BM_Recompute(benchmark::State& state) {
+    probecycle::ui::Computation computation(500);
+    probecycle::Scenario scenario;
+    std::int64_t i = 0;
+    for (auto _ : state) {
+        scenario.cycle.probe_feed_mm_min = (i++ % 2 == 0) ? 1500.0 : 2500.0;
+        benchmark::DoNotOptimize(computation.run(scenario).cycle().total());
+    }
+}
+
+void BM_LaunchToFirstPaint(benchmark::State& state) {
+    double in_process_ms = 0.0;
+    for (auto _ : state) {
+        QProcess process;
+        process.start(QStringLiteral(PROBECYCLE_GUI_PATH), {QStringLiteral("--time-startup")});
+        if (!process.waitForFinished(10000) || process.exitCode() != 0) {
+            state.SkipWithError("probecycle --time-startup failed");
+            return;
+        }
+        const QString out = QString::fromUtf8(process.readAllStandardOutput());
+        in_process_ms += out.section(QLatin1Char(' '), 1, 1).trimmed().toDouble();
+    }
+    state.counters["first_paint_ms"] = in_process_ms / static_cast<double>(state.iterations());
+}
+
+}  // namespace
+
+BENCHMARK(BM_SliderToCharts)
+    ->ArgNames({"w", "h", "slider"})
+    ->Args({1280, 800, 0})
+    ->Args({1280, 800, 1})
+    ->Args({1920, 1080, 0})
+    ->Args({1920, 1080, 1})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Recompute)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LaunchToFirstPaint)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+int main(int argc, char** argv) {
+    if (std::getenv("QT_QPA_PLATFORM") == nullptr) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

@@ -1,0 +1,1618 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="ru_RU">
+<context>
+    <name>Parameter</name>
+    <message>
+        <source>Time constant</source>
+        <translation>Постоянная времени</translation>
+    </message>
+    <message>
+        <source>Acceleration time constant T: the control reaches any programmed feed in T (a = v/T). Sets the distance to reach the feed (v*T/2) and the braking distance after the trigger, and so overtravel and cycle time. Used by the time-constant model.</source>
+        <translation>Постоянная времени разгона T: система ЧПУ достигает любой запрограммированной подачи за время T (a = v/T). Определяет путь разгона до подачи (v*T/2) и тормозной путь после срабатывания, а значит перебег и время цикла. Используется моделью с постоянной времени.</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>мс</translation>
+    </message>
+    <message>
+        <source>Max. acceleration</source>
+        <translation>Макс. ускорение</translation>
+    </message>
+    <message>
+        <source>Maximum axis acceleration, used by the constant-acceleration and jerk-limited models for every move and for braking after the trigger.</source>
+        <translation>Максимальное ускорение оси; модели с постоянным ускорением и с ограничением рывка применяют его ко всем перемещениям и к торможению после срабатывания.</translation>
+    </message>
+    <message>
+        <source>mm/s²</source>
+        <translation>мм/с²</translation>
+    </message>
+    <message>
+        <source>Max. jerk</source>
+        <translation>Макс. рывок</translation>
+    </message>
+    <message>
+        <source>Maximum axis jerk, used by the jerk-limited (S-curve) model: lower jerk lengthens every acceleration and the braking after the trigger.</source>
+        <translation>Максимальный рывок оси для модели с ограничением рывка (S-кривая): чем меньше рывок, тем дольше каждый разгон и торможение после срабатывания.</translation>
+    </message>
+    <message>
+        <source>mm/s³</source>
+        <translation>мм/с³</translation>
+    </message>
+    <message>
+        <source>Rapid feed</source>
+        <translation>Ускоренная подача</translation>
+    </message>
+    <message>
+        <source>Rapid feed of the positioning moves between the touches of a web, pocket, bore or boss.</source>
+        <translation>Скорость ускоренных позиционирующих перемещений между касаниями на стенке, пазу, отверстии или бобышке.</translation>
+    </message>
+    <message>
+        <source>mm/min</source>
+        <translation>мм/мин</translation>
+    </message>
+    <message>
+        <source>Scan period</source>
+        <translation>Период опроса</translation>
+    </message>
+    <message>
+        <source>Period at which the control scans the skip input (about 4 ms on a standard input, 4 µs on a high-speed input). The wait for the next scan is the single-touch uncertainty (trigger speed × scan period) and, worst case, adds a full period of travel to the overtravel.</source>
+        <translation>Период, с которым ЧПУ опрашивает вход пропуска (около 4 мс на стандартном входе, 4 мкс на быстром). Ожидание следующего опроса даёт неопределённость однократного касания (скорость срабатывания × период опроса) и в худшем случае добавляет к перебегу путь за целый период.</translation>
+    </message>
+    <message>
+        <source>Machine response time</source>
+        <translation>Время отклика станка</translation>
+    </message>
+    <message>
+        <source>Fixed latency of the control after it has seen the input. Removed by calibration, but the axis keeps moving: adds trigger speed × latency to the overtravel.</source>
+        <translation>Постоянная задержка ЧПУ после того, как вход замечен. Калибровка убирает её из измеренного значения, но ось продолжает двигаться: к перебегу добавляется скорость срабатывания × задержка.</translation>
+    </message>
+    <message>
+        <source>Pretravel</source>
+        <translation>Предход</translation>
+    </message>
+    <message>
+        <source>Mechanical pretravel from first contact to the trigger threshold (typically 1-50 µm). Independent of speed and removed by calibration; adds to the overtravel and takes pretravel / speed.</source>
+        <translation>Механический предход от первого контакта до порога срабатывания (обычно 1–50 мкм). Не зависит от скорости и убирается калибровкой; входит в перебег и занимает время предход / скорость.</translation>
+    </message>
+    <message>
+        <source>µm</source>
+        <translation>мкм</translation>
+    </message>
+    <message>
+        <source>Interface response time</source>
+        <translation>Время отклика интерфейса</translation>
+    </message>
+    <message>
+        <source>Time the probe interface (receiver) needs to pass the trigger to the control. Constant, so calibration removes it from the measured value, but it adds trigger speed × delay to the overtravel.</source>
+        <translation>Время, за которое интерфейс (приёмник) датчика передаёт сигнал срабатывания в ЧПУ. Оно постоянно, поэтому калибровка убирает его из измеренного значения, но к перебегу добавляется скорость срабатывания × задержка.</translation>
+    </message>
+    <message>
+        <source>Repeatability (2σ)</source>
+        <translation>Повторяемость (2σ)</translation>
+    </message>
+    <message>
+        <source>Unidirectional repeatability of the probe, 2 sigma. Combined with the scan-period range into the expanded (k = 2) uncertainty.</source>
+        <translation>Однонаправленная повторяемость датчика, 2σ. Вместе с диапазоном периода опроса даёт расширенную неопределённость (k = 2).</translation>
+    </message>
+    <message>
+        <source>Overtravel limit</source>
+        <translation>Предел перебега</translation>
+    </message>
+    <message>
+        <source>Stylus deflection range of the probe in the probing direction. The axis must stop within it or the probe or stylus is damaged; short styli along Z and small bores are the critical cases.</source>
+        <translation>Допустимый отклон наконечника щупа в направлении измерения. Ось должна остановиться в его пределах, иначе датчик или наконечник будет повреждён; критичны короткие наконечники по Z и малые отверстия.</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>Reseat distance</source>
+        <translation>Путь возврата в исходное</translation>
+    </message>
+    <message>
+        <source>Distance the probe needs to reseat after a trigger. The two-touch backoff must clear the first touch&apos;s overtravel plus this.</source>
+        <translation>Путь, необходимый датчику для возврата в исходное положение после срабатывания. Отвод при двукратном касании должен перекрывать перебег первого касания плюс этот путь.</translation>
+    </message>
+    <message>
+        <source>Calibration feed</source>
+        <translation>Подача калибровки</translation>
+    </message>
+    <message>
+        <source>Feed at which the probe was calibrated. Measuring at another feed shifts the delay travel and so the measured value; 0 means calibrated at the measuring feed.</source>
+        <translation>Подача, на которой датчик калибровали. Измерение на другой подаче смещает путь за время задержки, а значит и измеренное значение; 0 — калибровка на измерительной подаче.</translation>
+    </message>
+    <message>
+        <source>measuring feed</source>
+        <translation>измерит. подача</translation>
+    </message>
+    <message>
+        <source>Feature size</source>
+        <translation>Размер элемента</translation>
+    </message>
+    <message>
+        <source>Distance between opposite stylus-centre contact points: web or pocket width, bore or boss diameter less the ball diameter. Sets the positioning moves between touches; unused for a surface.</source>
+        <translation>Расстояние между противоположными точками контакта по центру шарика: ширина стенки или паза, диаметр отверстия или бобышки минус диаметр шарика. Определяет позиционирующие перемещения между касаниями; для плоскости не используется.</translation>
+    </message>
+    <message>
+        <source>Approach distance</source>
+        <translation>Расстояние подхода</translation>
+    </message>
+    <message>
+        <source>Start distance in front of the nominal surface. Must cover the part&apos;s position uncertainty, and should cover the distance needed to reach the feed so the touch happens at full speed. Approached at the probing feed, returned at the return feed.</source>
+        <translation>Расстояние от начальной точки до номинальной поверхности. Должно перекрывать неопределённость положения детали и путь разгона до подачи, чтобы касание происходило на полной скорости. Подход — на подаче измерения, возврат — на подаче возврата.</translation>
+    </message>
+    <message>
+        <source>Probing feedrate</source>
+        <translation>Скорость подачи измерения</translation>
+    </message>
+    <message>
+        <source>Feed of the (first) touch; single-touch measures at it. A higher feed shortens the approach but lengthens the braking, the overtravel and the return, and raises the single-touch uncertainty.</source>
+        <translation>Подача (первого) касания; однократное касание измеряет на ней. Большая подача сокращает подход, но удлиняет торможение, перебег и возврат и увеличивает неопределённость однократного касания.</translation>
+    </message>
+    <message>
+        <source>Measuring feedrate</source>
+        <translation>Подача второго касания</translation>
+    </message>
+    <message>
+        <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the backoff is travelled at it.</source>
+        <translation>Подача второго, измерительного касания при двукратном касании (обычно 30 мм/мин). Определяет неопределённость двукратного касания; путь отвода проходится на ней.</translation>
+    </message>
+    <message>
+        <source>Backoff</source>
+        <translation>Отвод</translation>
+    </message>
+    <message>
+        <source>Two-touch: distance the probe backs off from where the first touch stopped. Must be at least the first touch&apos;s overtravel plus the reseat distance; any more is approached again at the slow measuring feed and wasted.</source>
+        <translation>Двукратное касание: расстояние отвода датчика от точки остановки после первого касания. Не меньше перебега первого касания плюс путь возврата в исходное; всё сверх этого снова проходится на медленной измерительной подаче и теряется.</translation>
+    </message>
+    <message>
+        <source>Return feedrate</source>
+        <translation>Подача возврата</translation>
+    </message>
+    <message>
+        <source>Feed of the backoff and of the return to the start position (start distance plus overtravel).</source>
+        <translation>Подача отвода и возврата в начальную точку (расстояние подхода плюс перебег).</translation>
+    </message>
+    <message>
+        <source>Target uncertainty</source>
+        <translation>Целевая неопределённость</translation>
+    </message>
+    <message>
+        <source>Target for the expanded (k = 2) uncertainty of the measuring touch; a warning appears above it. 0 means no target.</source>
+        <translation>Цель для расширенной неопределённости (k = 2) измерительного касания; при превышении выдаётся предупреждение. 0 — цели нет.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>Single-touch</source>
+        <translation>Однократное</translation>
+    </message>
+    <message>
+        <source>Two-touch</source>
+        <translation>Двукратное</translation>
+    </message>
+    <message>
+        <source>Surface (1 touch)</source>
+        <translation>Плоскость (1 кас.)</translation>
+    </message>
+    <message>
+        <source>Web (2 touches)</source>
+        <translation>Стенка (2 кас.)</translation>
+    </message>
+    <message>
+        <source>Pocket (2 touches)</source>
+        <translation>Паз (2 кас.)</translation>
+    </message>
+    <message>
+        <source>Bore (4 touches)</source>
+        <translation>Отверстие (4 кас.)</translation>
+    </message>
+    <message>
+        <source>Boss (4 touches)</source>
+        <translation>Бобышка (4 кас.)</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>Датчик</translation>
+    </message>
+    <message>
+        <source>Cycle</source>
+        <translation>Цикл</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>с</translation>
+    </message>
+    <message>
+        <source>Constant accel.</source>
+        <translation>Пост. ускорение</translation>
+    </message>
+    <message>
+        <source>S-curve (jerk)</source>
+        <translation>S-кривая (рывок)</translation>
+    </message>
+    <message>
+        <source>µs</source>
+        <translation>мкс</translation>
+    </message>
+    <message>
+        <source>Time constant (T)</source>
+        <translation>Постоянная T</translation>
+    </message>
+</context>
+<context>
+    <name>Phase</name>
+    <message>
+        <source>Approach</source>
+        <translation>Подход</translation>
+    </message>
+    <message>
+        <source>Pretravel</source>
+        <translation>Предход</translation>
+    </message>
+    <message>
+        <source>Deceleration</source>
+        <translation>Торможение</translation>
+    </message>
+    <message>
+        <source>Backoff</source>
+        <translation>Отвод</translation>
+    </message>
+    <message>
+        <source>2nd approach</source>
+        <translation>2-й подход</translation>
+    </message>
+    <message>
+        <source>2nd pretravel</source>
+        <translation>2-й предход</translation>
+    </message>
+    <message>
+        <source>2nd deceleration</source>
+        <translation>2-е торможение</translation>
+    </message>
+    <message>
+        <source>Return</source>
+        <translation>Возврат</translation>
+    </message>
+    <message>
+        <source>Positioning</source>
+        <translation>Позиционирование</translation>
+    </message>
+    <message>
+        <source>Interface delay</source>
+        <translation>Задержка интерф.</translation>
+    </message>
+    <message>
+        <source>Controller delay</source>
+        <translation>Задержка ЧПУ</translation>
+    </message>
+    <message>
+        <source>2nd interface delay</source>
+        <translation>2-я задержка интерф.</translation>
+    </message>
+    <message>
+        <source>2nd controller delay</source>
+        <translation>2-я задержка ЧПУ</translation>
+    </message>
+</context>
+<context>
+    <name>Warning</name>
+    <message>
+        <source>Overtravel near or over the limit</source>
+        <translation>Перебег у предела или сверх него</translation>
+    </message>
+    <message>
+        <source>Backoff too small</source>
+        <translation>Слишком малый отвод</translation>
+    </message>
+    <message>
+        <source>Backoff longer than needed</source>
+        <translation>Отвод больше необходимого</translation>
+    </message>
+    <message>
+        <source>Touch while accelerating</source>
+        <translation>Касание во время разгона</translation>
+    </message>
+    <message>
+        <source>Feedrate beyond the knee</source>
+        <translation>Подача за точкой перегиба</translation>
+    </message>
+    <message>
+        <source>Uncertainty over the target</source>
+        <translation>Неопределённость выше цели</translation>
+    </message>
+    <message>
+        <source>Calibration feed differs</source>
+        <translation>Подача калибровки отличается</translation>
+    </message>
+    <message>
+        <source>Overtravel %1 is %2 % of the probe&apos;s %3 limit: the probe or stylus will be damaged; lower the feed or the delays</source>
+        <translation>Перебег %1 составляет %2 % от предела датчика %3: датчик или наконечник будет повреждён; уменьшите подачу или задержки</translation>
+    </message>
+    <message>
+        <source>Overtravel %1 is %2 % of the probe&apos;s %3 limit: little margin left for the stylus</source>
+        <translation>Перебег %1 составляет %2 % от предела датчика %3: запас для наконечника мал</translation>
+    </message>
+    <message>
+        <source>Backoff %1 is less than the first touch&apos;s overtravel plus reseat, %2: the probe may not reseat before the second touch</source>
+        <translation>Отвод %1 меньше перебега первого касания плюс путь возврата, %2: датчик может не вернуться в исходное до второго касания</translation>
+    </message>
+    <message>
+        <source>Backoff %1 is more than the recommended %2 and wastes %3 per cycle</source>
+        <translation>Отвод %1 больше рекомендуемого %2 и теряет %3 за цикл</translation>
+    </message>
+    <message>
+        <source>Second touch starts closer than the distance needed to reach its feed: it triggers at %1 instead of %2, an error of %3 against a calibration at full feed</source>
+        <translation>Второе касание начинается ближе, чем нужно для разгона до его подачи: срабатывание на %1 вместо %2, ошибка %3 относительно калибровки на полной подаче</translation>
+    </message>
+    <message>
+        <source>First touch starts closer than the distance needed to reach its feed: it triggers at %1 instead of %2, an error of %3 against a calibration at full feed</source>
+        <translation>Первое касание начинается ближе, чем нужно для разгона до его подачи: срабатывание на %1 вместо %2, ошибка %3 относительно калибровки на полной подаче</translation>
+    </message>
+    <message>
+        <source>Probing feed %1 is beyond the knee at %2 and no faster: the cycle takes %3 longer, with more overtravel and uncertainty</source>
+        <translation>Подача измерения %1 выше точки перегиба %2 и не быстрее: цикл длится на %3 дольше, с большим перебегом и неопределённостью</translation>
+    </message>
+    <message>
+        <source>Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 (under 1 %) while overtravel and uncertainty grow</source>
+        <translation>Подача измерения %1 выше точки перегиба %2: прибавка подачи экономит лишь %3 (менее 1 %), а перебег и неопределённость растут</translation>
+    </message>
+    <message>
+        <source>Uncertainty %1 exceeds the target %2</source>
+        <translation>Неопределённость %1 превышает цель %2</translation>
+    </message>
+    <message>
+        <source>Measuring at %1 but calibrated at %2: the delay travel shifts the measured value by %3; calibrate at the measuring feed</source>
+        <translation>Измерение на %1, а калибровка на %2: путь за время задержки смещает измеренное значение на %3; откалибруйте на измерительной подаче</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::CalibrationTab</name>
+    <message>
+        <source>Ring gauge: touches at 0° and 180°</source>
+        <translation>Установочное кольцо: касания при 0° и 180°</translation>
+    </message>
+    <message>
+        <source>Paste the trigger positions the control recorded, or import a CSV file. Columns &lt;code&gt;orientation_deg,x_mm,y_mm&lt;/code&gt;; spindle oriented at 0° and at 180°, 3 or more points each (typically X+, X−, Y+, Y−).</source>
+        <translation>Вставьте положения срабатывания, записанные ЧПУ, или импортируйте файл CSV. Столбцы &lt;code&gt;orientation_deg,x_mm,y_mm&lt;/code&gt;; шпиндель ориентирован на 0° и на 180°, не менее 3 точек в каждой ориентации (обычно X+, X−, Y+, Y−).</translation>
+    </message>
+    <message>
+        <source>(example)</source>
+        <translation>(пример)</translation>
+    </message>
+    <message>
+        <source>Gauge diameter</source>
+        <translation>Диаметр кольца</translation>
+    </message>
+    <message>
+        <source>The calibrated diameter of the ring gauge, from its certificate.</source>
+        <translation>Аттестованный диаметр установочного кольца по его сертификату.</translation>
+    </message>
+    <message>
+        <source>Runout limit</source>
+        <translation>Предел биения</translation>
+    </message>
+    <message>
+        <source>Warn when the stylus runout (eccentricity) is larger.</source>
+        <translation>Предупреждать, если биение (эксцентриситет) наконечника больше.</translation>
+    </message>
+    <message>
+        <source>Residual limit</source>
+        <translation>Предел остатка</translation>
+    </message>
+    <message>
+        <source>Warn when a point lies further than this off its fitted circle: dirt, a bad touch or a loose gauge.</source>
+        <translation>Предупреждать, если точка лежит дальше этого от подобранной окружности: грязь, плохое касание или незакреплённое кольцо.</translation>
+    </message>
+    <message>
+        <source>Import CSV…</source>
+        <translation>Импорт CSV…</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Подобрать</translation>
+    </message>
+    <message>
+        <source>Length from a surface of known Z</source>
+        <translation>Длина по поверхности с известной Z</translation>
+    </message>
+    <message>
+        <source>Surface Z</source>
+        <translation>Z поверхности</translation>
+    </message>
+    <message>
+        <source>The known Z of the gauge top, sphere or block, set by a reference tool.</source>
+        <translation>Известная Z верха кольца, сферы или плитки, заданная эталонным инструментом.</translation>
+    </message>
+    <message>
+        <source>Trigger Z</source>
+        <translation>Z срабатывания</translation>
+    </message>
+    <message>
+        <source>The Z the control recorded at the touch; several touches separated by spaces or semicolons.</source>
+        <translation>Z, записанная ЧПУ при касании; несколько касаний через пробел или точку с запятой.</translation>
+    </message>
+    <message>
+        <source>e.g. 12.3456; 12.3459</source>
+        <translation>напр. 12.3456; 12.3459</translation>
+    </message>
+    <message>
+        <source>Active length</source>
+        <translation>Активная длина</translation>
+    </message>
+    <message>
+        <source>The tool length offset active while probing (0 when none).</source>
+        <translation>Коррекция длины инструмента, действующая при измерении (0, если нет).</translation>
+    </message>
+    <message>
+        <source>Nominal length</source>
+        <translation>Номинальная длина</translation>
+    </message>
+    <message>
+        <source>The probe&apos;s nominal length, to express the result as wear (0 = none).</source>
+        <translation>Номинальная длина датчика, чтобы выразить результат как износ (0 — нет).</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>Radial deviations:</source>
+        <translation>Радиальные отклонения:</translation>
+    </message>
+    <message>
+        <source>Magnified, automatic</source>
+        <translation>Увеличенные, автоматически</translation>
+    </message>
+    <message>
+        <source>True scale</source>
+        <translation>В натуральную величину</translation>
+    </message>
+    <message>
+        <source>× %1</source>
+        <extracomment>the magnification of the radial deviations in the ring plot</extracomment>
+        <translation>× %1</translation>
+    </message>
+    <message>
+        <source>X [%1]</source>
+        <translation>X [%1]</translation>
+    </message>
+    <message>
+        <source>Y [%1]</source>
+        <translation>Y [%1]</translation>
+    </message>
+    <message>
+        <source>Circle at 0°</source>
+        <translation>Окружность при 0°</translation>
+    </message>
+    <message>
+        <source>Circle at 180°</source>
+        <translation>Окружность при 180°</translation>
+    </message>
+    <message>
+        <source>Gauge centre</source>
+        <translation>Центр кольца</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Результат</translation>
+    </message>
+    <message>
+        <source>Stylus runout</source>
+        <translation>Биение наконечника</translation>
+    </message>
+    <message>
+        <source>Effective ball radius</source>
+        <translation>Эффективный радиус шарика</translation>
+    </message>
+    <message>
+        <source>Radius by direction</source>
+        <translation>Радиус по направлениям</translation>
+    </message>
+    <message>
+        <source>Largest residual</source>
+        <translation>Наибольший остаток</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Точки</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Предупреждения</translation>
+    </message>
+    <message>
+        <source>No warnings.</source>
+        <translation>Предупреждений нет.</translation>
+    </message>
+    <message>
+        <source>Export CSV report…</source>
+        <translation>Экспорт отчёта CSV…</translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>Не удалось прочитать %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>The result shown is still that of the previous fit.</source>
+        <translation>Показан результат предыдущего подбора.</translation>
+    </message>
+    <message>
+        <source>X %1</source>
+        <translation>X %1</translation>
+    </message>
+    <message>
+        <source>Y %1</source>
+        <translation>Y %1</translation>
+    </message>
+    <message>
+        <source>unknown: one orientation only</source>
+        <translation>неизвестно: только одна ориентация</translation>
+    </message>
+    <message>
+        <source>centre %1, %2; radius %3</source>
+        <translation>центр %1, %2; радиус %3</translation>
+    </message>
+    <message>
+        <source>no points</source>
+        <translation>нет точек</translation>
+    </message>
+    <message>
+        <source>%1 at 0°, %2 at 180°; gauge %3</source>
+        <translation>%1 при 0°, %2 при 180°; кольцо %3</translation>
+    </message>
+    <message>
+        <source>Radial deviations magnified × %1</source>
+        <translation>Радиальные отклонения увеличены × %1</translation>
+    </message>
+    <message>
+        <source>No fit yet</source>
+        <translation>Подбора ещё нет</translation>
+    </message>
+    <message>
+        <source>Trigger Z: “%1” is not a number.</source>
+        <translation>Z срабатывания: «%1» — не число.</translation>
+    </message>
+    <message>
+        <source>Effective length: &lt;b&gt;%1&lt;/b&gt;</source>
+        <translation>Эффективная длина: &lt;b&gt;%1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Wear: %1</source>
+        <translation>Износ: %1</translation>
+    </message>
+    <message>
+        <source>Enter the trigger Z of one or more touches.</source>
+        <translation>Введите Z срабатывания одного или нескольких касаний.</translation>
+    </message>
+    <message>
+        <source>Nothing to export: fit the ring points or enter a length first.</source>
+        <translation>Нечего экспортировать: сначала подберите точки кольца или введите длину.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Сохранено: %1</translation>
+    </message>
+    <message>
+        <source>Import ring gauge points</source>
+        <translation>Импорт точек установочного кольца</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>Файлы CSV (*.csv);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Export calibration report</source>
+        <translation>Экспорт отчёта о калибровке</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Файлы CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Spindle at 0°</source>
+        <translation>Шпиндель на 0°</translation>
+    </message>
+    <message>
+        <source>Spindle at 180°</source>
+        <translation>Шпиндель на 180°</translation>
+    </message>
+    <message>
+        <source>%1 in all</source>
+        <translation>всего %1</translation>
+    </message>
+    <message>
+        <source>Touches: %1, spread %2</source>
+        <translation>Касаний: %1, разброс %2</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::CycleCharts</name>
+    <message>
+        <source>Probing feedrate [%1]</source>
+        <translation>Подача измерения [%1]</translation>
+    </message>
+    <message>
+        <source>Cycle time vs probing feedrate</source>
+        <translation>Время цикла в зависимости от подачи</translation>
+    </message>
+    <message>
+        <source>Cycle time [%1]</source>
+        <translation>Время цикла [%1]</translation>
+    </message>
+    <message>
+        <source>Single-touch</source>
+        <translation>Однократное</translation>
+    </message>
+    <message>
+        <source>Knee</source>
+        <translation>Перегиб</translation>
+    </message>
+    <message>
+        <source>Time [%1]</source>
+        <translation>Время [%1]</translation>
+    </message>
+    <message>
+        <source>Overtravel and uncertainty vs feedrate</source>
+        <translation>Перебег и неопределённость в зависимости от подачи</translation>
+    </message>
+    <message>
+        <source>Overtravel [%1]</source>
+        <translation>Перебег [%1]</translation>
+    </message>
+    <message>
+        <source>Uncertainty, k = 2 [%1]</source>
+        <translation>Неопредел., k = 2 [%1]</translation>
+    </message>
+    <message>
+        <source>Overtravel</source>
+        <translation>Перебег</translation>
+    </message>
+    <message>
+        <source>Limit</source>
+        <translation>Предел</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Цель</translation>
+    </message>
+    <message>
+        <source>Position and speed through the cycle</source>
+        <translation>Положение и скорость в течение цикла</translation>
+    </message>
+    <message>
+        <source>Position [%1]</source>
+        <translation>Положение [%1]</translation>
+    </message>
+    <message>
+        <source>Speed [%1]</source>
+        <translation>Скорость [%1]</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Положение</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <source>Surface</source>
+        <translation>Поверхность</translation>
+    </message>
+    <message>
+        <source>Baseline (dashed)</source>
+        <translation>База (штрих)</translation>
+    </message>
+    <message>
+        <source>Phases: total %1</source>
+        <translation>Фазы: всего %1</translation>
+    </message>
+    <message>
+        <source>Phases</source>
+        <translation>Фазы</translation>
+    </message>
+    <message>
+        <source>Uncertainty</source>
+        <translation>Неопределённость</translation>
+    </message>
+    <message>
+        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest feed within 1 % of the best time.</source>
+        <translation>Время всего цикла в зависимости от подачи измерения для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая подача, время цикла на которой не более чем на 1 % хуже лучшего.</translation>
+    </message>
+    <message>
+        <source>The phases of the current cycle in time order, each row with its total time over all touches.</source>
+        <translation>Фазы текущего цикла в порядке времени; в каждой строке — суммарное время фазы по всем касаниям.</translation>
+    </message>
+    <message>
+        <source>Red: overtravel of a touch at each feed against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted). Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
+        <translation>Красный: перебег касания на каждой подаче и предел датчика (штрих); на заштрихованных подачах перебег выше предела. Синий, правая ось: неопределённость (k = 2) касания, измеренного на каждой подаче, и цель (пунктир). Вертикальные линии: подача измерения и, для двукратного касания, подача второго касания (синий пунктир).</translation>
+    </message>
+    <message>
+        <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle.</source>
+        <translation>Положение вдоль направления измерения для каждого касания (поверхность — штрих) и скорость по траектории в течение всего цикла.</translation>
+    </message>
+    <message>
+        <source>Two-touch, best backoff</source>
+        <translation>Двукратное, лучший отвод</translation>
+    </message>
+    <message>
+        <source>This cycle</source>
+        <translation>Этот цикл</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::Lab</name>
+    <message>
+        <source>Points on one side</source>
+        <translation>Точки с одной стороны</translation>
+    </message>
+    <message>
+        <source>Large stylus runout</source>
+        <translation>Большое биение наконечника</translation>
+    </message>
+    <message>
+        <source>Point off the circle</source>
+        <translation>Точка вне окружности</translation>
+    </message>
+    <message>
+        <source>One orientation only: no runout</source>
+        <translation>Только одна ориентация: биения нет</translation>
+    </message>
+    <message>
+        <source>Three points: exact fit</source>
+        <translation>Три точки: точный подбор</translation>
+    </message>
+    <message>
+        <source>Length far from the nominal</source>
+        <translation>Длина далека от номинальной</translation>
+    </message>
+    <message>
+        <source>Fewer than 3 feeds</source>
+        <translation>Меньше 3 подач</translation>
+    </message>
+    <message>
+        <source>Unstable delay</source>
+        <translation>Нестабильная задержка</translation>
+    </message>
+    <message>
+        <source>Residuals curve: the delay changes</source>
+        <translation>Остатки искривлены: задержка меняется</translation>
+    </message>
+    <message>
+        <source>Negative delay</source>
+        <translation>Отрицательная задержка</translation>
+    </message>
+    <message>
+        <source>One touch at a feed</source>
+        <translation>Одно касание на подаче</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::LatencyTab</name>
+    <message>
+        <source>Uncompensated</source>
+        <translation>Без компенсации</translation>
+    </message>
+    <message>
+        <source>Naive v·τ</source>
+        <translation>Простая v·τ</translation>
+    </message>
+    <message>
+        <source>Cycle lag (real increments)</source>
+        <translation>Запаздывание в периодах (реальные приращения)</translation>
+    </message>
+    <message>
+        <source>Timestamp interpolation</source>
+        <translation>Интерполяция по метке времени</translation>
+    </message>
+    <message>
+        <source>Real increments</source>
+        <translation>Реальные приращения</translation>
+    </message>
+    <message>
+        <source>Timestamp</source>
+        <translation>Метка времени</translation>
+    </message>
+    <message>
+        <source>Delay from touches at several feeds (delay-stability test)</source>
+        <translation>Задержка по касаниям на нескольких подачах (испытание стабильности задержки)</translation>
+    </message>
+    <message>
+        <source>Touch the same surface several times at each of several feeds, per axis and direction, starting far enough out to be at full speed. Paste or import the positions: &lt;code&gt;axis,direction,feed_mm_min,measured_mm&lt;/code&gt; (direction +1 or −1, of travel).</source>
+        <translation>Коснитесь одной и той же поверхности несколько раз на каждой из нескольких подач, по каждой оси и направлению, начиная достаточно далеко для полной скорости. Вставьте или импортируйте положения: &lt;code&gt;axis,direction,feed_mm_min,measured_mm&lt;/code&gt; (direction — направление движения, +1 или −1).</translation>
+    </message>
+    <message>
+        <source>(example)</source>
+        <translation>(пример)</translation>
+    </message>
+    <message>
+        <source>Interpolation period</source>
+        <translation>Период интерполяции</translation>
+    </message>
+    <message>
+        <source>The control&apos;s interpolation cycle, to express the delay in cycles (optional).</source>
+        <translation>Период интерполяции ЧПУ, чтобы выразить задержку в периодах (необязательно).</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>Import CSV…</source>
+        <translation>Импорт CSV…</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Подобрать</translation>
+    </message>
+    <message>
+        <source>Feed [%1]</source>
+        <translation>Подача [%1]</translation>
+    </message>
+    <message>
+        <source>Group / feed</source>
+        <translation>Группа / подача</translation>
+    </message>
+    <message>
+        <source>Delay τ</source>
+        <translation>Задержка τ</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>Периоды</translation>
+    </message>
+    <message>
+        <source>p₀ / mean</source>
+        <translation>p₀ / среднее</translation>
+    </message>
+    <message>
+        <source>2σ / range</source>
+        <translation>2σ / размах</translation>
+    </message>
+    <message>
+        <source>n</source>
+        <translation>n</translation>
+    </message>
+    <message>
+        <source>The total delay: the slope of the line over the feeds.</source>
+        <translation>Полная задержка: наклон прямой по подачам.</translation>
+    </message>
+    <message>
+        <source>The delay in interpolation cycles (with the period given).</source>
+        <translation>Задержка в периодах интерполяции (если период задан).</translation>
+    </message>
+    <message>
+        <source>Group: the zero-speed position p₀. Feed: the mean deviation from p₀.</source>
+        <translation>Группа: положение при нулевой скорости p₀. Подача: среднее отклонение от p₀.</translation>
+    </message>
+    <message>
+        <source>Group: twice the standard deviation of the residuals of the line. Feed: the range (max − min) of its touches, the delay&apos;s stability.</source>
+        <translation>Группа: удвоенное СКО остатков прямой. Подача: размах (макс − мин) её касаний — стабильность задержки.</translation>
+    </message>
+    <message>
+        <source>Touches</source>
+        <translation>Касания</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Предупреждения</translation>
+    </message>
+    <message>
+        <source>No warnings.</source>
+        <translation>Предупреждений нет.</translation>
+    </message>
+    <message>
+        <source>Delay to apply:</source>
+        <translation>Применить задержку:</translation>
+    </message>
+    <message>
+        <source>Apply to scenario</source>
+        <translation>Применить к сценарию</translation>
+    </message>
+    <message>
+        <source>Sets machine.controller_latency_s to the fitted delay less the probe&apos;s interface delay and half the scan period (none with a latched input).</source>
+        <translation>Задаёт machine.controller_latency_s равной подобранной задержке минус задержка интерфейса датчика и половина периода опроса (для входа с защёлкой — без неё).</translation>
+    </message>
+    <message>
+        <source>Compensation of the trigger position</source>
+        <translation>Компенсация положения срабатывания</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Подача</translation>
+    </message>
+    <message>
+        <source>The programmed probing feed.</source>
+        <translation>Запрограммированная подача измерения.</translation>
+    </message>
+    <message>
+        <source>The control&apos;s interpolation cycle.</source>
+        <translation>Период интерполяции ЧПУ.</translation>
+    </message>
+    <message>
+        <source>Lag</source>
+        <translation>Запаздывание</translation>
+    </message>
+    <message>
+        <source>Cycles between the end of the trigger&apos;s cycle and the recorded position; the delay-stability test above measures it.</source>
+        <translation>Число периодов между концом периода срабатывания и записанным положением; его измеряет испытание стабильности задержки выше.</translation>
+    </message>
+    <message>
+        <source> cycles</source>
+        <translation> периодов</translation>
+    </message>
+    <message>
+        <source>Touch</source>
+        <translation>Касание</translation>
+    </message>
+    <message>
+        <source>At constant speed, or while the axis is braking.</source>
+        <translation>На постоянной скорости или во время торможения оси.</translation>
+    </message>
+    <message>
+        <source>At constant speed</source>
+        <translation>На постоянной скорости</translation>
+    </message>
+    <message>
+        <source>While braking</source>
+        <translation>Во время торможения</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger</source>
+        <translation>Скорость при срабатывании</translation>
+    </message>
+    <message>
+        <source>While braking: the speed at the trigger, in % of the feed.</source>
+        <translation>Во время торможения: скорость при срабатывании в % от подачи.</translation>
+    </message>
+    <message>
+        <source>Take period and lag from the fit</source>
+        <translation>Взять период и запаздывание из подбора</translation>
+    </message>
+    <message>
+        <source>Error of the corrected position while braking</source>
+        <translation>Ошибка исправленного положения при торможении</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger [% of the feed]</source>
+        <translation>Скорость при срабатывании [% от подачи]</translation>
+    </message>
+    <message>
+        <source>Error [%1]</source>
+        <translation>Ошибка [%1]</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Метод</translation>
+    </message>
+    <message>
+        <source>Position [%1]</source>
+        <translation>Положение [%1]</translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>Не удалось прочитать %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>The result shown is still that of the previous fit.</source>
+        <translation>Показан результат предыдущего подбора.</translation>
+    </message>
+    <message>
+        <source>Longest delay (safe side)</source>
+        <translation>Наибольшая задержка (с запасом)</translation>
+    </message>
+    <message>
+        <source>%1: τ = %2</source>
+        <translation>%1: τ = %2</translation>
+    </message>
+    <message>
+        <source>Import touches</source>
+        <translation>Импорт касаний</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>Файлы CSV (*.csv);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Fit the touches first.</source>
+        <translation>Сначала подберите касания.</translation>
+    </message>
+    <message>
+        <source>No scenario to apply the delay to.</source>
+        <translation>Нет сценария, к которому применить задержку.</translation>
+    </message>
+    <message>
+        <source>0 (latched input)</source>
+        <translation>0 (вход с защёлкой)</translation>
+    </message>
+    <message>
+        <source>Controller latency = %1 delay %2 − interface %3 − half scan %4 = &lt;b&gt;%5&lt;/b&gt; (now %6)</source>
+        <extracomment>%1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now</extracomment>
+        <translation>Задержка ЧПУ = %1 задержка %2 − интерфейс %3 − половина опроса %4 = &lt;b&gt;%5&lt;/b&gt; (сейчас %6)</translation>
+    </message>
+    <message>
+        <source>Measured minus zero-speed position, against feed</source>
+        <translation>Измеренное минус положение при нулевой скорости, по подаче</translation>
+    </message>
+    <message>
+        <source>Deviation [%1]</source>
+        <translation>Отклонение [%1]</translation>
+    </message>
+    <message>
+        <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
+        <translation>Динамика станка — из сценария. При торможении v·τ считает подачу постоянной всю задержку и перекорректирует; реальные приращения последних периодов дают ошибку в пределах пути за один период.</translation>
+    </message>
+    <message>
+        <source>Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ uses τ = %4.</source>
+        <extracomment>%1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses</extracomment>
+        <translation>Срабатывание на %1 мм/с, запись через %2 периодов на %3 мм/с; v·τ использует τ = %4.</translation>
+    </message>
+    <message>
+        <source>Counter roll-overs: %1.</source>
+        <translation>Переполнений счётчика: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::MainWindow</name>
+    <message>
+        <source>Standard skip input (4 ms scan)</source>
+        <translation>Стандартный вход пропуска (опрос 4 мс)</translation>
+    </message>
+    <message>
+        <source>A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms). Typical values: replace them with your machine&apos;s.</source>
+        <translation>Вход пропуска с опросом каждые 4 мс и задержкой 2 мс на станке с постоянной времени (T = 60 мс). Типовые значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>High-speed skip input (4 µs scan)</source>
+        <translation>Быстрый вход пропуска (опрос 4 мкс)</translation>
+    </message>
+    <message>
+        <source>A direct, high-speed skip input scanned every 4 µs with a 0.5 ms latency. Typical values: replace them with your machine&apos;s.</source>
+        <translation>Прямой быстрый вход пропуска с опросом каждые 4 мкс и задержкой 0,5 мс. Типовые значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>Latched input (position captured in hardware)</source>
+        <translation>Вход с защёлкой (положение фиксируется аппаратно)</translation>
+    </message>
+    <message>
+        <source>The control latches the axis positions at the trigger: the scan wait leaves the measured value but not the travel. Typical values: replace them with your machine&apos;s.</source>
+        <translation>ЧПУ защёлкивает положения осей в момент срабатывания: ожидание опроса уходит из измеренного значения, но не из пути. Типовые значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>Kinematic probe, optical transmission</source>
+        <translation>Кинематический датчик, оптическая передача</translation>
+    </message>
+    <message>
+        <source>Resistive kinematic probe with an optical receiver: 5 µm pretravel, 2 ms interface response, 1 µm repeatability. Typical values: replace them with the ones you measure.</source>
+        <translation>Резистивный кинематический датчик с оптическим приёмником: предход 5 мкм, отклик интерфейса 2 мс, повторяемость 1 мкм. Типовые значения: замените их измеренными.</translation>
+    </message>
+    <message>
+        <source>Kinematic probe, radio transmission</source>
+        <translation>Кинематический датчик, радиопередача</translation>
+    </message>
+    <message>
+        <source>Kinematic probe with a radio receiver: the transmission adds about 10 ms of interface response. Typical values: replace them with the ones you measure.</source>
+        <translation>Кинематический датчик с радиоприёмником: передача добавляет около 10 мс к отклику интерфейса. Типовые значения: замените их измеренными.</translation>
+    </message>
+    <message>
+        <source>Strain-gauge probe (high accuracy)</source>
+        <translation>Тензометрический датчик (высокая точность)</translation>
+    </message>
+    <message>
+        <source>Strain-gauge probe: sub-micrometre pretravel and repeatability, low trigger force. Typical values: replace them with the ones you measure.</source>
+        <translation>Тензометрический датчик: предход и повторяемость меньше микрометра, малое усилие срабатывания. Типовые значения: замените их измеренными.</translation>
+    </message>
+    <message>
+        <source>Short stylus / small bore (2 mm overtravel)</source>
+        <translation>Короткий наконечник / малое отверстие (перебег 2 мм)</translation>
+    </message>
+    <message>
+        <source>A probe with a short stylus or in a small bore, where only about 2 mm of overtravel is safe. Typical values: replace them with the ones you measure.</source>
+        <translation>Датчик с коротким наконечником или в малом отверстии, где безопасен перебег лишь около 2 мм. Типовые значения: замените их измеренными.</translation>
+    </message>
+    <message>
+        <source>About ProbeCycle</source>
+        <translation>О программе ProbeCycle</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;ProbeCycle&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Cycle time, overtravel and uncertainty of touch-trigger probing cycles on CNC machine tools.&lt;/p&gt;&lt;p&gt;Every value in the model is a typical one until you replace it with your measured value.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;ProbeCycle&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Время цикла, перебег и неопределённость циклов измерения контактными датчиками на станках с ЧПУ.&lt;/p&gt;&lt;p&gt;Каждое значение в модели остаётся типовым, пока вы не замените его измеренным.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Новый</translation>
+    </message>
+    <message>
+        <source>Start from the default scenario (typical values)</source>
+        <translation>Начать со сценария по умолчанию (типовые значения)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Открыть…</translation>
+    </message>
+    <message>
+        <source>Open a scenario file (the JSON the command-line tool reads)</source>
+        <translation>Открыть файл сценария (JSON, который читает консольная программа)</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Сохранить</translation>
+    </message>
+    <message>
+        <source>Save the scenario as JSON</source>
+        <translation>Сохранить сценарий в JSON</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Сохранить &amp;как…</translation>
+    </message>
+    <message>
+        <source>Export CSV &amp;Report…</source>
+        <translation>Экспорт &amp;отчёта CSV…</translation>
+    </message>
+    <message>
+        <source>Scenario, summary, phases, warnings and a feed sweep as CSV, the same as the command-line tool writes</source>
+        <translation>Сценарий, сводка, фазы, предупреждения и перебор подач в CSV — так же, как пишет консольная программа</translation>
+    </message>
+    <message>
+        <source>Export Charts as &amp;PNG…</source>
+        <translation>Экспорт графиков в &amp;PNG…</translation>
+    </message>
+    <message>
+        <source>Save the four charts as one PNG image</source>
+        <translation>Сохранить четыре графика одним изображением PNG</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>В&amp;ыход</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Отменить</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Повторить</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отменить</translation>
+    </message>
+    <message>
+        <source>&amp;Pin Baseline</source>
+        <translation>&amp;Закрепить базу</translation>
+    </message>
+    <message>
+        <source>Keep the current scenario as a baseline: its curves stay drawn dashed and the readouts show the difference</source>
+        <translation>Сохранить текущий сценарий как базу: его кривые остаются штриховыми, а показания выводят разницу</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Baseline</source>
+        <translation>&amp;Убрать базу</translation>
+    </message>
+    <message>
+        <source>&amp;About ProbeCycle</source>
+        <translation>&amp;О программе ProbeCycle</translation>
+    </message>
+    <message>
+        <source>Presets hold typical values: replace them with measured ones</source>
+        <translation>Предустановки содержат типовые значения: замените их измеренными</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>Язык системы</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Файл</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Недавние файлы</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Правка</translation>
+    </message>
+    <message>
+        <source>&amp;Presets</source>
+        <translation>П&amp;редустановки</translation>
+    </message>
+    <message>
+        <source>&amp;Machine (skip input)</source>
+        <translation>&amp;Станок (вход пропуска)</translation>
+    </message>
+    <message>
+        <source>P&amp;robe class</source>
+        <translation>&amp;Класс датчика</translation>
+    </message>
+    <message>
+        <source>&amp;Compare</source>
+        <translation>С&amp;равнение</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Вид</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Язык</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Справка</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Предупреждения</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>Главная панель</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Несохранённые изменения</translation>
+    </message>
+    <message>
+        <source>Save the changes to %1?</source>
+        <translation>Сохранить изменения в %1?</translation>
+    </message>
+    <message>
+        <source>acceleration model</source>
+        <translation>модель разгона</translation>
+    </message>
+    <message>
+        <source>strategy</source>
+        <translation>стратегия</translation>
+    </message>
+    <message>
+        <source>feature</source>
+        <translation>элемент</translation>
+    </message>
+    <message>
+        <source>latched input</source>
+        <translation>вход с защёлкой</translation>
+    </message>
+    <message>
+        <source>change %1</source>
+        <translation>изменение: %1</translation>
+    </message>
+    <message>
+        <source>Default scenario: typical values, to be replaced with measured ones</source>
+        <translation>Сценарий по умолчанию: типовые значения, замените их измеренными</translation>
+    </message>
+    <message>
+        <source>Could not open the scenario</source>
+        <translation>Не удалось открыть сценарий</translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>Не удалось прочитать %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid scenario:
+%2</source>
+        <translation>%1 — недопустимый сценарий:
+%2</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Открыт %1</translation>
+    </message>
+    <message>
+        <source>Could not save the scenario</source>
+        <translation>Не удалось сохранить сценарий</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>Не удалось записать %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Сохранено: %1</translation>
+    </message>
+    <message>
+        <source>Could not export the report</source>
+        <translation>Не удалось экспортировать отчёт</translation>
+    </message>
+    <message>
+        <source>The scenario is not valid; see the warnings panel.</source>
+        <translation>Сценарий недопустим; см. панель предупреждений.</translation>
+    </message>
+    <message>
+        <source>Report written to %1</source>
+        <translation>Отчёт записан в %1</translation>
+    </message>
+    <message>
+        <source>Could not export the charts</source>
+        <translation>Не удалось экспортировать графики</translation>
+    </message>
+    <message>
+        <source>Charts written to %1</source>
+        <translation>Графики записаны в %1</translation>
+    </message>
+    <message>
+        <source>Could not apply the preset</source>
+        <translation>Не удалось применить предустановку</translation>
+    </message>
+    <message>
+        <source>preset %1</source>
+        <translation>предустановка %1</translation>
+    </message>
+    <message>
+        <source>%1: typical values applied; replace them with your measured ones</source>
+        <translation>%1: применены типовые значения; замените их измеренными</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(нет)</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Без имени</translation>
+    </message>
+    <message>
+        <source>Open scenario</source>
+        <translation>Открыть сценарий</translation>
+    </message>
+    <message>
+        <source>Scenario (*.json);;All files (*)</source>
+        <translation>Сценарий (*.json);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Save scenario</source>
+        <translation>Сохранить сценарий</translation>
+    </message>
+    <message>
+        <source>Scenario (*.json)</source>
+        <translation>Сценарий (*.json)</translation>
+    </message>
+    <message>
+        <source>Export CSV report</source>
+        <translation>Экспорт отчёта CSV</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export charts as PNG</source>
+        <translation>Экспорт графиков в PNG</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>Изображение PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Baseline pinned: change parameters to compare against it</source>
+        <translation>База закреплена: меняйте параметры, чтобы сравнить с ней</translation>
+    </message>
+    <message>
+        <source>set backoff to recommended</source>
+        <translation>отвод по рекомендации</translation>
+    </message>
+    <message>
+        <source>drop feed to the knee</source>
+        <translation>подача до точки перегиба</translation>
+    </message>
+    <message>
+        <source>start far enough out to reach the feed</source>
+        <translation>начало подхода дальше для разгона</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Отменить: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Повторить: %1</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторить</translation>
+    </message>
+    <message>
+        <source>apply the measured delay</source>
+        <translation>применить измеренную задержку</translation>
+    </message>
+    <message>
+        <source>Cycle</source>
+        <translation>Цикл</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>Калибровка</translation>
+    </message>
+    <message>
+        <source>Latency</source>
+        <translation>Задержка</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::ParameterPanel</name>
+    <message>
+        <source>Acceleration model</source>
+        <translation>Модель разгона</translation>
+    </message>
+    <message>
+        <source>Strategy</source>
+        <translation>Стратегия</translation>
+    </message>
+    <message>
+        <source>Feature</source>
+        <translation>Элемент</translation>
+    </message>
+    <message>
+        <source>Latched (hardware-captured) input</source>
+        <translation>Вход с защёлкой (аппаратной)</translation>
+    </message>
+    <message>
+        <source>How the control accelerates: a time constant (a = v/T, common on many controls), a constant acceleration, or a jerk-limited S-curve. Sets every move time and the braking distance after the trigger.</source>
+        <translation>Как разгоняется ЧПУ: с постоянной времени (a = v/T, распространено), с постоянным ускорением или по S-кривой с ограничением рывка. Определяет время каждого перемещения и тормозной путь после срабатывания.</translation>
+    </message>
+    <message>
+        <source>Single-touch measures at the probing feed. Two-touch finds the surface fast, backs off, and measures with a slow second touch.</source>
+        <translation>Однократное касание измеряет на подаче измерения. Двукратное быстро находит поверхность, отводится и измеряет медленным вторым касанием.</translation>
+    </message>
+    <message>
+        <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four, with positioning moves at the rapid feed between them.</source>
+        <translation>Плоскости нужно одно касание, стенке или пазу — два противоположных, отверстию или бобышке — четыре, с позиционированием на ускоренной подаче между ними.</translation>
+    </message>
+    <message>
+        <source>The control latches (or timestamps) the position in hardware at the trigger: the scan-period wait leaves the measured value, but not the travel - the machine still stops late.</source>
+        <translation>ЧПУ аппаратно защёлкивает (или отмечает временем) положение в момент срабатывания: ожидание опроса уходит из измеренного значения, но не из пути — станок всё равно останавливается поздно.</translation>
+    </message>
+    <message>
+        <source>Typical values: replace them with your measured ones.</source>
+        <translation>Типовые значения: замените их измеренными.</translation>
+    </message>
+    <message>
+        <source>The defaults and the presets are typical values for a machining centre and its probe. Replace them with the ones measured on your machine.</source>
+        <translation>Значения по умолчанию и предустановки — типовые для обрабатывающего центра и его датчика. Замените их измеренными на вашем станке.</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::QuantityEdit</name>
+    <message>
+        <source>Range: %1 to %2 %3</source>
+        <translation>Диапазон: от %1 до %2 %3</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::Readouts</name>
+    <message>
+        <source>Cycle time</source>
+        <translation>Время цикла</translation>
+    </message>
+    <message>
+        <source>Overtravel</source>
+        <translation>Перебег</translation>
+    </message>
+    <message>
+        <source>Trigger speed</source>
+        <translation>Скорость срабатывания</translation>
+    </message>
+    <message>
+        <source>Uncertainty (k = 2)</source>
+        <translation>Неопределённость (k = 2)</translation>
+    </message>
+    <message>
+        <source>Recommended backoff</source>
+        <translation>Рекомендуемый отвод</translation>
+    </message>
+    <message>
+        <source>Knee of the curve</source>
+        <translation>Точка перегиба</translation>
+    </message>
+    <message>
+        <source>Total time of the probing cycle, all touches and moves.</source>
+        <translation>Полное время цикла измерения со всеми касаниями и перемещениями.</translation>
+    </message>
+    <message>
+        <source>Worst distance beyond the surface where the axis stops: pretravel + trigger speed × (interface + controller + full scan period) + braking distance.</source>
+        <translation>Наибольшее расстояние за поверхностью, где останавливается ось: предход + скорость срабатывания × (интерфейс + ЧПУ + полный период опроса) + тормозной путь.</translation>
+    </message>
+    <message>
+        <source>Speed when the measuring touch triggers; lower than programmed if the touch happens while accelerating.</source>
+        <translation>Скорость при срабатывании измерительного касания; ниже запрограммированной, если касание происходит во время разгона.</translation>
+    </message>
+    <message>
+        <source>Expanded uncertainty of the measuring touch: the scan-period range combined with the probe&apos;s repeatability.</source>
+        <translation>Расширенная неопределённость измерительного касания: диапазон периода опроса вместе с повторяемостью датчика.</translation>
+    </message>
+    <message>
+        <source>Two-touch: the first touch&apos;s overtravel plus the reseat distance. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
+        <translation>Двукратное касание: перебег первого касания плюс путь возврата в исходное. Меньше — датчик может не вернуться; больше — лишний путь проходится на медленной подаче.</translation>
+    </message>
+    <message>
+        <source>The lowest probing feed whose cycle time is within 1 % of the best: faster buys almost no time.</source>
+        <translation>Наименьшая подача измерения, время цикла на которой не более чем на 1 % хуже лучшего: быстрее почти не выигрывает времени.</translation>
+    </message>
+    <message>
+        <source>invalid scenario</source>
+        <translation>сценарий недопустим</translation>
+    </message>
+    <message>
+        <source>programmed %1</source>
+        <translation>задано %1</translation>
+    </message>
+    <message>
+        <source>target %1</source>
+        <translation>цель %1</translation>
+    </message>
+    <message>
+        <source>scan range %1</source>
+        <translation>опрос: %1</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>задано %1</translation>
+    </message>
+    <message>
+        <source>for two-touch</source>
+        <translation>для двукратного касания</translation>
+    </message>
+    <message>
+        <source>cycle %1</source>
+        <translation>цикл %1</translation>
+    </message>
+    <message>
+        <source>Δ %1 vs baseline</source>
+        <translation>Δ %1 к базе</translation>
+    </message>
+    <message>
+        <source>%1 % of %2</source>
+        <translation>%1 % от %2</translation>
+    </message>
+    <message>
+        <source>as programmed</source>
+        <translation>как задано</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::WarningsPanel</name>
+    <message>
+        <source>No warnings: the cycle is within the probe&apos;s limits.</source>
+        <translation>Предупреждений нет: цикл в пределах возможностей датчика.</translation>
+    </message>
+    <message>
+        <source>Invalid scenario</source>
+        <translation>Недопустимый сценарий</translation>
+    </message>
+    <message>
+        <source>Set backoff to %1</source>
+        <translation>Отвод %1</translation>
+    </message>
+    <message>
+        <source>Drop feed to the knee, %1</source>
+        <translation>Подачу до перегиба, %1</translation>
+    </message>
+    <message>
+        <source>Start %1 out</source>
+        <translation>Начало за %1</translation>
+    </message>
+</context>
+</TS>

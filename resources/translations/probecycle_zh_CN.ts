@@ -1,0 +1,1618 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>Parameter</name>
+    <message>
+        <source>Time constant</source>
+        <translation>时间常数</translation>
+    </message>
+    <message>
+        <source>Acceleration time constant T: the control reaches any programmed feed in T (a = v/T). Sets the distance to reach the feed (v*T/2) and the braking distance after the trigger, and so overtravel and cycle time. Used by the time-constant model.</source>
+        <translation>加速时间常数 T：数控系统在 T 时间内达到任何编程进给率 (a = v/T)。它决定达到进给率所需的距离 (v*T/2) 和触发后的制动距离，从而影响过行程和循环时间。用于时间常数模型。</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>Max. acceleration</source>
+        <translation>最大加速度</translation>
+    </message>
+    <message>
+        <source>Maximum axis acceleration, used by the constant-acceleration and jerk-limited models for every move and for braking after the trigger.</source>
+        <translation>轴的最大加速度，恒加速度模型和限加加速度模型用于每次移动及触发后的制动。</translation>
+    </message>
+    <message>
+        <source>mm/s²</source>
+        <translation>mm/s²</translation>
+    </message>
+    <message>
+        <source>Max. jerk</source>
+        <translation>最大加加速度</translation>
+    </message>
+    <message>
+        <source>Maximum axis jerk, used by the jerk-limited (S-curve) model: lower jerk lengthens every acceleration and the braking after the trigger.</source>
+        <translation>轴的最大加加速度，用于限加加速度（S 曲线）模型：加加速度越小，每次加速和触发后的制动越长。</translation>
+    </message>
+    <message>
+        <source>mm/s³</source>
+        <translation>mm/s³</translation>
+    </message>
+    <message>
+        <source>Rapid feed</source>
+        <translation>快移速度</translation>
+    </message>
+    <message>
+        <source>Rapid feed of the positioning moves between the touches of a web, pocket, bore or boss.</source>
+        <translation>凸台、槽、孔或圆柱各次触测之间定位移动的快移速度。</translation>
+    </message>
+    <message>
+        <source>mm/min</source>
+        <translation>mm/min</translation>
+    </message>
+    <message>
+        <source>Scan period</source>
+        <translation>扫描周期</translation>
+    </message>
+    <message>
+        <source>Period at which the control scans the skip input (about 4 ms on a standard input, 4 µs on a high-speed input). The wait for the next scan is the single-touch uncertainty (trigger speed × scan period) and, worst case, adds a full period of travel to the overtravel.</source>
+        <translation>数控系统扫描跳跃输入的周期（标准输入约 4 ms，高速输入约 4 µs）。等待下一次扫描即一次触发的测量不确定度（触发速度 × 扫描周期），最坏情况下还会使过行程增加一个完整周期的行程。</translation>
+    </message>
+    <message>
+        <source>Machine response time</source>
+        <translation>机床响应时间</translation>
+    </message>
+    <message>
+        <source>Fixed latency of the control after it has seen the input. Removed by calibration, but the axis keeps moving: adds trigger speed × latency to the overtravel.</source>
+        <translation>数控系统识别输入后的固定延迟。标定可消除其对测量值的影响，但轴仍在移动：过行程增加 触发速度 × 延迟。</translation>
+    </message>
+    <message>
+        <source>Pretravel</source>
+        <translation>预行程</translation>
+    </message>
+    <message>
+        <source>Mechanical pretravel from first contact to the trigger threshold (typically 1-50 µm). Independent of speed and removed by calibration; adds to the overtravel and takes pretravel / speed.</source>
+        <translation>从首次接触到触发阈值的机械预行程（通常 1-50 µm）。与速度无关，可由标定消除；它计入过行程，耗时为 预行程 / 速度。</translation>
+    </message>
+    <message>
+        <source>µm</source>
+        <translation>µm</translation>
+    </message>
+    <message>
+        <source>Interface response time</source>
+        <translation>接口响应时间</translation>
+    </message>
+    <message>
+        <source>Time the probe interface (receiver) needs to pass the trigger to the control. Constant, so calibration removes it from the measured value, but it adds trigger speed × delay to the overtravel.</source>
+        <translation>测头接口（接收器）将触发信号传给数控系统所需的时间。它是常数，因此标定可将其从测量值中消除，但过行程会增加 触发速度 × 延迟。</translation>
+    </message>
+    <message>
+        <source>Repeatability (2σ)</source>
+        <translation>重复性 (2σ)</translation>
+    </message>
+    <message>
+        <source>Unidirectional repeatability of the probe, 2 sigma. Combined with the scan-period range into the expanded (k = 2) uncertainty.</source>
+        <translation>测头的单向重复性 (2σ)。与扫描周期范围合成为扩展不确定度 (k = 2)。</translation>
+    </message>
+    <message>
+        <source>Overtravel limit</source>
+        <translation>过行程极限</translation>
+    </message>
+    <message>
+        <source>Stylus deflection range of the probe in the probing direction. The axis must stop within it or the probe or stylus is damaged; short styli along Z and small bores are the critical cases.</source>
+        <translation>测头在测量方向上的测针偏摆范围。轴必须在此范围内停止，否则会损坏测头或测针；沿 Z 方向的短测针和小孔是最危险的情况。</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Reseat distance</source>
+        <translation>复位距离</translation>
+    </message>
+    <message>
+        <source>Distance the probe needs to reseat after a trigger. The two-touch backoff must clear the first touch&apos;s overtravel plus this.</source>
+        <translation>触发后测头复位所需的距离。二次触发的回退距离必须大于第一次触发的过行程加上该距离。</translation>
+    </message>
+    <message>
+        <source>Calibration feed</source>
+        <translation>标定进给率</translation>
+    </message>
+    <message>
+        <source>Feed at which the probe was calibrated. Measuring at another feed shifts the delay travel and so the measured value; 0 means calibrated at the measuring feed.</source>
+        <translation>测头标定时的进给率。以其他进给率测量会改变延迟行程，从而改变测量值；0 表示在测量进给率下标定。</translation>
+    </message>
+    <message>
+        <source>measuring feed</source>
+        <translation>测量进给率</translation>
+    </message>
+    <message>
+        <source>Feature size</source>
+        <translation>特征尺寸</translation>
+    </message>
+    <message>
+        <source>Distance between opposite stylus-centre contact points: web or pocket width, bore or boss diameter less the ball diameter. Sets the positioning moves between touches; unused for a surface.</source>
+        <translation>相对两个测针球心接触点之间的距离：凸台或槽的宽度、孔或圆柱直径减去测球直径。它决定各次触测之间的定位移动；测量平面时不使用。</translation>
+    </message>
+    <message>
+        <source>Approach distance</source>
+        <translation>接近距离</translation>
+    </message>
+    <message>
+        <source>Start distance in front of the nominal surface. Must cover the part&apos;s position uncertainty, and should cover the distance needed to reach the feed so the touch happens at full speed. Approached at the probing feed, returned at the return feed.</source>
+        <translation>起始点到名义表面的距离。必须覆盖工件位置的不确定性，并应覆盖达到进给率所需的距离，使触测以全速发生。以测量进给率接近，以返回进给率返回。</translation>
+    </message>
+    <message>
+        <source>Probing feedrate</source>
+        <translation>测量进给率</translation>
+    </message>
+    <message>
+        <source>Feed of the (first) touch; single-touch measures at it. A higher feed shortens the approach but lengthens the braking, the overtravel and the return, and raises the single-touch uncertainty.</source>
+        <translation>（第一次）触测的进给率；一次触发在此进给率下测量。进给率越高，接近越短，但制动、过行程和返回越长，一次触发的不确定度也越大。</translation>
+    </message>
+    <message>
+        <source>Measuring feedrate</source>
+        <translation>第二次触测进给率</translation>
+    </message>
+    <message>
+        <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the backoff is travelled at it.</source>
+        <translation>二次触发中第二次（测量）触测的进给率（通常 30 mm/min）。决定二次触发的不确定度；回退距离以此进给率重新接近。</translation>
+    </message>
+    <message>
+        <source>Backoff</source>
+        <translation>回退距离</translation>
+    </message>
+    <message>
+        <source>Two-touch: distance the probe backs off from where the first touch stopped. Must be at least the first touch&apos;s overtravel plus the reseat distance; any more is approached again at the slow measuring feed and wasted.</source>
+        <translation>二次触发：测头从第一次触测停止处回退的距离。至少应为第一次触测的过行程加上复位距离；多出的部分要以慢速测量进给率重新接近，白白浪费时间。</translation>
+    </message>
+    <message>
+        <source>Return feedrate</source>
+        <translation>返回进给率</translation>
+    </message>
+    <message>
+        <source>Feed of the backoff and of the return to the start position (start distance plus overtravel).</source>
+        <translation>回退以及返回起始点（起始距离加过行程）的进给率。</translation>
+    </message>
+    <message>
+        <source>Target uncertainty</source>
+        <translation>目标不确定度</translation>
+    </message>
+    <message>
+        <source>Target for the expanded (k = 2) uncertainty of the measuring touch; a warning appears above it. 0 means no target.</source>
+        <translation>测量触测扩展不确定度 (k = 2) 的目标值；超过时给出警告。0 表示无目标。</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Single-touch</source>
+        <translation>一次触发</translation>
+    </message>
+    <message>
+        <source>Two-touch</source>
+        <translation>二次触发</translation>
+    </message>
+    <message>
+        <source>Surface (1 touch)</source>
+        <translation>平面（1 次触测）</translation>
+    </message>
+    <message>
+        <source>Web (2 touches)</source>
+        <translation>凸台（2 次触测）</translation>
+    </message>
+    <message>
+        <source>Pocket (2 touches)</source>
+        <translation>槽（2 次触测）</translation>
+    </message>
+    <message>
+        <source>Bore (4 touches)</source>
+        <translation>孔（4 次触测）</translation>
+    </message>
+    <message>
+        <source>Boss (4 touches)</source>
+        <translation>圆柱（4 次触测）</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>机床</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>测头</translation>
+    </message>
+    <message>
+        <source>Cycle</source>
+        <translation>循环</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <source>Constant accel.</source>
+        <translation>恒加速度</translation>
+    </message>
+    <message>
+        <source>S-curve (jerk)</source>
+        <translation>S 曲线（加加速度）</translation>
+    </message>
+    <message>
+        <source>µs</source>
+        <translation>µs</translation>
+    </message>
+    <message>
+        <source>Time constant (T)</source>
+        <translation>时间常数 (T)</translation>
+    </message>
+</context>
+<context>
+    <name>Phase</name>
+    <message>
+        <source>Approach</source>
+        <translation>接近</translation>
+    </message>
+    <message>
+        <source>Pretravel</source>
+        <translation>预行程</translation>
+    </message>
+    <message>
+        <source>Deceleration</source>
+        <translation>减速</translation>
+    </message>
+    <message>
+        <source>Backoff</source>
+        <translation>回退距离</translation>
+    </message>
+    <message>
+        <source>2nd approach</source>
+        <translation>第二次接近</translation>
+    </message>
+    <message>
+        <source>2nd pretravel</source>
+        <translation>第二次预行程</translation>
+    </message>
+    <message>
+        <source>2nd deceleration</source>
+        <translation>第二次减速</translation>
+    </message>
+    <message>
+        <source>Return</source>
+        <translation>返回</translation>
+    </message>
+    <message>
+        <source>Positioning</source>
+        <translation>定位</translation>
+    </message>
+    <message>
+        <source>Interface delay</source>
+        <translation>接口延迟</translation>
+    </message>
+    <message>
+        <source>Controller delay</source>
+        <translation>控制器延迟</translation>
+    </message>
+    <message>
+        <source>2nd interface delay</source>
+        <translation>第二次接口延迟</translation>
+    </message>
+    <message>
+        <source>2nd controller delay</source>
+        <translation>第二次控制器延迟</translation>
+    </message>
+</context>
+<context>
+    <name>Warning</name>
+    <message>
+        <source>Overtravel near or over the limit</source>
+        <translation>过行程接近或超过极限</translation>
+    </message>
+    <message>
+        <source>Backoff too small</source>
+        <translation>回退距离过小</translation>
+    </message>
+    <message>
+        <source>Backoff longer than needed</source>
+        <translation>回退距离超出需要</translation>
+    </message>
+    <message>
+        <source>Touch while accelerating</source>
+        <translation>加速过程中触测</translation>
+    </message>
+    <message>
+        <source>Feedrate beyond the knee</source>
+        <translation>进给率超过拐点</translation>
+    </message>
+    <message>
+        <source>Uncertainty over the target</source>
+        <translation>不确定度超过目标</translation>
+    </message>
+    <message>
+        <source>Calibration feed differs</source>
+        <translation>标定进给率不同</translation>
+    </message>
+    <message>
+        <source>Overtravel %1 is %2 % of the probe&apos;s %3 limit: the probe or stylus will be damaged; lower the feed or the delays</source>
+        <translation>过行程 %1 为测头极限 %3 的 %2 %：测头或测针将被损坏；请降低进给率或延迟</translation>
+    </message>
+    <message>
+        <source>Overtravel %1 is %2 % of the probe&apos;s %3 limit: little margin left for the stylus</source>
+        <translation>过行程 %1 为测头极限 %3 的 %2 %：测针余量很小</translation>
+    </message>
+    <message>
+        <source>Backoff %1 is less than the first touch&apos;s overtravel plus reseat, %2: the probe may not reseat before the second touch</source>
+        <translation>回退距离 %1 小于第一次触测的过行程加复位距离 %2：第二次触测前测头可能尚未复位</translation>
+    </message>
+    <message>
+        <source>Backoff %1 is more than the recommended %2 and wastes %3 per cycle</source>
+        <translation>回退距离 %1 大于推荐值 %2，每个循环浪费 %3</translation>
+    </message>
+    <message>
+        <source>Second touch starts closer than the distance needed to reach its feed: it triggers at %1 instead of %2, an error of %3 against a calibration at full feed</source>
+        <translation>第二次触测的起点比达到其进给率所需的距离更近：触发速度为 %1 而非 %2，相对于全速标定误差为 %3</translation>
+    </message>
+    <message>
+        <source>First touch starts closer than the distance needed to reach its feed: it triggers at %1 instead of %2, an error of %3 against a calibration at full feed</source>
+        <translation>第一次触测的起点比达到其进给率所需的距离更近：触发速度为 %1 而非 %2，相对于全速标定误差为 %3</translation>
+    </message>
+    <message>
+        <source>Probing feed %1 is beyond the knee at %2 and no faster: the cycle takes %3 longer, with more overtravel and uncertainty</source>
+        <translation>测量进给率 %1 超过拐点 %2 且并不更快：循环多用 %3，过行程和不确定度也更大</translation>
+    </message>
+    <message>
+        <source>Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 (under 1 %) while overtravel and uncertainty grow</source>
+        <translation>测量进给率 %1 超过拐点 %2：额外的进给率只节省 %3（不到 1 %），而过行程和不确定度都在增大</translation>
+    </message>
+    <message>
+        <source>Uncertainty %1 exceeds the target %2</source>
+        <translation>不确定度 %1 超过目标 %2</translation>
+    </message>
+    <message>
+        <source>Measuring at %1 but calibrated at %2: the delay travel shifts the measured value by %3; calibrate at the measuring feed</source>
+        <translation>以 %1 测量但在 %2 下标定：延迟行程使测量值偏移 %3；请在测量进给率下标定</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::CalibrationTab</name>
+    <message>
+        <source>Ring gauge: touches at 0° and 180°</source>
+        <translation>环规：0° 和 180° 下的触测</translation>
+    </message>
+    <message>
+        <source>Paste the trigger positions the control recorded, or import a CSV file. Columns &lt;code&gt;orientation_deg,x_mm,y_mm&lt;/code&gt;; spindle oriented at 0° and at 180°, 3 or more points each (typically X+, X−, Y+, Y−).</source>
+        <translation>粘贴数控系统记录的触发位置，或导入 CSV 文件。列为 &lt;code&gt;orientation_deg,x_mm,y_mm&lt;/code&gt;；主轴定向于 0° 和 180°，每个方向 3 个或更多点（通常为 X+、X−、Y+、Y−）。</translation>
+    </message>
+    <message>
+        <source>(example)</source>
+        <translation>（示例）</translation>
+    </message>
+    <message>
+        <source>Gauge diameter</source>
+        <translation>环规直径</translation>
+    </message>
+    <message>
+        <source>The calibrated diameter of the ring gauge, from its certificate.</source>
+        <translation>环规的标定直径，取自其证书。</translation>
+    </message>
+    <message>
+        <source>Runout limit</source>
+        <translation>跳动极限</translation>
+    </message>
+    <message>
+        <source>Warn when the stylus runout (eccentricity) is larger.</source>
+        <translation>测针跳动（偏心）大于此值时警告。</translation>
+    </message>
+    <message>
+        <source>Residual limit</source>
+        <translation>残差极限</translation>
+    </message>
+    <message>
+        <source>Warn when a point lies further than this off its fitted circle: dirt, a bad touch or a loose gauge.</source>
+        <translation>当某点偏离其拟合圆超过此值时警告：污物、触测不良或环规松动。</translation>
+    </message>
+    <message>
+        <source>Import CSV…</source>
+        <translation>导入 CSV…</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <source>Length from a surface of known Z</source>
+        <translation>由已知 Z 的表面确定长度</translation>
+    </message>
+    <message>
+        <source>Surface Z</source>
+        <translation>表面 Z</translation>
+    </message>
+    <message>
+        <source>The known Z of the gauge top, sphere or block, set by a reference tool.</source>
+        <translation>由基准刀具确定的环规顶面、标准球或量块的已知 Z 值。</translation>
+    </message>
+    <message>
+        <source>Trigger Z</source>
+        <translation>触发 Z</translation>
+    </message>
+    <message>
+        <source>The Z the control recorded at the touch; several touches separated by spaces or semicolons.</source>
+        <translation>数控系统在触测时记录的 Z；多次触测用空格或分号分隔。</translation>
+    </message>
+    <message>
+        <source>e.g. 12.3456; 12.3459</source>
+        <translation>例如 12.3456; 12.3459</translation>
+    </message>
+    <message>
+        <source>Active length</source>
+        <translation>当前长度补偿</translation>
+    </message>
+    <message>
+        <source>The tool length offset active while probing (0 when none).</source>
+        <translation>测量时生效的刀具长度补偿（无则为 0）。</translation>
+    </message>
+    <message>
+        <source>Nominal length</source>
+        <translation>名义长度</translation>
+    </message>
+    <message>
+        <source>The probe&apos;s nominal length, to express the result as wear (0 = none).</source>
+        <translation>测头的名义长度，用于将结果表示为磨损值（0 = 不用）。</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Radial deviations:</source>
+        <translation>径向偏差：</translation>
+    </message>
+    <message>
+        <source>Magnified, automatic</source>
+        <translation>自动放大</translation>
+    </message>
+    <message>
+        <source>True scale</source>
+        <translation>实际比例</translation>
+    </message>
+    <message>
+        <source>× %1</source>
+        <extracomment>the magnification of the radial deviations in the ring plot</extracomment>
+        <translation>× %1</translation>
+    </message>
+    <message>
+        <source>X [%1]</source>
+        <translation>X [%1]</translation>
+    </message>
+    <message>
+        <source>Y [%1]</source>
+        <translation>Y [%1]</translation>
+    </message>
+    <message>
+        <source>Circle at 0°</source>
+        <translation>0° 拟合圆</translation>
+    </message>
+    <message>
+        <source>Circle at 180°</source>
+        <translation>180° 拟合圆</translation>
+    </message>
+    <message>
+        <source>Gauge centre</source>
+        <translation>环规中心</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>Stylus runout</source>
+        <translation>测针跳动</translation>
+    </message>
+    <message>
+        <source>Effective ball radius</source>
+        <translation>有效测球半径</translation>
+    </message>
+    <message>
+        <source>Radius by direction</source>
+        <translation>各方向半径</translation>
+    </message>
+    <message>
+        <source>Largest residual</source>
+        <translation>最大残差</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>点数</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>No warnings.</source>
+        <translation>无警告。</translation>
+    </message>
+    <message>
+        <source>Export CSV report…</source>
+        <translation>导出 CSV 报告…</translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>The result shown is still that of the previous fit.</source>
+        <translation>显示的仍是上一次拟合的结果。</translation>
+    </message>
+    <message>
+        <source>X %1</source>
+        <translation>X %1</translation>
+    </message>
+    <message>
+        <source>Y %1</source>
+        <translation>Y %1</translation>
+    </message>
+    <message>
+        <source>unknown: one orientation only</source>
+        <translation>未知：只有一个方向</translation>
+    </message>
+    <message>
+        <source>centre %1, %2; radius %3</source>
+        <translation>中心 %1, %2；半径 %3</translation>
+    </message>
+    <message>
+        <source>no points</source>
+        <translation>无点</translation>
+    </message>
+    <message>
+        <source>%1 at 0°, %2 at 180°; gauge %3</source>
+        <translation>0° 下 %1 点，180° 下 %2 点；环规 %3</translation>
+    </message>
+    <message>
+        <source>Radial deviations magnified × %1</source>
+        <translation>径向偏差放大 × %1</translation>
+    </message>
+    <message>
+        <source>No fit yet</source>
+        <translation>尚未拟合</translation>
+    </message>
+    <message>
+        <source>Trigger Z: “%1” is not a number.</source>
+        <translation>触发 Z：“%1”不是数字。</translation>
+    </message>
+    <message>
+        <source>Effective length: &lt;b&gt;%1&lt;/b&gt;</source>
+        <translation>有效长度：&lt;b&gt;%1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Wear: %1</source>
+        <translation>磨损：%1</translation>
+    </message>
+    <message>
+        <source>Enter the trigger Z of one or more touches.</source>
+        <translation>请输入一次或多次触测的触发 Z。</translation>
+    </message>
+    <message>
+        <source>Nothing to export: fit the ring points or enter a length first.</source>
+        <translation>没有可导出的内容：请先拟合环规点或输入长度。</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <source>Import ring gauge points</source>
+        <translation>导入环规测点</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>CSV 文件 (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Export calibration report</source>
+        <translation>导出标定报告</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Spindle at 0°</source>
+        <translation>主轴 0°</translation>
+    </message>
+    <message>
+        <source>Spindle at 180°</source>
+        <translation>主轴 180°</translation>
+    </message>
+    <message>
+        <source>%1 in all</source>
+        <translation>共 %1</translation>
+    </message>
+    <message>
+        <source>Touches: %1, spread %2</source>
+        <translation>触测：%1 次，分散 %2</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::CycleCharts</name>
+    <message>
+        <source>Probing feedrate [%1]</source>
+        <translation>测量进给率 [%1]</translation>
+    </message>
+    <message>
+        <source>Cycle time vs probing feedrate</source>
+        <translation>循环时间与测量进给率</translation>
+    </message>
+    <message>
+        <source>Cycle time [%1]</source>
+        <translation>循环时间 [%1]</translation>
+    </message>
+    <message>
+        <source>Single-touch</source>
+        <translation>一次触发</translation>
+    </message>
+    <message>
+        <source>Knee</source>
+        <translation>拐点</translation>
+    </message>
+    <message>
+        <source>Time [%1]</source>
+        <translation>时间 [%1]</translation>
+    </message>
+    <message>
+        <source>Overtravel and uncertainty vs feedrate</source>
+        <translation>过行程和不确定度与进给率</translation>
+    </message>
+    <message>
+        <source>Overtravel [%1]</source>
+        <translation>过行程 [%1]</translation>
+    </message>
+    <message>
+        <source>Uncertainty, k = 2 [%1]</source>
+        <translation>不确定度，k = 2 [%1]</translation>
+    </message>
+    <message>
+        <source>Overtravel</source>
+        <translation>过行程</translation>
+    </message>
+    <message>
+        <source>Limit</source>
+        <translation>极限</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>目标</translation>
+    </message>
+    <message>
+        <source>Position and speed through the cycle</source>
+        <translation>循环中的位置和速度</translation>
+    </message>
+    <message>
+        <source>Position [%1]</source>
+        <translation>位置 [%1]</translation>
+    </message>
+    <message>
+        <source>Speed [%1]</source>
+        <translation>速度 [%1]</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Surface</source>
+        <translation>表面</translation>
+    </message>
+    <message>
+        <source>Baseline (dashed)</source>
+        <translation>基准（虚线）</translation>
+    </message>
+    <message>
+        <source>Phases: total %1</source>
+        <translation>各阶段：共 %1</translation>
+    </message>
+    <message>
+        <source>Phases</source>
+        <translation>各阶段</translation>
+    </message>
+    <message>
+        <source>Uncertainty</source>
+        <translation>不确定度</translation>
+    </message>
+    <message>
+        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest feed within 1 % of the best time.</source>
+        <translation>整个循环的循环时间与测量进给率的关系，一次触发和二次触发，其余参数不变。竖线：当前进给率。圆点：拐点，即循环时间在最佳值 1 % 以内的最低进给率。</translation>
+    </message>
+    <message>
+        <source>The phases of the current cycle in time order, each row with its total time over all touches.</source>
+        <translation>当前循环按时间顺序排列的各阶段，每行给出其在所有触测中的总时间。</translation>
+    </message>
+    <message>
+        <source>Red: overtravel of a touch at each feed against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted). Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
+        <translation>红色：各进给率下一次触测的过行程与测头极限（虚线）的比较；阴影区的进给率会超出极限。蓝色（右轴）：在各进给率下测量的一次触测的不确定度 (k = 2) 与目标（点线）的比较。竖线：测量进给率，以及二次触发的第二次触测进给率（蓝色点线）。</translation>
+    </message>
+    <message>
+        <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle.</source>
+        <translation>每次触测沿测量方向的位置（虚线为表面）以及整个循环中的轨迹速度。</translation>
+    </message>
+    <message>
+        <source>Two-touch, best backoff</source>
+        <translation>二次触发，最佳回退距离</translation>
+    </message>
+    <message>
+        <source>This cycle</source>
+        <translation>当前循环</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::Lab</name>
+    <message>
+        <source>Points on one side</source>
+        <translation>测点集中在一侧</translation>
+    </message>
+    <message>
+        <source>Large stylus runout</source>
+        <translation>测针跳动过大</translation>
+    </message>
+    <message>
+        <source>Point off the circle</source>
+        <translation>测点偏离圆</translation>
+    </message>
+    <message>
+        <source>One orientation only: no runout</source>
+        <translation>只有一个方向：无法求跳动</translation>
+    </message>
+    <message>
+        <source>Three points: exact fit</source>
+        <translation>三点：精确拟合</translation>
+    </message>
+    <message>
+        <source>Length far from the nominal</source>
+        <translation>长度与名义值相差过大</translation>
+    </message>
+    <message>
+        <source>Fewer than 3 feeds</source>
+        <translation>少于 3 个进给率</translation>
+    </message>
+    <message>
+        <source>Unstable delay</source>
+        <translation>延迟不稳定</translation>
+    </message>
+    <message>
+        <source>Residuals curve: the delay changes</source>
+        <translation>残差呈曲线：延迟在变化</translation>
+    </message>
+    <message>
+        <source>Negative delay</source>
+        <translation>负延迟</translation>
+    </message>
+    <message>
+        <source>One touch at a feed</source>
+        <translation>某进给率只有一次触测</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
+        <translation>%1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::LatencyTab</name>
+    <message>
+        <source>Uncompensated</source>
+        <translation>未补偿</translation>
+    </message>
+    <message>
+        <source>Naive v·τ</source>
+        <translation>简单 v·τ</translation>
+    </message>
+    <message>
+        <source>Cycle lag (real increments)</source>
+        <translation>周期滞后（实际增量）</translation>
+    </message>
+    <message>
+        <source>Timestamp interpolation</source>
+        <translation>时间戳插值</translation>
+    </message>
+    <message>
+        <source>Real increments</source>
+        <translation>实际增量</translation>
+    </message>
+    <message>
+        <source>Timestamp</source>
+        <translation>时间戳</translation>
+    </message>
+    <message>
+        <source>Delay from touches at several feeds (delay-stability test)</source>
+        <translation>由多个进给率下的触测求延迟（延迟稳定性测试）</translation>
+    </message>
+    <message>
+        <source>Touch the same surface several times at each of several feeds, per axis and direction, starting far enough out to be at full speed. Paste or import the positions: &lt;code&gt;axis,direction,feed_mm_min,measured_mm&lt;/code&gt; (direction +1 or −1, of travel).</source>
+        <translation>按轴和方向，在多个进给率下对同一表面各触测数次，起点要足够远以保证全速。粘贴或导入位置：&lt;code&gt;axis,direction,feed_mm_min,measured_mm&lt;/code&gt;（direction 为运动方向 +1 或 −1）。</translation>
+    </message>
+    <message>
+        <source>(example)</source>
+        <translation>（示例）</translation>
+    </message>
+    <message>
+        <source>Interpolation period</source>
+        <translation>插补周期</translation>
+    </message>
+    <message>
+        <source>The control&apos;s interpolation cycle, to express the delay in cycles (optional).</source>
+        <translation>数控系统的插补周期，用于以周期数表示延迟（可选）。</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Import CSV…</source>
+        <translation>导入 CSV…</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <source>Feed [%1]</source>
+        <translation>进给率 [%1]</translation>
+    </message>
+    <message>
+        <source>Group / feed</source>
+        <translation>组 / 进给率</translation>
+    </message>
+    <message>
+        <source>Delay τ</source>
+        <translation>延迟 τ</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>周期数</translation>
+    </message>
+    <message>
+        <source>p₀ / mean</source>
+        <translation>p₀ / 平均</translation>
+    </message>
+    <message>
+        <source>2σ / range</source>
+        <translation>2σ / 极差</translation>
+    </message>
+    <message>
+        <source>n</source>
+        <translation>n</translation>
+    </message>
+    <message>
+        <source>The total delay: the slope of the line over the feeds.</source>
+        <translation>总延迟：各进给率拟合直线的斜率。</translation>
+    </message>
+    <message>
+        <source>The delay in interpolation cycles (with the period given).</source>
+        <translation>以插补周期数表示的延迟（需给定周期）。</translation>
+    </message>
+    <message>
+        <source>Group: the zero-speed position p₀. Feed: the mean deviation from p₀.</source>
+        <translation>组：零速位置 p₀。进给率：相对 p₀ 的平均偏差。</translation>
+    </message>
+    <message>
+        <source>Group: twice the standard deviation of the residuals of the line. Feed: the range (max − min) of its touches, the delay&apos;s stability.</source>
+        <translation>组：直线残差标准差的两倍。进给率：该进给率各次触测的极差（最大 − 最小），即延迟的稳定性。</translation>
+    </message>
+    <message>
+        <source>Touches</source>
+        <translation>触测</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>No warnings.</source>
+        <translation>无警告。</translation>
+    </message>
+    <message>
+        <source>Delay to apply:</source>
+        <translation>要应用的延迟：</translation>
+    </message>
+    <message>
+        <source>Apply to scenario</source>
+        <translation>应用到场景</translation>
+    </message>
+    <message>
+        <source>Sets machine.controller_latency_s to the fitted delay less the probe&apos;s interface delay and half the scan period (none with a latched input).</source>
+        <translation>将 machine.controller_latency_s 设为拟合的延迟减去测头接口延迟和半个扫描周期（锁存输入时不减扫描周期）。</translation>
+    </message>
+    <message>
+        <source>Compensation of the trigger position</source>
+        <translation>触发位置的补偿</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>进给率</translation>
+    </message>
+    <message>
+        <source>The programmed probing feed.</source>
+        <translation>编程的测量进给率。</translation>
+    </message>
+    <message>
+        <source>The control&apos;s interpolation cycle.</source>
+        <translation>数控系统的插补周期。</translation>
+    </message>
+    <message>
+        <source>Lag</source>
+        <translation>滞后</translation>
+    </message>
+    <message>
+        <source>Cycles between the end of the trigger&apos;s cycle and the recorded position; the delay-stability test above measures it.</source>
+        <translation>从触发所在周期结束到记录位置之间的周期数；由上面的延迟稳定性测试测得。</translation>
+    </message>
+    <message>
+        <source> cycles</source>
+        <translation> 个周期</translation>
+    </message>
+    <message>
+        <source>Touch</source>
+        <translation>触测</translation>
+    </message>
+    <message>
+        <source>At constant speed, or while the axis is braking.</source>
+        <translation>匀速时，或轴正在制动时。</translation>
+    </message>
+    <message>
+        <source>At constant speed</source>
+        <translation>匀速</translation>
+    </message>
+    <message>
+        <source>While braking</source>
+        <translation>制动中</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger</source>
+        <translation>触发时速度</translation>
+    </message>
+    <message>
+        <source>While braking: the speed at the trigger, in % of the feed.</source>
+        <translation>制动中：触发时的速度，以进给率的 % 表示。</translation>
+    </message>
+    <message>
+        <source>Take period and lag from the fit</source>
+        <translation>采用拟合得到的周期和滞后</translation>
+    </message>
+    <message>
+        <source>Error of the corrected position while braking</source>
+        <translation>制动中修正后位置的误差</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger [% of the feed]</source>
+        <translation>触发时速度 [进给率的 %]</translation>
+    </message>
+    <message>
+        <source>Error [%1]</source>
+        <translation>误差 [%1]</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <source>Position [%1]</source>
+        <translation>位置 [%1]</translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>The result shown is still that of the previous fit.</source>
+        <translation>显示的仍是上一次拟合的结果。</translation>
+    </message>
+    <message>
+        <source>Longest delay (safe side)</source>
+        <translation>最长延迟（安全侧）</translation>
+    </message>
+    <message>
+        <source>%1: τ = %2</source>
+        <translation>%1：τ = %2</translation>
+    </message>
+    <message>
+        <source>Import touches</source>
+        <translation>导入触测</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>CSV 文件 (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Fit the touches first.</source>
+        <translation>请先拟合触测。</translation>
+    </message>
+    <message>
+        <source>No scenario to apply the delay to.</source>
+        <translation>没有可应用延迟的场景。</translation>
+    </message>
+    <message>
+        <source>0 (latched input)</source>
+        <translation>0（锁存输入）</translation>
+    </message>
+    <message>
+        <source>Controller latency = %1 delay %2 − interface %3 − half scan %4 = &lt;b&gt;%5&lt;/b&gt; (now %6)</source>
+        <extracomment>%1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now</extracomment>
+        <translation>控制器延迟 = %1 延迟 %2 − 接口 %3 − 半个扫描周期 %4 = &lt;b&gt;%5&lt;/b&gt;（当前 %6）</translation>
+    </message>
+    <message>
+        <source>Measured minus zero-speed position, against feed</source>
+        <translation>测量值减零速位置，与进给率的关系</translation>
+    </message>
+    <message>
+        <source>Deviation [%1]</source>
+        <translation>偏差 [%1]</translation>
+    </message>
+    <message>
+        <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
+        <translation>机床动态取自场景。制动中，v·τ 假定整个延迟期间都保持进给率，因而过度修正；最近几个周期的实际增量则保持在一个周期的行程之内。</translation>
+    </message>
+    <message>
+        <source>Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ uses τ = %4.</source>
+        <extracomment>%1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses</extracomment>
+        <translation>以 %1 mm/s 触发，%2 个周期后以 %3 mm/s 记录；v·τ 使用 τ = %4。</translation>
+    </message>
+    <message>
+        <source>Counter roll-overs: %1.</source>
+        <translation>计数器溢出：%1 次。</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::MainWindow</name>
+    <message>
+        <source>Standard skip input (4 ms scan)</source>
+        <translation>标准跳跃输入（4 ms 扫描）</translation>
+    </message>
+    <message>
+        <source>A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms). Typical values: replace them with your machine&apos;s.</source>
+        <translation>每 4 ms 扫描一次、延迟 2 ms 的跳跃输入，机床采用时间常数加速 (T = 60 ms)。典型值：请替换为您机床的实测值。</translation>
+    </message>
+    <message>
+        <source>High-speed skip input (4 µs scan)</source>
+        <translation>高速跳跃输入（4 µs 扫描）</translation>
+    </message>
+    <message>
+        <source>A direct, high-speed skip input scanned every 4 µs with a 0.5 ms latency. Typical values: replace them with your machine&apos;s.</source>
+        <translation>每 4 µs 扫描一次、延迟 0.5 ms 的直接高速跳跃输入。典型值：请替换为您机床的实测值。</translation>
+    </message>
+    <message>
+        <source>Latched input (position captured in hardware)</source>
+        <translation>锁存输入（硬件捕获位置）</translation>
+    </message>
+    <message>
+        <source>The control latches the axis positions at the trigger: the scan wait leaves the measured value but not the travel. Typical values: replace them with your machine&apos;s.</source>
+        <translation>数控系统在触发时锁存各轴位置：扫描等待不再影响测量值，但仍影响行程。典型值：请替换为您机床的实测值。</translation>
+    </message>
+    <message>
+        <source>Kinematic probe, optical transmission</source>
+        <translation>机械式测头，光学传输</translation>
+    </message>
+    <message>
+        <source>Resistive kinematic probe with an optical receiver: 5 µm pretravel, 2 ms interface response, 1 µm repeatability. Typical values: replace them with the ones you measure.</source>
+        <translation>带光学接收器的电阻式机械测头：预行程 5 µm，接口响应 2 ms，重复性 1 µm。典型值：请替换为您的实测值。</translation>
+    </message>
+    <message>
+        <source>Kinematic probe, radio transmission</source>
+        <translation>机械式测头，无线电传输</translation>
+    </message>
+    <message>
+        <source>Kinematic probe with a radio receiver: the transmission adds about 10 ms of interface response. Typical values: replace them with the ones you measure.</source>
+        <translation>带无线电接收器的机械式测头：传输使接口响应增加约 10 ms。典型值：请替换为您的实测值。</translation>
+    </message>
+    <message>
+        <source>Strain-gauge probe (high accuracy)</source>
+        <translation>应变片式测头（高精度）</translation>
+    </message>
+    <message>
+        <source>Strain-gauge probe: sub-micrometre pretravel and repeatability, low trigger force. Typical values: replace them with the ones you measure.</source>
+        <translation>应变片式测头：亚微米级的预行程和重复性，触发力小。典型值：请替换为您的实测值。</translation>
+    </message>
+    <message>
+        <source>Short stylus / small bore (2 mm overtravel)</source>
+        <translation>短测针 / 小孔（过行程 2 mm）</translation>
+    </message>
+    <message>
+        <source>A probe with a short stylus or in a small bore, where only about 2 mm of overtravel is safe. Typical values: replace them with the ones you measure.</source>
+        <translation>短测针或在小孔中测量的测头，只有约 2 mm 的过行程是安全的。典型值：请替换为您的实测值。</translation>
+    </message>
+    <message>
+        <source>About ProbeCycle</source>
+        <translation>关于 ProbeCycle</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;ProbeCycle&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Cycle time, overtravel and uncertainty of touch-trigger probing cycles on CNC machine tools.&lt;/p&gt;&lt;p&gt;Every value in the model is a typical one until you replace it with your measured value.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;ProbeCycle&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;数控机床触发式测头测量循环的循环时间、过行程和不确定度。&lt;/p&gt;&lt;p&gt;在您用实测值替换之前，模型中的每个值都只是典型值。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>新建(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Start from the default scenario (typical values)</source>
+        <translation>从默认场景开始（典型值）</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Open a scenario file (the JSON the command-line tool reads)</source>
+        <translation>打开场景文件（命令行工具读取的 JSON）</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save the scenario as JSON</source>
+        <translation>将场景保存为 JSON</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Export CSV &amp;Report…</source>
+        <translation>导出 CSV 报告(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Scenario, summary, phases, warnings and a feed sweep as CSV, the same as the command-line tool writes</source>
+        <translation>以 CSV 格式导出场景、摘要、各阶段、警告和进给率扫描，与命令行工具输出的相同</translation>
+    </message>
+    <message>
+        <source>Export Charts as &amp;PNG…</source>
+        <translation>将图表导出为 PNG(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Save the four charts as one PNG image</source>
+        <translation>将四个图表保存为一张 PNG 图片</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>撤销</translation>
+    </message>
+    <message>
+        <source>&amp;Pin Baseline</source>
+        <translation>固定基准(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Keep the current scenario as a baseline: its curves stay drawn dashed and the readouts show the difference</source>
+        <translation>将当前场景固定为基准：其曲线以虚线保留，读数显示差值</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Baseline</source>
+        <translation>清除基准(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;About ProbeCycle</source>
+        <translation>关于 ProbeCycle(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Presets hold typical values: replace them with measured ones</source>
+        <translation>预设为典型值：请替换为实测值</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>系统语言</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Presets</source>
+        <translation>预设(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Machine (skip input)</source>
+        <translation>机床（跳跃输入）(&amp;M)</translation>
+    </message>
+    <message>
+        <source>P&amp;robe class</source>
+        <translation>测头类型(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Compare</source>
+        <translation>比较(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>主工具栏</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>未保存的更改</translation>
+    </message>
+    <message>
+        <source>Save the changes to %1?</source>
+        <translation>是否保存对 %1 的更改？</translation>
+    </message>
+    <message>
+        <source>acceleration model</source>
+        <translation>加速模型</translation>
+    </message>
+    <message>
+        <source>strategy</source>
+        <translation>策略</translation>
+    </message>
+    <message>
+        <source>feature</source>
+        <translation>特征</translation>
+    </message>
+    <message>
+        <source>latched input</source>
+        <translation>锁存输入</translation>
+    </message>
+    <message>
+        <source>change %1</source>
+        <translation>更改%1</translation>
+    </message>
+    <message>
+        <source>Default scenario: typical values, to be replaced with measured ones</source>
+        <translation>默认场景：典型值，请替换为实测值</translation>
+    </message>
+    <message>
+        <source>Could not open the scenario</source>
+        <translation>无法打开场景</translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid scenario:
+%2</source>
+        <translation>%1 不是有效的场景：
+%2</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>已打开 %1</translation>
+    </message>
+    <message>
+        <source>Could not save the scenario</source>
+        <translation>无法保存场景</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <source>Could not export the report</source>
+        <translation>无法导出报告</translation>
+    </message>
+    <message>
+        <source>The scenario is not valid; see the warnings panel.</source>
+        <translation>场景无效，请查看警告面板。</translation>
+    </message>
+    <message>
+        <source>Report written to %1</source>
+        <translation>报告已写入 %1</translation>
+    </message>
+    <message>
+        <source>Could not export the charts</source>
+        <translation>无法导出图表</translation>
+    </message>
+    <message>
+        <source>Charts written to %1</source>
+        <translation>图表已写入 %1</translation>
+    </message>
+    <message>
+        <source>Could not apply the preset</source>
+        <translation>无法应用预设</translation>
+    </message>
+    <message>
+        <source>preset %1</source>
+        <translation>预设 %1</translation>
+    </message>
+    <message>
+        <source>%1: typical values applied; replace them with your measured ones</source>
+        <translation>%1：已应用典型值；请替换为您的实测值</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>未命名</translation>
+    </message>
+    <message>
+        <source>Open scenario</source>
+        <translation>打开场景</translation>
+    </message>
+    <message>
+        <source>Scenario (*.json);;All files (*)</source>
+        <translation>场景 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Save scenario</source>
+        <translation>保存场景</translation>
+    </message>
+    <message>
+        <source>Scenario (*.json)</source>
+        <translation>场景 (*.json)</translation>
+    </message>
+    <message>
+        <source>Export CSV report</source>
+        <translation>导出 CSV 报告</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export charts as PNG</source>
+        <translation>将图表导出为 PNG</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG 图片 (*.png)</translation>
+    </message>
+    <message>
+        <source>Baseline pinned: change parameters to compare against it</source>
+        <translation>已固定基准：更改参数即可与之比较</translation>
+    </message>
+    <message>
+        <source>set backoff to recommended</source>
+        <translation>将回退距离设为推荐值</translation>
+    </message>
+    <message>
+        <source>drop feed to the knee</source>
+        <translation>将进给率降至拐点</translation>
+    </message>
+    <message>
+        <source>start far enough out to reach the feed</source>
+        <translation>起点足够远以达到进给率</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>撤销 %1(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>重做 %1(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+    <message>
+        <source>apply the measured delay</source>
+        <translation>应用测得的延迟</translation>
+    </message>
+    <message>
+        <source>Cycle</source>
+        <translation>循环</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>标定</translation>
+    </message>
+    <message>
+        <source>Latency</source>
+        <translation>延迟</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::ParameterPanel</name>
+    <message>
+        <source>Acceleration model</source>
+        <translation>加速模型</translation>
+    </message>
+    <message>
+        <source>Strategy</source>
+        <translation>策略</translation>
+    </message>
+    <message>
+        <source>Feature</source>
+        <translation>特征</translation>
+    </message>
+    <message>
+        <source>Latched (hardware-captured) input</source>
+        <translation>锁存（硬件捕获）输入</translation>
+    </message>
+    <message>
+        <source>How the control accelerates: a time constant (a = v/T, common on many controls), a constant acceleration, or a jerk-limited S-curve. Sets every move time and the braking distance after the trigger.</source>
+        <translation>数控系统的加速方式：时间常数（a = v/T，许多系统常用）、恒加速度，或限加加速度的 S 曲线。它决定每次移动的时间以及触发后的制动距离。</translation>
+    </message>
+    <message>
+        <source>Single-touch measures at the probing feed. Two-touch finds the surface fast, backs off, and measures with a slow second touch.</source>
+        <translation>一次触发以测量进给率测量。二次触发先快速找到表面，回退，再以慢速的第二次触测进行测量。</translation>
+    </message>
+    <message>
+        <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four, with positioning moves at the rapid feed between them.</source>
+        <translation>平面需要一次触测，凸台或槽需要两次相对的触测，孔或圆柱需要四次，各次之间以快移速度定位。</translation>
+    </message>
+    <message>
+        <source>The control latches (or timestamps) the position in hardware at the trigger: the scan-period wait leaves the measured value, but not the travel - the machine still stops late.</source>
+        <translation>数控系统在触发时由硬件锁存（或打时间戳）位置：扫描周期等待不再影响测量值，但不影响行程——机床仍然会晚停。</translation>
+    </message>
+    <message>
+        <source>Typical values: replace them with your measured ones.</source>
+        <translation>典型值：请替换为您的实测值。</translation>
+    </message>
+    <message>
+        <source>The defaults and the presets are typical values for a machining centre and its probe. Replace them with the ones measured on your machine.</source>
+        <translation>默认值和预设是加工中心及其测头的典型值。请替换为在您机床上测得的值。</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::QuantityEdit</name>
+    <message>
+        <source>Range: %1 to %2 %3</source>
+        <translation>范围：%1 至 %2 %3</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::Readouts</name>
+    <message>
+        <source>Cycle time</source>
+        <translation>循环时间</translation>
+    </message>
+    <message>
+        <source>Overtravel</source>
+        <translation>过行程</translation>
+    </message>
+    <message>
+        <source>Trigger speed</source>
+        <translation>触发速度</translation>
+    </message>
+    <message>
+        <source>Uncertainty (k = 2)</source>
+        <translation>不确定度 (k = 2)</translation>
+    </message>
+    <message>
+        <source>Recommended backoff</source>
+        <translation>推荐回退距离</translation>
+    </message>
+    <message>
+        <source>Knee of the curve</source>
+        <translation>曲线拐点</translation>
+    </message>
+    <message>
+        <source>Total time of the probing cycle, all touches and moves.</source>
+        <translation>测量循环的总时间，包括所有触测和移动。</translation>
+    </message>
+    <message>
+        <source>Worst distance beyond the surface where the axis stops: pretravel + trigger speed × (interface + controller + full scan period) + braking distance.</source>
+        <translation>轴停止处超出表面的最大距离：预行程 + 触发速度 × (接口 + 控制器 + 完整扫描周期) + 制动距离。</translation>
+    </message>
+    <message>
+        <source>Speed when the measuring touch triggers; lower than programmed if the touch happens while accelerating.</source>
+        <translation>测量触测触发时的速度；如果在加速过程中触测，则低于编程值。</translation>
+    </message>
+    <message>
+        <source>Expanded uncertainty of the measuring touch: the scan-period range combined with the probe&apos;s repeatability.</source>
+        <translation>测量触测的扩展不确定度：扫描周期范围与测头重复性的合成。</translation>
+    </message>
+    <message>
+        <source>Two-touch: the first touch&apos;s overtravel plus the reseat distance. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
+        <translation>二次触发：第一次触测的过行程加上复位距离。小于此值测头可能未复位；大于此值的部分要以慢速测量进给率重新接近。</translation>
+    </message>
+    <message>
+        <source>The lowest probing feed whose cycle time is within 1 % of the best: faster buys almost no time.</source>
+        <translation>循环时间在最佳值 1 % 以内的最低测量进给率：更快几乎不再节省时间。</translation>
+    </message>
+    <message>
+        <source>invalid scenario</source>
+        <translation>场景无效</translation>
+    </message>
+    <message>
+        <source>programmed %1</source>
+        <translation>编程值 %1</translation>
+    </message>
+    <message>
+        <source>target %1</source>
+        <translation>目标 %1</translation>
+    </message>
+    <message>
+        <source>scan range %1</source>
+        <translation>扫描范围 %1</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>当前 %1</translation>
+    </message>
+    <message>
+        <source>for two-touch</source>
+        <translation>用于二次触发</translation>
+    </message>
+    <message>
+        <source>cycle %1</source>
+        <translation>循环 %1</translation>
+    </message>
+    <message>
+        <source>Δ %1 vs baseline</source>
+        <translation>与基准相差 %1</translation>
+    </message>
+    <message>
+        <source>%1 % of %2</source>
+        <translation>为 %2 的 %1 %</translation>
+    </message>
+    <message>
+        <source>as programmed</source>
+        <translation>与编程值相同</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::WarningsPanel</name>
+    <message>
+        <source>No warnings: the cycle is within the probe&apos;s limits.</source>
+        <translation>无警告：循环在测头极限之内。</translation>
+    </message>
+    <message>
+        <source>Invalid scenario</source>
+        <translation>场景无效</translation>
+    </message>
+    <message>
+        <source>Set backoff to %1</source>
+        <translation>将回退距离设为 %1</translation>
+    </message>
+    <message>
+        <source>Drop feed to the knee, %1</source>
+        <translation>将进给率降至拐点 %1</translation>
+    </message>
+    <message>
+        <source>Start %1 out</source>
+        <translation>起点设在 %1 外</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,168 @@
+#pragma once
+
+// The Calibration tab of the lab (issue 4, "Tabs in the window"; domain.md,
+// "Calibration"): touches in a ring gauge at spindle orientations 0 and 180
+// degrees, pasted or imported as CSV, give the gauge centre, the stylus runout
+// and the effective ball radius; the two fitted circles are drawn with the
+// points. A small group computes the effective length from a surface of known
+// Z. The physics is the core's (core/calibration.h); this widget only edits
+// the input and shows the result.
+//
+// The public functions below the constructor are the tab's behaviour as tests
+// drive it; the buttons call the same functions.
+
+#include <QList>
+#include <QPointF>
+#include <QRectF>
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+#include <optional>
+#include <vector>
+
+#include "calibration.h"
+
+class QComboBox;
+class QFormLayout;
+class QGroupBox;
+class QLabel;
+class QLineEdit;
+class QPlainTextEdit;
+class QPushButton;
+
+namespace probecycle::ui {
+
+class LabWarningList;
+class PlotView;
+class UnitSpinBox;
+
+class CalibrationTab : public QWidget {
+    Q_OBJECT
+
+  public:
+    explicit CalibrationTab(QWidget* parent = nullptr);
+    ~CalibrationTab() override;
+
+    // --- Ring gauge ---
+    // The paste box: CSV `orientation_deg,x_mm,y_mm`.
+    void set_points_text(const QString& csv);
+    QString points_text() const;
+    // Changing the diameter (or a limit) refits the points of the current result.
+    void set_gauge_diameter_mm(double diameter_mm);
+    double gauge_diameter_mm() const;
+    // Fits the pasted points. On bad input: false, last_error() names the line,
+    // and the previous result stays on screen.
+    bool fit();
+    // Reads a CSV file into the paste box and fits it; false as fit(), or when
+    // the file cannot be read.
+    bool import_file(const QString& path);
+    // The CSV report (calibration_report.h), written atomically; false with
+    // last_error() when there is nothing to export or the file cannot be written.
+    bool export_report(const QString& path);
+
+    const std::optional<RingCalibration>& result() const { return result_; }
+    // The points behind result().
+    const std::vector<RingPoint>& fitted_points() const { return points_; }
+    QString last_error() const { return last_error_; }
+    // Ring and length warnings shown, by core code ("large_runout", ...).
+    QStringList warning_codes() const;
+    // Every result line shown, "label: value", for tests and the clipboard.
+    QStringList results_text() const;
+
+    // --- Drawing ---
+    // Radial deviations from the mean circle are drawn magnified by this
+    // factor, one of the box's: 0 (chosen from the data), 1 (true scale), 10,
+    // 100, 1000, 10000. Other values are ignored.
+    void set_deviation_magnification(double factor);
+    double deviation_magnification() const { return magnification_used_; }
+    // What is drawn, orientation 0 (0 deg) or 1 (180 deg), in drawing
+    // coordinates (machine X/Y at true scale).
+    QList<QPointF> plotted_points(int orientation) const;
+    QList<QPointF> plotted_circle(int orientation) const;
+    PlotView* plot() const { return plot_; }
+
+    // --- Length ---
+    struct LengthInputs {
+        double surface_z_mm{0.0};
+        QString trigger_z;  // one or more numbers, separated by spaces or semicolons
+        double active_length_mm{0.0};
+        double nominal_length_mm{0.0};  // 0 = none
+    };
+    void set_length_inputs(const LengthInputs& inputs);
+    const std::optional<LengthCalibration>& length_result() const { return length_result_; }
+    QString length_error() const { return length_error_; }
+
+  protected:
+    void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+  private:
+    bool fit_text(const QString& text, const QString& source);
+    bool refit();
+    void set_error(const QString& text);
+    RingCalibrationOptions options() const;
+    void show_result();
+    void draw();
+    void update_plot_ranges();
+    void compute_length();
+    void retranslate();
+    void import_dialog();
+    void export_dialog();
+
+    // Input
+    QGroupBox* ring_group_{nullptr};
+    QLabel* format_hint_{nullptr};
+    QPlainTextEdit* points_edit_{nullptr};
+    QLabel* diameter_label_{nullptr};
+    UnitSpinBox* diameter_{nullptr};
+    QLabel* runout_limit_label_{nullptr};
+    UnitSpinBox* runout_limit_{nullptr};
+    QLabel* residual_limit_label_{nullptr};
+    UnitSpinBox* residual_limit_{nullptr};
+    QPushButton* import_button_{nullptr};
+    QPushButton* fit_button_{nullptr};
+    QLabel* error_label_{nullptr};
+
+    // Length
+    QGroupBox* length_group_{nullptr};
+    QFormLayout* length_form_{nullptr};
+    UnitSpinBox* surface_z_{nullptr};
+    QLineEdit* trigger_z_{nullptr};
+    UnitSpinBox* active_length_{nullptr};
+    UnitSpinBox* nominal_length_{nullptr};
+    QLabel* length_result_label_{nullptr};
+    LabWarningList* length_warnings_{nullptr};
+
+    // Drawing
+    QLabel* magnification_label_{nullptr};
+    QComboBox* magnification_{nullptr};
+    PlotView* plot_{nullptr};
+    int points_curve_[2]{-1, -1};
+    int circle_curve_[2]{-1, -1};
+    int centre_curve_[2]{-1, -1};
+    int gauge_centre_curve_{-1};
+    double magnification_used_{1.0};
+    QRectF data_bounds_;
+
+    // Result
+    QGroupBox* result_group_{nullptr};
+    QFormLayout* result_form_{nullptr};
+    QLabel* result_labels_[8]{};
+    QLabel* result_values_[8]{};
+    QLabel* warnings_title_{nullptr};
+    LabWarningList* warnings_{nullptr};
+    QPushButton* export_button_{nullptr};
+    QLabel* export_status_{nullptr};
+
+    std::vector<RingPoint> points_;
+    RingCalibrationOptions options_;  // of result_
+    std::optional<RingCalibration> result_;
+    QString last_error_;
+    QString last_dir_;
+
+    std::optional<LengthCalibrationInput> length_input_;
+    std::optional<LengthCalibration> length_result_;
+    QString length_error_;
+};
+
+}  // namespace probecycle::ui

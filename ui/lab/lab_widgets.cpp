@@ -1,0 +1,220 @@
+#include "lab_widgets.h"
+
+#include <QCoreApplication>
+#include <QFontDatabase>
+#include <QLabel>
+#include <QLocale>
+#include <QPlainTextEdit>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "parameter_info.h"
+
+namespace probecycle::ui {
+
+namespace {
+
+const char* severity_colour(Severity severity) {
+    switch (severity) {
+        case Severity::error:
+            return "#c0392b";
+        case Severity::warning:
+            return "#b9770e";
+        case Severity::info:
+            break;
+    }
+    return "#2471a3";
+}
+
+QString tr_lab(const char* text) {
+    return QCoreApplication::translate("probecycle::ui::Lab", text);
+}
+
+QString with_unit(const QString& value, const QString& unit) {
+    return value + QChar(0x00A0) + unit;  // no break between number and unit
+}
+
+}  // namespace
+
+UnitSpinBox::UnitSpinBox(double min, double max, int decimals, double value, QWidget* parent,
+                         double factor)
+    : QDoubleSpinBox(parent), factor_(factor) {
+    setKeyboardTracking(false);  // one edit per value typed, not per keystroke
+    setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+    setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    setAccelerated(true);
+    setDecimals(decimals);
+    setRange(min * factor, max * factor);
+    setValue(value * factor);
+    setMinimumWidth(120);
+}
+
+void UnitSpinBox::set_unit(std::function<QString()> unit) {
+    unit_ = std::move(unit);
+    retranslate();
+}
+
+void UnitSpinBox::retranslate() {
+    setLocale(QLocale());
+    if (unit_) setSuffix(QStringLiteral(" ") + unit_());
+}
+
+void UnitSpinBox::set_internal_value(double value) {
+    setValue(value * factor_);
+}
+
+LabWarningList::LabWarningList(QWidget* parent) : QWidget(parent) {
+    layout_ = new QVBoxLayout(this);
+    layout_->setContentsMargins(0, 0, 0, 0);
+    layout_->setSpacing(4);
+    empty_ = new QLabel(this);
+    empty_->setWordWrap(true);
+    empty_->setStyleSheet(QStringLiteral("color: #1e8449;"));
+    layout_->addWidget(empty_);
+    layout_->addStretch(1);  // rows stay at the top
+}
+
+void LabWarningList::set_empty_text(const QString& text) {
+    empty_->setText(text);
+}
+
+void LabWarningList::show_items(const std::vector<Item>& items) {
+    items_ = items;
+    while (rows_.size() < items.size()) {
+        auto* label = new QLabel(this);
+        label->setWordWrap(true);
+        label->setTextFormat(Qt::RichText);
+        label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        layout_->insertWidget(layout_->count() - 1, label);  // before the stretch
+        rows_.push_back(label);
+    }
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        QLabel* label = rows_[i];
+        if (i >= items.size()) {
+            label->hide();
+            continue;
+        }
+        const Item& item = items[i];
+        const QString colour = QLatin1String(severity_colour(item.severity));
+        label->setStyleSheet(
+            QStringLiteral("QLabel { border-style: solid; border-color: %1; border-width: 0px 0px "
+                           "0px 4px; padding-left: 6px; }")
+                .arg(colour));
+        label->setText(QStringLiteral("<b style=\"color:%1\">%2</b><br>%3")
+                           .arg(colour, item.title.toHtmlEscaped(), item.message.toHtmlEscaped()));
+        label->setToolTip(item.code);
+        label->show();
+    }
+    empty_->setVisible(items.empty());
+}
+
+QStringList LabWarningList::codes() const {
+    QStringList out;
+    for (const Item& item : items_) out << item.code;
+    return out;
+}
+
+QStringList LabWarningList::texts() const {
+    QStringList out;
+    for (const Item& item : items_) out << item.title + QStringLiteral(": ") + item.message;
+    return out;
+}
+
+LabWarningList::Item warning_item(const CalibrationWarning& warning) {
+    LabWarningList::Item item;
+    item.code = QString::fromUtf8(to_string(warning.code));
+    item.severity = warning.severity;
+    // The core's message is the same text the CLI prints; the title is translated.
+    item.message = QString::fromStdString(warning.message);
+    switch (warning.code) {
+        case CalibrationWarningCode::points_one_side:
+            item.title = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Points on one side"));
+            break;
+        case CalibrationWarningCode::large_runout:
+            item.title = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Large stylus runout"));
+            break;
+        case CalibrationWarningCode::large_residual:
+            item.title = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Point off the circle"));
+            break;
+        case CalibrationWarningCode::single_orientation:
+            item.title =
+                tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "One orientation only: no runout"));
+            break;
+        case CalibrationWarningCode::exact_fit:
+            item.title =
+                tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Three points: exact fit"));
+            break;
+        case CalibrationWarningCode::length_wear:
+            item.title =
+                tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Length far from the nominal"));
+            break;
+    }
+    return item;
+}
+
+LabWarningList::Item warning_item(const LatencyWarning& warning, const QString& group) {
+    LabWarningList::Item item;
+    item.code = QString::fromUtf8(to_string(warning.code));
+    item.severity = warning.severity;
+    item.message = QString::fromStdString(warning.message);
+    QString title;
+    switch (warning.code) {
+        case LatencyWarningCode::few_feeds:
+            title = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Fewer than 3 feeds"));
+            break;
+        case LatencyWarningCode::unstable_delay:
+            title = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Unstable delay"));
+            break;
+        case LatencyWarningCode::curved_residuals:
+            title = tr_lab(
+                QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Residuals curve: the delay changes"));
+            break;
+        case LatencyWarningCode::negative_delay:
+            title = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Negative delay"));
+            break;
+        case LatencyWarningCode::single_touch_feed:
+            title = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "One touch at a feed"));
+            break;
+    }
+    //: %1 the group ("X+"), %2 the warning's title
+    item.title = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "%1: %2")).arg(group, title);
+    return item;
+}
+
+QPlainTextEdit* make_csv_editor(QWidget* parent) {
+    auto* edit = new QPlainTextEdit(parent);
+    edit->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    edit->setLineWrapMode(QPlainTextEdit::NoWrap);
+    edit->setTabChangesFocus(true);
+    return edit;
+}
+
+void show_error(QLabel* label, const QString& text) {
+    label->setStyleSheet(QStringLiteral("color: #c0392b;"));
+    label->setText(text);
+    label->setVisible(!text.isEmpty());
+}
+
+QString lab_mm(double mm, int decimals) {
+    return with_unit(QLocale().toString(mm, 'f', decimals), unit_mm());
+}
+
+QString lab_signed_um(double mm) {
+    const double um = std::round(mm * 10000.0) / 10.0;  // no "-0.0"
+    const QString sign = um > 0.0   ? QStringLiteral("+")
+                         : um < 0.0 ? QStringLiteral("\u2212")
+                                    : QString();
+    return sign + with_unit(QLocale().toString(std::abs(um), 'f', 1), unit_um());
+}
+
+QString lab_signed_length(double mm) {
+    if (std::abs(mm) < 0.1) return lab_signed_um(mm);
+    const QString sign = mm > 0.0 ? QStringLiteral("+") : QStringLiteral("\u2212");
+    return sign + lab_mm(std::abs(mm));
+}
+
+QString lab_ms(double seconds) {
+    return with_unit(QLocale().toString(seconds * 1000.0, 'f', 3), unit_ms());
+}
+
+}  // namespace probecycle::ui

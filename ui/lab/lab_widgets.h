@@ -1,0 +1,84 @@
+#pragma once
+
+// Small widgets the two lab tabs share: a typed editor for the lab's own
+// quantities (they are not scenario keys, so QuantityEdit's key table does not
+// know them), a list of warnings with severity colours, and the translated
+// titles of the lab's warning codes.
+
+#include <QDoubleSpinBox>
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+#include <functional>
+#include <vector>
+
+#include "calibration.h"
+#include "latency.h"
+
+class QLabel;
+class QPlainTextEdit;
+class QVBoxLayout;
+
+namespace probecycle::ui {
+
+// A value with its unit, in internal units (mm, s) while the box shows display
+// units (factor: display = internal * factor). The unit text is re-read on
+// retranslate(). Edits are reported by QDoubleSpinBox::valueChanged, once per
+// value typed (no keyboard tracking).
+class UnitSpinBox : public QDoubleSpinBox {
+  public:
+    UnitSpinBox(double min, double max, int decimals, double value, QWidget* parent = nullptr,
+                double factor = 1.0);
+
+    void set_unit(std::function<QString()> unit);
+    void retranslate();
+
+    double internal_value() const { return value() / factor_; }
+    void set_internal_value(double value);
+
+  private:
+    double factor_;
+    std::function<QString()> unit_;
+};
+
+// Rows of "title: message", coloured by severity; an "all clear" line when empty.
+class LabWarningList : public QWidget {
+  public:
+    explicit LabWarningList(QWidget* parent = nullptr);
+
+    struct Item {
+        QString code;
+        Severity severity{Severity::info};
+        QString title;
+        QString message;
+    };
+    void show_items(const std::vector<Item>& items);
+    void set_empty_text(const QString& text);
+
+    QStringList codes() const;
+    QStringList texts() const;
+
+  private:
+    QVBoxLayout* layout_{nullptr};
+    QLabel* empty_{nullptr};
+    std::vector<QLabel*> rows_;
+    std::vector<Item> items_;
+};
+
+LabWarningList::Item warning_item(const CalibrationWarning& warning);
+LabWarningList::Item warning_item(const LatencyWarning& warning, const QString& group);
+
+// The paste box of a lab tab: CSV text in a fixed-width font.
+QPlainTextEdit* make_csv_editor(QWidget* parent);
+
+// A message in the error colour.
+void show_error(QLabel* label, const QString& text);
+
+// Lengths and times at the resolution calibration needs (4 decimals in mm,
+// 0.1 µm), in the interface language.
+QString lab_mm(double mm, int decimals = 4);
+QString lab_signed_um(double mm);
+QString lab_signed_length(double mm);  // µm below 0.1 mm, else mm
+QString lab_ms(double seconds);
+
+}  // namespace probecycle::ui

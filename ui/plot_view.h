@@ -1,0 +1,80 @@
+#pragma once
+
+// The one place that knows the plotting library. Everything else in ui/ draws
+// through this class in its own terms (curves, bands, axes), so moving from
+// Qt Charts (deprecated from Qt 6.10) to Qt Graphs touches this file and
+// plot_view.cpp only. No Qt Charts header is included here on purpose.
+
+#include <QColor>
+#include <QList>
+#include <QPointF>
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+#include <memory>
+
+namespace probecycle::ui {
+
+class PlotView : public QWidget {
+    Q_OBJECT
+
+  public:
+    enum class Scale { linear, log, category };
+    enum class Side { left, right };
+    enum class Dash { solid, dashed, dotted };
+
+    struct AxisSpec {
+        Scale scale{Scale::linear};
+        QString title;
+        QString label_format{QStringLiteral("%g")};
+        QColor color;            // invalid = theme default
+        bool minor_grid{false};  // log axes: lines at 2..9 of each decade
+    };
+
+    struct LineSpec {
+        QString name;  // legend text; empty = not in the legend
+        QColor color;
+        double width{2.0};
+        Dash dash{Dash::solid};
+        Side axis{Side::left};
+    };
+
+    using CurveId = int;
+
+    explicit PlotView(QWidget* parent = nullptr);
+    ~PlotView() override;
+
+    void set_title(const QString& title);
+    void set_legend_visible(bool visible);
+
+    // Axes are created on the first call and only retitled/re-ranged later.
+    void set_x_axis(const AxisSpec& spec);
+    void set_y_axis(Side side, const AxisSpec& spec);
+    void set_x_range(double lo, double hi);
+    void set_y_range(Side side, double lo, double hi);
+    // Labels of a category y axis, bottom to top, placed at 0, 1, 2, ...
+    void set_y_categories(const QStringList& labels);
+
+    // Curves must be added after the axes they use.
+    CurveId add_line(const LineSpec& spec);
+    CurveId add_markers(const LineSpec& spec, double marker_size);
+    // A filled region between an upper and a lower polyline.
+    CurveId add_area(const LineSpec& spec, const QColor& fill);
+
+    // Hands the buffer to the plot (a replace, never clear + append).
+    void set_points(CurveId curve, const QList<QPointF>& points);
+    void set_area(CurveId curve, const QList<QPointF>& upper, const QList<QPointF>& lower);
+    void set_name(CurveId curve, const QString& name);
+    void set_visible(CurveId curve, bool visible);
+
+    // What is drawn: for tests and for the compare feature.
+    QList<QPointF> points(CurveId curve) const;
+    qsizetype point_count(CurveId curve) const;
+    bool is_visible(CurveId curve) const;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace probecycle::ui
