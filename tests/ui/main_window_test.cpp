@@ -12,6 +12,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSlider>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <map>
@@ -322,9 +323,9 @@ TEST_F(MainWindowTest, LatencyTabAppliesTheFittedDelayUndoably) {
     auto* tab = window_->findChild<LatencyTab*>();
     ASSERT_NE(tab, nullptr);
     // X+ with a total delay of 9 ms: p = 10 + v * 0.009 at 100, 1000, 3000 mm/min.
-    tab->set_touches_text(QStringLiteral(
-        "axis,direction,feed_mm_min,measured_mm\n"
-        "X,1,100,10.015\nX,1,1000,10.15\nX,1,3000,10.45\n"));
+    tab->set_touches_text(
+        QStringLiteral("axis,direction,feed_mm_min,measured_mm\n"
+                       "X,1,100,10.015\nX,1,1000,10.15\nX,1,3000,10.45\n"));
     ASSERT_TRUE(tab->fit()) << tab->last_error().toStdString();
     const double before = window_->scenario().machine.controller_latency_s;
     ASSERT_TRUE(tab->apply_to_scenario()) << tab->apply_problem().toStdString();
@@ -334,6 +335,31 @@ TEST_F(MainWindowTest, LatencyTabAppliesTheFittedDelayUndoably) {
     window_->undo_stack()->undo();
     settle();
     EXPECT_DOUBLE_EQ(window_->scenario().machine.controller_latency_s, before);
+}
+
+// The compensation comparison uses the scenario's machine; edits made on the
+// Cycle tab reach the hidden Latency tab, which catches up when shown.
+TEST_F(MainWindowTest, HiddenLatencyTabCatchesUpWhenShown) {
+    auto* tabs = window_->findChild<QTabWidget*>(QStringLiteral("tabs"));
+    auto* tab = window_->findChild<LatencyTab*>();
+    ASSERT_NE(tabs, nullptr);
+    ASSERT_NE(tab, nullptr);
+    ASSERT_EQ(tab->compensation_inputs().touch, TouchMotion::braking);
+    tabs->setCurrentWidget(tab);
+    settle();
+    ASSERT_TRUE(tab->comparison().has_value());
+    const double recorded_before = tab->comparison()->recorded_speed_mm_s;
+
+    tabs->setCurrentIndex(0);
+    settle();
+    Scenario slower = window_->scenario();
+    slower.machine.time_constant_s = 0.2;  // gentler braking: faster when recorded
+    window_->edit_scenario(slower, QStringLiteral("time constant"));
+    settle();
+    tabs->setCurrentWidget(tab);
+    settle();
+    ASSERT_TRUE(tab->comparison().has_value());
+    EXPECT_GT(tab->comparison()->recorded_speed_mm_s, recorded_before);
 }
 
 TEST_F(MainWindowTest, UndoRestoresAndRedoReapplies) {

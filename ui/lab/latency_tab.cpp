@@ -14,6 +14,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QShowEvent>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QSplitter>
@@ -808,11 +809,26 @@ LatencyTab::CompensationInputs LatencyTab::compensation_inputs() const {
 }
 
 void LatencyTab::schedule_comparison() {
+    // The window hands every scenario edit over; a hidden tab (the user is
+    // dragging sliders on the Cycle tab) defers the simulation to its showing.
+    if (!isVisible()) {
+        comparison_stale_ = true;
+        return;
+    }
     if (!comparison_timer_.isActive()) comparison_timer_.start();
+}
+
+void LatencyTab::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    if (comparison_stale_) {
+        comparison_stale_ = false;
+        schedule_comparison();
+    }
 }
 
 void LatencyTab::update_comparison_now() {
     comparison_timer_.stop();
+    comparison_stale_ = false;
     const CompensationInputs inputs = compensation_inputs();
     CompensationSetup setup;
     // The machine's dynamics; the defaults while the scenario is invalid

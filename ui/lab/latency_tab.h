@@ -122,6 +122,7 @@ class LatencyTab : public QWidget {
 
   protected:
     void changeEvent(QEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
   private:
     void build_delay_section();
@@ -193,6 +194,7 @@ class LatencyTab : public QWidget {
     QTableWidget* methods_table_{nullptr};
     QLabel* trigger_summary_{nullptr};
     QTimer comparison_timer_;
+    bool comparison_stale_{false};  // scenario changed while hidden
     std::optional<CompensationComparison> comparison_;
     std::vector<BrakingRow> sweep_;
     QString comparison_error_;
