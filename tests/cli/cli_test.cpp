@@ -2,9 +2,11 @@
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
+
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
 
 #include <cmath>
 #include <cstddef>
@@ -74,9 +76,12 @@ std::vector<std::string> split(const std::string& text, char sep) {
 class CycleCli : public testing::Test {
   protected:
     void SetUp() override {
+        // Parameterised names hold a '/' ("Case/3"): flatten it, or TearDown
+        // would remove only the inner directory and leave the outer one behind.
+        std::string name = testing::UnitTest::GetInstance()->current_test_info()->name();
+        std::replace(name.begin(), name.end(), '/', '_');
         dir_ = fs::temp_directory_path() /
-               ("probecycle_cli_test_" + std::to_string(::getpid()) + "_" +
-                testing::UnitTest::GetInstance()->current_test_info()->name());
+               ("probecycle_cli_test_" + std::to_string(::getpid()) + "_" + name);
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
