@@ -386,8 +386,8 @@ void add_touch_warnings(const Scenario& scenario, const MotionLimits& limits,
         // domain.md, "Acceleration models": a slower touch misses the delay
         // travel calibrated at full feed; the brief calls it the same error as
         // a calibration-feed mismatch, whose formula issue 4 gives in full.
-        const double error = speed_error_mm(scenario.machine, scenario.probe, v,
-                                            touch.trigger_speed_mm_s);
+        const double error =
+            speed_error_mm(scenario.machine, scenario.probe, v, touch.trigger_speed_mm_s);
         warnings.push_back({WarningCode::touch_while_accelerating, Severity::warning,
                             touch.trigger_speed_mm_s, v, error, static_cast<double>(which)});
     }

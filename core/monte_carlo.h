@@ -22,6 +22,8 @@ struct Histogram {
     double max_mm{0.0};
 };
 
+// Reproducible: the same seed gives the same histogram with the same standard
+// library (the std:: distributions' algorithms are the library's own).
 struct MonteCarloOptions {
     std::uint64_t samples{100000};
     std::uint64_t seed{42};

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -142,14 +143,24 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
     return csv;
 }
 
-void write_file_atomically(const std::string& path, std::string_view contents) {
+void write_file_atomically(const std::string& path_given, std::string_view contents) {
+    // Through a symbolic link to its target, so the link survives the rename;
+    // an existing file keeps its permissions.
+    std::string path = path_given;
+    if (char* resolved = ::realpath(path_given.c_str(), nullptr)) {
+        path = resolved;
+        std::free(resolved);
+    }
+    mode_t mode = 0644;
+    struct stat existing {};
+    if (::stat(path.c_str(), &existing) == 0) mode = existing.st_mode & 07777;
     const std::size_t slash = path.find_last_of('/');
     const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash);
     const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
     std::string temp = dir + "/." + base + ".tmp-XXXXXX";
     const int fd = ::mkstemp(temp.data());
     if (fd < 0) {
-        throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+        throw std::runtime_error("cannot write " + path_given + ": " + std::strerror(errno));
     }
     const char* data = contents.data();
     std::size_t left = contents.size();
@@ -166,12 +177,13 @@ void write_file_atomically(const std::string& path, std::string_view contents) {
     const int saved_errno = errno;
     ok = ok && ::fsync(fd) == 0;
     ok = (::close(fd) == 0) && ok;
-    // mkstemp makes the file 0600; a report is an ordinary file.
-    ok = ok && ::chmod(temp.c_str(), 0644) == 0;
+    // mkstemp makes the file 0600: give it the old file's mode, or 0644.
+    ok = ok && ::chmod(temp.c_str(), mode) == 0;
     if (!ok || std::rename(temp.c_str(), path.c_str()) != 0) {
         const int err = ok ? errno : saved_errno;
         ::unlink(temp.c_str());
-        throw std::runtime_error("cannot write " + path + ": " + std::strerror(err ? err : EIO));
+        throw std::runtime_error("cannot write " + path_given + ": " +
+                                 std::strerror(err ? err : EIO));
     }
 }
 

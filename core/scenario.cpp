@@ -260,6 +260,9 @@ Scenario scenario_from_json(std::string_view text) {
     } catch (const nlohmann::json::parse_error& e) {
         // nlohmann's message names the line and column.
         throw ScenarioError({{"file", "", std::string("malformed JSON: ") + e.what()}});
+    } catch (const nlohmann::json::exception& e) {
+        // e.g. out_of_range.406 for a number such as 1e400 that no double holds.
+        throw ScenarioError({{"file", "", std::string("a number out of range: ") + e.what()}});
     }
     if (!root.is_object()) {
         throw ScenarioError({{"file", "", "a JSON object with sections machine, probe, cycle"}});

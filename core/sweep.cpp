@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "units.h"
 
@@ -111,13 +112,19 @@ std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_
     double lo = grid[best == 0 ? 0 : best - 1];
     double hi = grid[std::min(best + 1, kGrid - 1)];
     double best_time = times[best];
+    double best_feed = grid[best];
     constexpr double kInvPhi = 0.6180339887498949;
     for (int iter = 0; iter < 40 && hi - lo > 1e-9 * hi; ++iter) {
         const double x1 = hi - kInvPhi * (hi - lo);
         const double x2 = lo + kInvPhi * (hi - lo);
         const double t1 = cycle_time_at(scenario, x1, options, scratch);
         const double t2 = cycle_time_at(scenario, x2, options, scratch);
-        best_time = std::min({best_time, t1, t2});
+        for (const auto& [feed, time] : {std::pair{x1, t1}, std::pair{x2, t2}}) {
+            if (time < best_time) {
+                best_time = time;
+                best_feed = feed;
+            }
+        }
         if (t1 < t2) {
             hi = x2;
         } else {
@@ -128,7 +135,7 @@ std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_
     std::size_t first = 0;
     while (first < kGrid && times[first] > limit) ++first;
     if (first == 0) return grid[0];
-    if (first == kGrid) return grid[best];  // only the refined minimum itself qualifies
+    if (first == kGrid) return best_feed;  // only the refined minimum itself qualifies
     // Bisection for the crossing between the last grid feed above the limit and the first within.
     lo = grid[first - 1];
     hi = grid[first];
@@ -146,8 +153,11 @@ std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_
 Analysis analyse(const Scenario& scenario) {
     const SweepOptions optimised{.recommended_backoff = true};
     Analysis analysis{evaluate(scenario), std::nullopt, std::nullopt};
+    // Up to the scenario's own feed at least, so a feed beyond 10000 mm/min is
+    // judged against a curve that reaches it.
+    const double search_to = std::max(kKneeSearchTo_mm_min, scenario.cycle.probe_feed_mm_min);
     analysis.knee_feed_mm_min =
-        find_knee_mm_min(scenario, kKneeSearchFrom_mm_min, kKneeSearchTo_mm_min, optimised);
+        find_knee_mm_min(scenario, kKneeSearchFrom_mm_min, search_to, optimised);
     if (!analysis.knee_feed_mm_min) return analysis;
     thread_local CycleResult scratch;
     const double knee_feed = *analysis.knee_feed_mm_min;

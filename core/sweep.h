@@ -53,7 +53,8 @@ std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t 
 std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_min,
                                        double to_mm_min, const SweepOptions& options = {});
 
-// Feed range in which analyse() looks for the knee.
+// Feed range in which analyse() looks for the knee: 10 to 10000 mm/min, or
+// up to the scenario's probe feed when that is higher.
 constexpr double kKneeSearchFrom_mm_min = 10.0;
 constexpr double kKneeSearchTo_mm_min = 10000.0;
 

@@ -280,6 +280,30 @@ TEST_F(AtomicFile, ReadOnlyDirectoryKeepsTheOldFile) {
     EXPECT_EQ(slurp(path), "old");
 }
 
+TEST_F(AtomicFile, KeepsTheModeOfTheFileItReplaces) {
+    const fs::path path = dir_ / "out.csv";
+    write_file_atomically(path.string(), "old\n");
+    EXPECT_EQ(fs::status(path).permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                  fs::perms::others_read);  // 0644 for a new file
+    fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write);
+    write_file_atomically(path.string(), "new\n");
+    EXPECT_EQ(slurp(path), "new\n");
+    EXPECT_EQ(fs::status(path).permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write);
+}
+
+TEST_F(AtomicFile, WritesThroughASymbolicLink) {
+    const fs::path target = dir_ / "real.json";
+    const fs::path link = dir_ / "link.json";
+    write_file_atomically(target.string(), "old\n");
+    fs::create_symlink(target, link);
+    write_file_atomically(link.string(), "new\n");
+    EXPECT_TRUE(fs::is_symlink(link));
+    EXPECT_EQ(slurp(target), "new\n");
+    EXPECT_EQ(listing(), (std::vector<std::string>{"link.json", "real.json"}));
+}
+
 TEST_F(AtomicFile, ReadTextFileOfAMissingFileNamesThePath) {
     const fs::path path = dir_ / "nope.json";
     try {

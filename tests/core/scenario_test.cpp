@@ -364,6 +364,15 @@ TEST(ScenarioJson, MalformedTextIsAScenarioErrorNamingTheLine) {
     }
 }
 
+// A number no double holds is refused like any other bad input, not thrown
+// through as a library exception.
+TEST(ScenarioJson, NumberBeyondDoubleIsAScenarioError) {
+    const auto error = scenario_error_from(
+        [&] { scenario_from_json(R"({"machine": {"scan_period_s": 1e400}})"); });
+    ASSERT_TRUE(error.has_value());
+    EXPECT_TRUE(contains(error->what(), "out of range")) << error->what();
+}
+
 TEST(ScenarioJson, TopLevelMustBeAnObject) {
     for (const char* text : {"[]", "42", "\"machine\"", "null"}) {
         SCOPED_TRACE(text);

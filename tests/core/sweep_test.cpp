@@ -305,5 +305,28 @@ TEST(Analyse, FeedBeyondKneeReportsTheTimeSaved) {
     EXPECT_LT(w->c, kKneeTolerance * a.cycle.total() * 1.01);
 }
 
+// A feed above 10000 mm/min is judged on a curve that reaches it: with a
+// 50 mm approach the best single-touch feed lies far above 10000.
+TEST(Analyse, KneeSearchReachesAFeedBeyond10000) {
+    Scenario s = single_touch_surface();
+    s.cycle.approach_mm = 50.0;
+    s.cycle.probe_feed_mm_min = 20000.0;
+    const Analysis a = analyse(s);
+    ASSERT_TRUE(a.knee_feed_mm_min.has_value());
+    EXPECT_GT(*a.knee_feed_mm_min, kKneeSearchTo_mm_min);
+    EXPECT_LE(*a.knee_feed_mm_min, 20000.0);
+    // By the knee's definition, no feed up to 20000 is more than 1 % faster than it.
+    const SweepResult fine = sweep_feeds(s, log_feeds(10.0, 20000.0, 400));
+    double best = fine.points.front().cycle_time_s;
+    for (const SweepPoint& p : fine.points) best = std::min(best, p.cycle_time_s);
+    ASSERT_TRUE(a.knee_cycle_time_s.has_value());
+    EXPECT_LE(*a.knee_cycle_time_s, best * (1.0 + kKneeTolerance) + 1e-12);
+    for (const Warning& w : a.cycle.warnings()) {
+        if (w.code == WarningCode::feed_beyond_knee) {
+            EXPECT_LT(w.c, kKneeTolerance * a.cycle.total() * 1.01);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace probecycle
