@@ -126,8 +126,8 @@ std::vector<RingPoint> parse_ring_csv(std::string_view text) {
     for (const auto& row : rows) {
         RingPoint point;
         point.orientation_deg = csv_number(row, 0, "orientation_deg");
-        point.x_mm = csv_number(row, 1, "x_mm");
-        point.y_mm = csv_number(row, 2, "y_mm");
+        point.x_mm = csv_coordinate(row, 1, "x_mm");
+        point.y_mm = csv_coordinate(row, 2, "y_mm");
         point.line = row.line;
         if (!orientation_index(point.orientation_deg)) {
             throw CsvError(row.line, "orientation_deg",

@@ -62,6 +62,12 @@ double compensate_cycle_lag_mm(double recorded_mm, const IncrementRing& ring,
     return recorded_mm - static_cast<double>(ring.sum_latest(lag_cycles)) / counts_per_mm;
 }
 
+int lag_cycles_for_delay(double delay_s, double interpolation_period_s) {
+    const double cycles = std::round(delay_s / interpolation_period_s - 0.5);
+    return static_cast<int>(
+        std::clamp(cycles, 0.0, static_cast<double>(IncrementRing::kCapacity - 1)));
+}
+
 double compensate_naive_mm(double recorded_mm, int direction, double speed_mm_s, double delay_s) {
     // The plain v * tau correction of domain.md, "Cycle-lag compensation".
     return recorded_mm - direction * speed_mm_s * delay_s;

@@ -60,6 +60,13 @@ class IncrementRing {
     int counter_bits_;
 };
 
+// The lag N, in whole interpolation cycles, for cycle-lag compensation from a
+// delay measured at constant speed: such a test sees the N cycles plus, on
+// average, half a cycle (the trigger's place in its cycle), so N = round(tau/T
+// - 1/2), within the ring's 0..49. The simulator's naive delay, (N + 1/2) T,
+// is the same relation the other way round.
+int lag_cycles_for_delay(double delay_s, double interpolation_period_s);
+
 // Cycle-lag compensation: the position the control recorded, less the last
 // `lag_cycles` increments: where the axis was `lag_cycles` cycles earlier.
 double compensate_cycle_lag_mm(double recorded_mm, const IncrementRing& ring,

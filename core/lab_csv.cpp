@@ -148,4 +148,14 @@ std::string format_number(double value, int significant) {
     return buffer;
 }
 
+double csv_coordinate(const CsvRow& row, std::size_t index, std::string_view column) {
+    const double value = csv_number(row, index, column);
+    if (std::abs(value) > kMaxCoordinate_mm) {
+        throw CsvError(
+            row.line, std::string(column),
+            "out of range: a coordinate within +-" + format_number(kMaxCoordinate_mm) + " mm");
+    }
+    return value;
+}
+
 }  // namespace probecycle

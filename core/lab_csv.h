@@ -41,6 +41,10 @@ std::vector<CsvRow> read_csv_rows(std::string_view text,
 
 // A finite number; CsvError naming the line and column otherwise.
 double csv_number(const CsvRow& row, std::size_t index, std::string_view column);
+// Machine coordinates: no axis travels more than this far from its zero.
+constexpr double kMaxCoordinate_mm = 100000.0;
+// A number in column `index` that is a coordinate within +-kMaxCoordinate_mm.
+double csv_coordinate(const CsvRow& row, std::size_t index, std::string_view column);
 
 // Text of a line range for messages: "line 4" or "lines 2, 5, 7".
 std::string describe_lines(const std::vector<std::size_t>& lines);

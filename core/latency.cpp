@@ -228,7 +228,7 @@ std::vector<DelayTouch> parse_delay_csv(std::string_view text) {
                            format_number(touch.feed_mm_min) + " is out of range: (0, " +
                                format_number(kMaxFeed_mm_min) + "] mm/min");
         }
-        touch.measured_mm = csv_number(row, 3, "measured_mm");
+        touch.measured_mm = csv_coordinate(row, 3, "measured_mm");
         touches.push_back(std::move(touch));
     }
     return touches;
@@ -299,37 +299,38 @@ DelayFit fit_delay(std::span<const DelayTouch> touches, const DelayFitOptions& o
     return fit;
 }
 
-AppliedDelay controller_latency_from_fit(const DelayFit& fit, const Scenario& scenario,
-                                         const std::optional<std::string>& group) {
+ChosenGroup choose_group(const DelayFit& fit, const std::optional<std::string>& name) {
     if (fit.groups.empty()) throw std::invalid_argument("the fit has no groups of touches");
-    const DelayGroup* chosen = nullptr;
-    AppliedDelay applied;
-    if (group) {
+    if (name) {
         std::string wanted;
-        for (const char c : *group) {
+        for (const char c : *name) {
             wanted += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
         }
         std::string available;
         for (const DelayGroup& g : fit.groups) {
-            if (g.name() == wanted) chosen = &g;
+            if (g.name() == wanted) return {&g, "the group chosen"};
             if (!available.empty()) available += ", ";
             available += g.name();
         }
-        if (!chosen) {
-            throw std::invalid_argument("got '" + *group + "'; allowed: a group of the file (" +
-                                        available + ")");
-        }
-        applied.rule = "the group chosen";
-    } else if (fit.groups.size() == 1) {
-        chosen = &fit.groups.front();
-        applied.rule = "the only group";
-    } else {
-        chosen = &*std::max_element(
-            fit.groups.begin(), fit.groups.end(),
-            [](const DelayGroup& a, const DelayGroup& b) { return a.delay_s < b.delay_s; });
-        applied.rule = "the longest delay of " + std::to_string(fit.groups.size()) +
-                       " groups (the safe side for overtravel); choose one to override";
+        throw std::invalid_argument("got '" + *name + "'; allowed: a group of the file (" +
+                                    available + ")");
     }
+    if (fit.groups.size() == 1) return {&fit.groups.front(), "the only group"};
+    // The scenario has one controller latency for every axis; the longest
+    // delay gives the longest overtravel, the safe side for the stylus.
+    const DelayGroup& longest = *std::max_element(
+        fit.groups.begin(), fit.groups.end(),
+        [](const DelayGroup& a, const DelayGroup& b) { return a.delay_s < b.delay_s; });
+    return {&longest, "the longest delay of " + std::to_string(fit.groups.size()) +
+                          " groups (the safe side for overtravel); choose one to override"};
+}
+
+AppliedDelay controller_latency_from_fit(const DelayFit& fit, const Scenario& scenario,
+                                         const std::optional<std::string>& group) {
+    const ChosenGroup chosen_group = choose_group(fit, group);
+    const DelayGroup* chosen = chosen_group.group;
+    AppliedDelay applied;
+    applied.rule = chosen_group.rule;
     applied.group = chosen->name();
     applied.total_delay_s = chosen->delay_s;
     applied.interface_delay_s = scenario.probe.interface_delay_s;

@@ -105,6 +105,15 @@ struct AppliedDelay {
     double previous_s{0.0};  // the scenario's controller latency before
     double controller_latency_s{0.0};
 };
+// The group whose delay goes into the scenario: the named one
+// (case-insensitive), the only one, or else the one with the longest delay.
+// Throws std::invalid_argument for an unknown name or a fit with no groups.
+struct ChosenGroup {
+    const DelayGroup* group{nullptr};
+    std::string rule;  // why that group
+};
+ChosenGroup choose_group(const DelayFit& fit, const std::optional<std::string>& name);
+
 // Uses the named group (case-insensitive), the only group, or else the
 // longest delay: the scenario has one controller latency for every axis, and
 // the longest gives the longest overtravel (the safe side for the stylus).

@@ -41,7 +41,6 @@ constexpr const char* kLatencyUsage =
     "[--counter-bits B] [--counter-at-zero COUNTS] [--naive-delay-s S] [--sweep N] [--trace]";
 
 // Position coordinates of a machine: generous, but catches a stray exponent.
-constexpr double kMaxCoordinate_mm = 100000.0;
 
 template <typename W>
 Json warnings_json(const std::vector<W>& warnings) {
@@ -113,15 +112,7 @@ int run_calibrate_ring(std::span<const std::string> argv) {
                                     .value_or(options.residual_limit_mm);
 
     const RingCalibration result = read_lab_csv(path, [&](const std::string& text) {
-        const auto points = parse_ring_csv(text);
-        for (const auto& p : points) {
-            if (std::abs(p.x_mm) > kMaxCoordinate_mm || std::abs(p.y_mm) > kMaxCoordinate_mm) {
-                throw CsvError(p.line, std::abs(p.x_mm) > kMaxCoordinate_mm ? "x_mm" : "y_mm",
-                               "out of range: a coordinate within +-" +
-                                   format_number(kMaxCoordinate_mm) + " mm");
-            }
-        }
-        return calibrate_ring(points, options);
+        return calibrate_ring(parse_ring_csv(text), options);
     });
 
     Json out = Json::object();
@@ -203,17 +194,8 @@ int run_latency_fit(std::span<const std::string> argv) {
     if (args.has("--group") && !args.has("--apply-to")) {
         throw UsageError("--group chooses the delay for --apply-to; give --apply-to SCENARIO.json");
     }
-    const DelayFit fit = read_lab_csv(path, [&](const std::string& text) {
-        const auto touches = parse_delay_csv(text);
-        for (const auto& t : touches) {
-            if (std::abs(t.measured_mm) > kMaxCoordinate_mm) {
-                throw CsvError(t.line, "measured_mm",
-                               "out of range: a coordinate within +-" +
-                                   format_number(kMaxCoordinate_mm) + " mm");
-            }
-        }
-        return fit_delay(touches, options);
-    });
+    const DelayFit fit = read_lab_csv(
+        path, [&](const std::string& text) { return fit_delay(parse_delay_csv(text), options); });
 
     Json out = Json::object();
     if (options.interpolation_period_s) {
@@ -227,7 +209,12 @@ int run_latency_fit(std::span<const std::string> argv) {
         group["direction"] = g.direction;
         group["delay_s"] = g.delay_s;
         group["zero_speed_position_mm"] = g.zero_speed_position_mm;
-        if (options.interpolation_period_s) group["lag_cycles"] = optional_json(g.lag_cycles);
+        if (options.interpolation_period_s) {
+            group["lag_cycles"] = optional_json(g.lag_cycles);
+            // Whole cycles for `latency compensate --lag-cycles` (compensation.h).
+            group["compensation_lag_cycles"] =
+                lag_cycles_for_delay(g.delay_s, *options.interpolation_period_s);
+        }
         group["residual_2sigma_mm"] = optional_json(g.residual_2sigma_mm);
         Json feeds = Json::array();
         for (const auto& f : g.feeds) {

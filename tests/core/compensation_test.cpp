@@ -322,5 +322,17 @@ TEST(CompensationSetup, ValidationNamesTheField) {
     EXPECT_EQ(cross[0].key, "counter-bits");
 }
 
+// The inverse of the simulator's naive delay (N + 1/2) T, within the ring.
+TEST(LagCyclesForDelay, WholeCyclesOfAConstantSpeedDelay) {
+    EXPECT_EQ(lag_cycles_for_delay(0.0085, 0.001), 8);  // 8 cycles + half a cycle
+    EXPECT_EQ(lag_cycles_for_delay(0.0082, 0.001), 8);
+    EXPECT_EQ(lag_cycles_for_delay(0.0079, 0.001), 7);
+    EXPECT_EQ(lag_cycles_for_delay(0.0, 0.001), 0);
+    EXPECT_EQ(lag_cycles_for_delay(1.0, 0.001), 49);  // the ring holds 50
+    for (int n = 0; n < 50; ++n) {
+        EXPECT_EQ(lag_cycles_for_delay((n + 0.5) * 0.002, 0.002), n) << n;
+    }
+}
+
 }  // namespace
 }  // namespace probecycle

@@ -121,6 +121,29 @@ TEST(ApplyDelay, ControllerLatencyIsTheDelayLessInterfaceAndHalfScan) {
                 0.0085 - 0.002, 1e-12);
 }
 
+TEST(ChooseGroup, NamedOnlyOrLongest) {
+    std::vector<DelayTouch> touches;
+    add_touches(touches, "X", +1, 10.0, 0.0085, {100, 1000, 2000}, 2);
+    add_touches(touches, "Z", -1, -5.0, 0.012, {100, 1000, 2000}, 2);
+    const DelayFit fit = fit_delay(touches);
+    EXPECT_EQ(choose_group(fit, std::nullopt).group->name(), "Z-");
+    EXPECT_EQ(choose_group(fit, std::string("x+")).group->name(), "X+");
+    EXPECT_THROW((void)choose_group(fit, std::string("Y+")), std::invalid_argument);
+    DelayFit one;
+    one.groups.push_back(fit.groups.front());
+    EXPECT_EQ(choose_group(one, std::nullopt).rule, "the only group");
+}
+
+TEST(DelayCsv, CoordinateBeyondTheMachineNamesTheLine) {
+    try {
+        (void)parse_delay_csv("axis,direction,feed_mm_min,measured_mm\nX,1,100,1e6\n");
+        FAIL() << "accepted";
+    } catch (const CsvError& e) {
+        EXPECT_NE(std::string(e.what()).find("line 2"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("measured_mm"), std::string::npos) << e.what();
+    }
+}
+
 TEST(ApplyDelay, RefusesAnUnknownGroupAndANegativeLatency) {
     std::vector<DelayTouch> touches;
     add_touches(touches, "X", +1, 10.0, 0.003, {100, 1000, 2000}, 2);

@@ -766,24 +766,18 @@ bool LatencyTab::apply_to_scenario() {
 
 void LatencyTab::take_lag_from_fit() {
     if (!fit_ || fit_->groups.empty() || !fit_options_.interpolation_period_s) return;
-    // The group "Apply" uses: the one chosen, else the longest delay.
-    const auto name = chosen_group();
+    // The group "Apply" uses (core choose_group), and the lag rule the
+    // simulator assumes (core lag_cycles_for_delay).
     const DelayGroup* chosen = nullptr;
-    for (const DelayGroup& group : fit_->groups) {
-        if (name ? group.name() == *name : (!chosen || group.delay_s > chosen->delay_s)) {
-            chosen = &group;
-        }
+    try {
+        chosen = choose_group(*fit_, chosen_group()).group;
+    } catch (const std::invalid_argument&) {
+        return;  // a name no longer in the fit: nothing to take
     }
-    if (chosen == nullptr) return;
-    const DelayGroup& g = *chosen;
     const double period_s = *fit_options_.interpolation_period_s;
     CompensationInputs inputs = compensation_inputs();
     inputs.interpolation_period_s = period_s;
-    // A constant-speed test measures the lag plus on average half a cycle
-    // (compensation.h, naive_delay_s): the whole cycles are the lag.
-    const long lag = std::lround(g.delay_s / period_s - 0.5);
-    inputs.lag_cycles =
-        static_cast<int>(std::clamp(lag, 0L, static_cast<long>(IncrementRing::kCapacity) - 1));
+    inputs.lag_cycles = lag_cycles_for_delay(chosen->delay_s, period_s);
     set_compensation_inputs(inputs);
 }
 
