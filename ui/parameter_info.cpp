@@ -93,7 +93,7 @@ const KeyText kKeyTexts[] = {
      QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::log, 10.0, 10000.0, nullptr},
     {"cycle.measure_feed_mm_min",
      QT_TRANSLATE_NOOP("Parameter", "Measuring feedrate"),
-     QT_TRANSLATE_NOOP("Parameter", "Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the backoff is travelled at it."),
+     QT_TRANSLATE_NOOP("Parameter", "Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the second approach, backoff less the first overtravel, is travelled at it."),
      QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
     {"cycle.backoff_mm",
      QT_TRANSLATE_NOOP("Parameter", "Backoff"),

@@ -16,6 +16,18 @@ namespace probecycle::ui {
 
 namespace {
 
+// A readout's alert is the severity of the core's warning about it, so the
+// thresholds (80 % of the overtravel limit, ...) live in core/cycle.cpp only.
+Alert alert_for(const CycleResult& r, WarningCode code) {
+    Alert alert = Alert::none;
+    for (const Warning& w : r.warnings()) {
+        if (w.code != code) continue;
+        if (w.severity == Severity::error) return Alert::alarm;
+        if (w.severity == Severity::warning) alert = Alert::caution;
+    }
+    return alert;
+}
+
 const char* const kAlarmColour = "#c0392b";
 const char* const kCautionColour = "#b9770e";
 const char* const kBetterColour = "#1e8449";
@@ -168,7 +180,7 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
     now[1] = r.overtravel_mm();
     cards_[1].value->setText(format_mm(r.overtravel_mm()));
     detail[1] = tr("%1 % of %2").arg(locale.toString(100.0 * share, 'f', 0), format_mm(limit));
-    set_alert(cards_[1], share >= 1.0 ? Alert::alarm : share >= 0.8 ? Alert::caution : Alert::none);
+    set_alert(cards_[1], alert_for(r, WarningCode::overtravel_limit));
 
     // Trigger speed of the measuring touch
     const TouchResult& measuring = r.measuring_touch();
@@ -189,16 +201,13 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
     cards_[3].value->setText(format_length(r.uncertainty_mm()));
     detail[3] = target > 0.0 ? tr("target %1").arg(format_length(target))
                              : tr("scan range %1").arg(format_length(r.scan_range_mm()));
-    set_alert(cards_[3],
-              target > 0.0 && r.uncertainty_mm() > target ? Alert::caution : Alert::none);
+    set_alert(cards_[3], alert_for(r, WarningCode::uncertainty_over_target));
 
     // Recommended backoff
     now[4] = r.recommended_backoff_mm();
     cards_[4].value->setText(format_mm(r.recommended_backoff_mm()));
     detail[4] = two_touch ? tr("set %1").arg(format_mm(s.cycle.backoff_mm)) : tr("for two-touch");
-    set_alert(cards_[4], two_touch && s.cycle.backoff_mm < r.recommended_backoff_mm()
-                             ? Alert::alarm
-                             : Alert::none);
+    set_alert(cards_[4], alert_for(r, WarningCode::backoff_too_small));
 
     // Knee
     const auto& knee = c.analysis.knee_feed_mm_min;

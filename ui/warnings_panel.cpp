@@ -48,9 +48,7 @@ double round_down(double value, double step) {
     return std::floor(value / step + 1e-9) * step;
 }
 
-}  // namespace
-
-std::optional<Scenario> apply_fix(const Computed& c, Fix fix) {
+std::optional<Scenario> fixed_scenario(const Computed& c, Fix fix) {
     if (!c.valid()) return std::nullopt;
     Scenario s = c.scenario;
     switch (fix) {
@@ -74,6 +72,16 @@ std::optional<Scenario> apply_fix(const Computed& c, Fix fix) {
             break;
     }
     return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Scenario> apply_fix(const Computed& c, Fix fix) {
+    std::optional<Scenario> fixed = fixed_scenario(c, fix);
+    // A fix that breaks another rule (a bore too narrow for the longer
+    // approach, a value beyond its range) is not offered.
+    if (fixed && !validate(*fixed).empty()) return std::nullopt;
+    return fixed;
 }
 
 WarningsPanel::WarningsPanel(QWidget* parent) : QWidget(parent) {

@@ -156,8 +156,8 @@
         <translation>Подача второго касания</translation>
     </message>
     <message>
-        <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the backoff is travelled at it.</source>
-        <translation>Подача второго, измерительного касания при двукратном касании (обычно 30 мм/мин). Определяет неопределённость двукратного касания; путь отвода проходится на ней.</translation>
+        <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the second approach, backoff less the first overtravel, is travelled at it.</source>
+        <translation>Подача второго, измерительного касания при двукратном касании (обычно 30 мм/мин). Определяет неопределённость двукратного касания; на ней проходится второй подвод: отвод за вычетом перебега первого касания.</translation>
     </message>
     <message>
         <source>Backoff</source>

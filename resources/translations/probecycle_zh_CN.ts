@@ -156,8 +156,8 @@
         <translation>第二次触测进给率</translation>
     </message>
     <message>
-        <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the backoff is travelled at it.</source>
-        <translation>二次触发中第二次（测量）触测的进给率（通常 30 mm/min）。决定二次触发的不确定度；回退距离以此进给率重新接近。</translation>
+        <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the second approach, backoff less the first overtravel, is travelled at it.</source>
+        <translation>二次触发中第二次（测量）触测的进给率（通常 30 mm/min）。决定二次触发的不确定度；第二次接近（回退距离减去第一次过行程）以此进给率完成。</translation>
     </message>
     <message>
         <source>Backoff</source>

@@ -362,6 +362,23 @@ TEST_F(MainWindowTest, HiddenLatencyTabCatchesUpWhenShown) {
     EXPECT_GT(tab->comparison()->recorded_speed_mm_s, recorded_before);
 }
 
+// Moving the start out to reach 10000 mm/min (5 mm) would make a 10 mm bore
+// narrower than two approach distances: that fix is not offered.
+TEST_F(MainWindowTest, AFixThatWouldInvalidateTheScenarioIsNotOffered) {
+    Scenario bore = window_->scenario();
+    bore.cycle.feature = Feature::bore;
+    bore.cycle.feature_size_mm = 10.0;
+    bore.cycle.approach_mm = 1.0;
+    bore.cycle.probe_feed_mm_min = 10000.0;
+    window_->edit_scenario(bore, QStringLiteral("small bore"));
+    settle();
+    ASSERT_TRUE(window_->warning_codes().contains(QStringLiteral("touch_while_accelerating")));
+    EXPECT_FALSE(window_->apply_fix_for(QStringLiteral("touch_while_accelerating")));
+    settle();
+    EXPECT_EQ(window_->scenario().cycle.approach_mm, 1.0);
+    EXPECT_TRUE(validate(window_->scenario()).empty());
+}
+
 TEST_F(MainWindowTest, UndoRestoresAndRedoReapplies) {
     const std::string original = json();
     QSlider* feed = slider("cycle.probe_feed_mm_min");

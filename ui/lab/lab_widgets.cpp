@@ -5,6 +5,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPlainTextEdit>
+#include <QTextCursor>
 #include <QVBoxLayout>
 #include <cmath>
 
@@ -179,6 +180,14 @@ LabWarningList::Item warning_item(const LatencyWarning& warning, const QString& 
     //: %1 the group ("X+"), %2 the warning's title
     item.title = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "%1: %2")).arg(group, title);
     return item;
+}
+
+void replace_text_undoably(QPlainTextEdit* editor, const QString& text) {
+    QTextCursor cursor(editor->document());
+    cursor.beginEditBlock();
+    cursor.select(QTextCursor::Document);
+    cursor.insertText(text);
+    cursor.endEditBlock();
 }
 
 QPlainTextEdit* make_csv_editor(QWidget* parent) {

@@ -70,6 +70,9 @@ LabWarningList::Item warning_item(const LatencyWarning& warning, const QString& 
 
 // The paste box of a lab tab: CSV text in a fixed-width font.
 QPlainTextEdit* make_csv_editor(QWidget* parent);
+// Replaces the editor's text as one undoable edit (setPlainText would drop
+// the undo history, and with it what the user had pasted).
+void replace_text_undoably(QPlainTextEdit* editor, const QString& text);
 
 // A message in the error colour.
 void show_error(QLabel* label, const QString& text);

@@ -499,8 +499,8 @@ bool LatencyTab::import_file(const QString& path) {
     const QString text = QString::fromUtf8(file.readAll());
     last_dir_ = QFileInfo(path).absolutePath();
     // The text goes into the paste box even when it is bad, so the line the
-    // message names can be corrected there.
-    touches_edit_->setPlainText(text);
+    // message names can be corrected there; undo brings back what was there.
+    replace_text_undoably(touches_edit_, text);
     return fit_text(text, QFileInfo(path).fileName());
 }
 

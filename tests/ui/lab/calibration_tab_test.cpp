@@ -9,6 +9,7 @@
 #include <QImage>
 #include <QLabel>
 #include <QPixmap>
+#include <QPlainTextEdit>
 #include <QTemporaryDir>
 #include <cmath>
 #include <map>
@@ -148,6 +149,20 @@ TEST_F(LabCalibrationTab, TextInANumberNamesTheLineAndKeepsThePreviousResult) {
     EXPECT_TRUE(tab_.fit()) << tab_.last_error().toStdString();
     EXPECT_TRUE(tab_.last_error().isEmpty());
     EXPECT_FALSE(error->isVisible());
+}
+
+// A bad import shows the file so its named line can be fixed, and undo in the
+// paste box brings back the points the user had pasted.
+TEST_F(LabCalibrationTab, BadImportKeepsThePastedPointsOneUndoAway) {
+    const QString pasted = read_file(lab_data("lab_ring.csv"));
+    tab_.set_points_text(pasted);
+    ASSERT_TRUE(tab_.fit());
+    EXPECT_FALSE(tab_.import_file(lab_data("lab_ring_text_in_number.csv")));
+    auto* editor = tab_.findChild<QPlainTextEdit*>();
+    ASSERT_NE(editor, nullptr);
+    EXPECT_NE(editor->toPlainText(), pasted);
+    editor->undo();
+    EXPECT_EQ(tab_.points_text(), pasted);
 }
 
 TEST_F(LabCalibrationTab, EveryBadFileIsAClearError) {
