@@ -4,7 +4,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -87,8 +89,15 @@ std::string sweep_to_csv(const SweepResult& sweep) {
     return csv;
 }
 
-std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario) {
-    std::string line = "knee: ";
+std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario,
+                          const SweepOptions& options) {
+    std::string line = "knee of this sweep";
+    if (scenario.cycle.strategy == Strategy::two_touch) {
+        line += options.recommended_backoff
+                    ? " (recommended backoff at each feed)"
+                    : " (backoff as set, " + number(scenario.cycle.backoff_mm) + " mm)";
+    }
+    line += ": ";
     line += sweep.knee_feed_mm_min ? number(*sweep.knee_feed_mm_min) + " mm/min" : "none";
     line += "; fastest feed meeting the target uncertainty";
     if (scenario.cycle.target_uncertainty_mm <= 0.0) {
@@ -141,6 +150,22 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
     }
     csv += "\n# sweep\n" + sweep_to_csv(sweep);
     return csv;
+}
+
+std::vector<double> report_feeds(const Scenario& scenario, const Analysis& analysis) {
+    std::vector<double> feeds = {10,   20,   30,   50,   75,   100,  150,  200,
+                                 300,  400,  500,  600,  800,  1000, 1200, 1500,
+                                 2000, 2500, 3000, 4000, 5000, 6000, 8000, 10000};
+    feeds.push_back(scenario.cycle.probe_feed_mm_min);
+    if (analysis.knee_feed_mm_min) feeds.push_back(std::round(*analysis.knee_feed_mm_min));
+    std::sort(feeds.begin(), feeds.end());
+    feeds.erase(std::unique(feeds.begin(), feeds.end()), feeds.end());
+    return feeds;
+}
+
+std::string csv_report(const Scenario& scenario) {
+    const Analysis analysis = analyse(scenario);
+    return csv_report(scenario, analysis, sweep_feeds(scenario, report_feeds(scenario, analysis)));
 }
 
 void write_file_atomically(const std::string& path_given, std::string_view contents) {

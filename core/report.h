@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cycle.h"
 #include "scenario.h"
@@ -18,13 +19,23 @@ std::string evaluation_to_json(const Analysis& analysis);
 
 // Header: feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm,<one column per phase>.
 std::string sweep_to_csv(const SweepResult& sweep);
-// One line: the knee and the fastest feed meeting the target.
-std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario);
+// One line: the knee and the fastest feed meeting the target, saying for a
+// two-touch sweep which backoff the knee's curve used.
+std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario,
+                          const SweepOptions& options = {});
+
+// Feeds of the report's sweep table: round numbers from 10 to 10000 mm/min,
+// plus the scenario's feed and its knee.
+std::vector<double> report_feeds(const Scenario& scenario, const Analysis& analysis);
 
 // Sections "# scenario", "# summary", "# phases", "# warnings", "# sweep",
-// each a CSV table, for the report an engineer hands over.
+// each a CSV table, for the report an engineer hands over. The sweep varies
+// the probe feed with the rest as in the scenario.
 std::string csv_report(const Scenario& scenario, const Analysis& analysis,
                        const SweepResult& sweep);
+// The same, analysed and swept over report_feeds(): what the window exports
+// and `probecycle-cli report` writes.
+std::string csv_report(const Scenario& scenario);
 
 // Writes via a temporary file in the same directory and a rename, so the
 // target is either the old or the complete new file. Throws std::runtime_error.

@@ -27,17 +27,4 @@ const Computed& Computation::run(const Scenario& scenario) {
     return r;
 }
 
-std::vector<double> report_feeds(const Computed& computed) {
-    std::vector<double> feeds = {10,   20,   30,   50,   75,   100,  150,  200,
-                                 300,  400,  500,  600,  800,  1000, 1200, 1500,
-                                 2000, 2500, 3000, 4000, 5000, 6000, 8000, 10000};
-    feeds.push_back(computed.scenario.cycle.probe_feed_mm_min);
-    if (computed.analysis.knee_feed_mm_min) {
-        feeds.push_back(std::round(*computed.analysis.knee_feed_mm_min));
-    }
-    std::sort(feeds.begin(), feeds.end());
-    feeds.erase(std::unique(feeds.begin(), feeds.end()), feeds.end());
-    return feeds;
-}
-
 }  // namespace probecycle::ui

@@ -50,8 +50,4 @@ class Computation {
     Scenario variant_;
 };
 
-// Feeds for the report's sweep table: round numbers from 10 to 10000 mm/min,
-// plus the scenario's feed and its knee.
-std::vector<double> report_feeds(const Computed& computed);
-
 }  // namespace probecycle::ui

@@ -592,7 +592,7 @@ bool MainWindow::export_csv_report(const QString& path) {
                      tr("The scenario is not valid; see the warnings panel."));
         return false;
     }
-    const std::vector<double> feeds = report_feeds(c);
+    const std::vector<double> feeds = report_feeds(c.scenario, c.analysis);
     const std::string csv = csv_report(c.scenario, c.analysis, sweep_feeds(c.scenario, feeds));
     QSaveFile file(path);
     const QByteArray bytes = QByteArray::fromStdString(csv);

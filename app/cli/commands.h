@@ -13,6 +13,7 @@ int run_defaults(std::span<const std::string> args);
 int run_evaluate(std::span<const std::string> args);
 int run_move(std::span<const std::string> args);
 int run_sweep(std::span<const std::string> args);
+int run_report(std::span<const std::string> args);
 int run_montecarlo(std::span<const std::string> args);
 
 // The calibration and latency lab (issue 4), in commands_lab.cpp.

@@ -73,15 +73,26 @@ int run_sweep(std::span<const std::string> argv) {
                          " points from --from to --to; at most 1000000 allowed");
     }
     const std::vector<double> feeds = linear_feeds(from, to, step);
-    const SweepResult sweep =
-        sweep_feeds(scenario, feeds, {.recommended_backoff = args.has("--recommended-backoff")});
+    const SweepOptions options{.recommended_backoff = args.has("--recommended-backoff")};
+    const SweepResult sweep = sweep_feeds(scenario, feeds, options);
     const std::string csv = sweep_to_csv(sweep);
     if (const std::optional<std::string> path = args.value("--csv")) {
         write_file_atomically(*path, csv);
     } else {
         std::cout << csv;
     }
-    std::cerr << sweep_summary(sweep, scenario) << '\n';
+    std::cerr << sweep_summary(sweep, scenario, options) << '\n';
+    return 0;
+}
+
+int run_report(std::span<const std::string> argv) {
+    const Args args = parse_args(argv, {"--set", "--csv"});
+    const std::string csv = csv_report(load_scenario(args));
+    if (const std::optional<std::string> path = args.value("--csv")) {
+        write_file_atomically(*path, csv);
+    } else {
+        std::cout << csv;
+    }
     return 0;
 }
 

@@ -22,6 +22,8 @@ Cycle model:
         [--recommended-backoff]              cycle time against probe feed (CSV); with
                                              --recommended-backoff, two-touch backs off
                                              overtravel + reseat at each feed
+  report [SCENARIO.json] [--set K=V ...] [--csv FILE]
+                                             the CSV report the window exports
   montecarlo [SCENARIO.json] [--set K=V ...] [--samples N] [--seed S] [--bins B]
                                              trigger-error histogram (JSON)
 Calibration and latency lab:
@@ -56,12 +58,13 @@ int main(int argc, char** argv) {
         if (command == "evaluate") return cli::run_evaluate(rest);
         if (command == "move") return cli::run_move(rest);
         if (command == "sweep") return cli::run_sweep(rest);
+        if (command == "report") return cli::run_report(rest);
         if (command == "montecarlo") return cli::run_montecarlo(rest);
         if (command == "calibrate") return cli::run_calibrate(rest);
         if (command == "latency") return cli::run_latency(rest);
-        std::cerr
-            << "probecycle-cli: unknown command '" << command
-            << "'; allowed: defaults, evaluate, move, sweep, montecarlo, calibrate, latency\n";
+        std::cerr << "probecycle-cli: unknown command '" << command
+                  << "'; allowed: defaults, evaluate, move, sweep, report, montecarlo, calibrate, "
+                     "latency\n";
         return 2;
     } catch (const ScenarioError& e) {
         std::cerr << "probecycle-cli: invalid scenario:\n" << e.what() << '\n';

@@ -404,6 +404,21 @@ TEST_F(CycleCli, SweepCsvWritesTheFile) {
     EXPECT_EQ(slurp(file), to_stdout.out);
 }
 
+// `report` writes the window's CSV report: the core's csv_report of the scenario.
+TEST_F(CycleCli, ReportIsTheCoreCsvReportOnStdoutOrInAFile) {
+    const CliRun printed = run({"report", "--set", "cycle.feature=bore"});
+    ASSERT_EQ(printed.exit_code, 0) << printed;
+    Scenario s;
+    s.cycle.feature = Feature::bore;
+    EXPECT_EQ(printed.out, csv_report(s));
+    const fs::path file = dir_ / "report.csv";
+    const CliRun written = run({"report", "--set", "cycle.feature=bore", "--csv", file.string()});
+    ASSERT_EQ(written.exit_code, 0) << written;
+    EXPECT_TRUE(written.out.empty()) << written;
+    EXPECT_EQ(slurp(file), printed.out);
+    EXPECT_EQ(run({"report", "--set", "cycle.feature=sphere"}).exit_code, 2);
+}
+
 TEST_F(CycleCli, FailedSweepLeavesAnExistingFileUntouched) {
     const fs::path file = dir_ / "sweep.csv";
     const std::vector<std::vector<std::string>> bad = {
