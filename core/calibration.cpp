@@ -20,16 +20,15 @@ std::string mm(double value_mm) {
     return format_number(value_mm, 4) + " mm";
 }
 
-// Index into RingCalibration::fits: 0 for 0 deg, 1 for 180 deg.
+constexpr std::array<const char*, 2> kOrientationNames = {"0 deg", "180 deg"};
+
+}  // namespace
+
 std::optional<std::size_t> orientation_index(double orientation_deg) {
     if (std::abs(orientation_deg) <= kOrientationTolerance_deg) return 0;
     if (std::abs(orientation_deg - 180.0) <= kOrientationTolerance_deg) return 1;
     return std::nullopt;
 }
-
-constexpr std::array<const char*, 2> kOrientationNames = {"0 deg", "180 deg"};
-
-}  // namespace
 
 const char* to_string(CalibrationWarningCode code) {
     switch (code) {

@@ -101,6 +101,10 @@ std::vector<RingPoint> parse_ring_csv(std::string_view text);
 RingCalibration calibrate_ring(std::span<const RingPoint> points,
                                const RingCalibrationOptions& options);
 
+// Index into RingCalibration::fits of a spindle orientation: 0 for 0 deg,
+// 1 for 180 deg (within a small tolerance), nullopt otherwise.
+std::optional<std::size_t> orientation_index(double orientation_deg);
+
 // The sector (within +-22.5 deg) a touch direction falls in, measured from the
 // fitted centre: 0 X+, 1 X-, 2 Y+, 3 Y-; nullopt between them.
 std::optional<int> touch_direction(double dx_mm, double dy_mm);

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "csv_text.h"
 #include "units.h"
 
 namespace probecycle {
@@ -24,18 +25,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 std::string number(double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.9g", value);
-    return buffer;
-}
-
-std::string csv_quote(const std::string& text) {
-    std::string out = "\"";
-    for (char ch : text) {
-        if (ch == '"') out += '"';
-        out += ch;
-    }
-    return out + "\"";
+    return csv_number_text(value);
 }
 
 Json warnings_json(const std::vector<Warning>& warnings) {
@@ -219,6 +209,25 @@ std::string read_text_file(const std::string& path) {
     text << in.rdbuf();
     if (in.bad()) throw std::runtime_error("cannot read " + path);
     return text.str();
+}
+
+std::string csv_number_text(double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);
+    return buffer;
+}
+
+std::string csv_number_text(const std::optional<double>& value) {
+    return value ? csv_number_text(*value) : std::string();
+}
+
+std::string csv_quote(const std::string& text) {
+    std::string out = "\"";
+    for (const char ch : text) {
+        if (ch == '"') out += '"';
+        out += ch;
+    }
+    return out + "\"";
 }
 
 }  // namespace probecycle

@@ -74,15 +74,6 @@ double nice_ceiling(double v) {
     return 10.0 * power;
 }
 
-double nice_step(double raw) {
-    if (!(raw > 0.0) || !std::isfinite(raw)) return 1.0;
-    const double power = std::pow(10.0, std::floor(std::log10(raw)));
-    for (double m : {1.0, 2.0, 5.0}) {
-        if (m * power >= raw) return m * power;
-    }
-    return 10.0 * power;
-}
-
 }  // namespace
 
 // Keeps an axis still while the data moves a little under a slider: the range
@@ -92,7 +83,7 @@ bool StableRange::update(double want_lo, double want_hi) {
     if (!(want_hi > want_lo)) want_hi = want_lo + 1.0;
     const bool inside = set && want_lo >= lo && want_hi <= hi;
     if (inside && want_hi - want_lo >= 0.5 * (hi - lo)) return false;
-    const double step = nice_step((want_hi - want_lo) / 10.0);
+    const double step = PlotView::nice_step((want_hi - want_lo) / 10.0);
     const double new_lo = std::floor(want_lo / step) * step;
     const double new_hi = std::ceil(want_hi / step) * step;
     set = true;

@@ -34,15 +34,6 @@ Qt::PenStyle pen_style(PlotView::Dash dash) {
 }
 
 // 1, 2 or 5 times a power of ten, nearest above `raw`.
-double nice_step(double raw) {
-    if (!(raw > 0.0) || !std::isfinite(raw)) return 1.0;
-    const double power = std::pow(10.0, std::floor(std::log10(raw)));
-    for (double m : {1.0, 2.0, 5.0}) {
-        if (m * power >= raw) return m * power;
-    }
-    return 10.0 * power;
-}
-
 // A one-pixel cosmetic pen: the raster engine's fast path for grid lines.
 QPen hairline(const QColor& colour) {
     QPen pen(colour, 1.0);
@@ -163,6 +154,15 @@ struct PlotView::Impl {
         return &curves[static_cast<std::size_t>(id)];
     }
 };
+
+double PlotView::nice_step(double raw) {
+    if (!(raw > 0.0) || !std::isfinite(raw)) return 1.0;
+    const double power = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 5.0}) {
+        if (m * power >= raw) return m * power;
+    }
+    return 10.0 * power;
+}
 
 PlotView::PlotView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<Impl>()) {
     impl_->chart = new QChart;

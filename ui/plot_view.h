@@ -42,6 +42,9 @@ class PlotView : public QWidget {
     using CurveId = int;
 
     explicit PlotView(QWidget* parent = nullptr);
+
+    // The round axis step (1, 2 or 5 times a power of ten) at or above `raw`.
+    static double nice_step(double raw);
     ~PlotView() override;
 
     void set_title(const QString& title);

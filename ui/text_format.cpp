@@ -217,4 +217,16 @@ QString phase_label(Phase phase) {
                            : QString::fromUtf8(to_string(phase));
 }
 
+const char* severity_colour(Severity severity) {
+    switch (severity) {
+        case Severity::error:
+            return "#c0392b";
+        case Severity::warning:
+            return "#b9770e";
+        case Severity::info:
+            break;
+    }
+    return "#2471a3";
+}
+
 }  // namespace probecycle::ui

@@ -20,6 +20,8 @@ QString format_signed_length(double mm);
 // A core warning in the interface language. English shows the core's own
 // message (the same text as the CLI); translations format the same numbers.
 QString warning_text(const Warning& warning);
+// The colour of a severity, as "#rrggbb": the warnings panel and the lab's lists.
+const char* severity_colour(Severity severity);
 // A short title per warning code.
 QString warning_title(WarningCode code);
 

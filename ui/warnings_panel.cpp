@@ -15,18 +15,6 @@ namespace probecycle::ui {
 
 namespace {
 
-const char* severity_colour(Severity severity) {
-    switch (severity) {
-        case Severity::error:
-            return "#c0392b";
-        case Severity::warning:
-            return "#b9770e";
-        case Severity::info:
-            break;
-    }
-    return "#2471a3";
-}
-
 QStyle::StandardPixmap severity_icon(Severity severity) {
     switch (severity) {
         case Severity::error:

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "calibration.h"
+#include "calibration_report.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "compensation.h"
@@ -28,7 +29,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 constexpr const char* kCalibrateUsage =
-    "usage: calibrate ring FILE.csv --gauge-diameter MM [--runout-limit MM] "
+    "usage: calibrate ring FILE.csv --gauge-diameter MM [--runout-limit MM] [--report FILE.csv] "
     "[--residual-limit MM]\n"
     "       calibrate length --surface-z MM --trigger-z MM [--trigger-z MM ...] "
     "[--active-length MM] [--nominal-length MM] [--wear-limit MM]";
@@ -102,7 +103,8 @@ int whole_number_option(const Args& args, const std::string& name, int min, int 
 // --- calibrate ---
 
 int run_calibrate_ring(std::span<const std::string> argv) {
-    const Args args = parse_args(argv, {"--gauge-diameter", "--runout-limit", "--residual-limit"});
+    const Args args =
+        parse_args(argv, {"--gauge-diameter", "--runout-limit", "--residual-limit", "--report"});
     const std::string& path = input_file(args, "ring");
     RingCalibrationOptions options;
     options.gauge_diameter_mm = number_option(args, "--gauge-diameter", 0.1, 2000.0);
@@ -111,9 +113,16 @@ int run_calibrate_ring(std::span<const std::string> argv) {
     options.residual_limit_mm = optional_number_option(args, "--residual-limit", 0.0, 10.0)
                                     .value_or(options.residual_limit_mm);
 
+    std::vector<RingPoint> points;
     const RingCalibration result = read_lab_csv(path, [&](const std::string& text) {
-        return calibrate_ring(parse_ring_csv(text), options);
+        points = parse_ring_csv(text);
+        return calibrate_ring(points, options);
     });
+    // The same CSV report as the Calibration tab exports.
+    if (const auto report = args.value("--report")) {
+        write_file_atomically(*report, calibration_report_csv(
+                                           RingReportInput{points, options, result}, std::nullopt));
+    }
 
     Json out = Json::object();
     out["gauge_diameter_mm"] = options.gauge_diameter_mm;

@@ -28,7 +28,7 @@ Cycle model:
                                              trigger-error histogram (JSON)
 Calibration and latency lab:
   calibrate ring FILE.csv --gauge-diameter MM [--runout-limit MM] [--residual-limit MM]
-                                             ring-gauge calibration: centre, runout, radius
+        [--report FILE.csv]                  ring-gauge calibration: centre, runout, radius
   calibrate length --surface-z MM --trigger-z MM [--trigger-z MM ...] [--active-length MM]
         [--nominal-length MM] [--wear-limit MM]
                                              effective probe length, or wear

@@ -16,6 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "calibration_report.h"
+#include "report.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -138,6 +141,23 @@ TEST(LabCalibrateRing, ExactFileGivesTheKnownAnswers) {
     EXPECT_NEAR(out.at("residual_max_mm").get<double>(), 0.0, kFileRounding);
     EXPECT_EQ(out.at("fits").size(), 2u);
     EXPECT_TRUE(out.at("warnings").empty());
+}
+
+// --report writes the Calibration tab's CSV report: the core's text for the same fit.
+TEST(LabCalibrateRing, ReportFileIsTheCalibrationReport) {
+    const LabTempDir dir;
+    const fs::path report = dir / "ring_report.csv";
+    const auto run = run_lab_cli("calibrate ring " + lab_quote(lab_data("lab_ring.csv")) +
+                                 " --gauge-diameter 50 --report " + lab_quote(report.string()));
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    using namespace probecycle;
+    const std::string text = read_text_file(report.string());
+    const std::vector<RingPoint> points = parse_ring_csv(read_text_file(lab_data("lab_ring.csv")));
+    RingCalibrationOptions options;
+    options.gauge_diameter_mm = 50.0;
+    const RingCalibration result = calibrate_ring(points, options);
+    EXPECT_EQ(text, calibration_report_csv(RingReportInput{points, options, result}, std::nullopt));
+    EXPECT_EQ(text.rfind("# ring\n", 0), 0u) << text;
 }
 
 TEST(LabCalibrateRing, OneOrientationSaysThereIsNoRunout) {

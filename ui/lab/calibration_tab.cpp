@@ -20,7 +20,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "lab/calibration_report.h"
+#include "calibration_report.h"
 #include "lab/lab_widgets.h"
 #include "parameter_info.h"
 #include "plot_view.h"

@@ -10,22 +10,11 @@
 #include <cmath>
 
 #include "parameter_info.h"
+#include "text_format.h"
 
 namespace probecycle::ui {
 
 namespace {
-
-const char* severity_colour(Severity severity) {
-    switch (severity) {
-        case Severity::error:
-            return "#c0392b";
-        case Severity::warning:
-            return "#b9770e";
-        case Severity::info:
-            break;
-    }
-    return "#2471a3";
-}
 
 QString tr_lab(const char* text) {
     return QCoreApplication::translate("probecycle::ui::Lab", text);

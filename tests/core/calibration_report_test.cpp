@@ -1,16 +1,16 @@
-// The Calibration tab's CSV report as text (ui/lab/calibration_report.h); the
-// tab's own test checks the report of a ring fit through export_report().
+// The calibration report as text (core/calibration_report.h); the Calibration
+// tab's test checks the report of a ring fit through export_report().
 
-#include "lab/calibration_report.h"
+#include "calibration_report.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-namespace probecycle::ui {
+namespace probecycle {
 namespace {
 
-TEST(LabCalibrationReport, LengthOnlyHasNoRingSections) {
+TEST(CalibrationReport, LengthOnlyHasNoRingSections) {
     LengthReportInput length;
     length.input.surface_z_mm = 10.0;
     length.input.trigger_z_mm = {110.0};
@@ -23,7 +23,7 @@ TEST(LabCalibrationReport, LengthOnlyHasNoRingSections) {
     EXPECT_NE(csv.find("\n# warnings\ncode,severity,message\n"), std::string::npos) << csv;
 }
 
-TEST(LabCalibrationReport, WarningsAreQuotedWithTheirCode) {
+TEST(CalibrationReport, WarningsAreQuotedWithTheirCode) {
     LengthReportInput length;
     length.input.surface_z_mm = 10.0;
     length.input.trigger_z_mm = {110.0};
@@ -35,4 +35,4 @@ TEST(LabCalibrationReport, WarningsAreQuotedWithTheirCode) {
 }
 
 }  // namespace
-}  // namespace probecycle::ui
+}  // namespace probecycle

@@ -4,27 +4,17 @@
 #include <cstdio>
 #include <vector>
 
-namespace probecycle::ui {
+#include "csv_text.h"
+
+namespace probecycle {
 
 namespace {
 
 std::string number(double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.9g", value);
-    return buffer;
+    return csv_number_text(value);
 }
-
 std::string number(const std::optional<double>& value) {
-    return value ? number(*value) : std::string();
-}
-
-std::string csv_quote(const std::string& text) {
-    std::string out = "\"";
-    for (const char ch : text) {
-        if (ch == '"') out += '"';
-        out += ch;
-    }
-    return out + "\"";
+    return csv_number_text(value);
 }
 
 std::string row(const char* quantity, const std::string& value, const char* unit) {
@@ -75,8 +65,7 @@ std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
             "\n# "
             "points\nline,orientation_deg,x_mm,y_mm,direction,effective_radius_mm,residual_mm\n";
         for (const RingPoint& p : ring->points) {
-            const std::size_t o =
-                std::abs(p.orientation_deg) < 90.0 ? 0 : 1;  // 0 or 180, within tolerance
+            const std::size_t o = orientation_index(p.orientation_deg).value_or(0);
             csv += (p.line > 0 ? std::to_string(p.line) : std::string()) + ',' +
                    number(p.orientation_deg) + ',' + number(p.x_mm) + ',' + number(p.y_mm) + ',';
             if (const auto& fit = r.fits[o]) {
@@ -119,4 +108,4 @@ std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
     return csv;
 }
 
-}  // namespace probecycle::ui
+}  // namespace probecycle

@@ -1,8 +1,8 @@
 #pragma once
 
-// The Calibration tab's CSV report, as text (no Qt): the sections an engineer
-// files with the probe's calibration record, each a CSV table, in the style of
-// the core's csv_report (core/report.h).
+// The calibration report, as CSV text: the sections an engineer files with the
+// probe's calibration record, each a CSV table, in the style of csv_report
+// (report.h). The Calibration tab exports it; `calibrate ring --report` writes it.
 
 #include <optional>
 #include <span>
@@ -10,7 +10,7 @@
 
 #include "calibration.h"
 
-namespace probecycle::ui {
+namespace probecycle {
 
 struct RingReportInput {
     std::span<const RingPoint> points;
@@ -29,4 +29,4 @@ struct LengthReportInput {
 std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
                                    const std::optional<LengthReportInput>& length);
 
-}  // namespace probecycle::ui
+}  // namespace probecycle
