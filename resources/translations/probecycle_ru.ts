@@ -538,10 +538,6 @@
         <translation>Экспорт отчёта CSV…</translation>
     </message>
     <message>
-        <source>%1 could not be read: %2</source>
-        <translation>Не удалось прочитать %1: %2</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -804,6 +800,10 @@
         <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>Не удалось прочитать %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::LatencyTab</name>
@@ -1006,10 +1006,6 @@
     <message>
         <source>Position [%1]</source>
         <translation>Положение [%1]</translation>
-    </message>
-    <message>
-        <source>%1 could not be read: %2</source>
-        <translation>Не удалось прочитать %1: %2</translation>
     </message>
     <message>
         <source>%1: %2</source>

@@ -374,18 +374,14 @@ bool CalibrationTab::fit() {
 }
 
 bool CalibrationTab::import_file(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        set_error(
-            tr("%1 could not be read: %2").arg(QFileInfo(path).fileName(), file.errorString()));
+    QString error;
+    const std::optional<QString> text = import_csv_into(points_edit_, path, error);
+    if (!text) {
+        set_error(error);
         return false;
     }
-    const QString text = QString::fromUtf8(file.readAll());
     last_dir_ = QFileInfo(path).absolutePath();
-    // The text goes into the paste box even when it is bad, so the line the
-    // message names can be corrected there; undo brings back what was there.
-    replace_text_undoably(points_edit_, text);
-    return fit_text(text, QFileInfo(path).fileName());
+    return fit_text(*text, QFileInfo(path).fileName());
 }
 
 bool CalibrationTab::fit_text(const QString& text, const QString& source) {

@@ -1,6 +1,8 @@
 #include "lab_widgets.h"
 
 #include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
 #include <QFontDatabase>
 #include <QLabel>
 #include <QLocale>
@@ -177,6 +179,19 @@ void replace_text_undoably(QPlainTextEdit* editor, const QString& text) {
     cursor.select(QTextCursor::Document);
     cursor.insertText(text);
     cursor.endEditBlock();
+}
+
+std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& path,
+                                       QString& error) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        error = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "%1 could not be read: %2"))
+                    .arg(QFileInfo(path).fileName(), file.errorString());
+        return std::nullopt;
+    }
+    const QString text = QString::fromUtf8(file.readAll());
+    replace_text_undoably(editor, text);
+    return text;
 }
 
 QPlainTextEdit* make_csv_editor(QWidget* parent) {

@@ -10,6 +10,7 @@
 #include <QStringList>
 #include <QWidget>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "calibration.h"
@@ -73,6 +74,10 @@ QPlainTextEdit* make_csv_editor(QWidget* parent);
 // Replaces the editor's text as one undoable edit (setPlainText would drop
 // the undo history, and with it what the user had pasted).
 void replace_text_undoably(QPlainTextEdit* editor, const QString& text);
+// Reads a CSV file into a paste box as one undoable edit: a bad file's named
+// line can then be corrected there, and undo brings back what was pasted.
+// Returns the text, or nullopt with `error` saying why the file was unreadable.
+std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& path, QString& error);
 
 // A message in the error colour.
 void show_error(QLabel* label, const QString& text);
