@@ -110,57 +110,60 @@ double reach_distance_mm(const MotionLimits& limits, double feed_mm_s) {
     return 0.5 * feed_mm_s * reach_time_s(limits, feed_mm_s);
 }
 
-double move_time_s(const MotionLimits& limits, double distance_mm, double feed_mm_s) {
-    if (distance_mm <= 0.0) return 0.0;
+namespace {
+
+// A rest-to-rest move: the peak speed, the time of each (symmetric) ramp to
+// and from it, and the time at it. Trapezoid when the move is long enough to
+// reach the feed (time constant: d >= v*T), else a triangle (or the reduced
+// S-curve) peaking lower with the same limits.
+struct MoveShape {
+    double peak_mm_s{0.0};
+    double ramp_s{0.0};
+    double cruise_s{0.0};
+};
+
+MoveShape move_shape(const MotionLimits& limits, double distance_mm, double feed_mm_s) {
+    if (distance_mm <= 0.0) return {};
     const double v = feed_mm_s;
     if (limits.model == AccelModel::jerk_limited) {
         const double a = limits.max_accel_mm_s2;
         const double j = limits.max_jerk_mm_s3;
         const double t_reach = jerk_reach_time_s(v, a, j);
         const double d_ramps = v * t_reach;  // both ramps
-        if (distance_mm >= d_ramps) return distance_mm / v + t_reach;
+        if (distance_mm >= d_ramps) return {v, t_reach, (distance_mm - d_ramps) / v};
         const double vp = jerk_short_move_peak_mm_s(distance_mm, a, j);
-        return 2.0 * jerk_reach_time_s(vp, a, j);
+        return {vp, jerk_reach_time_s(vp, a, j), 0.0};
     }
     const double a = effective_accel_mm_s2(limits, v);
-    // Trapezoid when d >= v^2/a (time constant: d >= v*T): d/v + v/a.
-    if (distance_mm * a >= v * v) return distance_mm / v + v / a;
-    // Triangle with the same a: 2 sqrt(d/a) (time constant: 2 sqrt(d T / v)).
-    return 2.0 * std::sqrt(distance_mm / a);
+    if (distance_mm * a >= v * v) return {v, v / a, (distance_mm - v * v / a) / v};
+    const double vp = std::sqrt(a * distance_mm);  // 2 sqrt(d/a) in all (2 sqrt(d T / v))
+    return {vp, vp / a, 0.0};
+}
+
+}  // namespace
+
+double move_time_s(const MotionLimits& limits, double distance_mm, double feed_mm_s) {
+    const MoveShape shape = move_shape(limits, distance_mm, feed_mm_s);
+    return 2.0 * shape.ramp_s + shape.cruise_s;
 }
 
 double move_peak_speed_mm_s(const MotionLimits& limits, double distance_mm, double feed_mm_s) {
-    if (distance_mm <= 0.0) return 0.0;
-    const double v = feed_mm_s;
-    if (limits.model == AccelModel::jerk_limited) {
-        const double a = limits.max_accel_mm_s2;
-        const double j = limits.max_jerk_mm_s3;
-        if (distance_mm >= v * jerk_reach_time_s(v, a, j)) return v;
-        return jerk_short_move_peak_mm_s(distance_mm, a, j);
-    }
-    const double a = effective_accel_mm_s2(limits, v);
-    if (distance_mm * a >= v * v) return v;
-    return std::sqrt(a * distance_mm);
+    return move_shape(limits, distance_mm, feed_mm_s).peak_mm_s;
 }
 
 SegmentPlan plan_move(const MotionLimits& limits, double distance_mm, double feed_mm_s) {
     SegmentPlan plan;
-    if (distance_mm <= 0.0) return plan;
-    const double vp = move_peak_speed_mm_s(limits, distance_mm, feed_mm_s);
-    const double t_reach =
-        limits.model == AccelModel::jerk_limited
-            ? jerk_reach_time_s(vp, limits.max_accel_mm_s2, limits.max_jerk_mm_s3)
-            : vp / effective_accel_mm_s2(limits, feed_mm_s);
-    const double cruise_s = std::max(0.0, (distance_mm - vp * t_reach) / vp);
+    const MoveShape shape = move_shape(limits, distance_mm, feed_mm_s);
+    if (shape.peak_mm_s <= 0.0) return plan;
     if (limits.model == AccelModel::jerk_limited) {
-        push_jerk_ramp(plan, vp, limits.max_accel_mm_s2, limits.max_jerk_mm_s3, +1.0);
-        plan.push(cruise_s, 0.0, 0.0);
-        push_jerk_ramp(plan, vp, limits.max_accel_mm_s2, limits.max_jerk_mm_s3, -1.0);
+        push_jerk_ramp(plan, shape.peak_mm_s, limits.max_accel_mm_s2, limits.max_jerk_mm_s3, +1.0);
+        plan.push(shape.cruise_s, 0.0, 0.0);
+        push_jerk_ramp(plan, shape.peak_mm_s, limits.max_accel_mm_s2, limits.max_jerk_mm_s3, -1.0);
     } else {
         const double a = effective_accel_mm_s2(limits, feed_mm_s);
-        plan.push(t_reach, a, 0.0);
-        plan.push(cruise_s, 0.0, 0.0);
-        plan.push(t_reach, -a, 0.0);
+        plan.push(shape.ramp_s, a, 0.0);
+        plan.push(shape.cruise_s, 0.0, 0.0);
+        plan.push(shape.ramp_s, -a, 0.0);
     }
     return plan;
 }
