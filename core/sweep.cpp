@@ -14,6 +14,13 @@ namespace probecycle {
 
 namespace {
 
+// The evaluation buffer the sweeps and knee searches reuse on this thread:
+// its vectors are allocated once, not per evaluation.
+CycleResult& scratch_result() {
+    thread_local CycleResult scratch;
+    return scratch;
+}
+
 // Evaluates `base` at a probe feed, into `scratch`; returns the cycle time.
 double cycle_time_at(const Scenario& base, double feed_mm_min, const SweepOptions& options,
                      CycleResult& scratch) {
@@ -32,8 +39,7 @@ double cycle_time_at(const Scenario& base, double feed_mm_min, const SweepOption
 
 void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm_min,
                       SweepResult& out, const SweepOptions& options) {
-    // One scratch result per thread: its buffers are reused, not reallocated.
-    thread_local CycleResult scratch;
+    CycleResult& scratch = scratch_result();
     out.points.resize(feeds_mm_min.size());
     double best_time = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < feeds_mm_min.size(); ++i) {
@@ -71,11 +77,15 @@ SweepResult sweep_feeds(const Scenario& scenario, std::span<const double> feeds_
     return out;
 }
 
+double linear_feed_count(double from_mm_min, double to_mm_min, double step_mm_min) {
+    if (!(step_mm_min > 0.0) || to_mm_min < from_mm_min) return 0.0;
+    return std::floor((to_mm_min - from_mm_min) / step_mm_min + 1e-9) + 1.0;
+}
+
 std::vector<double> linear_feeds(double from_mm_min, double to_mm_min, double step_mm_min) {
     std::vector<double> feeds;
-    if (!(step_mm_min > 0.0) || to_mm_min < from_mm_min) return feeds;
-    const double span_steps = (to_mm_min - from_mm_min) / step_mm_min;
-    const auto count = static_cast<std::size_t>(std::floor(span_steps + 1e-9)) + 1;
+    const auto count =
+        static_cast<std::size_t>(linear_feed_count(from_mm_min, to_mm_min, step_mm_min));
     feeds.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
         feeds.push_back(from_mm_min + static_cast<double>(i) * step_mm_min);
@@ -99,7 +109,7 @@ std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t 
 std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_min,
                                        double to_mm_min, const SweepOptions& options) {
     if (!(from_mm_min > 0.0) || !(to_mm_min > from_mm_min)) return std::nullopt;
-    thread_local CycleResult scratch;
+    CycleResult& scratch = scratch_result();
     constexpr std::size_t kGrid = 48;
     const std::vector<double> grid = log_feeds(from_mm_min, to_mm_min, kGrid);
     std::array<double, kGrid> times{};
@@ -159,7 +169,7 @@ Analysis analyse(const Scenario& scenario) {
     analysis.knee_feed_mm_min =
         find_knee_mm_min(scenario, kKneeSearchFrom_mm_min, search_to, optimised);
     if (!analysis.knee_feed_mm_min) return analysis;
-    thread_local CycleResult scratch;
+    CycleResult& scratch = scratch_result();
     const double knee_feed = *analysis.knee_feed_mm_min;
     analysis.knee_cycle_time_s = cycle_time_at(scenario, knee_feed, optimised, scratch);
     const double feed = scenario.cycle.probe_feed_mm_min;

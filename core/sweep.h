@@ -46,6 +46,9 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
                       SweepResult& out, const SweepOptions& options = {});
 // from, from+step, ... while <= to (to itself when it falls on the grid).
 std::vector<double> linear_feeds(double from_mm_min, double to_mm_min, double step_mm_min);
+// How many feeds linear_feeds() would make, without making them (0 for an
+// empty range or a step that is not positive).
+double linear_feed_count(double from_mm_min, double to_mm_min, double step_mm_min);
 // n feeds spaced evenly on a log scale from..to inclusive (n >= 2).
 std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t n);
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "cycle.h"
@@ -68,6 +69,18 @@ TEST(LinearFeeds, EndIncludedDespiteRounding) {
     const std::vector<double> partial = linear_feeds(100.0, 1020.0, 100.0);
     ASSERT_EQ(partial.size(), 10u);
     EXPECT_NEAR(partial.back(), 1000.0, 1e-9);
+}
+
+// The CLI refuses absurd sweeps by this count before any feed is made.
+TEST(LinearFeeds, CountIsTheSizeWithoutMakingThem) {
+    for (const auto& [from, to, step] :
+         {std::tuple{100.0, 2000.0, 50.0}, std::tuple{10.0, 10.0, 1.0}, std::tuple{0.1, 0.7, 0.1},
+          std::tuple{100.0, 50.0, 10.0}, std::tuple{100.0, 200.0, 0.0}}) {
+        EXPECT_EQ(linear_feed_count(from, to, step),
+                  static_cast<double>(linear_feeds(from, to, step).size()))
+            << from << " " << to << " " << step;
+    }
+    EXPECT_EQ(linear_feed_count(1.0, 100000.0, 1e-6), std::floor(99999.0 / 1e-6 + 1e-9) + 1.0);
 }
 
 TEST(LogFeeds, EvenOnALogScaleWithBothEnds) {
