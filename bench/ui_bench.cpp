@@ -24,8 +24,8 @@
 #include <utility>
 #include <vector>
 
-#include "computation.h"
-#include "main_window.h"
+#include "ui/cycle/computation.h"
+#include "ui/window/main_window.h"
 
 namespace {
 

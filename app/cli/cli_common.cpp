@@ -1,11 +1,12 @@
-#include "cli_common.h"
+#include "app/cli/cli_common.h"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
-#include "report.h"
+#include "core/common/file_io.h"
+#include "core/cycle/cycle_report.h"
 
 namespace probecycle::cli {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "scenario.h"
+#include "core/cycle/scenario.h"
 
 namespace probecycle::cli {
 

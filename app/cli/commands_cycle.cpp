@@ -4,12 +4,13 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "cli_common.h"
-#include "commands.h"
-#include "monte_carlo.h"
-#include "report.h"
-#include "sweep.h"
-#include "units.h"
+#include "app/cli/cli_common.h"
+#include "app/cli/commands.h"
+#include "core/common/file_io.h"
+#include "core/cycle/monte_carlo.h"
+#include "core/cycle/cycle_report.h"
+#include "core/cycle/sweep.h"
+#include "core/common/units.h"
 
 namespace probecycle::cli {
 

@@ -11,16 +11,17 @@
 #include <string>
 #include <vector>
 
-#include "calibration.h"
-#include "calibration_report.h"
-#include "cli_common.h"
-#include "commands.h"
-#include "compensation.h"
-#include "lab_csv.h"
-#include "latency.h"
-#include "report.h"
-#include "scenario.h"
-#include "units.h"
+#include "core/common/file_io.h"
+#include "core/lab/calibration.h"
+#include "core/lab/calibration_report.h"
+#include "app/cli/cli_common.h"
+#include "app/cli/commands.h"
+#include "core/lab/compensation.h"
+#include "core/common/csv_reader.h"
+#include "core/lab/delay_fit.h"
+#include "core/cycle/cycle_report.h"
+#include "core/cycle/scenario.h"
+#include "core/common/units.h"
 
 namespace probecycle::cli {
 

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "cli_common.h"
-#include "commands.h"
-#include "scenario.h"
+#include "app/cli/cli_common.h"
+#include "app/cli/commands.h"
+#include "core/cycle/scenario.h"
 
 namespace {
 

@@ -22,9 +22,9 @@
 #include <cstring>
 #include <optional>
 
-#include "app_icon.h"
-#include "language.h"
-#include "main_window.h"
+#include "ui/common/app_icon.h"
+#include "ui/common/language.h"
+#include "ui/window/main_window.h"
 
 #ifndef PROBECYCLE_VERSION
 #define PROBECYCLE_VERSION "0"

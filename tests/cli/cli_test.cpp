@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "report.h"
-#include "scenario.h"
-#include "sweep.h"
+#include "core/cycle/cycle_report.h"
+#include "core/cycle/scenario.h"
+#include "core/cycle/sweep.h"
 
 extern char** environ;
 

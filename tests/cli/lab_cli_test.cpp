@@ -16,8 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "calibration_report.h"
-#include "report.h"
+#include "core/common/file_io.h"
+#include "core/lab/calibration_report.h"
+#include "core/cycle/cycle_report.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "lab/calibration_tab.h"
+#include "ui/lab/calibration_tab.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -20,11 +20,12 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "calibration_report.h"
-#include "lab/lab_widgets.h"
-#include "parameter_info.h"
-#include "plot_view.h"
-#include "report.h"
+#include "core/common/file_io.h"
+#include "core/lab/calibration_report.h"
+#include "ui/lab/lab_widgets.h"
+#include "ui/common/parameter_info.h"
+#include "ui/common/plot_view.h"
+#include "core/cycle/cycle_report.h"
 
 namespace probecycle::ui {
 

@@ -20,7 +20,7 @@
 #include <optional>
 #include <vector>
 
-#include "calibration.h"
+#include "core/lab/calibration.h"
 
 class QComboBox;
 class QFormLayout;

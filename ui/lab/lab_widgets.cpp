@@ -1,4 +1,4 @@
-#include "lab_widgets.h"
+#include "ui/lab/lab_widgets.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -11,8 +11,8 @@
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "parameter_info.h"
-#include "text_format.h"
+#include "ui/common/parameter_info.h"
+#include "ui/common/text_format.h"
 
 namespace probecycle::ui {
 

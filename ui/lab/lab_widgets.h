@@ -13,8 +13,8 @@
 #include <optional>
 #include <vector>
 
-#include "calibration.h"
-#include "latency.h"
+#include "core/lab/calibration.h"
+#include "core/lab/delay_fit.h"
 
 class QLabel;
 class QPlainTextEdit;

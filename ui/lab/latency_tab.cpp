@@ -1,4 +1,4 @@
-#include "lab/latency_tab.h"
+#include "ui/lab/latency_tab.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -25,10 +25,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "lab/lab_widgets.h"
-#include "parameter_info.h"
-#include "plot_view.h"
-#include "text_format.h"
+#include "ui/lab/lab_widgets.h"
+#include "ui/common/parameter_info.h"
+#include "ui/common/plot_view.h"
+#include "ui/common/text_format.h"
 
 namespace probecycle::ui {
 

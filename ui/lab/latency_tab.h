@@ -29,9 +29,9 @@
 #include <optional>
 #include <vector>
 
-#include "compensation.h"
-#include "latency.h"
-#include "scenario.h"
+#include "core/lab/compensation.h"
+#include "core/lab/delay_fit.h"
+#include "core/cycle/scenario.h"
 
 class QComboBox;
 class QFormLayout;

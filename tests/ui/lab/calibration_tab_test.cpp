@@ -1,6 +1,6 @@
 // The Calibration tab, offscreen, through its public API (ui/lab/calibration_tab.h).
 
-#include "lab/calibration_tab.h"
+#include "ui/lab/calibration_tab.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include <cmath>
 #include <map>
 
-#include "lab_test_data.h"
+#include "tests/ui/lab/lab_test_data.h"
 
 namespace probecycle::ui {
 namespace {

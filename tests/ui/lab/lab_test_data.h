@@ -1,6 +1,6 @@
 #pragma once
 
-// Test input for the lab tabs: the CLI's files (tests/cli/data/lab_*.csv).
+// Test input for the lab tabs: the CLI's files (tests/data/lab_*.csv).
 
 #include <QString>
 

@@ -1,6 +1,6 @@
 // The Latency tab, offscreen, through its public API (ui/lab/latency_tab.h).
 
-#include "lab/latency_tab.h"
+#include "ui/lab/latency_tab.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "lab_test_data.h"
+#include "tests/ui/lab/lab_test_data.h"
 
 namespace probecycle::ui {
 namespace {

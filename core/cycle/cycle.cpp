@@ -1,0 +1,509 @@
+#include "core/cycle/cycle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "core/common/units.h"
+
+namespace probecycle {
+
+const char* to_string(Phase phase) {
+    switch (phase) {
+        case Phase::approach:
+            return "approach";
+        case Phase::pretravel:
+            return "pretravel";
+        case Phase::interface_delay:
+            return "interface_delay";
+        case Phase::controller_delay:
+            return "controller_delay";
+        case Phase::deceleration:
+            return "deceleration";
+        case Phase::backoff:
+            return "backoff";
+        case Phase::second_approach:
+            return "second_approach";
+        case Phase::second_pretravel:
+            return "second_pretravel";
+        case Phase::second_interface_delay:
+            return "second_interface_delay";
+        case Phase::second_controller_delay:
+            return "second_controller_delay";
+        case Phase::second_deceleration:
+            return "second_deceleration";
+        case Phase::return_move:
+            return "return";
+        case Phase::position:
+            return "position";
+    }
+    return "?";
+}
+
+const std::array<Phase, kPhaseCount>& all_phases() {
+    static constexpr std::array<Phase, kPhaseCount> phases = {
+        Phase::approach,
+        Phase::pretravel,
+        Phase::interface_delay,
+        Phase::controller_delay,
+        Phase::deceleration,
+        Phase::backoff,
+        Phase::second_approach,
+        Phase::second_pretravel,
+        Phase::second_interface_delay,
+        Phase::second_controller_delay,
+        Phase::second_deceleration,
+        Phase::return_move,
+        Phase::position,
+    };
+    return phases;
+}
+
+const char* to_string(WarningCode code) {
+    switch (code) {
+        case WarningCode::overtravel_limit:
+            return "overtravel_limit";
+        case WarningCode::backoff_too_small:
+            return "backoff_too_small";
+        case WarningCode::backoff_excess:
+            return "backoff_excess";
+        case WarningCode::touch_while_accelerating:
+            return "touch_while_accelerating";
+        case WarningCode::feed_beyond_knee:
+            return "feed_beyond_knee";
+        case WarningCode::uncertainty_over_target:
+            return "uncertainty_over_target";
+        case WarningCode::calibration_feed_mismatch:
+            return "calibration_feed_mismatch";
+    }
+    return "?";
+}
+
+namespace {
+
+template <typename... Args>
+std::string format(const char* pattern, Args... args) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, pattern, args...);
+    return buffer;
+}
+
+}  // namespace
+
+std::string Warning::message() const {
+    switch (code) {
+        case WarningCode::overtravel_limit:
+            return format(
+                "Overtravel %.3f mm is %.0f %% of the probe's %.3f mm limit%s", a, 100.0 * a / b, b,
+                severity == Severity::error
+                    ? ": the probe or stylus will be damaged; lower the feed or the delays"
+                    : ": little margin left for the stylus");
+        case WarningCode::backoff_too_small:
+            return format(
+                "Backoff %.3f mm is less than the first touch's overtravel plus reseat, %.3f mm: "
+                "the probe may not reseat before the second touch",
+                a, b);
+        case WarningCode::backoff_excess:
+            return format(
+                "Backoff %.3f mm is more than the recommended %.3f mm and wastes %.2f s per cycle",
+                a, b, c);
+        case WarningCode::touch_while_accelerating:
+            return format(
+                "%s touch starts closer than the distance needed to reach its feed: it triggers at "
+                "%.1f mm/min instead of %.1f mm/min, an error of %.4f mm against a calibration at "
+                "full feed",
+                d > 0.5 ? "Second" : "First", mm_s_to_mm_min(a), mm_s_to_mm_min(b), c);
+        case WarningCode::feed_beyond_knee:
+            if (c <= 0.0) {
+                return format(
+                    "Probe feed %.0f mm/min is beyond the knee at %.0f mm/min and no faster: the "
+                    "cycle takes %.3f s longer, with more overtravel and uncertainty",
+                    mm_s_to_mm_min(a), mm_s_to_mm_min(b), -c);
+            }
+            return format(
+                "Probe feed %.0f mm/min is beyond the knee at %.0f mm/min: the extra feed saves "
+                "only "
+                "%.3f s (under 1 %%) while overtravel and uncertainty grow",
+                mm_s_to_mm_min(a), mm_s_to_mm_min(b), c);
+        case WarningCode::uncertainty_over_target:
+            return format("Uncertainty %.4f mm exceeds the target %.4f mm", a, b);
+        case WarningCode::calibration_feed_mismatch:
+            return format(
+                "Measuring at %.1f mm/min but calibrated at %.1f mm/min: the delay travel shifts "
+                "the "
+                "measured value by %.4f mm; calibrate at the measuring feed",
+                mm_s_to_mm_min(a), mm_s_to_mm_min(b), c);
+    }
+    return {};
+}
+
+// domain.md, "One touch": interface response t_i, controller latency t_c and,
+// worst case, a full scan period t_s pass between trigger and reaction.
+double reaction_time_s(const Machine& machine, const Probe& probe) {
+    return probe.interface_delay_s + machine.controller_latency_s + machine.scan_period_s;
+}
+
+// domain.md, "Controller response": the wait for the next scan is anywhere in
+// [0, t_s], a range of v_t * t_s; a latched input removes it from the value.
+double scan_range_mm(const Machine& machine, double trigger_speed_mm_s) {
+    return machine.latched_input ? 0.0 : trigger_speed_mm_s * machine.scan_period_s;
+}
+
+// A uniform range R has sigma R/sqrt(12); repeatability is given as 2 sigma.
+// Expanded (k = 2): 2 * sqrt(R^2/12 + (rep/2)^2) = sqrt(R^2/3 + rep^2).
+double expanded_uncertainty_mm(double range_mm, double repeatability_2sigma_mm) {
+    return std::sqrt(range_mm * range_mm / 3.0 + repeatability_2sigma_mm * repeatability_2sigma_mm);
+}
+
+// Issue 4, "Calibration feed versus measuring feed": the delay travel
+// calibrated at one speed is wrong at another by (v - v_cal)(t_i + t_c + t_s/2);
+// the mean scan wait t_s/2 only where the input is scanned, not latched.
+double speed_error_mm(const Machine& machine, const Probe& probe, double speed_mm_s,
+                      double calibrated_speed_mm_s) {
+    const double scan_mean_s = machine.latched_input ? 0.0 : 0.5 * machine.scan_period_s;
+    return (speed_mm_s - calibrated_speed_mm_s) *
+           (probe.interface_delay_s + machine.controller_latency_s + scan_mean_s);
+}
+
+int touch_count(Feature feature) {
+    switch (feature) {
+        case Feature::surface:
+            return 1;
+        case Feature::web:
+        case Feature::pocket:
+            return 2;
+        case Feature::bore:
+        case Feature::boss:
+            return 4;
+    }
+    return 1;
+}
+
+namespace {
+
+// domain.md, "Features": positioning moves between the touches' start
+// positions, at the rapid feed. Inside a pocket or bore they run straight
+// across; around a boss along the arc of radius D/2 + approach; over a web
+// straight across D + 2 approach (the Z lift over it is not modelled).
+// Bore and boss touch X+, X-, Y+, Y- in that order.
+double positioning_distance_mm(const Cycle& cycle, int touch) {
+    const double d = cycle.feature_size_mm;
+    const double s = cycle.approach_mm;
+    switch (cycle.feature) {
+        case Feature::surface:
+            return 0.0;
+        case Feature::pocket:
+            return d - 2.0 * s;
+        case Feature::web:
+            return d + 2.0 * s;
+        case Feature::bore: {
+            const double r = 0.5 * d - s;
+            return touch == 2 ? std::numbers::sqrt2 * r : 2.0 * r;
+        }
+        case Feature::boss: {
+            const double r = 0.5 * d + s;
+            return touch == 2 ? 0.5 * std::numbers::pi * r : std::numbers::pi * r;
+        }
+    }
+    return 0.0;
+}
+
+// Long enough for any touch: the approach plan is cut where the axis reacts.
+constexpr double kOpenCruise_s = 1.0e9;
+
+struct TouchPhases {
+    Phase approach, pretravel, interface_delay, controller_delay, deceleration;
+};
+constexpr TouchPhases kFirstTouch{Phase::approach, Phase::pretravel, Phase::interface_delay,
+                                  Phase::controller_delay, Phase::deceleration};
+constexpr TouchPhases kSecondTouch{Phase::second_approach, Phase::second_pretravel,
+                                   Phase::second_interface_delay, Phase::second_controller_delay,
+                                   Phase::second_deceleration};
+
+// Appends phases and motion to a result under construction.
+class CycleBuilder {
+  public:
+    CycleBuilder(std::vector<PhaseRecord>& phases, std::vector<TimedSegment>& segments,
+                 std::array<double, kPhaseCount>& phase_time)
+        : phases_(phases), segments_(segments), phase_time_(phase_time) {}
+
+    double now() const { return t_; }
+    double axis_mm() const { return axis_mm_; }
+    void set_touch(int touch) { touch_ = touch; }
+
+    void add_phase(Phase phase, double time_s, double distance_mm) {
+        phases_.push_back({phase, touch_, t_, time_s, distance_mm});
+        phase_time_[static_cast<std::size_t>(phase)] += time_s;
+        t_ += time_s;
+    }
+
+    // Motion from the current axis position, `direction` +1/-1 along the
+    // probing axis or 0 across it, starting at `start_speed_mm_s`; returns
+    // the path length covered.
+    double add_motion(const SegmentPlan& plan, double direction, double duration_s,
+                      double start_speed_mm_s = 0.0) {
+        KinematicState state;
+        state.speed_mm_s = start_speed_mm_s;
+        double remaining = duration_s;
+        double seg_t = motion_t_;
+        for (std::size_t i = 0; i < plan.count && remaining > 0.0; ++i) {
+            const Segment& seg = plan.segments[i];
+            const double dt = std::min(seg.duration_s, remaining);
+            state.accel_mm_s2 = seg.accel_mm_s2;
+            KinematicState start = state;
+            start.position_mm = 0.0;
+            segments_.push_back({seg_t, dt, axis_mm_ + direction * state.position_mm, direction,
+                                 start, seg.jerk_mm_s3, touch_});
+            state = integrate(dt, state, seg.jerk_mm_s3);
+            seg_t += dt;
+            remaining -= dt;
+        }
+        motion_t_ = seg_t;
+        axis_mm_ += direction * state.position_mm;
+        return state.position_mm;
+    }
+
+    std::size_t phase_count() const { return phases_.size(); }
+    std::size_t segment_count() const { return segments_.size(); }
+
+    // Repeats the first `phase_count` phases and `segment_count` segments
+    // (a touch sequence recorded from t = 0) as touch `touch_`, from now. The
+    // sequence starts and ends at the touch's start position.
+    void replay_sequence(std::size_t phase_count, std::size_t segment_count) {
+        const double shift = t_;
+        for (std::size_t i = 0; i < phase_count; ++i) {
+            PhaseRecord record = phases_[i];
+            record.start_s += shift;
+            record.touch = touch_;
+            phase_time_[static_cast<std::size_t>(record.phase)] += record.time_s;
+            phases_.push_back(record);
+        }
+        for (std::size_t i = 0; i < segment_count; ++i) {
+            TimedSegment segment = segments_[i];
+            segment.start_s += shift;
+            segment.touch = touch_;
+            segments_.push_back(segment);
+        }
+        const double sequence_s =
+            phases_[phase_count - 1].start_s + phases_[phase_count - 1].time_s;
+        t_ += sequence_s;
+        motion_t_ += sequence_s;
+    }
+
+    // A rest-to-rest move as one phase.
+    void add_move(Phase phase, const MotionLimits& limits, double distance_mm, double feed_mm_s,
+                  double direction) {
+        const SegmentPlan plan = plan_move(limits, distance_mm, feed_mm_s);
+        const double duration = plan.duration_s();
+        add_motion(plan, direction, duration);
+        add_phase(phase, duration, distance_mm);
+    }
+
+    // domain.md, "One touch, phase by phase": approach from rest `distance_mm`
+    // in front of the surface, pretravel, interface and controller response
+    // (worst case: a full scan), then braking. The axis follows its planned
+    // acceleration until it reacts, so a touch while still accelerating
+    // triggers at the real, lower speed.
+    TouchResult add_touch(const Scenario& scenario, const MotionLimits& limits, double feed_mm_s,
+                          double distance_mm, const TouchPhases& names) {
+        const Machine& m = scenario.machine;
+        const Probe& p = scenario.probe;
+        const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
+        const double t_touch = time_at_distance_s(plan, distance_mm);
+        const double t_trigger = time_at_distance_s(plan, distance_mm + p.pretravel_mm);
+        const double t_interface = t_trigger + p.interface_delay_s;
+        const double t_react = t_trigger + reaction_time_s(m, p);
+
+        const KinematicState at_touch = plan.state_at(t_touch);
+        const KinematicState at_trigger = plan.state_at(t_trigger);
+        const KinematicState at_interface = plan.state_at(t_interface);
+        const KinematicState at_react = plan.state_at(t_react);
+        const SegmentPlan stop =
+            plan_stop(limits, feed_mm_s, at_react.speed_mm_s, at_react.accel_mm_s2);
+        const double stop_time = stop.duration_s();
+
+        add_motion(plan, +1.0, t_react);
+        const double stop_distance = add_motion(stop, +1.0, stop_time, at_react.speed_mm_s);
+
+        add_phase(names.approach, t_touch, at_touch.position_mm);
+        add_phase(names.pretravel, t_trigger - t_touch,
+                  at_trigger.position_mm - at_touch.position_mm);
+        add_phase(names.interface_delay, p.interface_delay_s,
+                  at_interface.position_mm - at_trigger.position_mm);
+        add_phase(names.controller_delay, t_react - t_interface,
+                  at_react.position_mm - at_interface.position_mm);
+        add_phase(names.deceleration, stop_time, stop_distance);
+
+        TouchResult touch;
+        touch.programmed_feed_mm_s = feed_mm_s;
+        touch.touch_speed_mm_s = at_touch.speed_mm_s;
+        touch.trigger_speed_mm_s = at_trigger.speed_mm_s;
+        touch.react_speed_mm_s = at_react.speed_mm_s;
+        // Overtravel: pretravel + delay travel + stopping distance, past the surface.
+        touch.overtravel_mm = at_react.position_mm + stop_distance - at_touch.position_mm;
+        return touch;
+    }
+
+  private:
+    std::vector<PhaseRecord>& phases_;
+    std::vector<TimedSegment>& segments_;
+    std::array<double, kPhaseCount>& phase_time_;
+    double t_{0.0};
+    double motion_t_{0.0};
+    double axis_mm_{0.0};
+    int touch_{0};
+};
+
+// Time for the backoff move and the second approach, the part of a two-touch
+// cycle that the backoff changes (domain.md, "Strategies").
+double backoff_cost_s(const Scenario& scenario, const MotionLimits& limits, double backoff_mm,
+                      double first_overtravel_mm) {
+    const Cycle& c = scenario.cycle;
+    const double measure_v = mm_min_to_mm_s(c.measure_feed_mm_min);
+    const SegmentPlan approach = plan_accelerate(limits, measure_v, kOpenCruise_s);
+    return move_time_s(limits, backoff_mm, mm_min_to_mm_s(c.return_feed_mm_min)) +
+           time_at_distance_s(approach, std::max(0.0, backoff_mm - first_overtravel_mm));
+}
+
+void add_touch_warnings(const Scenario& scenario, const MotionLimits& limits,
+                        const TouchResult& touch, double distance_mm, int which,
+                        std::vector<Warning>& warnings) {
+    const double v = touch.programmed_feed_mm_s;
+    if (distance_mm < reach_distance_mm(limits, v) && touch.trigger_speed_mm_s < v) {
+        // domain.md, "Acceleration models": a slower touch misses the delay
+        // travel calibrated at full feed; the brief calls it the same error as
+        // a calibration-feed mismatch, whose formula issue 4 gives in full.
+        const double error =
+            speed_error_mm(scenario.machine, scenario.probe, v, touch.trigger_speed_mm_s);
+        warnings.push_back({WarningCode::touch_while_accelerating, Severity::warning,
+                            touch.trigger_speed_mm_s, v, error, static_cast<double>(which)});
+    }
+}
+
+}  // namespace
+
+CycleState CycleResult::state_at(double t_s) const {
+    CycleState state;
+    if (phases_.empty()) return state;
+    const double t = std::clamp(t_s, 0.0, total_s_);
+
+    auto phase_it = std::upper_bound(phases_.begin(), phases_.end(), t,
+                                     [](double v, const PhaseRecord& p) { return v < p.start_s; });
+    std::size_t phase_index =
+        phase_it == phases_.begin() ? 0 : static_cast<std::size_t>(phase_it - phases_.begin()) - 1;
+    while (phase_index > 0 && phases_[phase_index].time_s <= 0.0) --phase_index;
+    state.phase_index = phase_index;
+    state.touch = phases_[phase_index].touch;
+
+    if (segments_.empty()) return state;
+    auto seg_it = std::upper_bound(segments_.begin(), segments_.end(), t,
+                                   [](double v, const TimedSegment& s) { return v < s.start_s; });
+    const TimedSegment& seg = seg_it == segments_.begin() ? segments_.front() : *(seg_it - 1);
+    const KinematicState k =
+        integrate(std::min(t - seg.start_s, seg.duration_s), seg.start, seg.jerk_mm_s3);
+    state.position_mm = seg.axis_start_mm + seg.direction * k.position_mm;
+    state.velocity_mm_s = seg.direction * k.speed_mm_s;
+    state.path_speed_mm_s = k.speed_mm_s;
+    return state;
+}
+
+CycleResult evaluate(const Scenario& scenario) {
+    CycleResult result;
+    evaluate_into(scenario, result);
+    return result;
+}
+
+void evaluate_into(const Scenario& scenario, CycleResult& r) {
+    r.phases_.clear();
+    r.segments_.clear();
+    r.warnings_.clear();
+    r.phase_time_s_.fill(0.0);
+
+    const Machine& m = scenario.machine;
+    const Probe& p = scenario.probe;
+    const Cycle& c = scenario.cycle;
+    const MotionLimits limits = scenario.motion_limits();
+    const double s = c.approach_mm;
+    const double probe_v = mm_min_to_mm_s(c.probe_feed_mm_min);
+    const double measure_v = mm_min_to_mm_s(c.measure_feed_mm_min);
+    const double return_v = mm_min_to_mm_s(c.return_feed_mm_min);
+    const double rapid_v = mm_min_to_mm_s(m.rapid_feed_mm_min);
+    const bool two_touch = c.strategy == Strategy::two_touch;
+    const int touches = touch_count(c.feature);
+
+    CycleBuilder b(r.phases_, r.segments_, r.phase_time_s_);
+    // One touch sequence: first touch, (backoff, second touch,) return to start.
+    const TouchResult first = b.add_touch(scenario, limits, probe_v, s, kFirstTouch);
+    TouchResult measuring = first;
+    if (two_touch) {
+        b.add_move(Phase::backoff, limits, c.backoff_mm, return_v, -1.0);
+        // domain.md, "Strategies": the second touch starts b - overtravel_1 in
+        // front of the surface (none left if the backoff is too short).
+        const double second_distance = std::max(0.0, c.backoff_mm - first.overtravel_mm);
+        measuring = b.add_touch(scenario, limits, measure_v, second_distance, kSecondTouch);
+        add_touch_warnings(scenario, limits, measuring, second_distance, 1, r.warnings_);
+    }
+    // domain.md, "Return": back to the start position, s + overtravel.
+    b.add_move(Phase::return_move, limits, b.axis_mm(), return_v, -1.0);
+    add_touch_warnings(scenario, limits, first, s, 0, r.warnings_);
+    r.first_ = first;
+    r.measuring_ = measuring;
+
+    // The other touches of a feature differ only in direction: each is a
+    // positioning move at rapid, then the same sequence again.
+    const std::size_t sequence_phases = b.phase_count();
+    const std::size_t sequence_segments = b.segment_count();
+    for (int k = 1; k < touches; ++k) {
+        b.set_touch(k);
+        b.add_move(Phase::position, limits, positioning_distance_mm(c, k), rapid_v, 0.0);
+        b.set_touch(k);
+        b.replay_sequence(sequence_phases, sequence_segments);
+    }
+    const double worst_overtravel = std::max(first.overtravel_mm, measuring.overtravel_mm);
+
+    r.total_s_ = b.now();
+    r.overtravel_mm_ = worst_overtravel;
+    r.trigger_speed_mm_s_ = r.measuring_.trigger_speed_mm_s;
+    r.scan_range_mm_ = scan_range_mm(m, r.trigger_speed_mm_s_);
+    r.uncertainty_mm_ = expanded_uncertainty_mm(r.scan_range_mm_, p.repeatability_2sigma_mm);
+    // domain.md, "Strategies": recommended backoff = overtravel at the fast feed + reseat.
+    r.recommended_backoff_mm_ = r.first_.overtravel_mm + p.reseat_mm;
+
+    // Touches of one cycle differ only in direction, so touch 0 speaks for all.
+    std::vector<Warning>& w = r.warnings_;
+    if (worst_overtravel >= p.overtravel_limit_mm) {
+        w.push_back({WarningCode::overtravel_limit, Severity::error, worst_overtravel,
+                     p.overtravel_limit_mm});
+    } else if (worst_overtravel >= 0.8 * p.overtravel_limit_mm) {
+        w.push_back({WarningCode::overtravel_limit, Severity::warning, worst_overtravel,
+                     p.overtravel_limit_mm});
+    }
+    if (two_touch) {
+        const double recommended = r.recommended_backoff_mm_;
+        if (c.backoff_mm < recommended) {
+            w.push_back(
+                {WarningCode::backoff_too_small, Severity::error, c.backoff_mm, recommended});
+        } else if (c.backoff_mm - recommended > std::max(0.1 * recommended, 0.05)) {
+            // Excess beyond 10 % (at least 0.05 mm) of the recommendation is reported.
+            const double wasted =
+                touches * (backoff_cost_s(scenario, limits, c.backoff_mm, r.first_.overtravel_mm) -
+                           backoff_cost_s(scenario, limits, recommended, r.first_.overtravel_mm));
+            w.push_back(
+                {WarningCode::backoff_excess, Severity::info, c.backoff_mm, recommended, wasted});
+        }
+    }
+    if (c.target_uncertainty_mm > 0.0 && r.uncertainty_mm_ > c.target_uncertainty_mm) {
+        w.push_back({WarningCode::uncertainty_over_target, Severity::warning, r.uncertainty_mm_,
+                     c.target_uncertainty_mm});
+    }
+    const double calibration_v = mm_min_to_mm_s(p.calibration_feed_mm_min);
+    const double measuring_programmed_v = r.measuring_.programmed_feed_mm_s;
+    if (calibration_v > 0.0 && calibration_v != measuring_programmed_v) {
+        w.push_back({WarningCode::calibration_feed_mismatch, Severity::warning,
+                     measuring_programmed_v, calibration_v,
+                     speed_error_mm(m, p, measuring_programmed_v, calibration_v)});
+    }
+}
+
+}  // namespace probecycle

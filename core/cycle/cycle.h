@@ -1,0 +1,166 @@
+#pragma once
+
+// The probing cycle, phase by phase (domain.md, "One touch, phase by phase",
+// "Strategies").
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/severity.h"
+#include "core/cycle/motion.h"
+#include "core/cycle/scenario.h"
+
+namespace probecycle {
+
+enum class Phase {
+    approach,
+    pretravel,
+    interface_delay,
+    controller_delay,
+    deceleration,
+    backoff,
+    second_approach,
+    second_pretravel,
+    second_interface_delay,
+    second_controller_delay,
+    second_deceleration,
+    return_move,  // "return"
+    position,
+};
+constexpr std::size_t kPhaseCount = 13;
+const char* to_string(Phase phase);  // the exact file/CSV names ("return" for return_move)
+// Every phase in its canonical order.
+const std::array<Phase, kPhaseCount>& all_phases();
+
+struct PhaseRecord {
+    Phase phase{Phase::approach};
+    int touch{0};  // 0-based index of the touch point (bore: X+, X-, Y+, Y-)
+    double start_s{0.0};
+    double time_s{0.0};
+    double distance_mm{0.0};
+};
+
+enum class WarningCode {
+    overtravel_limit,
+    backoff_too_small,
+    backoff_excess,
+    touch_while_accelerating,
+    feed_beyond_knee,
+    uncertainty_over_target,
+    calibration_feed_mismatch,
+};
+const char* to_string(WarningCode code);
+
+// Numbers are kept and the message is formatted on demand, so evaluation
+// stays allocation-light; message() says what and by how much.
+struct Warning {
+    WarningCode code{};
+    Severity severity{};
+    // Meaning by code (all in internal units: mm, s, mm/s):
+    // overtravel_limit:         a = overtravel, b = limit
+    // backoff_too_small:        a = backoff, b = recommended backoff
+    // backoff_excess:           a = backoff, b = recommended, c = time wasted
+    // touch_while_accelerating: a = speed reached, b = programmed feed, c = error, d = touch (0/1)
+    // feed_beyond_knee:         a = feed, b = knee feed, c = time saved beyond the knee
+    // uncertainty_over_target:  a = uncertainty, b = target
+    // calibration_feed_mismatch:a = measuring speed, b = calibration speed, c = error
+    double a{0.0}, b{0.0}, c{0.0}, d{0.0};
+    std::string message() const;
+};
+
+// Where the probe is at a time in the cycle.
+struct CycleState {
+    std::size_t phase_index{0};  // into CycleResult::phases()
+    int touch{0};
+    // Along the probing direction of the current touch: 0 at its start
+    // position, positive toward the surface (the surface is at approach_mm).
+    // Constant during positioning moves, which run across that direction.
+    double position_mm{0.0};
+    double velocity_mm_s{0.0};    // signed, along the probing direction
+    double path_speed_mm_s{0.0};  // magnitude along the path, positioning moves too
+};
+
+// A constant-jerk piece of the cycle's motion, in path coordinates.
+struct TimedSegment {
+    double start_s{0.0};
+    double duration_s{0.0};
+    double axis_start_mm{0.0};  // position along the probing direction at start
+    double direction{0.0};      // +1 toward the surface, -1 away, 0 positioning
+    KinematicState start{};     // path state at start (position 0)
+    double jerk_mm_s3{0.0};
+    int touch{0};
+};
+
+struct TouchResult {
+    double programmed_feed_mm_s{0.0};
+    double touch_speed_mm_s{0.0};    // when the stylus meets the surface
+    double trigger_speed_mm_s{0.0};  // when the probe triggers (after pretravel)
+    double react_speed_mm_s{0.0};    // when the controller reacts and braking starts
+    double overtravel_mm{0.0};       // beyond the surface, where the axis stops
+};
+
+class CycleResult {
+  public:
+    const std::vector<PhaseRecord>& phases() const { return phases_; }
+    double total() const { return total_s_; }
+    CycleState state_at(double t_s) const;
+
+    // Sum of the time spent in one kind of phase over all touches.
+    double phase_time(Phase phase) const { return phase_time_s_[static_cast<std::size_t>(phase)]; }
+
+    double overtravel_mm() const { return overtravel_mm_; }            // worst over all touches
+    double trigger_speed_mm_s() const { return trigger_speed_mm_s_; }  // of the measuring touch
+    double scan_range_mm() const { return scan_range_mm_; }
+    // Expanded (k = 2) uncertainty of the measuring touch: uniform scan phase
+    // combined with the probe's repeatability.
+    double uncertainty_mm() const { return uncertainty_mm_; }
+    double recommended_backoff_mm() const { return recommended_backoff_mm_; }
+    const TouchResult& first_touch() const { return first_; }
+    // The measuring touch (the second touch of two-touch, else the first).
+    const TouchResult& measuring_touch() const { return measuring_; }
+    const std::vector<Warning>& warnings() const { return warnings_; }
+    const std::vector<TimedSegment>& segments() const { return segments_; }
+
+    std::vector<Warning>& mutable_warnings() { return warnings_; }
+
+  private:
+    friend void evaluate_into(const Scenario&, CycleResult&);
+    std::vector<PhaseRecord> phases_;
+    std::vector<TimedSegment> segments_;
+    std::vector<Warning> warnings_;
+    std::array<double, kPhaseCount> phase_time_s_{};
+    double total_s_{0.0};
+    double overtravel_mm_{0.0};
+    double trigger_speed_mm_s_{0.0};
+    double scan_range_mm_{0.0};
+    double uncertainty_mm_{0.0};
+    double recommended_backoff_mm_{0.0};
+    TouchResult first_{};
+    TouchResult measuring_{};
+};
+
+// --- Small closed forms (domain.md, "One touch"), each testable alone. ---
+// Travel between trigger and the controller's reaction, worst case (full scan).
+double reaction_time_s(const Machine& machine, const Probe& probe);
+// Range of the scan-phase error at a trigger speed; 0 with a latched input.
+double scan_range_mm(const Machine& machine, double trigger_speed_mm_s);
+// k = 2 combination of a uniform range and a 2-sigma repeatability.
+double expanded_uncertainty_mm(double scan_range_mm, double repeatability_2sigma_mm);
+// Error in the measured value from a speed other than the calibrated one:
+// (v - v_cal) * (t_i + t_c + t_s/2) (issue 4) with t_s only when scanned.
+double speed_error_mm(const Machine& machine, const Probe& probe, double speed_mm_s,
+                      double calibrated_speed_mm_s);
+
+// Evaluates the cycle: phases, overtravel, uncertainty, warnings that need no
+// sweep (all but feed_beyond_knee; see analyse() in sweep.h). Assumes a valid
+// scenario (validate() first). evaluate_into reuses the result's buffers.
+CycleResult evaluate(const Scenario& scenario);
+void evaluate_into(const Scenario& scenario, CycleResult& result);
+
+// Number of touches of a feature (surface 1, web/pocket 2, bore/boss 4).
+int touch_count(Feature feature);
+
+}  // namespace probecycle

@@ -1,0 +1,150 @@
+#include "core/cycle/cycle_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "core/common/csv_writer.h"
+#include "core/common/units.h"
+
+namespace probecycle {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string number(double value) {
+    return csv_number_text(value);
+}
+
+Json warnings_json(const std::vector<Warning>& warnings) {
+    Json list = Json::array();
+    for (const Warning& w : warnings) {
+        list.push_back({{"code", to_string(w.code)},
+                        {"severity", to_string(w.severity)},
+                        {"message", w.message()}});
+    }
+    return list;
+}
+
+}  // namespace
+
+std::string evaluation_to_json(const Analysis& analysis) {
+    const CycleResult& r = analysis.cycle;
+    Json out = Json::object();
+    out["cycle_time_s"] = r.total();
+    out["overtravel_mm"] = r.overtravel_mm();
+    out["trigger_speed_mm_min"] = mm_s_to_mm_min(r.trigger_speed_mm_s());
+    out["uncertainty_mm"] = r.uncertainty_mm();
+    out["scan_range_mm"] = r.scan_range_mm();
+    out["recommended_backoff_mm"] = r.recommended_backoff_mm();
+    out["knee_feed_mm_min"] =
+        analysis.knee_feed_mm_min ? Json(*analysis.knee_feed_mm_min) : Json(nullptr);
+    out["knee_cycle_time_s"] =
+        analysis.knee_cycle_time_s ? Json(*analysis.knee_cycle_time_s) : Json(nullptr);
+    Json phases = Json::array();
+    for (const PhaseRecord& p : r.phases()) {
+        phases.push_back({{"name", to_string(p.phase)},
+                          {"touch", p.touch},
+                          {"start_s", p.start_s},
+                          {"time_s", p.time_s},
+                          {"distance_mm", p.distance_mm}});
+    }
+    out["phases"] = std::move(phases);
+    out["warnings"] = warnings_json(r.warnings());
+    return out.dump(2) + "\n";
+}
+
+std::string sweep_to_csv(const SweepResult& sweep) {
+    std::string csv = "feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm";
+    for (Phase phase : all_phases()) csv += std::string(",") + to_string(phase) + "_s";
+    csv += '\n';
+    for (const SweepPoint& p : sweep.points) {
+        csv += number(p.feed_mm_min) + ',' + number(p.cycle_time_s) + ',' +
+               number(p.overtravel_mm) + ',' + number(p.uncertainty_mm);
+        for (double t : p.phase_time_s) csv += ',' + number(t);
+        csv += '\n';
+    }
+    return csv;
+}
+
+std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario,
+                          const SweepOptions& options) {
+    std::string line = "knee of this sweep";
+    if (scenario.cycle.strategy == Strategy::two_touch) {
+        line += options.recommended_backoff
+                    ? " (recommended backoff at each feed)"
+                    : " (backoff as set, " + number(scenario.cycle.backoff_mm) + " mm)";
+    }
+    line += ": ";
+    line += sweep.knee_feed_mm_min ? number(*sweep.knee_feed_mm_min) + " mm/min" : "none";
+    line += "; fastest feed meeting the target uncertainty";
+    if (scenario.cycle.target_uncertainty_mm <= 0.0) {
+        line += ": no target set";
+    } else {
+        line += " (" + number(scenario.cycle.target_uncertainty_mm) + " mm): ";
+        line += sweep.max_feed_meeting_target_mm_min
+                    ? number(*sweep.max_feed_meeting_target_mm_min) + " mm/min"
+                    : "none in the range";
+    }
+    return line;
+}
+
+std::string csv_report(const Scenario& scenario, const Analysis& analysis,
+                       const SweepResult& sweep) {
+    const CycleResult& r = analysis.cycle;
+    std::string csv = "# scenario\nkey,value,unit\n";
+    csv += std::string("machine.accel_model,") + to_string(scenario.machine.accel_model) + ",\n";
+    csv += std::string("machine.latched_input,") +
+           (scenario.machine.latched_input ? "true" : "false") + ",\n";
+    csv += std::string("cycle.strategy,") + to_string(scenario.cycle.strategy) + ",\n";
+    csv += std::string("cycle.feature,") + to_string(scenario.cycle.feature) + ",\n";
+    for (const KeyInfo& key : numeric_keys()) {
+        csv += std::string(key.key) + ',' + number(*get_number(scenario, key.key)) + ',' +
+               key.unit + '\n';
+    }
+    csv += "\n# summary\nquantity,value,unit\n";
+    csv += "cycle_time," + number(r.total()) + ",s\n";
+    csv += "overtravel," + number(r.overtravel_mm()) + ",mm\n";
+    csv += "overtravel_limit," + number(scenario.probe.overtravel_limit_mm) + ",mm\n";
+    csv += "trigger_speed," + number(mm_s_to_mm_min(r.trigger_speed_mm_s())) + ",mm/min\n";
+    csv += "scan_range," + number(r.scan_range_mm()) + ",mm\n";
+    csv += "uncertainty_k2," + number(r.uncertainty_mm()) + ",mm\n";
+    csv += "recommended_backoff," + number(r.recommended_backoff_mm()) + ",mm\n";
+    csv += "knee_feed," +
+           (analysis.knee_feed_mm_min ? number(*analysis.knee_feed_mm_min) : std::string()) +
+           ",mm/min\n";
+    csv += "knee_cycle_time," +
+           (analysis.knee_cycle_time_s ? number(*analysis.knee_cycle_time_s) : std::string()) +
+           ",s\n";
+    csv += "\n# phases\ntouch,phase,start_s,time_s,distance_mm\n";
+    for (const PhaseRecord& p : r.phases()) {
+        csv += std::to_string(p.touch + 1) + ',' + to_string(p.phase) + ',' + number(p.start_s) +
+               ',' + number(p.time_s) + ',' + number(p.distance_mm) + '\n';
+    }
+    csv += "\n# warnings\ncode,severity,message\n";
+    for (const Warning& w : r.warnings()) {
+        csv += std::string(to_string(w.code)) + ',' + to_string(w.severity) + ',' +
+               csv_quote(w.message()) + '\n';
+    }
+    csv += "\n# sweep\n" + sweep_to_csv(sweep);
+    return csv;
+}
+
+std::vector<double> report_feeds(const Scenario& scenario, const Analysis& analysis) {
+    std::vector<double> feeds = {10,   20,   30,   50,   75,   100,  150,  200,
+                                 300,  400,  500,  600,  800,  1000, 1200, 1500,
+                                 2000, 2500, 3000, 4000, 5000, 6000, 8000, 10000};
+    feeds.push_back(scenario.cycle.probe_feed_mm_min);
+    if (analysis.knee_feed_mm_min) feeds.push_back(std::round(*analysis.knee_feed_mm_min));
+    std::sort(feeds.begin(), feeds.end());
+    feeds.erase(std::unique(feeds.begin(), feeds.end()), feeds.end());
+    return feeds;
+}
+
+std::string csv_report(const Scenario& scenario) {
+    const Analysis analysis = analyse(scenario);
+    return csv_report(scenario, analysis, sweep_feeds(scenario, report_feeds(scenario, analysis)));
+}
+
+}  // namespace probecycle

@@ -1,0 +1,40 @@
+#pragma once
+
+// Text forms of results, shared by the CLI and the window so both write the
+// same bytes: evaluation JSON, sweep CSV, and the full CSV report.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/cycle/cycle.h"
+#include "core/cycle/scenario.h"
+#include "core/cycle/sweep.h"
+
+namespace probecycle {
+
+// `probecycle-cli evaluate` output: cycle_time_s, overtravel_mm, ... phases, warnings.
+std::string evaluation_to_json(const Analysis& analysis);
+
+// Header: feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm,<one column per phase>.
+std::string sweep_to_csv(const SweepResult& sweep);
+// One line: the knee and the fastest feed meeting the target, saying for a
+// two-touch sweep which backoff the knee's curve used.
+std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario,
+                          const SweepOptions& options = {});
+
+// Feeds of the report's sweep table: round numbers from 10 to 10000 mm/min,
+// plus the scenario's feed and its knee.
+std::vector<double> report_feeds(const Scenario& scenario, const Analysis& analysis);
+
+// Sections "# scenario", "# summary", "# phases", "# warnings", "# sweep",
+// each a CSV table, for the report an engineer hands over. The sweep varies
+// the probe feed with the rest as in the scenario.
+std::string csv_report(const Scenario& scenario, const Analysis& analysis,
+                       const SweepResult& sweep);
+// The same, analysed and swept over report_feeds(): what the window exports
+// and `probecycle-cli report` writes.
+std::string csv_report(const Scenario& scenario);
+
+}  // namespace probecycle

@@ -1,0 +1,117 @@
+#pragma once
+
+// The scenario: machine, probe and cycle. Defaults describe a typical vertical
+// machining centre with a standard (scanned) skip input and an optical probe;
+// every one is a typical value, to be replaced by the user's measured one.
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/cycle/motion.h"
+
+namespace probecycle {
+
+enum class Strategy { single_touch, two_touch };
+enum class Feature { surface, web, pocket, bore, boss };
+
+struct Machine {
+    AccelModel accel_model{AccelModel::time_constant};
+    double time_constant_s{0.06};
+    double max_accel_mm_s2{2000.0};
+    double max_jerk_mm_s3{40000.0};
+    double rapid_feed_mm_min{30000.0};
+    double scan_period_s{0.004};
+    double controller_latency_s{0.002};
+    bool latched_input{false};
+};
+
+struct Probe {
+    double pretravel_mm{0.005};
+    double interface_delay_s{0.002};
+    double repeatability_2sigma_mm{0.001};
+    double overtravel_limit_mm{5.0};
+    double reseat_mm{0.2};
+    // Feed at which the probe was calibrated; 0 = the measuring feed.
+    double calibration_feed_mm_min{0.0};
+};
+
+struct Cycle {
+    Strategy strategy{Strategy::two_touch};
+    Feature feature{Feature::surface};
+    // Distance between opposite stylus-centre contact points (web/pocket width,
+    // bore/boss diameter less the ball diameter); unused for a surface.
+    double feature_size_mm{50.0};
+    double approach_mm{5.0};
+    // Feed of the (first) touch; single-touch measures at it.
+    double probe_feed_mm_min{2000.0};
+    // Feed of the second, measuring touch of two-touch.
+    double measure_feed_mm_min{30.0};
+    double backoff_mm{2.0};
+    double return_feed_mm_min{10000.0};
+    double target_uncertainty_mm{0.0};  // 0 = no target
+};
+
+struct Scenario {
+    Machine machine;
+    Probe probe;
+    Cycle cycle;
+
+    MotionLimits motion_limits() const;
+};
+
+// One problem with one key: the dotted key, the value as given, what is allowed.
+struct FieldError {
+    std::string key;      // e.g. "machine.scan_period_s"
+    std::string value;    // the offending value as text
+    std::string allowed;  // e.g. "a number in [0, 0.1]"
+    std::string message() const;
+};
+
+class ScenarioError : public std::runtime_error {
+  public:
+    explicit ScenarioError(std::vector<FieldError> errors);
+    const std::vector<FieldError>& errors() const { return errors_; }
+
+  private:
+    std::vector<FieldError> errors_;
+};
+
+// Range checks and cross-field checks; empty when the scenario is valid.
+std::vector<FieldError> validate(const Scenario& scenario);
+void validate_or_throw(const Scenario& scenario);
+
+// A documented numeric key: its dotted name, range and what it means.
+struct KeyInfo {
+    const char* key;
+    const char* unit;
+    double min;
+    double max;
+    const char* description;
+};
+// Every numeric key, in file order.
+const std::vector<KeyInfo>& numeric_keys();
+// Lookup by dotted key; nullptr when unknown.
+const KeyInfo* find_key(std::string_view dotted_key);
+
+// Read/write a numeric key by dotted name (the UI's editors and --set use these).
+std::optional<double> get_number(const Scenario& scenario, std::string_view dotted_key);
+// Returns false when the key is not numeric; the value is not range-checked here.
+bool set_number(Scenario& scenario, std::string_view dotted_key, double value);
+
+// JSON. Parsing checks every key, type, enum word and range; it throws
+// ScenarioError (naming the key or the line) and never returns a partial scenario.
+Scenario scenario_from_json(std::string_view text);
+std::string scenario_to_json(const Scenario& scenario);
+// `--set section.key=value`: the value is JSON (number, true/false) or a bare enum word.
+void apply_setting(Scenario& scenario, std::string_view assignment);
+
+const char* to_string(Strategy strategy);
+const char* to_string(Feature feature);
+std::optional<Strategy> strategy_from_string(std::string_view word);
+std::optional<Feature> feature_from_string(std::string_view word);
+std::optional<AccelModel> accel_model_from_string(std::string_view word);
+
+}  // namespace probecycle

@@ -1,0 +1,75 @@
+#pragma once
+
+// Cycle time against feed (domain.md, "Cycle time versus feed").
+
+#include <array>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "core/cycle/cycle.h"
+#include "core/cycle/scenario.h"
+
+namespace probecycle {
+
+struct SweepPoint {
+    double feed_mm_min{0.0};
+    double cycle_time_s{0.0};
+    double overtravel_mm{0.0};
+    double uncertainty_mm{0.0};
+    std::array<double, kPhaseCount> phase_time_s{};  // by Phase, summed over touches
+};
+
+struct SweepResult {
+    std::vector<SweepPoint> points;
+    // Lowest feed whose cycle time is within `knee_tolerance` of the minimum.
+    std::optional<double> knee_feed_mm_min;
+    // Highest feed whose uncertainty meets the target (none without a target
+    // or when no feed meets it).
+    std::optional<double> max_feed_meeting_target_mm_min;
+};
+
+constexpr double kKneeTolerance = 0.01;  // issue 2: "within 1 % of the minimum"
+
+struct SweepOptions {
+    // Two-touch: at each feed set the backoff to the recommended one (first
+    // touch's overtravel + reseat) instead of the scenario's, i.e. the curve of
+    // an optimised cycle (domain.md, "Strategies"). Costs a second evaluation.
+    bool recommended_backoff{false};
+};
+
+// Varies cycle.probe_feed_mm_min over the given feeds (the rest as in the scenario).
+SweepResult sweep_feeds(const Scenario& scenario, std::span<const double> feeds_mm_min,
+                        const SweepOptions& options = {});
+// Same into a caller's buffer, reused across calls (the UI's slider path).
+void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm_min,
+                      SweepResult& out, const SweepOptions& options = {});
+// from, from+step, ... while <= to (to itself when it falls on the grid).
+std::vector<double> linear_feeds(double from_mm_min, double to_mm_min, double step_mm_min);
+// How many feeds linear_feeds() would make, without making them (0 for an
+// empty range or a step that is not positive).
+double linear_feed_count(double from_mm_min, double to_mm_min, double step_mm_min);
+// n feeds spaced evenly on a log scale from..to inclusive (n >= 2).
+std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t n);
+
+// The knee searched continuously between from and to (bisection after a grid).
+std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_min,
+                                       double to_mm_min, const SweepOptions& options = {});
+
+// Feed range in which analyse() looks for the knee: 10 to 10000 mm/min, or
+// up to the scenario's probe feed when that is higher.
+constexpr double kKneeSearchFrom_mm_min = 10.0;
+constexpr double kKneeSearchTo_mm_min = 10000.0;
+
+// evaluate() plus the warnings that need a sweep (feed_beyond_knee). The knee
+// of a two-touch cycle is that of the optimised cycle (recommended backoff at
+// every feed): with a fixed backoff, fast first touches overtravel into it.
+struct Analysis {
+    CycleResult cycle;
+    std::optional<double> knee_feed_mm_min;
+    // Cycle time at the knee, on the curve it was found on.
+    std::optional<double> knee_cycle_time_s;
+};
+Analysis analyse(const Scenario& scenario);
+
+}  // namespace probecycle

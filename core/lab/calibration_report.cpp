@@ -1,0 +1,111 @@
+#include "core/lab/calibration_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "core/common/csv_writer.h"
+
+namespace probecycle {
+
+namespace {
+
+std::string number(double value) {
+    return csv_number_text(value);
+}
+std::string number(const std::optional<double>& value) {
+    return csv_number_text(value);
+}
+
+std::string row(const char* quantity, const std::string& value, const char* unit) {
+    return std::string(quantity) + ',' + value + ',' + unit + '\n';
+}
+
+constexpr const char* kDirectionNames[] = {"X+", "X-", "Y+", "Y-"};
+
+}  // namespace
+
+std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
+                                   const std::optional<LengthReportInput>& length) {
+    std::string csv;
+    std::vector<CalibrationWarning> warnings;
+    if (ring) {
+        const RingCalibration& r = ring->result;
+        const double gauge_radius_mm = ring->options.gauge_diameter_mm / 2.0;
+        csv += "# ring\nquantity,value,unit\n";
+        csv += row("gauge_diameter", number(ring->options.gauge_diameter_mm), "mm");
+        csv += row("center_x", number(r.center_x_mm), "mm");
+        csv += row("center_y", number(r.center_y_mm), "mm");
+        csv += row("runout_x", number(r.runout_x_mm), "mm");
+        csv += row("runout_y", number(r.runout_y_mm), "mm");
+        std::optional<double> runout;
+        if (r.runout_x_mm && r.runout_y_mm) runout = std::hypot(*r.runout_x_mm, *r.runout_y_mm);
+        csv += row("runout", number(runout), "mm");
+        csv += row("effective_radius", number(r.effective_radius_mm), "mm");
+        csv += row("radius_x_plus", number(r.radius_by_direction.x_plus_mm), "mm");
+        csv += row("radius_x_minus", number(r.radius_by_direction.x_minus_mm), "mm");
+        csv += row("radius_y_plus", number(r.radius_by_direction.y_plus_mm), "mm");
+        csv += row("radius_y_minus", number(r.radius_by_direction.y_minus_mm), "mm");
+        csv += row("residual_max", number(r.residual_max_mm), "mm");
+        csv += row("runout_limit", number(ring->options.runout_limit_mm), "mm");
+        csv += row("residual_limit", number(ring->options.residual_limit_mm), "mm");
+
+        csv += "\n# fits\norientation_deg,center_x_mm,center_y_mm,radius_mm,residual_max_mm\n";
+        for (std::size_t o = 0; o < r.fits.size(); ++o) {
+            if (!r.fits[o]) continue;
+            const CircleFit& fit = *r.fits[o];
+            csv += std::string(o == 0 ? "0" : "180") + ',' + number(fit.center_x_mm) + ',' +
+                   number(fit.center_y_mm) + ',' + number(fit.radius_mm) + ',' +
+                   number(fit.residual_max_mm) + '\n';
+        }
+
+        // Per point: the ball radius there is the gauge radius less the distance
+        // from its orientation's centre (the runout cancels), as the core computes it.
+        csv +=
+            "\n# "
+            "points\nline,orientation_deg,x_mm,y_mm,direction,effective_radius_mm,residual_mm\n";
+        for (const RingPoint& p : ring->points) {
+            const std::size_t o = orientation_index(p.orientation_deg).value_or(0);
+            csv += (p.line > 0 ? std::to_string(p.line) : std::string()) + ',' +
+                   number(p.orientation_deg) + ',' + number(p.x_mm) + ',' + number(p.y_mm) + ',';
+            if (const auto& fit = r.fits[o]) {
+                const double dx = p.x_mm - fit->center_x_mm;
+                const double dy = p.y_mm - fit->center_y_mm;
+                const double distance = std::hypot(dx, dy);
+                if (const auto sector = touch_direction(dx, dy)) {
+                    csv += kDirectionNames[*sector];
+                }
+                csv += ',' + number(gauge_radius_mm - distance) + ',' +
+                       number(distance - fit->radius_mm);
+            } else {
+                csv += ",,";
+            }
+            csv += '\n';
+        }
+        warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
+    }
+    if (length) {
+        const LengthCalibrationInput& in = length->input;
+        const LengthCalibration& l = length->result;
+        if (!csv.empty()) csv += '\n';
+        csv += "# length\nquantity,value,unit\n";
+        csv += row("surface_z", number(in.surface_z_mm), "mm");
+        csv += row("active_length", number(in.active_length_mm), "mm");
+        csv += row("nominal_length", number(in.nominal_length_mm), "mm");
+        csv += row("touches", std::to_string(l.touches), "");
+        csv += row("trigger_z_mean", number(l.trigger_z_mean_mm), "mm");
+        csv += row("trigger_z_range", number(l.trigger_z_range_mm), "mm");
+        csv += row("effective_length", number(l.effective_length_mm), "mm");
+        csv += row("wear", number(l.wear_mm), "mm");
+        warnings.insert(warnings.end(), l.warnings.begin(), l.warnings.end());
+    }
+    if (!csv.empty()) csv += '\n';
+    csv += "# warnings\ncode,severity,message\n";
+    for (const CalibrationWarning& w : warnings) {
+        csv += std::string(to_string(w.code)) + ',' + to_string(w.severity) + ',' +
+               csv_quote(w.message) + '\n';
+    }
+    return csv;
+}
+
+}  // namespace probecycle

@@ -1,0 +1,1226 @@
+#include "core/cycle/cycle.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <random>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "core/cycle/motion.h"
+#include "core/cycle/scenario.h"
+#include "core/cycle/sweep.h"
+#include "core/common/units.h"
+
+namespace probecycle {
+namespace {
+
+constexpr double kUnchecked = -1.0;
+
+double rel_tol(double expected, double rel = 1e-12) {
+    return rel * std::abs(expected) + 1e-15;
+}
+
+// The defaults (T = 0.06 s, t_i = t_c = 2 ms, t_s = 4 ms, pretravel 5 um,
+// return 10000 mm/min) with a surface, a 5 mm approach and the given feeds.
+Scenario surface(Strategy strategy, double probe_feed_mm_min, double backoff_mm = 2.5) {
+    Scenario s;
+    s.cycle.strategy = strategy;
+    s.cycle.feature = Feature::surface;
+    s.cycle.approach_mm = 5.0;
+    s.cycle.probe_feed_mm_min = probe_feed_mm_min;
+    s.cycle.measure_feed_mm_min = 30.0;
+    s.cycle.backoff_mm = backoff_mm;
+    s.cycle.return_feed_mm_min = 10000.0;
+    s.cycle.target_uncertainty_mm = 0.0;
+    s.probe.calibration_feed_mm_min = 0.0;
+    return s;
+}
+
+std::vector<Phase> phases_of(const CycleResult& r) {
+    std::vector<Phase> out;
+    for (const PhaseRecord& p : r.phases()) out.push_back(p.phase);
+    return out;
+}
+
+std::string describe(const CycleResult& r) {
+    std::string out;
+    for (const PhaseRecord& p : r.phases()) {
+        out += std::string(to_string(p.phase)) + "[" + std::to_string(p.touch) +
+               "] start=" + std::to_string(p.start_s) + " t=" + std::to_string(p.time_s) +
+               " d=" + std::to_string(p.distance_mm) + "\n";
+    }
+    for (const Warning& w : r.warnings()) {
+        out += std::string("warning ") + to_string(w.code) + " " + to_string(w.severity) + ": " +
+               w.message() + "\n";
+    }
+    return out;
+}
+
+const Warning* find_warning(const CycleResult& r, WarningCode code, int touch = -1) {
+    for (const Warning& w : r.warnings()) {
+        if (w.code == code && (touch < 0 || static_cast<int>(w.d) == touch)) return &w;
+    }
+    return nullptr;
+}
+
+const PhaseRecord* find_phase(const CycleResult& r, Phase phase, int touch = 0) {
+    for (const PhaseRecord& p : r.phases()) {
+        if (p.phase == phase && p.touch == touch) return &p;
+    }
+    return nullptr;
+}
+
+// The phases of one touch point, in order.
+std::vector<Phase> touch_sequence(Strategy strategy) {
+    if (strategy == Strategy::single_touch) {
+        return {Phase::approach,         Phase::pretravel,    Phase::interface_delay,
+                Phase::controller_delay, Phase::deceleration, Phase::return_move};
+    }
+    return {Phase::approach,
+            Phase::pretravel,
+            Phase::interface_delay,
+            Phase::controller_delay,
+            Phase::deceleration,
+            Phase::backoff,
+            Phase::second_approach,
+            Phase::second_pretravel,
+            Phase::second_interface_delay,
+            Phase::second_controller_delay,
+            Phase::second_deceleration,
+            Phase::return_move};
+}
+
+std::vector<Phase> cycle_sequence(Strategy strategy, Feature feature) {
+    std::vector<Phase> out;
+    const int n = touch_count(feature);
+    for (int i = 0; i < n; ++i) {
+        if (i > 0) out.push_back(Phase::position);
+        const std::vector<Phase> one = touch_sequence(strategy);
+        out.insert(out.end(), one.begin(), one.end());
+    }
+    return out;
+}
+
+bool is_subsequence(const std::vector<Phase>& part, const std::vector<Phase>& whole) {
+    std::size_t k = 0;
+    for (Phase p : whole) {
+        if (k < part.size() && part[k] == p) ++k;
+    }
+    return k == part.size();
+}
+
+// ---------------------------------------------------------------------------
+// Names.
+
+TEST(PhaseNames, ExactAndInCanonicalOrder) {
+    const std::vector<std::string> expected = {
+        "approach",
+        "pretravel",
+        "interface_delay",
+        "controller_delay",
+        "deceleration",
+        "backoff",
+        "second_approach",
+        "second_pretravel",
+        "second_interface_delay",
+        "second_controller_delay",
+        "second_deceleration",
+        "return",
+        "position",
+    };
+    ASSERT_EQ(all_phases().size(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ(to_string(all_phases()[i]), expected[i]);
+        EXPECT_EQ(static_cast<std::size_t>(all_phases()[i]), i);
+    }
+}
+
+TEST(WarningNames, Exact) {
+    EXPECT_STREQ(to_string(WarningCode::overtravel_limit), "overtravel_limit");
+    EXPECT_STREQ(to_string(WarningCode::backoff_too_small), "backoff_too_small");
+    EXPECT_STREQ(to_string(WarningCode::backoff_excess), "backoff_excess");
+    EXPECT_STREQ(to_string(WarningCode::touch_while_accelerating), "touch_while_accelerating");
+    EXPECT_STREQ(to_string(WarningCode::feed_beyond_knee), "feed_beyond_knee");
+    EXPECT_STREQ(to_string(WarningCode::uncertainty_over_target), "uncertainty_over_target");
+    EXPECT_STREQ(to_string(WarningCode::calibration_feed_mismatch), "calibration_feed_mismatch");
+    EXPECT_STREQ(to_string(Severity::info), "info");
+    EXPECT_STREQ(to_string(Severity::warning), "warning");
+    EXPECT_STREQ(to_string(Severity::error), "error");
+}
+
+TEST(TouchCount, PerFeature) {
+    EXPECT_EQ(touch_count(Feature::surface), 1);
+    EXPECT_EQ(touch_count(Feature::web), 2);
+    EXPECT_EQ(touch_count(Feature::pocket), 2);
+    EXPECT_EQ(touch_count(Feature::bore), 4);
+    EXPECT_EQ(touch_count(Feature::boss), 4);
+}
+
+// ---------------------------------------------------------------------------
+// Small closed forms (domain.md "One touch, phase by phase").
+
+TEST(ReactionTime, InterfacePlusLatencyPlusFullScan) {
+    Machine m;
+    Probe p;
+    m.scan_period_s = 0.004;
+    m.controller_latency_s = 0.002;
+    p.interface_delay_s = 0.003;
+    EXPECT_NEAR(reaction_time_s(m, p), 0.009, 1e-15);
+}
+
+struct ScanRangeCase {
+    const char* name;
+    double feed_mm_min;
+    double scan_period_s;
+    bool latched;
+    double range_mm;
+};
+
+// clang-format off
+const ScanRangeCase kScanRangeCases[] = {
+    // name                  F [mm/min]  t_s [s]   latched  range [mm]
+    {"standard_3000",        3000.0,     0.004,    false,   0.2},     // domain.md
+    {"high_speed_3000",      3000.0,     0.000004, false,   0.0002},  // 4 us -> 0.2 um
+    {"delay_480_5ms",        480.0,      0.005,    false,   0.04},    // 480 mm/min, 5 ms
+    {"slow_30",              30.0,       0.004,    false,   0.002},
+    {"latched",              3000.0,     0.004,    true,    0.0},
+};
+// clang-format on
+
+class ScanRange : public testing::TestWithParam<ScanRangeCase> {};
+
+TEST_P(ScanRange, SpeedTimesScanPeriod) {
+    const ScanRangeCase& c = GetParam();
+    Machine m;
+    m.scan_period_s = c.scan_period_s;
+    m.latched_input = c.latched;
+    EXPECT_NEAR(scan_range_mm(m, mm_min_to_mm_s(c.feed_mm_min)), c.range_mm, rel_tol(c.range_mm));
+}
+
+INSTANTIATE_TEST_SUITE_P(DomainExamples, ScanRange, testing::ValuesIn(kScanRangeCases),
+                         [](const testing::TestParamInfo<ScanRangeCase>& case_info) {
+                             return std::string(case_info.param.name);
+                         });
+
+TEST(ExpandedUncertainty, KTwoOfUniformRangeAndRepeatability) {
+    // Uniform range R: sigma = R / sqrt(12); repeatability 2 sigma: sigma = rep / 2.
+    EXPECT_NEAR(expanded_uncertainty_mm(0.2, 0.0), 0.2 / std::sqrt(3.0), 1e-15);
+    EXPECT_NEAR(expanded_uncertainty_mm(0.0, 0.001), 0.001, 1e-18);
+    EXPECT_EQ(expanded_uncertainty_mm(0.0, 0.0), 0.0);
+    for (double range : {0.0002, 0.002, 0.04, 0.2}) {
+        for (double rep : {0.0005, 0.001, 0.003}) {
+            const double expected = 2.0 * std::sqrt(range * range / 12.0 + rep * rep / 4.0);
+            EXPECT_NEAR(expanded_uncertainty_mm(range, rep), expected, rel_tol(expected));
+        }
+    }
+}
+
+TEST(SpeedError, SpeedMinusCalibratedTimesDelaysWithHalfTheScan) {
+    Machine m;
+    Probe p;
+    m.scan_period_s = 0.004;
+    m.controller_latency_s = 0.002;
+    p.interface_delay_s = 0.002;
+    // (0.5 - 1.0) * (0.002 + 0.002 + 0.004 / 2) = -0.003
+    EXPECT_NEAR(speed_error_mm(m, p, 0.5, 1.0), -0.003, 1e-15);
+    EXPECT_NEAR(speed_error_mm(m, p, 1.0, 0.5), 0.003, 1e-15);
+    EXPECT_EQ(speed_error_mm(m, p, 0.5, 0.5), 0.0);
+    m.latched_input = true;  // no scan term
+    EXPECT_NEAR(speed_error_mm(m, p, 0.5, 1.0), -0.002, 1e-15);
+}
+
+// ---------------------------------------------------------------------------
+// Whole cycles computed by hand.
+
+struct PhaseExpectation {
+    Phase phase;
+    double time_s;  // kUnchecked: not fixed by the spec
+    double distance_mm;
+};
+
+void expect_phases(const CycleResult& r, const std::vector<PhaseExpectation>& expected) {
+    ASSERT_EQ(r.phases().size(), expected.size()) << describe(r);
+    double start = 0.0;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const PhaseRecord& p = r.phases()[i];
+        SCOPED_TRACE(to_string(expected[i].phase));
+        EXPECT_EQ(p.phase, expected[i].phase);
+        EXPECT_EQ(p.touch, 0);
+        EXPECT_NEAR(p.start_s, start, 1e-12);
+        if (expected[i].time_s != kUnchecked) {
+            EXPECT_NEAR(p.time_s, expected[i].time_s, rel_tol(expected[i].time_s, 1e-9));
+        }
+        EXPECT_NEAR(std::abs(p.distance_mm), expected[i].distance_mm,
+                    rel_tol(expected[i].distance_mm, 1e-9));
+        start += p.time_s;
+    }
+    EXPECT_NEAR(r.total(), start, 1e-12);
+}
+
+TEST(SingleTouch, SurfaceAt3000PhaseByPhase) {
+    // v = 50 mm/s, T = 0.06: ramp 1.5 mm in 0.06 s, 3.5 mm cruise in 0.07 s.
+    // Overtravel 0.005 + 50 * (0.002 + 0.002 + 0.004) + 50 * 0.06 / 2 = 1.905 mm.
+    // Return 6.905 mm at 166.67 mm/s < v*T = 10 mm: 2 * sqrt(d * T / v).
+    const CycleResult r = evaluate(surface(Strategy::single_touch, 3000.0));
+    const double v_ret = 10000.0 / 60.0;
+    // clang-format off
+    expect_phases(r, {
+        // phase                    time [s]                                    distance [mm]
+        {Phase::approach,           0.13,                                       5.0},
+        {Phase::pretravel,          0.0001,                                     0.005},
+        {Phase::interface_delay,    0.002,                                      0.1},
+        {Phase::controller_delay,   0.006,                                      0.3},
+        {Phase::deceleration,       0.06,                                       1.5},
+        {Phase::return_move,        2.0 * std::sqrt(6.905 * 0.06 / v_ret),      6.905},
+    });
+    // clang-format on
+    EXPECT_NEAR(r.overtravel_mm(), 1.905, 1e-12);
+    EXPECT_NEAR(r.first_touch().overtravel_mm, 1.905, 1e-12);
+    EXPECT_NEAR(r.trigger_speed_mm_s(), 50.0, 1e-12);
+    EXPECT_NEAR(r.first_touch().touch_speed_mm_s, 50.0, 1e-12);
+    EXPECT_NEAR(r.first_touch().react_speed_mm_s, 50.0, 1e-12);
+    EXPECT_NEAR(r.first_touch().programmed_feed_mm_s, 50.0, 1e-12);
+    EXPECT_NEAR(r.scan_range_mm(), 0.2, 1e-12);  // domain.md: 3000 mm/min, 4 ms
+    EXPECT_NEAR(r.uncertainty_mm(), 2.0 * std::sqrt(0.04 / 12.0 + 0.001 * 0.001 / 4.0), 1e-12);
+    EXPECT_NEAR(r.recommended_backoff_mm(), 1.905 + 0.2, 1e-12);
+    EXPECT_NEAR(r.phase_time(Phase::approach), 0.13, 1e-12);
+    EXPECT_EQ(r.phase_time(Phase::backoff), 0.0);
+    EXPECT_EQ(r.phase_time(Phase::position), 0.0);
+    EXPECT_TRUE(r.warnings().empty()) << describe(r);
+}
+
+TEST(TwoTouch, SurfaceAt3000Then30PhaseByPhase) {
+    // First touch as above (overtravel 1.905 mm); backoff 2.5 mm leaves 0.595 mm to the
+    // surface, approached at 0.5 mm/s (ramp 0.015 mm in 0.06 s): 0.06 + 0.58 / 0.5 = 1.22 s.
+    // Second overtravel 0.005 + 0.5 * 0.008 + 0.015 = 0.024 mm; return 5.024 mm.
+    const CycleResult r = evaluate(surface(Strategy::two_touch, 3000.0, 2.5));
+    const double v_ret = 10000.0 / 60.0;
+    // clang-format off
+    expect_phases(r, {
+        // phase                          time [s]                                 distance [mm]
+        {Phase::approach,                 0.13,                                    5.0},
+        {Phase::pretravel,                0.0001,                                  0.005},
+        {Phase::interface_delay,          0.002,                                   0.1},
+        {Phase::controller_delay,         0.006,                                   0.3},
+        {Phase::deceleration,             0.06,                                    1.5},
+        {Phase::backoff,                  kUnchecked,                              2.5},
+        {Phase::second_approach,          1.22,                                    0.595},
+        {Phase::second_pretravel,         0.01,                                    0.005},
+        {Phase::second_interface_delay,   0.002,                                   0.001},
+        {Phase::second_controller_delay,  0.006,                                   0.003},
+        {Phase::second_deceleration,      0.06,                                    0.015},
+        {Phase::return_move,              2.0 * std::sqrt(5.024 * 0.06 / v_ret),   5.024},
+    });
+    // clang-format on
+    EXPECT_NEAR(r.first_touch().overtravel_mm, 1.905, 1e-12);
+    EXPECT_NEAR(r.measuring_touch().overtravel_mm, 0.024, 1e-12);
+    EXPECT_NEAR(r.overtravel_mm(), 1.905, 1e-12);
+    EXPECT_NEAR(r.trigger_speed_mm_s(), 0.5, 1e-12);
+    EXPECT_NEAR(r.measuring_touch().touch_speed_mm_s, 0.5, 1e-12);
+    EXPECT_NEAR(r.scan_range_mm(), 0.002, 1e-12);
+    EXPECT_NEAR(r.uncertainty_mm(), 2.0 * std::sqrt(0.002 * 0.002 / 12.0 + 0.001 * 0.001 / 4.0),
+                1e-12);
+    EXPECT_NEAR(r.recommended_backoff_mm(), 2.105, 1e-12);
+    // The backoff move is no faster than a rest-to-rest move at rapid.
+    const PhaseRecord* backoff = find_phase(r, Phase::backoff);
+    ASSERT_NE(backoff, nullptr);
+    EXPECT_GE(backoff->time_s,
+              move_time_s(Scenario{}.motion_limits(), 2.5, mm_min_to_mm_s(30000.0)) * (1 - 1e-12));
+}
+
+struct PretravelCase {
+    double feed_mm_min;
+    double pretravel_mm;
+    double time_s;
+};
+
+// domain.md: 2 um at 30 mm/min takes 0.004 s; 50 um at 30 mm/min 0.1 s.
+// clang-format off
+const PretravelCase kPretravelCases[] = {
+    // F [mm/min]  p [mm]   t [s]
+    {30.0,         0.002,   0.004},
+    {30.0,         0.05,    0.1},
+    {1000.0,       0.002,   0.00012},
+    {3000.0,       0.005,   0.0001},
+};
+// clang-format on
+
+class PretravelTime : public testing::TestWithParam<PretravelCase> {};
+
+TEST_P(PretravelTime, PretravelOverTouchSpeed) {
+    const PretravelCase& c = GetParam();
+    Scenario s = surface(Strategy::single_touch, c.feed_mm_min);
+    s.probe.pretravel_mm = c.pretravel_mm;
+    const CycleResult r = evaluate(s);
+    const PhaseRecord* p = find_phase(r, Phase::pretravel);
+    ASSERT_NE(p, nullptr) << describe(r);
+    EXPECT_NEAR(p->time_s, c.time_s, rel_tol(c.time_s, 1e-9));
+    EXPECT_NEAR(p->distance_mm, c.pretravel_mm, 1e-15);
+}
+
+INSTANTIATE_TEST_SUITE_P(DomainExamples, PretravelTime, testing::ValuesIn(kPretravelCases));
+
+TEST(TwoTouch, EveryExtraMillimetreOfBackoffAt30CostsTwoSeconds) {
+    const CycleResult base = evaluate(surface(Strategy::two_touch, 3000.0, 2.5));
+    const CycleResult more = evaluate(surface(Strategy::two_touch, 3000.0, 3.5));
+    const PhaseRecord* a = find_phase(base, Phase::second_approach);
+    const PhaseRecord* b = find_phase(more, Phase::second_approach);
+    ASSERT_NE(a, nullptr);
+    ASSERT_NE(b, nullptr);
+    EXPECT_NEAR(b->time_s - a->time_s, 2.0, 1e-9);
+    EXPECT_GE(more.total() - base.total(), 2.0 - 1e-9);
+}
+
+TEST(Cycle, TouchDuringAccelerationTriggersSlowerAndKeepsAccelerating) {
+    // 6000 mm/min: a = 100 / 0.06 mm/s^2, full speed after 3 mm; the surface is at 0.75 mm.
+    // Touch at sqrt(2 a 0.75) = 50 mm/s; the trigger after 5 um more; the axis keeps
+    // accelerating through the 8 ms of delays, then brakes at a.
+    Scenario s = surface(Strategy::single_touch, 6000.0);
+    s.cycle.approach_mm = 0.75;
+    const CycleResult r = evaluate(s);
+    const double a = 100.0 / 0.06;
+    const double t_touch = std::sqrt(2.0 * 0.75 / a);
+    const double t_trigger = std::sqrt(2.0 * 0.755 / a);
+    const double t_react = t_trigger + 0.008;
+    const double x_react = 0.5 * a * t_react * t_react;
+    const double v_react = a * t_react;
+    EXPECT_NEAR(r.first_touch().touch_speed_mm_s, 50.0, 1e-9);
+    EXPECT_NEAR(r.first_touch().trigger_speed_mm_s, a * t_trigger, 1e-9);
+    EXPECT_NEAR(r.first_touch().react_speed_mm_s, v_react, 1e-9);
+    EXPECT_NEAR(r.trigger_speed_mm_s(), a * t_trigger, 1e-9);
+    // Overtravel: to the reaction point, then v^2 / (2 a).
+    EXPECT_NEAR(r.overtravel_mm(), x_react - 0.75 + v_react * v_react / (2.0 * a), 1e-9);
+    // clang-format off
+    expect_phases(r, {
+        // phase                    time [s]                   distance [mm]
+        {Phase::approach,           t_touch,                   0.75},
+        {Phase::pretravel,          t_trigger - t_touch,       0.005},
+        {Phase::interface_delay,    0.002,                     0.5 * a * (std::pow(t_trigger + 0.002, 2) - t_trigger * t_trigger)},
+        {Phase::controller_delay,   0.006,                     x_react - 0.5 * a * std::pow(t_trigger + 0.002, 2)},
+        {Phase::deceleration,       v_react / a,               v_react * v_react / (2.0 * a)},
+        {Phase::return_move,        kUnchecked,                x_react + v_react * v_react / (2.0 * a)},
+    });
+    // clang-format on
+    const Warning* w = find_warning(r, WarningCode::touch_while_accelerating);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_EQ(w->severity, Severity::warning);
+    // The speed reached (at the touch or the trigger) and the programmed feed.
+    EXPECT_GE(w->a, 50.0 - 1e-9);
+    EXPECT_LE(w->a, a * t_trigger + 1e-9);
+    EXPECT_NEAR(w->b, 100.0, 1e-12);
+    EXPECT_EQ(w->d, 0.0);
+    // The error is that of a speed other than the calibrated one.
+    EXPECT_NEAR(std::abs(w->c), std::abs(speed_error_mm(s.machine, s.probe, w->a, w->b)), 1e-12);
+    EXPECT_GT(std::abs(w->c), 0.0);
+    EXPECT_FALSE(w->message().empty());
+}
+
+TEST(Cycle, LatchedInputRemovesTheScanFromTheMeasurementNotFromTheTravel) {
+    Scenario s = surface(Strategy::single_touch, 3000.0);
+    const CycleResult scanned = evaluate(s);
+    s.machine.latched_input = true;
+    const CycleResult latched = evaluate(s);
+    EXPECT_EQ(latched.scan_range_mm(), 0.0);
+    EXPECT_NEAR(latched.uncertainty_mm(), s.probe.repeatability_2sigma_mm, 1e-15);
+    EXPECT_NEAR(latched.overtravel_mm(), scanned.overtravel_mm(), 1e-12);
+    EXPECT_NEAR(latched.total(), scanned.total(), 1e-12);
+}
+
+TEST(Cycle, ZeroDelaysAndPretravelLeaveOnlyTheStop) {
+    Scenario s = surface(Strategy::single_touch, 3000.0);
+    s.probe.pretravel_mm = 0.0;
+    s.probe.interface_delay_s = 0.0;
+    s.machine.controller_latency_s = 0.0;
+    s.machine.scan_period_s = 0.0;
+    s.probe.repeatability_2sigma_mm = 0.0;
+    const CycleResult r = evaluate(s);
+    EXPECT_NEAR(r.overtravel_mm(), 1.5, 1e-12);  // v * T / 2
+    EXPECT_EQ(r.uncertainty_mm(), 0.0);
+    double sum = 0.0;
+    for (const PhaseRecord& p : r.phases()) {
+        EXPECT_TRUE(std::isfinite(p.time_s));
+        EXPECT_GE(p.time_s, 0.0);
+        sum += p.time_s;
+    }
+    EXPECT_NEAR(sum, r.total(), 1e-12);
+}
+
+TEST(Cycle, StartingAtTheSurfaceIsFinite) {
+    // approach_mm = 0 is allowed: the touch happens at rest and the probe triggers
+    // while accelerating through the pretravel.
+    for (AccelModel model :
+         {AccelModel::time_constant, AccelModel::constant_accel, AccelModel::jerk_limited}) {
+        Scenario s = surface(Strategy::two_touch, 3000.0);
+        s.machine.accel_model = model;
+        s.cycle.approach_mm = 0.0;
+        const CycleResult r = evaluate(s);
+        SCOPED_TRACE(describe(r));
+        EXPECT_TRUE(std::isfinite(r.total()));
+        EXPECT_EQ(r.first_touch().touch_speed_mm_s, 0.0);
+        EXPECT_GT(r.first_touch().trigger_speed_mm_s, 0.0);
+        EXPECT_NE(find_warning(r, WarningCode::touch_while_accelerating, 0), nullptr);
+        double sum = 0.0;
+        for (const PhaseRecord& p : r.phases()) {
+            EXPECT_TRUE(std::isfinite(p.time_s));
+            sum += p.time_s;
+        }
+        EXPECT_NEAR(sum, r.total(), 1e-12);
+    }
+}
+
+TEST(Cycle, BackoffShorterThanOvertravelIsReportedNotACrash) {
+    for (double backoff : {0.0, 0.5, 1.905}) {
+        SCOPED_TRACE(backoff);
+        const CycleResult r = evaluate(surface(Strategy::two_touch, 3000.0, backoff));
+        double sum = 0.0;
+        for (const PhaseRecord& p : r.phases()) {
+            EXPECT_TRUE(std::isfinite(p.time_s)) << describe(r);
+            EXPECT_GE(p.time_s, 0.0) << describe(r);
+            EXPECT_TRUE(std::isfinite(p.distance_mm));
+            sum += p.time_s;
+        }
+        EXPECT_TRUE(std::isfinite(r.total()));
+        EXPECT_NEAR(sum, r.total(), 1e-9);
+        const Warning* w = find_warning(r, WarningCode::backoff_too_small);
+        ASSERT_NE(w, nullptr) << describe(r);
+        EXPECT_EQ(w->severity, Severity::error);
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Multi-touch features.
+
+class FeatureCycle : public testing::TestWithParam<std::tuple<Feature, Strategy>> {};
+
+TEST_P(FeatureCycle, TouchesInOrderWithPositioningMovesAtRapid) {
+    const auto [feature, strategy] = GetParam();
+    Scenario s = surface(strategy, 3000.0, 2.5);
+    s.cycle.feature = feature;
+    s.cycle.feature_size_mm = 50.0;
+    const CycleResult r = evaluate(s);
+    EXPECT_EQ(phases_of(r), cycle_sequence(strategy, feature)) << describe(r);
+    int touch = 0;
+    for (const PhaseRecord& p : r.phases()) {
+        if (p.phase == Phase::position) {
+            ++touch;
+            // Between touches, at the rapid feed.
+            EXPECT_GT(p.distance_mm, 0.0);
+            EXPECT_NEAR(p.time_s,
+                        move_time_s(s.motion_limits(), p.distance_mm,
+                                    mm_min_to_mm_s(s.machine.rapid_feed_mm_min)),
+                        1e-12);
+        } else {
+            EXPECT_EQ(p.touch, touch) << to_string(p.phase);
+        }
+    }
+    EXPECT_EQ(touch + 1, touch_count(feature));
+    // Every touch point repeats the same touch.
+    const CycleResult one = evaluate(surface(strategy, 3000.0, 2.5));
+    EXPECT_NEAR(r.phase_time(Phase::approach),
+                touch_count(feature) * one.phase_time(Phase::approach), 1e-12);
+    EXPECT_NEAR(r.overtravel_mm(), one.overtravel_mm(), 1e-12);
+    EXPECT_NEAR(r.uncertainty_mm(), one.uncertainty_mm(), 1e-15);
+    EXPECT_NEAR(r.total(), touch_count(feature) * one.total() + r.phase_time(Phase::position),
+                1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllFeatures, FeatureCycle,
+    testing::Combine(testing::Values(Feature::surface, Feature::web, Feature::pocket, Feature::bore,
+                                     Feature::boss),
+                     testing::Values(Strategy::single_touch, Strategy::two_touch)));
+
+TEST(FeatureCycle, PocketCrossesBetweenTheTwoStartPositions) {
+    // Contact points 50 mm apart, each start 5 mm inside: 40 mm across.
+    Scenario s = surface(Strategy::single_touch, 3000.0);
+    s.cycle.feature = Feature::pocket;
+    s.cycle.feature_size_mm = 50.0;
+    const CycleResult r = evaluate(s);
+    const PhaseRecord* p = find_phase(r, Phase::position, 0);
+    if (p == nullptr) p = find_phase(r, Phase::position, 1);
+    ASSERT_NE(p, nullptr) << describe(r);
+    EXPECT_NEAR(p->distance_mm, 40.0, 1e-9);
+    // A web's start positions are outside it: at least 60 mm apart.
+    s.cycle.feature = Feature::web;
+    const CycleResult w = evaluate(s);
+    double web_position = 0.0;
+    for (const PhaseRecord& rec : w.phases()) {
+        if (rec.phase == Phase::position) web_position += rec.distance_mm;
+    }
+    EXPECT_GE(web_position, 60.0 - 1e-9);
+}
+
+// ---------------------------------------------------------------------------
+// State along the cycle (cycle.h conventions).
+
+TEST(StateAt, SingleTouchAt3000) {
+    const CycleResult r = evaluate(surface(Strategy::single_touch, 3000.0));
+    const CycleState start = r.state_at(0.0);
+    EXPECT_EQ(start.phase_index, 0u);
+    EXPECT_EQ(start.touch, 0);
+    EXPECT_EQ(start.position_mm, 0.0);
+    EXPECT_EQ(start.velocity_mm_s, 0.0);
+    // Mid-ramp: a = 50 / 0.06, at 0.03 s: 25 mm/s, 0.375 mm.
+    const CycleState ramp = r.state_at(0.03);
+    EXPECT_NEAR(ramp.velocity_mm_s, 25.0, 1e-9);
+    EXPECT_NEAR(ramp.position_mm, 0.375, 1e-9);
+    EXPECT_NEAR(ramp.path_speed_mm_s, 25.0, 1e-9);
+    // The surface at the end of the approach, at full speed.
+    const CycleState touch = r.state_at(0.13);
+    EXPECT_NEAR(touch.position_mm, 5.0, 1e-9);
+    EXPECT_NEAR(touch.velocity_mm_s, 50.0, 1e-9);
+    // Stopped 1.905 mm beyond it.
+    const double t_stop = 0.13 + 0.0001 + 0.002 + 0.006 + 0.06;
+    const CycleState stop = r.state_at(t_stop);
+    EXPECT_NEAR(stop.position_mm, 6.905, 1e-9);
+    EXPECT_NEAR(stop.velocity_mm_s, 0.0, 1e-9);
+    // Returning: moving away from the surface.
+    const CycleState back = r.state_at(0.5 * (t_stop + r.total()));
+    EXPECT_LT(back.velocity_mm_s, 0.0);
+    EXPECT_NEAR(back.path_speed_mm_s, -back.velocity_mm_s, 1e-9);
+    EXPECT_EQ(r.phases()[back.phase_index].phase, Phase::return_move);
+    const CycleState end = r.state_at(r.total());
+    EXPECT_NEAR(end.position_mm, 0.0, 1e-9);
+    EXPECT_NEAR(end.velocity_mm_s, 0.0, 1e-9);
+}
+
+TEST(StateAt, TwoTouchBacksOffThenMeetsTheSurfaceAgain) {
+    const CycleResult r = evaluate(surface(Strategy::two_touch, 3000.0, 2.5));
+    const PhaseRecord* backoff = find_phase(r, Phase::backoff);
+    const PhaseRecord* second = find_phase(r, Phase::second_approach);
+    ASSERT_NE(backoff, nullptr);
+    ASSERT_NE(second, nullptr);
+    const CycleState mid_backoff = r.state_at(backoff->start_s + 0.5 * backoff->time_s);
+    EXPECT_LT(mid_backoff.velocity_mm_s, 0.0);
+    const CycleState backed = r.state_at(backoff->start_s + backoff->time_s);
+    EXPECT_NEAR(backed.position_mm, 5.0 + 1.905 - 2.5, 1e-9);
+    const CycleState met = r.state_at(second->start_s + second->time_s);
+    EXPECT_NEAR(met.position_mm, 5.0, 1e-9);
+    EXPECT_NEAR(met.velocity_mm_s, 0.5, 1e-9);
+}
+
+// ---------------------------------------------------------------------------
+// Warnings, each from a scenario built for it.
+
+// Two-touch at 3000/30 with the backoff at the recommendation: no warning at all.
+Scenario clean_two_touch() {
+    Scenario s = surface(Strategy::two_touch, 3000.0);
+    s.cycle.backoff_mm = evaluate(s).recommended_backoff_mm();
+    return s;
+}
+
+TEST(Warnings, NoneForACleanCycle) {
+    const Scenario s = clean_two_touch();
+    ASSERT_TRUE(validate(s).empty());
+    const CycleResult r = evaluate(s);
+    EXPECT_TRUE(r.warnings().empty()) << describe(r);
+    EXPECT_NEAR(s.cycle.backoff_mm, 2.105, 1e-12);
+}
+
+TEST(Warnings, OvertravelLimit) {
+    Scenario s = clean_two_touch();
+    const double ot = evaluate(s).overtravel_mm();
+    struct {
+        double limit_mm;
+        bool present;
+        Severity severity;
+    } const cases[] = {
+        {ot, true, Severity::error},                       // at the limit
+        {0.5 * ot, true, Severity::error},                 // beyond it
+        {ot / 0.9, true, Severity::warning},               // 90 %
+        {ot / 0.8 * (1 - 1e-9), true, Severity::warning},  // just over 80 %
+        {ot / 0.8 * (1 + 1e-6), false, Severity::info},    // just under 80 %
+        {ot / 0.5, false, Severity::info},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.limit_mm);
+        s.probe.overtravel_limit_mm = c.limit_mm;
+        const CycleResult r = evaluate(s);
+        const Warning* w = find_warning(r, WarningCode::overtravel_limit);
+        if (!c.present) {
+            EXPECT_EQ(w, nullptr) << describe(r);
+            continue;
+        }
+        ASSERT_NE(w, nullptr) << describe(r);
+        EXPECT_EQ(w->severity, c.severity);
+        EXPECT_NEAR(w->a, ot, 1e-12);
+        EXPECT_EQ(w->b, c.limit_mm);
+        EXPECT_FALSE(w->message().empty());
+    }
+}
+
+TEST(Warnings, BackoffTooSmall) {
+    Scenario s = clean_two_touch();
+    const double recommended = s.cycle.backoff_mm;
+    s.cycle.backoff_mm = recommended - 0.05;
+    const CycleResult r = evaluate(s);
+    const Warning* w = find_warning(r, WarningCode::backoff_too_small);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_EQ(w->severity, Severity::error);
+    EXPECT_NEAR(w->a, recommended - 0.05, 1e-12);
+    EXPECT_NEAR(w->b, recommended, 1e-12);
+    EXPECT_EQ(find_warning(r, WarningCode::backoff_excess), nullptr);
+    EXPECT_FALSE(w->message().empty());
+}
+
+TEST(Warnings, BackoffExcessWithTheTimeItWastes) {
+    const Scenario clean = clean_two_touch();
+    Scenario s = clean;
+    s.cycle.backoff_mm = clean.cycle.backoff_mm + 1.0;
+    const CycleResult r = evaluate(s);
+    const Warning* w = find_warning(r, WarningCode::backoff_excess);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_EQ(w->severity, Severity::info);
+    EXPECT_NEAR(w->a, s.cycle.backoff_mm, 1e-12);
+    EXPECT_NEAR(w->b, clean.cycle.backoff_mm, 1e-12);
+    // 1 mm at 30 mm/min is 2 s, plus at most the longer backoff move.
+    const double extra = r.total() - evaluate(clean).total();
+    EXPECT_GE(w->c, 2.0 - 1e-9);
+    EXPECT_LE(w->c, extra + 1e-9);
+    EXPECT_EQ(find_warning(r, WarningCode::backoff_too_small), nullptr);
+    EXPECT_FALSE(w->message().empty());
+}
+
+TEST(Warnings, NoBackoffWarningsForSingleTouch) {
+    Scenario s = surface(Strategy::single_touch, 3000.0);
+    for (double backoff : {0.0, 50.0}) {
+        s.cycle.backoff_mm = backoff;
+        const CycleResult r = evaluate(s);
+        EXPECT_EQ(find_warning(r, WarningCode::backoff_too_small), nullptr);
+        EXPECT_EQ(find_warning(r, WarningCode::backoff_excess), nullptr);
+    }
+}
+
+TEST(Warnings, TouchWhileAcceleratingOnTheFirstTouch) {
+    Scenario s = clean_two_touch();
+    const double reach = reach_distance_mm(s.motion_limits(), 50.0);  // 1.5 mm
+    s.cycle.approach_mm = 0.5 * reach;
+    const CycleResult r = evaluate(s);
+    const Warning* w = find_warning(r, WarningCode::touch_while_accelerating, 0);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_EQ(w->severity, Severity::warning);
+    EXPECT_LT(w->a, 50.0);
+    EXPECT_NEAR(w->b, 50.0, 1e-12);
+    s.cycle.approach_mm = reach;  // just reaches the feed
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::touch_while_accelerating), nullptr);
+}
+
+TEST(Warnings, TouchWhileAcceleratingOnTheSecondTouch) {
+    // Second approach 0.01 mm, short of the 0.015 mm needed to reach 30 mm/min.
+    Scenario s = clean_two_touch();
+    s.cycle.backoff_mm = 1.905 + 0.01;
+    const CycleResult r = evaluate(s);
+    const Warning* w = find_warning(r, WarningCode::touch_while_accelerating, 1);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_LT(w->a, 0.5);
+    EXPECT_NEAR(w->b, 0.5, 1e-12);
+    EXPECT_NEAR(r.measuring_touch().touch_speed_mm_s, std::sqrt(2.0 * (0.5 / 0.06) * 0.01), 1e-9);
+    EXPECT_EQ(find_warning(r, WarningCode::touch_while_accelerating, 0), nullptr);
+}
+
+TEST(Warnings, UncertaintyOverTarget) {
+    Scenario s = clean_two_touch();
+    const double u = evaluate(s).uncertainty_mm();
+    s.cycle.target_uncertainty_mm = 0.5 * u;
+    const CycleResult r = evaluate(s);
+    const Warning* w = find_warning(r, WarningCode::uncertainty_over_target);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_NEAR(w->a, u, 1e-15);
+    EXPECT_NEAR(w->b, 0.5 * u, 1e-15);
+    EXPECT_FALSE(w->message().empty());
+    s.cycle.target_uncertainty_mm = 2.0 * u;
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::uncertainty_over_target), nullptr);
+    s.cycle.target_uncertainty_mm = 0.0;  // no target
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::uncertainty_over_target), nullptr);
+}
+
+TEST(Warnings, CalibrationFeedMismatch) {
+    Scenario s = clean_two_touch();
+    s.probe.calibration_feed_mm_min = 60.0;  // measuring at 30
+    const CycleResult r = evaluate(s);
+    const Warning* w = find_warning(r, WarningCode::calibration_feed_mismatch);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_NEAR(w->a, 0.5, 1e-12);
+    EXPECT_NEAR(w->b, 1.0, 1e-12);
+    // (0.5 - 1.0) * (0.002 + 0.002 + 0.004 / 2) = -0.003 mm
+    EXPECT_NEAR(std::abs(w->c), 0.003, 1e-12);
+    EXPECT_NEAR(w->c, speed_error_mm(s.machine, s.probe, 0.5, 1.0), 1e-12);
+    EXPECT_FALSE(w->message().empty());
+
+    s.probe.calibration_feed_mm_min = 30.0;
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::calibration_feed_mismatch), nullptr);
+    s.probe.calibration_feed_mm_min = 0.0;
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::calibration_feed_mismatch), nullptr);
+
+    // Single-touch measures at the probe feed.
+    Scenario single = surface(Strategy::single_touch, 3000.0);
+    single.probe.calibration_feed_mm_min = 3000.0;
+    EXPECT_EQ(find_warning(evaluate(single), WarningCode::calibration_feed_mismatch), nullptr);
+    single.probe.calibration_feed_mm_min = 30.0;
+    const CycleResult single_result = evaluate(single);
+    const Warning* ws = find_warning(single_result, WarningCode::calibration_feed_mismatch);
+    ASSERT_NE(ws, nullptr);
+    // (50 - 0.5) * 0.006 = 0.297 mm
+    EXPECT_NEAR(std::abs(ws->c), 0.297, 1e-12);
+}
+
+TEST(Warnings, FeedBeyondKneeOnlyFromAnalyse) {
+    Scenario s = surface(Strategy::single_touch, 9000.0);
+    s.probe.overtravel_limit_mm = 50.0;
+    const Analysis fast = analyse(s);
+    ASSERT_TRUE(fast.knee_feed_mm_min.has_value());
+    ASSERT_LT(*fast.knee_feed_mm_min, 9000.0);
+    const Warning* w = find_warning(fast.cycle, WarningCode::feed_beyond_knee);
+    ASSERT_NE(w, nullptr) << describe(fast.cycle);
+    EXPECT_EQ(w->severity, Severity::info);
+    EXPECT_NEAR(w->a, 150.0, 1e-9);
+    EXPECT_NEAR(w->b, mm_min_to_mm_s(*fast.knee_feed_mm_min), 1e-9);
+    EXPECT_LT(w->c, kKneeTolerance * fast.cycle.total());
+    EXPECT_FALSE(w->message().empty());
+    // evaluate() alone never gives it.
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::feed_beyond_knee), nullptr);
+    // Below the knee: absent.
+    s.cycle.probe_feed_mm_min = 0.5 * *fast.knee_feed_mm_min;
+    const Analysis slow = analyse(s);
+    EXPECT_EQ(find_warning(slow.cycle, WarningCode::feed_beyond_knee), nullptr)
+        << describe(slow.cycle);
+}
+
+// ---------------------------------------------------------------------------
+// Randomized properties, fixed seed.
+
+Scenario random_scenario(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto log_uniform = [&](double lo, double hi) {
+        return std::exp(std::log(lo) + u(rng) * (std::log(hi) - std::log(lo)));
+    };
+    Scenario s;
+    s.machine.accel_model = static_cast<AccelModel>(rng() % 3);
+    s.machine.time_constant_s = log_uniform(0.02, 0.2);
+    s.machine.max_accel_mm_s2 = log_uniform(300.0, 10000.0);
+    s.machine.max_jerk_mm_s3 = log_uniform(5000.0, 1e6);
+    s.machine.rapid_feed_mm_min = log_uniform(10000.0, 60000.0);
+    s.machine.scan_period_s = log_uniform(1e-6, 0.01);
+    s.machine.controller_latency_s = log_uniform(1e-4, 0.01);
+    s.machine.latched_input = rng() % 4 == 0;
+    s.probe.pretravel_mm = log_uniform(0.001, 0.05);
+    s.probe.interface_delay_s = log_uniform(1e-4, 0.01);
+    s.probe.repeatability_2sigma_mm = log_uniform(1e-4, 0.005);
+    s.probe.overtravel_limit_mm = log_uniform(1.0, 20.0);
+    s.probe.reseat_mm = log_uniform(0.05, 0.5);
+    s.probe.calibration_feed_mm_min = rng() % 3 == 0 ? log_uniform(10.0, 3000.0) : 0.0;
+    s.cycle.strategy = static_cast<Strategy>(rng() % 2);
+    s.cycle.feature = static_cast<Feature>(rng() % 5);
+    s.cycle.feature_size_mm = log_uniform(30.0, 200.0);
+    s.cycle.approach_mm = log_uniform(0.05, 10.0);
+    s.cycle.probe_feed_mm_min = log_uniform(50.0, 8000.0);
+    s.cycle.measure_feed_mm_min = log_uniform(10.0, 200.0);
+    s.cycle.backoff_mm = log_uniform(0.2, 10.0);
+    // No programmed feed above the rapid.
+    s.cycle.return_feed_mm_min = log_uniform(1000.0, s.machine.rapid_feed_mm_min);
+    s.cycle.target_uncertainty_mm = rng() % 2 == 0 ? log_uniform(1e-4, 0.05) : 0.0;
+    return s;
+}
+
+constexpr int kRandomCycles = 3000;
+
+// Whether `value` is clearly on one side of `threshold`; ties are left alone.
+bool clearly_above(double value, double threshold) {
+    return value > threshold * (1 + 1e-9);
+}
+bool clearly_below(double value, double threshold) {
+    return value < threshold * (1 - 1e-9);
+}
+
+class RandomCycles : public testing::Test {
+  protected:
+    template <typename Check>
+    void for_each_cycle(Check check) {
+        std::mt19937_64 rng{42};
+        int valid = 0;
+        for (int i = 0; i < kRandomCycles; ++i) {
+            const Scenario s = random_scenario(rng);
+            if (!validate(s).empty()) continue;
+            ++valid;
+            const CycleResult r = evaluate(s);
+            SCOPED_TRACE("case " + std::to_string(i) + "\n" + scenario_to_json(s) + "\n" +
+                         describe(r));
+            check(s, r);
+            if (HasFailure()) return;
+        }
+        EXPECT_GT(valid, kRandomCycles * 9 / 10);
+    }
+};
+
+TEST_F(RandomCycles, PhaseTimesSumToTheTotalAndPhasesAreContiguous) {
+    for_each_cycle([](const Scenario&, const CycleResult& r) {
+        ASSERT_FALSE(r.phases().empty());
+        EXPECT_EQ(r.phases()[0].start_s, 0.0);
+        double sum = 0.0;
+        std::array<double, kPhaseCount> by_phase{};
+        for (std::size_t k = 0; k < r.phases().size(); ++k) {
+            const PhaseRecord& p = r.phases()[k];
+            EXPECT_GE(p.time_s, 0.0);
+            EXPECT_GE(p.distance_mm, 0.0);
+            if (k > 0) {
+                const PhaseRecord& prev = r.phases()[k - 1];
+                EXPECT_NEAR(p.start_s, prev.start_s + prev.time_s, rel_tol(r.total()));
+            }
+            sum += p.time_s;
+            by_phase[static_cast<std::size_t>(p.phase)] += p.time_s;
+        }
+        EXPECT_NEAR(sum, r.total(), rel_tol(r.total()));
+        for (Phase phase : all_phases()) {
+            EXPECT_NEAR(r.phase_time(phase), by_phase[static_cast<std::size_t>(phase)],
+                        rel_tol(r.total()))
+                << to_string(phase);
+        }
+    });
+}
+
+TEST_F(RandomCycles, PhaseSequencePerTouchPoint) {
+    for_each_cycle([](const Scenario& s, const CycleResult& r) {
+        const std::vector<Phase> expected = cycle_sequence(s.cycle.strategy, s.cycle.feature);
+        const double ot1 = r.first_touch().overtravel_mm;
+        if (s.cycle.strategy == Strategy::single_touch || s.cycle.backoff_mm > ot1 * 1.001) {
+            EXPECT_EQ(phases_of(r), expected);
+        } else {
+            EXPECT_TRUE(is_subsequence(phases_of(r), expected));
+        }
+        // Touch indices: 0, 1, ... in order, one per touch point.
+        int last = 0;
+        for (const PhaseRecord& p : r.phases()) {
+            EXPECT_GE(p.touch, last);
+            EXPECT_LE(p.touch, last + 1);
+            last = p.touch;
+        }
+        EXPECT_EQ(last, touch_count(s.cycle.feature) - 1);
+    });
+}
+
+TEST_F(RandomCycles, FormulasOfATouchAtFullSpeed) {
+    for_each_cycle([](const Scenario& s, const CycleResult& r) {
+        const MotionLimits limits = s.motion_limits();
+        const double v = mm_min_to_mm_s(s.cycle.probe_feed_mm_min);
+        const TouchResult& first = r.first_touch();
+        EXPECT_NEAR(first.programmed_feed_mm_s, v, rel_tol(v));
+        EXPECT_NEAR(r.recommended_backoff_mm(), first.overtravel_mm + s.probe.reseat_mm,
+                    rel_tol(r.recommended_backoff_mm()));
+        EXPECT_NEAR(r.overtravel_mm(),
+                    std::max(first.overtravel_mm, r.measuring_touch().overtravel_mm), 1e-12);
+        const double s_approach = s.cycle.approach_mm;
+        const double touch_expected = speed_after_mm_s(limits, v, s_approach);
+        EXPECT_NEAR(first.touch_speed_mm_s, touch_expected, rel_tol(touch_expected, 1e-9));
+        if (s_approach < reach_distance_mm(limits, v)) return;
+        const double t_react = reaction_time_s(s.machine, s.probe);
+        EXPECT_NEAR(
+            t_react,
+            s.probe.interface_delay_s + s.machine.controller_latency_s + s.machine.scan_period_s,
+            1e-15);
+        EXPECT_NEAR(first.trigger_speed_mm_s, v, rel_tol(v));
+        EXPECT_NEAR(first.react_speed_mm_s, v, rel_tol(v));
+        const double ot = s.probe.pretravel_mm + v * t_react + stop_distance_mm(limits, v, v);
+        EXPECT_NEAR(first.overtravel_mm, ot, rel_tol(ot, 1e-9));
+        // clang-format off
+        const struct { Phase phase; double time_s; double distance_mm; } expected[] = {
+            {Phase::approach,         reach_time_s(limits, v) + (s_approach - reach_distance_mm(limits, v)) / v, s_approach},
+            {Phase::pretravel,        s.probe.pretravel_mm / v,            s.probe.pretravel_mm},
+            {Phase::interface_delay,  s.probe.interface_delay_s,           v * s.probe.interface_delay_s},
+            {Phase::controller_delay, s.machine.controller_latency_s + s.machine.scan_period_s,
+                                      v * (s.machine.controller_latency_s + s.machine.scan_period_s)},
+            {Phase::deceleration,     stop_time_s(limits, v, v),           stop_distance_mm(limits, v, v)},
+        };
+        // clang-format on
+        for (const auto& e : expected) {
+            const PhaseRecord* p = find_phase(r, e.phase);
+            ASSERT_NE(p, nullptr) << to_string(e.phase);
+            EXPECT_NEAR(p->time_s, e.time_s, rel_tol(e.time_s, 1e-9)) << to_string(e.phase);
+            EXPECT_NEAR(p->distance_mm, e.distance_mm, rel_tol(e.distance_mm, 1e-9))
+                << to_string(e.phase);
+        }
+    });
+}
+
+TEST_F(RandomCycles, SecondTouchAndReturn) {
+    for_each_cycle([](const Scenario& s, const CycleResult& r) {
+        const MotionLimits limits = s.motion_limits();
+        const TouchResult& m = r.measuring_touch();
+        const double v_return = mm_min_to_mm_s(s.cycle.return_feed_mm_min);
+        // Return from where the last touch stopped to the start position.
+        const PhaseRecord* ret = find_phase(r, Phase::return_move);
+        ASSERT_NE(ret, nullptr);
+        const double stopped_at = r.state_at(ret->start_s).position_mm;
+        EXPECT_NEAR(ret->distance_mm, stopped_at, 1e-9 * (1.0 + stopped_at));
+        EXPECT_NEAR(ret->time_s, move_time_s(limits, ret->distance_mm, v_return),
+                    rel_tol(ret->time_s, 1e-9));
+        const bool reseated = s.cycle.strategy == Strategy::single_touch ||
+                              s.cycle.backoff_mm >= r.first_touch().overtravel_mm;
+        if (reseated) {
+            // Stopped `overtravel` beyond the surface.
+            const double d_return = s.cycle.approach_mm + m.overtravel_mm;
+            EXPECT_NEAR(ret->distance_mm, d_return, rel_tol(d_return, 1e-9));
+        }
+        // Uncertainty of the measuring touch.
+        const double range =
+            s.machine.latched_input ? 0.0 : m.trigger_speed_mm_s * s.machine.scan_period_s;
+        EXPECT_NEAR(r.trigger_speed_mm_s(), m.trigger_speed_mm_s, 1e-15);
+        EXPECT_NEAR(r.scan_range_mm(), range, rel_tol(range));
+        EXPECT_NEAR(r.uncertainty_mm(),
+                    expanded_uncertainty_mm(range, s.probe.repeatability_2sigma_mm),
+                    rel_tol(r.uncertainty_mm()));
+        if (s.cycle.strategy == Strategy::single_touch) {
+            EXPECT_NEAR(m.overtravel_mm, r.first_touch().overtravel_mm, 1e-15);
+            EXPECT_NEAR(m.trigger_speed_mm_s, r.first_touch().trigger_speed_mm_s, 1e-15);
+            return;
+        }
+        const double vm = mm_min_to_mm_s(s.cycle.measure_feed_mm_min);
+        EXPECT_NEAR(m.programmed_feed_mm_s, vm, rel_tol(vm));
+        const PhaseRecord* backoff = find_phase(r, Phase::backoff);
+        ASSERT_NE(backoff, nullptr);
+        EXPECT_NEAR(backoff->distance_mm, s.cycle.backoff_mm, rel_tol(s.cycle.backoff_mm));
+        EXPECT_GE(backoff->time_s, move_time_s(limits, s.cycle.backoff_mm,
+                                               mm_min_to_mm_s(s.machine.rapid_feed_mm_min)) *
+                                       (1 - 1e-12));
+        const double gap = s.cycle.backoff_mm - r.first_touch().overtravel_mm;
+        if (gap < reach_distance_mm(limits, vm) * 1.001) return;
+        const PhaseRecord* second = find_phase(r, Phase::second_approach);
+        ASSERT_NE(second, nullptr);
+        EXPECT_NEAR(second->distance_mm, gap, rel_tol(gap, 1e-9));
+        const double t = reach_time_s(limits, vm) + (gap - reach_distance_mm(limits, vm)) / vm;
+        EXPECT_NEAR(second->time_s, t, rel_tol(t, 1e-9));
+        EXPECT_NEAR(m.touch_speed_mm_s, vm, rel_tol(vm));
+        const double ot2 = s.probe.pretravel_mm + vm * reaction_time_s(s.machine, s.probe) +
+                           stop_distance_mm(limits, vm, vm);
+        EXPECT_NEAR(m.overtravel_mm, ot2, rel_tol(ot2, 1e-9));
+    });
+}
+
+TEST_F(RandomCycles, EveryWarningExactlyWhenItsConditionHolds) {
+    for_each_cycle([](const Scenario& s, const CycleResult& r) {
+        const MotionLimits limits = s.motion_limits();
+        const double ot = r.overtravel_mm();
+        const double limit = s.probe.overtravel_limit_mm;
+        const Warning* w = find_warning(r, WarningCode::overtravel_limit);
+        if (clearly_above(ot, limit)) {
+            ASSERT_NE(w, nullptr);
+            EXPECT_EQ(w->severity, Severity::error);
+        } else if (clearly_above(ot, 0.8 * limit) && clearly_below(ot, limit)) {
+            ASSERT_NE(w, nullptr);
+            EXPECT_EQ(w->severity, Severity::warning);
+        } else if (clearly_below(ot, 0.8 * limit)) {
+            EXPECT_EQ(w, nullptr);
+        }
+
+        const bool two = s.cycle.strategy == Strategy::two_touch;
+        const double b = s.cycle.backoff_mm;
+        const double rec = r.recommended_backoff_mm();
+        const bool too_small = find_warning(r, WarningCode::backoff_too_small) != nullptr;
+        const bool excess = find_warning(r, WarningCode::backoff_excess) != nullptr;
+        if (!two) {
+            EXPECT_FALSE(too_small);
+            EXPECT_FALSE(excess);
+        } else {
+            if (clearly_below(b, rec)) {
+                EXPECT_TRUE(too_small);
+            }
+            if (clearly_above(b, rec)) {
+                EXPECT_FALSE(too_small);
+            }
+            if (b <= rec) {
+                EXPECT_FALSE(excess);
+            }
+            if (b > rec + 0.5) {
+                EXPECT_TRUE(excess);
+            }
+        }
+
+        const double v = mm_min_to_mm_s(s.cycle.probe_feed_mm_min);
+        const double reach = reach_distance_mm(limits, v);
+        const bool accel_first =
+            find_warning(r, WarningCode::touch_while_accelerating, 0) != nullptr;
+        // Certainly when the probe also triggers before reaching the feed.
+        if (clearly_below(s.cycle.approach_mm + s.probe.pretravel_mm, reach)) {
+            EXPECT_TRUE(accel_first);
+        }
+        if (clearly_above(s.cycle.approach_mm, reach)) {
+            EXPECT_FALSE(accel_first);
+        }
+        if (two) {
+            const double vm = mm_min_to_mm_s(s.cycle.measure_feed_mm_min);
+            const double gap = b - r.first_touch().overtravel_mm;
+            const bool accel_second =
+                find_warning(r, WarningCode::touch_while_accelerating, 1) != nullptr;
+            if (gap > 0.0 &&
+                clearly_below(gap + s.probe.pretravel_mm, reach_distance_mm(limits, vm))) {
+                EXPECT_TRUE(accel_second);
+            }
+            if (clearly_above(gap, reach_distance_mm(limits, vm))) {
+                EXPECT_FALSE(accel_second);
+            }
+        }
+
+        const double target = s.cycle.target_uncertainty_mm;
+        const bool over = find_warning(r, WarningCode::uncertainty_over_target) != nullptr;
+        if (target == 0.0 || clearly_below(r.uncertainty_mm(), target)) {
+            EXPECT_FALSE(over);
+        }
+        if (target > 0.0 && clearly_above(r.uncertainty_mm(), target)) {
+            EXPECT_TRUE(over);
+        }
+
+        const double measuring_feed = two ? s.cycle.measure_feed_mm_min : s.cycle.probe_feed_mm_min;
+        const double cal = s.probe.calibration_feed_mm_min;
+        const Warning* mismatch = find_warning(r, WarningCode::calibration_feed_mismatch);
+        if (cal == 0.0 || cal == measuring_feed) {
+            EXPECT_EQ(mismatch, nullptr);
+        } else {
+            ASSERT_NE(mismatch, nullptr);
+            const double expected = speed_error_mm(
+                s.machine, s.probe, mm_min_to_mm_s(measuring_feed), mm_min_to_mm_s(cal));
+            EXPECT_NEAR(std::abs(mismatch->c), std::abs(expected), rel_tol(expected, 1e-9));
+        }
+        EXPECT_EQ(find_warning(r, WarningCode::feed_beyond_knee), nullptr);
+        for (const Warning& warning : r.warnings()) EXPECT_FALSE(warning.message().empty());
+    });
+}
+
+TEST_F(RandomCycles, StateAlongTheCycle) {
+    for_each_cycle([](const Scenario& s, const CycleResult& r) {
+        const double v_max =
+            mm_min_to_mm_s(std::max({s.cycle.probe_feed_mm_min, s.cycle.measure_feed_mm_min,
+                                     s.cycle.return_feed_mm_min, s.machine.rapid_feed_mm_min}));
+        const CycleState start = r.state_at(0.0);
+        EXPECT_EQ(start.position_mm, 0.0);
+        EXPECT_EQ(start.velocity_mm_s, 0.0);
+        // Surface at the end of the approach; stop at approach + overtravel.
+        const PhaseRecord& approach = r.phases()[0];
+        const CycleState touch = r.state_at(approach.start_s + approach.time_s);
+        EXPECT_NEAR(touch.position_mm, s.cycle.approach_mm, 1e-9 * (1 + s.cycle.approach_mm));
+        EXPECT_NEAR(touch.velocity_mm_s, r.first_touch().touch_speed_mm_s, 1e-9 * v_max);
+        const PhaseRecord* decel = find_phase(r, Phase::deceleration);
+        ASSERT_NE(decel, nullptr);
+        const CycleState stop = r.state_at(decel->start_s + decel->time_s);
+        EXPECT_NEAR(stop.position_mm, s.cycle.approach_mm + r.first_touch().overtravel_mm, 1e-9);
+        EXPECT_NEAR(stop.velocity_mm_s, 0.0, 1e-9 * v_max);
+        const CycleState end = r.state_at(r.total());
+        EXPECT_NEAR(end.position_mm, 0.0, 1e-9);
+        EXPECT_NEAR(end.velocity_mm_s, 0.0, 1e-9 * v_max);
+
+        const int samples = 400;
+        const double dt = r.total() / samples;
+        CycleState prev = start;
+        for (int k = 0; k <= samples; ++k) {
+            const double t = dt * k;
+            const CycleState st = r.state_at(t);
+            ASSERT_LT(st.phase_index, r.phases().size());
+            const PhaseRecord& p = r.phases()[st.phase_index];
+            EXPECT_GE(t, p.start_s - 1e-12);
+            EXPECT_LE(t, p.start_s + p.time_s + 1e-12);
+            EXPECT_EQ(st.touch, p.touch);
+            EXPECT_GE(st.path_speed_mm_s, -1e-12 * v_max);
+            EXPECT_LE(st.path_speed_mm_s, v_max * (1 + 1e-9));
+            if (p.phase == Phase::position) {
+                EXPECT_EQ(st.velocity_mm_s, 0.0);
+            } else {
+                EXPECT_NEAR(st.path_speed_mm_s, std::abs(st.velocity_mm_s), 1e-9 * v_max);
+            }
+            // Toward the surface while approaching and braking, away while backing off
+            // and returning.
+            const double eps = 1e-9 * v_max;
+            switch (p.phase) {
+                case Phase::approach:
+                case Phase::pretravel:
+                case Phase::interface_delay:
+                case Phase::controller_delay:
+                case Phase::deceleration:
+                case Phase::second_approach:
+                case Phase::second_pretravel:
+                case Phase::second_interface_delay:
+                case Phase::second_controller_delay:
+                case Phase::second_deceleration:
+                    EXPECT_GE(st.velocity_mm_s, -eps) << to_string(p.phase);
+                    break;
+                case Phase::backoff:
+                case Phase::return_move:
+                    EXPECT_LE(st.velocity_mm_s, eps) << to_string(p.phase);
+                    break;
+                case Phase::position:
+                    break;
+            }
+            // Continuous: no jump beyond the fastest feed.
+            if (k > 0) {
+                EXPECT_LE(std::abs(st.position_mm - prev.position_mm),
+                          v_max * dt * (1 + 1e-9) + 1e-9)
+                    << "t=" << t;
+            }
+            // A backoff longer than approach + overtravel goes behind the start.
+            EXPECT_GE(st.position_mm,
+                      std::min(0.0, s.cycle.approach_mm + r.first_touch().overtravel_mm -
+                                        s.cycle.backoff_mm) -
+                          1e-9);
+            EXPECT_LE(st.position_mm, s.cycle.approach_mm + r.overtravel_mm() + 1e-9);
+            prev = st;
+        }
+    });
+}
+
+TEST_F(RandomCycles, SegmentsCoverTheCycleContiguously) {
+    for_each_cycle([](const Scenario&, const CycleResult& r) {
+        ASSERT_FALSE(r.segments().empty());
+        double t = 0.0;
+        for (const TimedSegment& seg : r.segments()) {
+            EXPECT_NEAR(seg.start_s, t, rel_tol(r.total()));
+            EXPECT_GE(seg.duration_s, 0.0);
+            t = seg.start_s + seg.duration_s;
+        }
+        EXPECT_NEAR(t, r.total(), rel_tol(r.total()));
+    });
+}
+
+TEST(CycleProperty, OvertravelGrowsWithFeed) {
+    std::mt19937_64 rng{42};
+    for (int i = 0; i < 500; ++i) {
+        Scenario s = random_scenario(rng);
+        if (!validate(s).empty()) continue;
+        double previous_ot = 0.0;
+        double previous_trigger = 0.0;
+        for (double feed = 20.0; feed <= 12000.0; feed *= 1.25) {
+            s.cycle.probe_feed_mm_min = feed;
+            const CycleResult r = evaluate(s);
+            ASSERT_GE(r.first_touch().overtravel_mm, previous_ot * (1 - 1e-12))
+                << "case " << i << " feed " << feed << "\n"
+                << scenario_to_json(s);
+            ASSERT_GE(r.first_touch().trigger_speed_mm_s, previous_trigger * (1 - 1e-12))
+                << "case " << i << " feed " << feed;
+            previous_ot = r.first_touch().overtravel_mm;
+            previous_trigger = r.first_touch().trigger_speed_mm_s;
+        }
+    }
+}
+
+TEST(CycleProperty, EvaluateIntoReusesBuffersWithoutLeftovers) {
+    Scenario bore = surface(Strategy::two_touch, 3000.0, 0.5);  // warnings and 4 touches
+    bore.cycle.feature = Feature::bore;
+    const Scenario clean = clean_two_touch();
+    CycleResult reused;
+    evaluate_into(bore, reused);
+    evaluate_into(clean, reused);
+    const CycleResult fresh = evaluate(clean);
+    ASSERT_EQ(reused.phases().size(), fresh.phases().size());
+    for (std::size_t k = 0; k < fresh.phases().size(); ++k) {
+        EXPECT_EQ(reused.phases()[k].phase, fresh.phases()[k].phase);
+        EXPECT_EQ(reused.phases()[k].time_s, fresh.phases()[k].time_s);
+    }
+    EXPECT_EQ(reused.warnings().size(), fresh.warnings().size());
+    EXPECT_EQ(reused.total(), fresh.total());
+    EXPECT_EQ(reused.segments().size(), fresh.segments().size());
+    for (Phase phase : all_phases()) EXPECT_EQ(reused.phase_time(phase), fresh.phase_time(phase));
+}
+
+}  // namespace
+}  // namespace probecycle

@@ -1,0 +1,345 @@
+#include "core/cycle/sweep.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <random>
+#include <tuple>
+#include <vector>
+
+#include "core/cycle/cycle.h"
+#include "core/cycle/scenario.h"
+#include "core/common/units.h"
+
+namespace probecycle {
+namespace {
+
+Scenario single_touch_surface() {
+    Scenario s;
+    s.cycle.strategy = Strategy::single_touch;
+    s.cycle.feature = Feature::surface;
+    s.cycle.approach_mm = 5.0;
+    s.probe.overtravel_limit_mm = 50.0;
+    return s;
+}
+
+// The knee by its definition: the lowest feed whose cycle time is within 1 % of
+// the minimum over the points.
+std::optional<double> knee_of(const std::vector<SweepPoint>& points) {
+    if (points.empty()) return std::nullopt;
+    double best = std::numeric_limits<double>::infinity();
+    for (const SweepPoint& p : points) best = std::min(best, p.cycle_time_s);
+    std::optional<double> knee;
+    for (const SweepPoint& p : points) {
+        if (p.cycle_time_s <= best * (1.0 + kKneeTolerance)) {
+            if (!knee || p.feed_mm_min < *knee) knee = p.feed_mm_min;
+        }
+    }
+    return knee;
+}
+
+std::optional<double> max_feed_meeting(const std::vector<SweepPoint>& points, double target) {
+    std::optional<double> best;
+    if (target <= 0.0) return best;
+    for (const SweepPoint& p : points) {
+        if (p.uncertainty_mm <= target && (!best || p.feed_mm_min > *best)) best = p.feed_mm_min;
+    }
+    return best;
+}
+
+TEST(LinearFeeds, FromToStepInclusive) {
+    const std::vector<double> feeds = linear_feeds(100.0, 1000.0, 100.0);
+    ASSERT_EQ(feeds.size(), 10u);
+    for (std::size_t i = 0; i < feeds.size(); ++i) {
+        EXPECT_NEAR(feeds[i], 100.0 * static_cast<double>(i + 1), 1e-9);
+    }
+}
+
+TEST(LinearFeeds, EndIncludedDespiteRounding) {
+    // 0.1 + 0.1 + 0.1 > 0.3 in binary; the end is still included.
+    const std::vector<double> feeds = linear_feeds(0.1, 0.3, 0.1);
+    ASSERT_EQ(feeds.size(), 3u);
+    EXPECT_NEAR(feeds.back(), 0.3, 1e-12);
+    EXPECT_EQ(linear_feeds(10.0, 10.0, 5.0).size(), 1u);
+    // A range that is not a whole number of steps stops at the last step below the end.
+    const std::vector<double> partial = linear_feeds(100.0, 1020.0, 100.0);
+    ASSERT_EQ(partial.size(), 10u);
+    EXPECT_NEAR(partial.back(), 1000.0, 1e-9);
+}
+
+// The CLI refuses absurd sweeps by this count before any feed is made.
+TEST(LinearFeeds, CountIsTheSizeWithoutMakingThem) {
+    for (const auto& [from, to, step] :
+         {std::tuple{100.0, 2000.0, 50.0}, std::tuple{10.0, 10.0, 1.0}, std::tuple{0.1, 0.7, 0.1},
+          std::tuple{100.0, 50.0, 10.0}, std::tuple{100.0, 200.0, 0.0}}) {
+        EXPECT_EQ(linear_feed_count(from, to, step),
+                  static_cast<double>(linear_feeds(from, to, step).size()))
+            << from << " " << to << " " << step;
+    }
+    EXPECT_EQ(linear_feed_count(1.0, 100000.0, 1e-6), std::floor(99999.0 / 1e-6 + 1e-9) + 1.0);
+}
+
+TEST(LogFeeds, EvenOnALogScaleWithBothEnds) {
+    const std::vector<double> feeds = log_feeds(10.0, 10000.0, 4);
+    ASSERT_EQ(feeds.size(), 4u);
+    const double expected[] = {10.0, 100.0, 1000.0, 10000.0};
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(feeds[i], expected[i], 1e-9 * expected[i]);
+    const std::vector<double> two = log_feeds(30.0, 3000.0, 2);
+    ASSERT_EQ(two.size(), 2u);
+    EXPECT_NEAR(two[0], 30.0, 1e-12);
+    EXPECT_NEAR(two[1], 3000.0, 1e-9);
+}
+
+TEST(Sweep, EachPointIsTheCycleAtThatFeed) {
+    for (Strategy strategy : {Strategy::single_touch, Strategy::two_touch}) {
+        Scenario s = single_touch_surface();
+        s.cycle.strategy = strategy;
+        const std::vector<double> feeds = linear_feeds(100.0, 5000.0, 350.0);
+        const SweepResult sweep = sweep_feeds(s, feeds);
+        ASSERT_EQ(sweep.points.size(), feeds.size());
+        for (std::size_t i = 0; i < feeds.size(); ++i) {
+            Scenario at = s;
+            at.cycle.probe_feed_mm_min = feeds[i];
+            const CycleResult r = evaluate(at);
+            const SweepPoint& p = sweep.points[i];
+            SCOPED_TRACE(feeds[i]);
+            EXPECT_EQ(p.feed_mm_min, feeds[i]);
+            EXPECT_NEAR(p.cycle_time_s, r.total(), 1e-12 * r.total());
+            EXPECT_NEAR(p.overtravel_mm, r.overtravel_mm(), 1e-12);
+            EXPECT_NEAR(p.uncertainty_mm, r.uncertainty_mm(), 1e-15);
+            double sum = 0.0;
+            for (Phase phase : all_phases()) {
+                const std::size_t k = static_cast<std::size_t>(phase);
+                EXPECT_NEAR(p.phase_time_s[k], r.phase_time(phase), 1e-12) << to_string(phase);
+                sum += p.phase_time_s[k];
+            }
+            EXPECT_NEAR(sum, p.cycle_time_s, 1e-12 * p.cycle_time_s);
+        }
+    }
+}
+
+TEST(Sweep, KneeIsTheLowestFeedWithinOnePercentOfTheMinimum) {
+    const Scenario s = single_touch_surface();
+    const std::vector<double> feeds = linear_feeds(50.0, 10000.0, 50.0);
+    const SweepResult sweep = sweep_feeds(s, feeds);
+    const std::optional<double> expected = knee_of(sweep.points);
+    ASSERT_TRUE(expected.has_value());
+    ASSERT_TRUE(sweep.knee_feed_mm_min.has_value());
+    EXPECT_EQ(*sweep.knee_feed_mm_min, *expected);
+    // A knee strictly inside the range: cycle time falls, then stops falling.
+    EXPECT_GT(*expected, 50.0);
+    EXPECT_LT(*expected, 10000.0);
+}
+
+TEST(Sweep, KneeOfAnyOrderOfFeedsIsTheSame) {
+    const Scenario s = single_touch_surface();
+    std::vector<double> feeds = linear_feeds(100.0, 6000.0, 100.0);
+    const SweepResult ascending = sweep_feeds(s, feeds);
+    std::reverse(feeds.begin(), feeds.end());
+    const SweepResult descending = sweep_feeds(s, feeds);
+    ASSERT_TRUE(ascending.knee_feed_mm_min.has_value());
+    ASSERT_TRUE(descending.knee_feed_mm_min.has_value());
+    EXPECT_EQ(*ascending.knee_feed_mm_min, *descending.knee_feed_mm_min);
+}
+
+TEST(Sweep, MaxFeedMeetingTheTarget) {
+    // Single touch, t_s = 4 ms, repeatability 1 um: U = 2 sqrt((v t_s)^2 / 12 + 0.0005^2).
+    // 1200 mm/min: R = 0.08, U = 0.04619; 1300 mm/min: R = 0.08667, U = 0.05005 > 0.05.
+    Scenario s = single_touch_surface();
+    s.cycle.target_uncertainty_mm = 0.05;
+    const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 3000.0, 100.0));
+    ASSERT_TRUE(sweep.max_feed_meeting_target_mm_min.has_value());
+    EXPECT_NEAR(*sweep.max_feed_meeting_target_mm_min, 1200.0, 1e-9);
+    EXPECT_EQ(sweep.max_feed_meeting_target_mm_min, max_feed_meeting(sweep.points, 0.05));
+}
+
+TEST(Sweep, NoTargetOrUnreachableTargetGivesNoFeed) {
+    Scenario s = single_touch_surface();
+    s.cycle.target_uncertainty_mm = 0.0;
+    EXPECT_FALSE(sweep_feeds(s, linear_feeds(100.0, 3000.0, 100.0))
+                     .max_feed_meeting_target_mm_min.has_value());
+    s.cycle.target_uncertainty_mm = 0.0001;  // below the repeatability alone
+    EXPECT_FALSE(sweep_feeds(s, linear_feeds(100.0, 3000.0, 100.0))
+                     .max_feed_meeting_target_mm_min.has_value());
+}
+
+TEST(Sweep, TwoTouchTargetDependsOnTheMeasuringFeedOnly) {
+    Scenario s = single_touch_surface();
+    s.cycle.strategy = Strategy::two_touch;
+    s.cycle.target_uncertainty_mm = 0.01;  // met at 30 mm/min whatever the first feed
+    const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 3000.0, 100.0));
+    ASSERT_TRUE(sweep.max_feed_meeting_target_mm_min.has_value());
+    EXPECT_NEAR(*sweep.max_feed_meeting_target_mm_min, 3000.0, 1e-9);
+}
+
+TEST(Sweep, RandomScenariosKneeAndTargetByDefinition) {
+    std::mt19937_64 rng{42};
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int i = 0; i < 200; ++i) {
+        Scenario s = single_touch_surface();
+        s.cycle.strategy = static_cast<Strategy>(rng() % 2);
+        s.cycle.feature = static_cast<Feature>(rng() % 5);
+        s.machine.accel_model = static_cast<AccelModel>(rng() % 3);
+        s.machine.time_constant_s = 0.02 + 0.15 * u(rng);
+        s.machine.scan_period_s = 0.0001 + 0.008 * u(rng);
+        s.cycle.approach_mm = 0.5 + 10.0 * u(rng);
+        s.cycle.target_uncertainty_mm = (i % 2 == 0) ? 0.0 : 0.002 + 0.1 * u(rng);
+        if (!validate(s).empty()) continue;
+        const std::vector<double> feeds = linear_feeds(100.0, 8000.0, 100.0);
+        const SweepResult sweep = sweep_feeds(s, feeds);
+        ASSERT_EQ(sweep.points.size(), feeds.size());
+        EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points)) << "case " << i;
+        EXPECT_EQ(sweep.max_feed_meeting_target_mm_min,
+                  max_feed_meeting(sweep.points, s.cycle.target_uncertainty_mm))
+            << "case " << i;
+    }
+}
+
+TEST(Sweep, RecommendedBackoffOptionSweepsTheOptimisedTwoTouchCycle) {
+    Scenario s;  // two-touch, backoff 2 mm
+    SweepOptions options;
+    options.recommended_backoff = true;
+    const std::vector<double> feeds = linear_feeds(500.0, 8000.0, 500.0);
+    const SweepResult sweep = sweep_feeds(s, feeds, options);
+    ASSERT_EQ(sweep.points.size(), feeds.size());
+    for (std::size_t i = 0; i < feeds.size(); ++i) {
+        Scenario at = s;
+        at.cycle.probe_feed_mm_min = feeds[i];
+        at.cycle.backoff_mm = evaluate(at).recommended_backoff_mm();
+        const CycleResult r = evaluate(at);
+        EXPECT_NEAR(sweep.points[i].cycle_time_s, r.total(), 1e-12 * r.total()) << feeds[i];
+        EXPECT_NEAR(sweep.points[i].overtravel_mm, r.overtravel_mm(), 1e-12) << feeds[i];
+    }
+    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points));
+}
+
+TEST(Sweep, IntoReusesTheBufferAndMatchesSweepFeeds) {
+    const Scenario s = single_touch_surface();
+    SweepResult out;
+    sweep_feeds_into(s, linear_feeds(100.0, 10000.0, 10.0), out);
+    const std::vector<double> feeds = linear_feeds(200.0, 2000.0, 200.0);
+    sweep_feeds_into(s, feeds, out);
+    const SweepResult fresh = sweep_feeds(s, feeds);
+    ASSERT_EQ(out.points.size(), fresh.points.size());
+    for (std::size_t i = 0; i < feeds.size(); ++i) {
+        EXPECT_EQ(out.points[i].feed_mm_min, fresh.points[i].feed_mm_min);
+        EXPECT_EQ(out.points[i].cycle_time_s, fresh.points[i].cycle_time_s);
+    }
+    EXPECT_EQ(out.knee_feed_mm_min, fresh.knee_feed_mm_min);
+    EXPECT_EQ(out.max_feed_meeting_target_mm_min, fresh.max_feed_meeting_target_mm_min);
+}
+
+TEST(Sweep, EmptyFeedsGiveAnEmptyResult) {
+    const SweepResult sweep = sweep_feeds(single_touch_surface(), std::vector<double>{});
+    EXPECT_TRUE(sweep.points.empty());
+    EXPECT_FALSE(sweep.knee_feed_mm_min.has_value());
+    EXPECT_FALSE(sweep.max_feed_meeting_target_mm_min.has_value());
+}
+
+double cycle_time_at(Scenario s, double feed) {
+    s.cycle.probe_feed_mm_min = feed;
+    return evaluate(s).total();
+}
+
+TEST(FindKnee, ContinuousKneeMatchesTheDefinition) {
+    for (AccelModel model :
+         {AccelModel::time_constant, AccelModel::constant_accel, AccelModel::jerk_limited}) {
+        Scenario s = single_touch_surface();
+        s.machine.accel_model = model;
+        SCOPED_TRACE(to_string(model));
+        const std::optional<double> knee = find_knee_mm_min(s, 10.0, 10000.0);
+        ASSERT_TRUE(knee.has_value());
+        EXPECT_GE(*knee, 10.0);
+        EXPECT_LE(*knee, 10000.0);
+        // The minimum over a fine grid stands in for the continuous minimum.
+        double best = std::numeric_limits<double>::infinity();
+        for (double f : log_feeds(10.0, 10000.0, 2000)) best = std::min(best, cycle_time_at(s, f));
+        EXPECT_LE(cycle_time_at(s, *knee), best * (1.0 + kKneeTolerance) * (1.0 + 1e-6));
+        // Every lower feed is outside the tolerance.
+        for (double f : log_feeds(10.0, *knee * (1.0 - 1e-3), 500)) {
+            ASSERT_GT(cycle_time_at(s, f), best * (1.0 + kKneeTolerance) * (1.0 - 1e-6))
+                << "feed " << f << " knee " << *knee;
+        }
+    }
+}
+
+TEST(FindKnee, AgreesWithAFineSweep) {
+    const Scenario s = single_touch_surface();
+    const std::optional<double> knee = find_knee_mm_min(s, 100.0, 8000.0);
+    const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 8000.0, 1.0));
+    ASSERT_TRUE(knee.has_value());
+    ASSERT_TRUE(sweep.knee_feed_mm_min.has_value());
+    EXPECT_NEAR(*knee, *sweep.knee_feed_mm_min, 2.0);
+}
+
+TEST(Analyse, IsEvaluatePlusTheKneeOverTheSearchRange) {
+    Scenario s = single_touch_surface();
+    s.cycle.probe_feed_mm_min = 2000.0;
+    const Analysis a = analyse(s);
+    const CycleResult r = evaluate(s);
+    EXPECT_EQ(a.cycle.total(), r.total());
+    EXPECT_EQ(a.cycle.phases().size(), r.phases().size());
+    ASSERT_TRUE(a.knee_feed_mm_min.has_value());
+    const std::optional<double> knee =
+        find_knee_mm_min(s, kKneeSearchFrom_mm_min, kKneeSearchTo_mm_min);
+    ASSERT_TRUE(knee.has_value());
+    EXPECT_NEAR(*a.knee_feed_mm_min, *knee, 1e-6 * *knee);
+    // The same warnings as evaluate(), plus at most feed_beyond_knee.
+    std::size_t extra = 0;
+    for (const Warning& w : a.cycle.warnings()) {
+        if (w.code == WarningCode::feed_beyond_knee) ++extra;
+    }
+    EXPECT_EQ(a.cycle.warnings().size(), r.warnings().size() + extra);
+}
+
+TEST(Analyse, FeedBeyondKneeReportsTheTimeSaved) {
+    Scenario s = single_touch_surface();
+    s.cycle.probe_feed_mm_min = 9000.0;
+    const Analysis a = analyse(s);
+    ASSERT_TRUE(a.knee_feed_mm_min.has_value());
+    const Warning* w = nullptr;
+    for (const Warning& warning : a.cycle.warnings()) {
+        if (warning.code == WarningCode::feed_beyond_knee) w = &warning;
+    }
+    ASSERT_NE(w, nullptr);
+    // Time saved beyond the knee: the cycle at the knee less the cycle at the feed,
+    // under 1 % of the minimum.
+    // (Faster may even be slower, when the longer return outweighs the approach.)
+    const double saved = cycle_time_at(s, *a.knee_feed_mm_min) - a.cycle.total();
+    if (saved >= 0.0) {
+        EXPECT_NEAR(w->c, saved, 1e-9);
+    } else {
+        EXPECT_TRUE(std::abs(w->c - saved) < 1e-9 || w->c == 0.0) << w->c << " vs " << saved;
+    }
+    EXPECT_LT(w->c, kKneeTolerance * a.cycle.total() * 1.01);
+}
+
+// A feed above 10000 mm/min is judged on a curve that reaches it: with a
+// 50 mm approach the best single-touch feed lies far above 10000.
+TEST(Analyse, KneeSearchReachesAFeedBeyond10000) {
+    Scenario s = single_touch_surface();
+    s.cycle.approach_mm = 50.0;
+    s.cycle.probe_feed_mm_min = 20000.0;
+    const Analysis a = analyse(s);
+    ASSERT_TRUE(a.knee_feed_mm_min.has_value());
+    EXPECT_GT(*a.knee_feed_mm_min, kKneeSearchTo_mm_min);
+    EXPECT_LE(*a.knee_feed_mm_min, 20000.0);
+    // By the knee's definition, no feed up to 20000 is more than 1 % faster than it.
+    const SweepResult fine = sweep_feeds(s, log_feeds(10.0, 20000.0, 400));
+    double best = fine.points.front().cycle_time_s;
+    for (const SweepPoint& p : fine.points) best = std::min(best, p.cycle_time_s);
+    ASSERT_TRUE(a.knee_cycle_time_s.has_value());
+    EXPECT_LE(*a.knee_cycle_time_s, best * (1.0 + kKneeTolerance) + 1e-12);
+    for (const Warning& w : a.cycle.warnings()) {
+        if (w.code == WarningCode::feed_beyond_knee) {
+            EXPECT_LT(w.c, kKneeTolerance * a.cycle.total() * 1.01);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace probecycle

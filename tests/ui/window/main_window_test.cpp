@@ -1,0 +1,488 @@
+// The window's behaviour, driven as a user drives it (sliders, buttons,
+// files), offscreen. Mirrors ui/main_window.h.
+
+#include "ui/window/main_window.h"
+
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSlider>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <map>
+#include <string>
+
+#include "ui/lab/latency_tab.h"
+#include "ui/common/language.h"
+#include "core/cycle/cycle_report.h"
+#include "core/cycle/scenario.h"
+
+namespace probecycle::ui {
+namespace {
+
+using SeriesSnapshot = std::map<QString, QList<QPointF>>;
+
+class MainWindowTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        MainWindowOptions options;
+        options.persistent = false;
+        options.show_dialogs = false;
+        window_ = std::make_unique<MainWindow>(options);
+        window_->resize(1280, 800);
+        window_->show();
+        settle();
+    }
+
+    // Lets the event loop run the coalesced recompute, as after a user's edit.
+    void settle() {
+        QCoreApplication::processEvents();
+        window_->recompute_now();
+    }
+
+    QSlider* slider(const char* key) const {
+        return window_->findChild<QSlider*>(QStringLiteral("slider:") + QLatin1String(key));
+    }
+    QDoubleSpinBox* spin(const char* key) const {
+        return window_->findChild<QDoubleSpinBox*>(QStringLiteral("spin:") + QLatin1String(key));
+    }
+    QPushButton* fix_button(const char* code) const {
+        return window_->findChild<QPushButton*>(QStringLiteral("fix:") + QLatin1String(code));
+    }
+
+    // Moves a slider to its position for a value (internal units), as a drag would end.
+    void drag_to_fraction(QSlider* s, double fraction) {
+        s->setValue(s->minimum() +
+                    static_cast<int>(fraction * static_cast<double>(s->maximum() - s->minimum())));
+        settle();
+    }
+
+    std::array<QString, kReadoutCount> readouts() const {
+        std::array<QString, kReadoutCount> out;
+        for (std::size_t i = 0; i < kReadoutCount; ++i) {
+            out[i] = window_->readout_text(static_cast<Readout>(i));
+        }
+        return out;
+    }
+
+    SeriesSnapshot series() const {
+        SeriesSnapshot out;
+        for (const QString& id : window_->series_ids()) out[id] = window_->series_points(id);
+        return out;
+    }
+
+    std::string json() const { return scenario_to_json(window_->scenario()); }
+
+    std::unique_ptr<MainWindow> window_;
+};
+
+TEST_F(MainWindowTest, StartsWithTheDefaultScenarioAndDrawsEveryChart) {
+    EXPECT_EQ(json(), scenario_to_json(Scenario{}));
+    EXPECT_GE(window_->recompute_count(), 1);
+    for (const char* id : {"cycle_time.single_touch", "cycle_time.two_touch",
+                           "overtravel.overtravel", "overtravel.uncertainty"}) {
+        EXPECT_EQ(window_->series_points(QLatin1String(id)).size(), 500) << id;
+    }
+    EXPECT_GE(window_->series_points(QStringLiteral("motion.position")).size(), 500);
+    EXPECT_EQ(window_->series_points(QStringLiteral("cycle_time.knee")).size(), 1);
+    EXPECT_FALSE(window_->series_points(QStringLiteral("phases.approach")).isEmpty());
+    EXPECT_FALSE(window_->readout_text(Readout::cycle_time).isEmpty());
+}
+
+TEST_F(MainWindowTest, EveryScenarioKeyHasAnEditorWithUnitRangeAndTooltip) {
+    for (const KeyInfo& key : numeric_keys()) {
+        QDoubleSpinBox* box = spin(key.key);
+        ASSERT_NE(box, nullptr) << key.key;
+        EXPECT_FALSE(box->suffix().trimmed().isEmpty()) << key.key;
+        EXPECT_FALSE(box->toolTip().isEmpty()) << key.key;
+        EXPECT_LT(box->minimum(), box->maximum()) << key.key;
+    }
+    for (const char* combo :
+         {"combo:machine.accel_model", "combo:cycle.strategy", "combo:cycle.feature"}) {
+        EXPECT_NE(window_->findChild<QWidget*>(QLatin1String(combo)), nullptr) << combo;
+    }
+}
+
+// Each slider moves readouts and chart data.
+class SliderTest : public MainWindowTest, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(SliderTest, MovingTheSliderChangesReadoutsAndCharts) {
+    QSlider* s = slider(GetParam());
+    ASSERT_NE(s, nullptr) << GetParam();
+    const double before_value = *get_number(window_->scenario(), GetParam());
+    const auto before_readouts = readouts();
+    const SeriesSnapshot before_series = series();
+    const int recomputes = window_->recompute_count();
+
+    drag_to_fraction(s, s->value() > s->maximum() / 2 ? 0.15 : 0.85);
+
+    EXPECT_NE(*get_number(window_->scenario(), GetParam()), before_value);
+    EXPECT_GT(window_->recompute_count(), recomputes);
+    EXPECT_NE(readouts(), before_readouts);
+    const SeriesSnapshot after_series = series();
+    int changed = 0;
+    for (const auto& [id, points] : after_series) changed += points != before_series.at(id) ? 1 : 0;
+    EXPECT_GT(changed, 0);
+    // The spin box beside the slider follows it.
+    const double shown = spin(GetParam())->value();
+    EXPECT_NE(shown, 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sliders, SliderTest,
+                         ::testing::Values("cycle.probe_feed_mm_min", "machine.time_constant_s",
+                                           "machine.scan_period_s", "cycle.backoff_mm"));
+
+TEST_F(MainWindowTest, FeedSliderIsLogarithmicFrom10To10000) {
+    QSlider* s = slider("cycle.probe_feed_mm_min");
+    drag_to_fraction(s, 0.0);
+    EXPECT_DOUBLE_EQ(window_->scenario().cycle.probe_feed_mm_min, 10.0);
+    drag_to_fraction(s, 1.0);
+    EXPECT_DOUBLE_EQ(window_->scenario().cycle.probe_feed_mm_min, 10000.0);
+    drag_to_fraction(s, 0.5);  // the geometric middle of 10..10000
+    EXPECT_NEAR(window_->scenario().cycle.probe_feed_mm_min, 316.0, 1.0);
+    const QList<QPointF> marker = window_->series_points(QStringLiteral("cycle_time.feed"));
+    ASSERT_EQ(marker.size(), 2);
+    EXPECT_NEAR(marker[0].x(), 316.0, 1.0);
+}
+
+TEST_F(MainWindowTest, ScanPeriodSliderSpans1usTo20ms) {
+    QSlider* s = slider("machine.scan_period_s");
+    drag_to_fraction(s, 0.0);
+    EXPECT_DOUBLE_EQ(window_->scenario().machine.scan_period_s, 1e-6);
+    drag_to_fraction(s, 1.0);
+    EXPECT_DOUBLE_EQ(window_->scenario().machine.scan_period_s, 0.02);
+}
+
+TEST_F(MainWindowTest, ManySliderStepsInOnePassRecomputeOnce) {
+    QSlider* s = slider("cycle.probe_feed_mm_min");
+    const int before = window_->recompute_count();
+    for (int i = 0; i < 20; ++i) s->setValue(100 + 10 * i);
+    QCoreApplication::processEvents();
+    EXPECT_EQ(window_->recompute_count(), before + 1);
+}
+
+TEST_F(MainWindowTest, OvertravelWarningAppearsOverTheLimitAndGoesWhenTheFeedDrops) {
+    QSlider* feed = slider("cycle.probe_feed_mm_min");
+    drag_to_fraction(feed, 0.3);
+    EXPECT_FALSE(window_->warning_codes().contains(QStringLiteral("overtravel_limit")));
+    EXPECT_EQ(window_->readout_alert(Readout::overtravel), Alert::none);
+
+    drag_to_fraction(feed, 1.0);  // 10000 mm/min: far over the default 5 mm limit
+    ASSERT_GE(window_->computed().cycle().overtravel_mm(),
+              window_->scenario().probe.overtravel_limit_mm);
+    EXPECT_TRUE(window_->warning_codes().contains(QStringLiteral("overtravel_limit")));
+    EXPECT_EQ(window_->readout_alert(Readout::overtravel), Alert::alarm);
+    // The beyond-limit feeds are shaded.
+    EXPECT_FALSE(window_->series_points(QStringLiteral("overtravel.beyond_limit")).isEmpty());
+
+    drag_to_fraction(feed, 0.3);
+    EXPECT_FALSE(window_->warning_codes().contains(QStringLiteral("overtravel_limit")));
+    EXPECT_EQ(window_->readout_alert(Readout::overtravel), Alert::none);
+}
+
+TEST_F(MainWindowTest, OneClickFixSetsTheBackoffToTheRecommendedValue) {
+    drag_to_fraction(slider("cycle.backoff_mm"), 1.0);  // 10 mm: far more than needed
+    ASSERT_TRUE(window_->warning_codes().contains(QStringLiteral("backoff_excess")));
+    QPushButton* button = fix_button("backoff_excess");
+    ASSERT_NE(button, nullptr);
+    ASSERT_TRUE(button->isVisible());
+    const double recommended = window_->computed().cycle().recommended_backoff_mm();
+    button->click();
+    settle();
+    EXPECT_NEAR(window_->scenario().cycle.backoff_mm, recommended, 0.001);
+    EXPECT_GE(window_->scenario().cycle.backoff_mm, recommended);
+    EXPECT_FALSE(window_->warning_codes().contains(QStringLiteral("backoff_excess")));
+    EXPECT_FALSE(window_->warning_codes().contains(QStringLiteral("backoff_too_small")));
+}
+
+TEST_F(MainWindowTest, OneClickFixDropsTheFeedToTheKnee) {
+    drag_to_fraction(slider("cycle.probe_feed_mm_min"), 0.95);
+    ASSERT_TRUE(window_->warning_codes().contains(QStringLiteral("feed_beyond_knee")));
+    const double knee = *window_->computed().analysis.knee_feed_mm_min;
+    QPushButton* button = fix_button("feed_beyond_knee");
+    ASSERT_NE(button, nullptr);
+    button->click();
+    settle();
+    EXPECT_LE(window_->scenario().cycle.probe_feed_mm_min, knee);
+    EXPECT_GT(window_->scenario().cycle.probe_feed_mm_min, knee - 1.0);
+    EXPECT_FALSE(window_->warning_codes().contains(QStringLiteral("feed_beyond_knee")));
+}
+
+TEST_F(MainWindowTest, OneClickFixStartsFarEnoughOutToTouchAtFullFeed) {
+    Scenario s = window_->scenario();
+    s.cycle.approach_mm = 0.2;  // 2000 mm/min needs 1 mm to reach the feed at T = 60 ms
+    window_->edit_scenario(s, QStringLiteral("short approach"));
+    settle();
+    ASSERT_TRUE(window_->warning_codes().contains(QStringLiteral("touch_while_accelerating")));
+    QPushButton* button = fix_button("touch_while_accelerating");
+    ASSERT_NE(button, nullptr);
+    button->click();
+    settle();
+    EXPECT_GT(window_->scenario().cycle.approach_mm, 0.2);
+    EXPECT_FALSE(window_->warning_codes().contains(QStringLiteral("touch_while_accelerating")));
+}
+
+TEST_F(MainWindowTest, CsvExportWritesTheCoreReport) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("report.csv"));
+    ASSERT_TRUE(window_->export_csv_report(path)) << window_->last_error().toStdString();
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QString csv = QString::fromUtf8(file.readAll());
+    for (const char* section : {"# scenario", "# summary", "# phases", "# warnings", "# sweep"}) {
+        EXPECT_TRUE(csv.contains(QLatin1String(section))) << section;
+    }
+    const QStringList lines = csv.split(QLatin1Char('\n'));
+    // One row per phase of the current cycle, after the header.
+    const qsizetype phases = lines.indexOf(QStringLiteral("# phases"));
+    ASSERT_GE(phases, 0);
+    EXPECT_EQ(lines[phases + 1], QStringLiteral("touch,phase,start_s,time_s,distance_mm"));
+    EXPECT_EQ(lines.indexOf(QStringLiteral(""), phases) - phases - 2,
+              static_cast<qsizetype>(window_->computed().cycle().phases().size()));
+    // The same bytes as `probecycle-cli report` writes for the scenario.
+    const Computed& c = window_->computed();
+    EXPECT_EQ(csv.toStdString(), csv_report(window_->scenario()));
+    // The sweep has one row per report feed.
+    const qsizetype sweep = lines.indexOf(QStringLiteral("# sweep"));
+    EXPECT_TRUE(lines[sweep + 1].startsWith(QLatin1String("feed_mm_min,cycle_time_s")));
+    qsizetype rows = 0;
+    for (qsizetype i = sweep + 2; i < lines.size() && !lines[i].isEmpty(); ++i) ++rows;
+    EXPECT_EQ(rows, static_cast<qsizetype>(report_feeds(c.scenario, c.analysis).size()));
+}
+
+TEST_F(MainWindowTest, ChartsExportAsPng) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("charts.png"));
+    ASSERT_TRUE(window_->export_charts_png(path));
+    QImage image(path);
+    EXPECT_FALSE(image.isNull());
+    EXPECT_GT(image.width(), 400);
+}
+
+TEST_F(MainWindowTest, SaveAndOpenRoundTrip) {
+    drag_to_fraction(slider("cycle.probe_feed_mm_min"), 0.7);
+    drag_to_fraction(slider("machine.scan_period_s"), 0.2);
+    const std::string edited = json();
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("scenario.json"));
+    ASSERT_TRUE(window_->save_scenario(path));
+    EXPECT_FALSE(window_->isWindowModified());
+
+    window_->new_scenario();
+    settle();
+    EXPECT_EQ(json(), scenario_to_json(Scenario{}));
+    ASSERT_TRUE(window_->open_scenario(path)) << window_->last_error().toStdString();
+    settle();
+    EXPECT_EQ(json(), edited);
+    // The file is what the CLI reads.
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_EQ(scenario_to_json(scenario_from_json(file.readAll().toStdString())), edited);
+}
+
+TEST_F(MainWindowTest, BadFileNamesTheProblemAndKeepsTheCurrentScenario) {
+    drag_to_fraction(slider("cycle.probe_feed_mm_min"), 0.6);
+    const std::string current = json();
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("bad.json"));
+    {
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(R"({"machine": {"scan_period_s": -1}})");
+    }
+    EXPECT_FALSE(window_->open_scenario(path));
+    EXPECT_TRUE(window_->last_error().contains(QStringLiteral("machine.scan_period_s")))
+        << window_->last_error().toStdString();
+    settle();
+    EXPECT_EQ(json(), current);
+    EXPECT_TRUE(window_->current_file().isEmpty());
+
+    {
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(R"({"machine": {"scan_period": 0.004}})");  // unknown key
+    }
+    EXPECT_FALSE(window_->open_scenario(path));
+    EXPECT_TRUE(window_->last_error().contains(QStringLiteral("scan_period")));
+    EXPECT_FALSE(window_->open_scenario(dir.filePath(QStringLiteral("missing.json"))));
+    settle();
+    EXPECT_EQ(json(), current);
+}
+
+// Issue 4: the Latency tab's Apply puts the fitted delay into the scenario
+// as one undoable edit (the delay less the interface and half the scan).
+TEST_F(MainWindowTest, LatencyTabAppliesTheFittedDelayUndoably) {
+    auto* tab = window_->findChild<LatencyTab*>();
+    ASSERT_NE(tab, nullptr);
+    // X+ with a total delay of 9 ms: p = 10 + v * 0.009 at 100, 1000, 3000 mm/min.
+    tab->set_touches_text(
+        QStringLiteral("axis,direction,feed_mm_min,measured_mm\n"
+                       "X,1,100,10.015\nX,1,1000,10.15\nX,1,3000,10.45\n"));
+    ASSERT_TRUE(tab->fit()) << tab->last_error().toStdString();
+    const double before = window_->scenario().machine.controller_latency_s;
+    ASSERT_TRUE(tab->apply_to_scenario()) << tab->apply_problem().toStdString();
+    settle();
+    // 9 ms - interface 2 ms - half of the 4 ms scan = 5 ms.
+    EXPECT_NEAR(window_->scenario().machine.controller_latency_s, 0.005, 1e-9);
+    window_->undo_stack()->undo();
+    settle();
+    EXPECT_DOUBLE_EQ(window_->scenario().machine.controller_latency_s, before);
+}
+
+// The compensation comparison uses the scenario's machine; edits made on the
+// Cycle tab reach the hidden Latency tab, which catches up when shown.
+TEST_F(MainWindowTest, HiddenLatencyTabCatchesUpWhenShown) {
+    auto* tabs = window_->findChild<QTabWidget*>(QStringLiteral("tabs"));
+    auto* tab = window_->findChild<LatencyTab*>();
+    ASSERT_NE(tabs, nullptr);
+    ASSERT_NE(tab, nullptr);
+    ASSERT_EQ(tab->compensation_inputs().touch, TouchMotion::braking);
+    tabs->setCurrentWidget(tab);
+    settle();
+    ASSERT_TRUE(tab->comparison().has_value());
+    const double recorded_before = tab->comparison()->recorded_speed_mm_s;
+
+    tabs->setCurrentIndex(0);
+    settle();
+    Scenario slower = window_->scenario();
+    slower.machine.time_constant_s = 0.2;  // gentler braking: faster when recorded
+    window_->edit_scenario(slower, QStringLiteral("time constant"));
+    settle();
+    tabs->setCurrentWidget(tab);
+    settle();
+    ASSERT_TRUE(tab->comparison().has_value());
+    EXPECT_GT(tab->comparison()->recorded_speed_mm_s, recorded_before);
+}
+
+// Moving the start out to reach 10000 mm/min (5 mm) would make a 10 mm bore
+// narrower than two approach distances: that fix is not offered.
+TEST_F(MainWindowTest, AFixThatWouldInvalidateTheScenarioIsNotOffered) {
+    Scenario bore = window_->scenario();
+    bore.cycle.feature = Feature::bore;
+    bore.cycle.feature_size_mm = 10.0;
+    bore.cycle.approach_mm = 1.0;
+    bore.cycle.probe_feed_mm_min = 10000.0;
+    window_->edit_scenario(bore, QStringLiteral("small bore"));
+    settle();
+    ASSERT_TRUE(window_->warning_codes().contains(QStringLiteral("touch_while_accelerating")));
+    EXPECT_FALSE(window_->apply_fix_for(QStringLiteral("touch_while_accelerating")));
+    settle();
+    EXPECT_EQ(window_->scenario().cycle.approach_mm, 1.0);
+    EXPECT_TRUE(validate(window_->scenario()).empty());
+}
+
+TEST_F(MainWindowTest, UndoRestoresAndRedoReapplies) {
+    const std::string original = json();
+    QSlider* feed = slider("cycle.probe_feed_mm_min");
+    // A drag is many steps of one key: one undo step.
+    for (int position : {100, 200, 300, 400}) feed->setValue(position);
+    settle();
+    const std::string dragged = json();
+    ASSERT_NE(dragged, original);
+    EXPECT_EQ(window_->undo_stack()->count(), 1);
+    window_->undo_stack()->undo();
+    settle();
+    EXPECT_EQ(json(), original);
+    EXPECT_EQ(feed->value(), slider("cycle.probe_feed_mm_min")->value());
+    window_->undo_stack()->redo();
+    settle();
+    EXPECT_EQ(json(), dragged);
+
+    // Fixes and presets undo too.
+    ASSERT_TRUE(window_->apply_preset(QStringLiteral(":/presets/machine_high_speed_skip.json")));
+    settle();
+    EXPECT_DOUBLE_EQ(window_->scenario().machine.scan_period_s, 4e-6);
+    window_->undo_stack()->undo();
+    settle();
+    EXPECT_EQ(json(), dragged);
+}
+
+TEST_F(MainWindowTest, EveryPresetLoadsAndChangesOnlyItsKeys) {
+    for (const char* preset :
+         {":/presets/machine_standard_skip.json", ":/presets/machine_high_speed_skip.json",
+          ":/presets/machine_latched_input.json", ":/presets/probe_kinematic_optical.json",
+          ":/presets/probe_kinematic_radio.json", ":/presets/probe_strain_gauge.json",
+          ":/presets/probe_small_stylus.json"}) {
+        const Cycle cycle_before = window_->scenario().cycle;
+        EXPECT_TRUE(window_->apply_preset(QLatin1String(preset))) << preset;
+        settle();
+        EXPECT_EQ(window_->scenario().cycle.probe_feed_mm_min, cycle_before.probe_feed_mm_min);
+        EXPECT_TRUE(window_->computed().valid()) << preset;
+    }
+    EXPECT_TRUE(window_->scenario().machine.latched_input);  // the last machine preset
+    EXPECT_DOUBLE_EQ(window_->scenario().probe.overtravel_limit_mm, 2.0);
+}
+
+TEST_F(MainWindowTest, PinnedBaselineStaysDrawnAndReadoutsShowTheDifference) {
+    EXPECT_FALSE(window_->series_visible(QStringLiteral("cycle_time.baseline_two_touch")));
+    window_->pin_baseline();
+    settle();
+    const QList<QPointF> baseline =
+        window_->series_points(QStringLiteral("cycle_time.baseline_two_touch"));
+    EXPECT_EQ(baseline.size(), 500);
+    EXPECT_TRUE(window_->series_visible(QStringLiteral("cycle_time.baseline_two_touch")));
+    drag_to_fraction(slider("machine.time_constant_s"), 0.9);
+    EXPECT_EQ(window_->series_points(QStringLiteral("cycle_time.baseline_two_touch")), baseline);
+    EXPECT_NE(window_->series_points(QStringLiteral("cycle_time.two_touch")), baseline);
+    EXPECT_TRUE(window_->readout_detail(Readout::cycle_time).contains(QStringLiteral("baseline")));
+    window_->clear_baseline();
+    settle();
+    EXPECT_FALSE(window_->series_visible(QStringLiteral("cycle_time.baseline_two_touch")));
+    EXPECT_FALSE(window_->readout_detail(Readout::cycle_time).contains(QStringLiteral("baseline")));
+}
+
+TEST_F(MainWindowTest, LanguagesSwitchTheInterface) {
+    const QString english = window_->menuBar()->actions().first()->text();
+    const QString english_time = window_->readout_text(Readout::cycle_time);
+    window_->set_language(QStringLiteral("ru"));
+    settle();
+    EXPECT_EQ(current_language(), QStringLiteral("ru"));
+    EXPECT_NE(window_->menuBar()->actions().first()->text(), english);
+    EXPECT_NE(window_->readout_text(Readout::cycle_time), english_time);  // "с", decimal comma
+    window_->set_language(QStringLiteral("zh_CN"));
+    settle();
+    EXPECT_EQ(current_language(), QStringLiteral("zh_CN"));
+    window_->set_language(QStringLiteral("en"));
+    settle();
+    EXPECT_EQ(window_->menuBar()->actions().first()->text(), english);
+}
+
+TEST(MainWindowSettingsTest, RestoresTheWindowAndTheLastScenario) {
+    QSettings().clear();  // test mode: ~/.qttest, never the user's settings
+    MainWindowOptions options;
+    options.show_dialogs = false;
+    Scenario edited;
+    edited.cycle.probe_feed_mm_min = 1234.0;
+    edited.machine.scan_period_s = 0.001;
+    {
+        MainWindow first(options);
+        first.resize(1111, 777);
+        first.show();
+        first.edit_scenario(edited, QStringLiteral("edit"));
+        first.close();  // saves
+    }
+    MainWindow second(options);
+    EXPECT_EQ(scenario_to_json(second.scenario()), scenario_to_json(edited));
+    EXPECT_EQ(second.size(), QSize(1111, 777));
+    QSettings().clear();
+}
+
+TEST_F(MainWindowTest, InvalidCombinationIsShownAndKeepsTheLastCharts) {
+    Scenario s = window_->scenario();
+    s.cycle.feature = Feature::bore;
+    s.cycle.feature_size_mm = 5.0;  // narrower than two approach distances
+    s.cycle.approach_mm = 5.0;
+    window_->edit_scenario(s, QStringLiteral("invalid"));
+    settle();
+    EXPECT_TRUE(window_->warning_codes().contains(QStringLiteral("invalid:cycle.feature_size_mm")));
+    EXPECT_EQ(window_->series_points(QStringLiteral("cycle_time.two_touch")).size(), 500);
+}
+
+}  // namespace
+}  // namespace probecycle::ui

@@ -1,0 +1,52 @@
+#pragma once
+
+// A typed editor for one quantity: label, value with unit and range, and for
+// the quantities engineers sweep by hand a slider (log scale where the range
+// spans decades). It shows display units and speaks internal units.
+
+#include <QWidget>
+
+#include "ui/common/parameter_info.h"
+
+class QDoubleSpinBox;
+class QLabel;
+class QSlider;
+
+namespace probecycle::ui {
+
+class QuantityEdit : public QWidget {
+    Q_OBJECT
+
+  public:
+    explicit QuantityEdit(const KeyInfo& info, QWidget* parent = nullptr);
+
+    const QString& key() const { return view_.key; }
+    // Internal units; does not emit edited().
+    void set_value(double value);
+    double value() const { return value_; }
+    // Re-reads label, help and unit after a language change.
+    void retranslate();
+
+    QSlider* slider() const { return slider_; }
+    QDoubleSpinBox* spin_box() const { return spin_; }
+
+  signals:
+    // A user edit, in internal units.
+    void edited(double value);
+
+  private:
+    void on_spin_changed(double display_value);
+    void on_slider_moved(int position);
+    int slider_position(double value) const;
+    double slider_value(int position) const;
+    void apply_view();
+
+    const KeyInfo& info_;
+    ParameterView view_;
+    double value_{0.0};
+    QLabel* label_{nullptr};
+    QDoubleSpinBox* spin_{nullptr};
+    QSlider* slider_{nullptr};
+};
+
+}  // namespace probecycle::ui

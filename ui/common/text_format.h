@@ -1,0 +1,31 @@
+#pragma once
+
+// Numbers and messages as the window shows them: in the interface language,
+// with units, converted from the core's internal units at this edge only.
+
+#include <QString>
+
+#include "core/cycle/cycle.h"
+
+namespace probecycle::ui {
+
+QString format_seconds(double seconds);         // "4.93 s", "12.0 ms", "40 µs"
+QString format_mm(double mm);                   // "1.274 mm"
+QString format_um(double mm);                   // "3.2 µm"
+QString format_length(double mm);               // mm, or µm below 0.1 mm
+QString format_feed(double mm_min);             // "1 850 mm/min"
+QString format_signed_seconds(double seconds);  // "+0.42 s" / "−0.42 s"
+QString format_signed_length(double mm);
+
+// A core warning in the interface language. English shows the core's own
+// message (the same text as the CLI); translations format the same numbers.
+QString warning_text(const Warning& warning);
+// The colour of a severity, as "#rrggbb": the warnings panel and the lab's lists.
+const char* severity_colour(Severity severity);
+// A short title per warning code.
+QString warning_title(WarningCode code);
+
+// A phase's name as the timeline labels it.
+QString phase_label(Phase phase);
+
+}  // namespace probecycle::ui

@@ -1,0 +1,230 @@
+#include "ui/cycle/parameter_panel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QEvent>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include "core/cycle/cycle.h"
+#include "ui/common/parameter_info.h"
+#include "ui/common/quantity_edit.h"
+
+namespace probecycle::ui {
+
+namespace {
+
+QComboBox* make_combo(const QString& name, QWidget* parent) {
+    auto* combo = new QComboBox(parent);
+    combo->setObjectName(name);
+    combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    combo->setMinimumContentsLength(12);
+    return combo;
+}
+
+QHBoxLayout* labelled_row(QLabel* label, QWidget* editor) {
+    auto* row = new QHBoxLayout;
+    row->setContentsMargins(0, 0, 0, 0);
+    row->addWidget(label, 1);
+    row->addWidget(editor, 1);
+    label->setWordWrap(true);
+    label->setBuddy(editor);
+    return row;
+}
+
+}  // namespace
+
+ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(6, 4, 6, 4);
+    layout->setSpacing(4);
+
+    note_ = new QLabel(this);
+    note_->setWordWrap(true);
+    note_->setObjectName(QStringLiteral("typical-values-note"));
+    QFont note_font = note_->font();
+    note_font.setItalic(true);
+    note_->setFont(note_font);
+    layout->addWidget(note_);
+
+    machine_box_ = new QGroupBox(this);
+    probe_box_ = new QGroupBox(this);
+    cycle_box_ = new QGroupBox(this);
+    auto* machine = new QVBoxLayout(machine_box_);
+    auto* probe = new QVBoxLayout(probe_box_);
+    auto* cycle = new QVBoxLayout(cycle_box_);
+    for (QVBoxLayout* box : {machine, probe, cycle}) {
+        box->setSpacing(3);
+        box->setContentsMargins(6, 4, 6, 4);
+    }
+
+    accel_label_ = new QLabel(machine_box_);
+    accel_model_ = make_combo(QStringLiteral("combo:machine.accel_model"), machine_box_);
+    machine->addLayout(labelled_row(accel_label_, accel_model_));
+    strategy_label_ = new QLabel(cycle_box_);
+    strategy_ = make_combo(QStringLiteral("combo:cycle.strategy"), cycle_box_);
+    cycle->addLayout(labelled_row(strategy_label_, strategy_));
+    feature_label_ = new QLabel(cycle_box_);
+    feature_ = make_combo(QStringLiteral("combo:cycle.feature"), cycle_box_);
+    cycle->addLayout(labelled_row(feature_label_, feature_));
+
+    // Every numeric key of the core, in file order, in its section.
+    for (const KeyInfo& info : numeric_keys()) {
+        const QString section = section_of(info.key);
+        QGroupBox* box = section == QLatin1String("machine") ? machine_box_
+                         : section == QLatin1String("probe") ? probe_box_
+                                                             : cycle_box_;
+        auto* edit = new QuantityEdit(info, box);
+        qobject_cast<QVBoxLayout*>(box->layout())->addWidget(edit);
+        edits_.push_back(edit);
+        connect(edit, &QuantityEdit::edited, this, [this, edit](double value) {
+            set_number(scenario_, edit->key().toStdString(), value);
+            emit_edit(edit->key());
+        });
+    }
+    latched_ = new QCheckBox(machine_box_);
+    latched_->setObjectName(QStringLiteral("check:machine.latched_input"));
+    machine->addWidget(latched_);
+
+    layout->addWidget(machine_box_);
+    layout->addWidget(probe_box_);
+    layout->addWidget(cycle_box_);
+    layout->addStretch(1);
+
+    connect(accel_model_, &QComboBox::activated, this, [this](int index) {
+        scenario_.machine.accel_model =
+            static_cast<AccelModel>(accel_model_->itemData(index).toInt());
+        emit_edit(QStringLiteral("machine.accel_model"));
+    });
+    connect(strategy_, &QComboBox::activated, this, [this](int index) {
+        scenario_.cycle.strategy = static_cast<Strategy>(strategy_->itemData(index).toInt());
+        emit_edit(QStringLiteral("cycle.strategy"));
+    });
+    connect(feature_, &QComboBox::activated, this, [this](int index) {
+        scenario_.cycle.feature = static_cast<Feature>(feature_->itemData(index).toInt());
+        emit_edit(QStringLiteral("cycle.feature"));
+    });
+    connect(latched_, &QCheckBox::clicked, this, [this](bool checked) {
+        scenario_.machine.latched_input = checked;
+        emit_edit(QStringLiteral("machine.latched_input"));
+    });
+
+    retranslate();
+    set_scenario(scenario_);
+}
+
+void ParameterPanel::retranslate() {
+    note_->setText(tr("Typical values: replace them with your measured ones."));
+    note_->setToolTip(
+        tr("The defaults and the presets are typical values for a machining centre "
+           "and its probe. Replace them with the ones measured on your machine."));
+    machine_box_->setTitle(section_label(QStringLiteral("machine")));
+    probe_box_->setTitle(section_label(QStringLiteral("probe")));
+    cycle_box_->setTitle(section_label(QStringLiteral("cycle")));
+    accel_label_->setText(tr("Acceleration model"));
+    strategy_label_->setText(tr("Strategy"));
+    feature_label_->setText(tr("Feature"));
+    latched_->setText(tr("Latched (hardware-captured) input"));
+
+    const QString accel_tip =
+        tr("How the control accelerates: a time constant (a = v/T, common on many controls), a "
+           "constant acceleration, or a jerk-limited S-curve. Sets every move time and the braking "
+           "distance after the trigger.");
+    accel_label_->setToolTip(accel_tip);
+    accel_model_->setToolTip(accel_tip);
+    const QString strategy_tip =
+        tr("Single-touch measures at the probing feed. Two-touch finds the surface fast, backs "
+           "off, and measures with a slow second touch.");
+    strategy_label_->setToolTip(strategy_tip);
+    strategy_->setToolTip(strategy_tip);
+    const QString feature_tip =
+        tr("A surface needs one touch, a web or pocket two opposite touches, a bore or boss four, "
+           "with positioning moves at the rapid feed between them.");
+    feature_label_->setToolTip(feature_tip);
+    feature_->setToolTip(feature_tip);
+    latched_->setToolTip(
+        tr("The control latches (or timestamps) the position in hardware at the trigger: the "
+           "scan-period wait leaves the measured value, but not the travel - the machine still "
+           "stops late."));
+
+    {
+        const QSignalBlocker b1(accel_model_);
+        const QSignalBlocker b2(strategy_);
+        const QSignalBlocker b3(feature_);
+        accel_model_->clear();
+        for (AccelModel m :
+             {AccelModel::time_constant, AccelModel::constant_accel, AccelModel::jerk_limited}) {
+            accel_model_->addItem(accel_model_label(m), static_cast<int>(m));
+        }
+        strategy_->clear();
+        for (Strategy s : {Strategy::single_touch, Strategy::two_touch}) {
+            strategy_->addItem(strategy_label(s), static_cast<int>(s));
+        }
+        feature_->clear();
+        for (Feature f :
+             {Feature::surface, Feature::web, Feature::pocket, Feature::bore, Feature::boss}) {
+            feature_->addItem(feature_label(f), static_cast<int>(f));
+        }
+    }
+    for (QuantityEdit* edit : edits_) edit->retranslate();
+    set_scenario(scenario_);
+}
+
+void ParameterPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ParameterPanel::set_scenario(const Scenario& scenario) {
+    scenario_ = scenario;
+    for (QuantityEdit* edit : edits_) {
+        if (const auto value = get_number(scenario_, edit->key().toStdString())) {
+            edit->set_value(*value);
+        }
+    }
+    const QSignalBlocker b1(accel_model_);
+    const QSignalBlocker b2(strategy_);
+    const QSignalBlocker b3(feature_);
+    const QSignalBlocker b4(latched_);
+    accel_model_->setCurrentIndex(
+        accel_model_->findData(static_cast<int>(scenario_.machine.accel_model)));
+    strategy_->setCurrentIndex(strategy_->findData(static_cast<int>(scenario_.cycle.strategy)));
+    feature_->setCurrentIndex(feature_->findData(static_cast<int>(scenario_.cycle.feature)));
+    latched_->setChecked(scenario_.machine.latched_input);
+    update_enabled();
+}
+
+QuantityEdit* ParameterPanel::edit_for(const char* key) const {
+    for (QuantityEdit* edit : edits_) {
+        if (edit->key() == QLatin1String(key)) return edit;
+    }
+    return nullptr;
+}
+
+void ParameterPanel::update_enabled() {
+    // Keys the current model, strategy or feature does not use are hidden, so the
+    // panel fits a 1280x800 screen; they come back with the model that uses them.
+    const AccelModel model = scenario_.machine.accel_model;
+    const bool two_touch = scenario_.cycle.strategy == Strategy::two_touch;
+    const bool several_touches = touch_count(scenario_.cycle.feature) > 1;
+    const auto enable = [this](const char* key, bool on) {
+        if (QuantityEdit* edit = edit_for(key)) edit->setVisible(on);
+    };
+    enable("machine.time_constant_s", model == AccelModel::time_constant);
+    enable("machine.max_accel_mm_s2", model != AccelModel::time_constant);
+    enable("machine.max_jerk_mm_s3", model == AccelModel::jerk_limited);
+    enable("machine.rapid_feed_mm_min", several_touches);
+    enable("cycle.feature_size_mm", several_touches);
+    enable("cycle.measure_feed_mm_min", two_touch);
+    enable("cycle.backoff_mm", two_touch);
+}
+
+void ParameterPanel::emit_edit(const QString& key) {
+    update_enabled();
+    emit edited(scenario_, key);
+}
+
+}  // namespace probecycle::ui

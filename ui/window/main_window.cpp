@@ -1,0 +1,814 @@
+#include "ui/window/main_window.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSaveFile>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QStyle>
+#include <QTabWidget>
+#include <QToolBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <exception>
+#include <iterator>
+#include <stdexcept>
+
+#include "ui/common/app_icon.h"
+#include "ui/cycle/cycle_charts.h"
+#include "ui/lab/calibration_tab.h"
+#include "ui/lab/latency_tab.h"
+#include "ui/common/language.h"
+#include "ui/common/parameter_info.h"
+#include "ui/cycle/parameter_panel.h"
+#include "core/cycle/cycle_report.h"
+#include "ui/window/scenario_command.h"
+
+namespace probecycle::ui {
+
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+
+struct PresetDef {
+    const char* path;
+    const char* name;
+    const char* tip;
+};
+
+// clang-format off
+const PresetDef kMachinePresets[] = {
+    {":/presets/machine_standard_skip.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Standard skip input (4 ms scan)"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms). Typical values: replace them with your machine's.")},
+    {":/presets/machine_high_speed_skip.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "High-speed skip input (4 µs scan)"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "A direct, high-speed skip input scanned every 4 µs with a 0.5 ms latency. Typical values: replace them with your machine's.")},
+    {":/presets/machine_latched_input.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Latched input (position captured in hardware)"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "The control latches the axis positions at the trigger: the scan wait leaves the measured value but not the travel. Typical values: replace them with your machine's.")},
+};
+const PresetDef kProbePresets[] = {
+    {":/presets/probe_kinematic_optical.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Kinematic probe, optical transmission"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Resistive kinematic probe with an optical receiver: 5 µm pretravel, 2 ms interface response, 1 µm repeatability. Typical values: replace them with the ones you measure.")},
+    {":/presets/probe_kinematic_radio.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Kinematic probe, radio transmission"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Kinematic probe with a radio receiver: the transmission adds about 10 ms of interface response. Typical values: replace them with the ones you measure.")},
+    {":/presets/probe_strain_gauge.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Strain-gauge probe (high accuracy)"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Strain-gauge probe: sub-micrometre pretravel and repeatability, low trigger force. Typical values: replace them with the ones you measure.")},
+    {":/presets/probe_small_stylus.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Short stylus / small bore (2 mm overtravel)"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "A probe with a short stylus or in a small bore, where only about 2 mm of overtravel is safe. Typical values: replace them with the ones you measure.")},
+};
+// clang-format on
+
+QString read_file(const QString& path, QString& error) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        error = file.errorString();
+        return {};
+    }
+    return QString::fromUtf8(file.readAll());
+}
+
+}  // namespace
+
+MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
+    : QMainWindow(parent), options_(options), computation_(options.points_per_curve) {
+    setObjectName(QStringLiteral("MainWindow"));
+    setWindowIcon(app_icon());
+    undo_ = new QUndoStack(this);
+    recompute_timer_.setSingleShot(true);
+    recompute_timer_.setInterval(0);  // one recompute per pass of the event loop
+    connect(&recompute_timer_, &QTimer::timeout, this, &MainWindow::recompute);
+    connect(undo_, &QUndoStack::cleanChanged, this, &MainWindow::update_title);
+
+    build_ui();
+    build_actions();
+    build_menus();
+    retranslate();
+    if (options_.persistent) restore_settings();
+    panel_->set_scenario(scenario_);
+    latency_tab_->set_scenario(scenario_);
+    update_title();
+    schedule_recompute();
+}
+
+MainWindow::~MainWindow() = default;
+
+// --- construction ---------------------------------------------------------
+
+void MainWindow::build_ui() {
+    panel_ = new ParameterPanel;
+    panel_->setObjectName(QStringLiteral("parameters"));
+    connect(panel_, &ParameterPanel::edited, this, &MainWindow::on_panel_edit);
+    panel_scroll_ = new QScrollArea;
+    panel_scroll_->setWidget(panel_);
+    panel_scroll_->setWidgetResizable(true);
+    panel_scroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    panel_scroll_->setFrameShape(QFrame::NoFrame);
+    panel_scroll_->setMinimumWidth(260);
+
+    readouts_ = new Readouts;
+    charts_ = new CycleCharts;
+    warnings_ = new WarningsPanel;
+    connect(warnings_, &WarningsPanel::fix_requested, this, [this](Fix fix) { apply_fix(fix); });
+    auto* warnings_scroll = new QScrollArea;
+    warnings_scroll->setWidget(warnings_);
+    warnings_scroll->setWidgetResizable(true);
+    warnings_scroll->setFrameShape(QFrame::NoFrame);
+    warnings_title_ = new QLabel;
+    QFont bold = warnings_title_->font();
+    bold.setBold(true);
+    warnings_title_->setFont(bold);
+    auto* warnings_box = new QWidget;
+    auto* warnings_layout = new QVBoxLayout(warnings_box);
+    warnings_layout->setContentsMargins(0, 0, 0, 0);
+    warnings_layout->setSpacing(2);
+    warnings_layout->addWidget(warnings_title_);
+    warnings_layout->addWidget(warnings_scroll, 1);
+
+    right_splitter_ = new QSplitter(Qt::Vertical);
+    right_splitter_->setChildrenCollapsible(false);
+    right_splitter_->addWidget(charts_);
+    right_splitter_->addWidget(warnings_box);
+    right_splitter_->setStretchFactor(0, 5);
+    right_splitter_->setStretchFactor(1, 1);
+    warnings_box->setMinimumHeight(70);
+
+    auto* right = new QWidget;
+    auto* right_layout = new QVBoxLayout(right);
+    right_layout->setContentsMargins(0, 6, 6, 0);
+    right_layout->setSpacing(6);
+    right_layout->addWidget(readouts_);
+    right_layout->addWidget(right_splitter_, 1);
+
+    main_splitter_ = new QSplitter(Qt::Horizontal);
+    main_splitter_->setObjectName(QStringLiteral("main-splitter"));
+    main_splitter_->addWidget(panel_scroll_);
+    main_splitter_->addWidget(right);
+    main_splitter_->setStretchFactor(0, 0);
+    main_splitter_->setStretchFactor(1, 1);
+    main_splitter_->setChildrenCollapsible(false);
+    main_splitter_->setSizes({320, 960});
+
+    // The lab (issue 4): calibration and latency from the user's own touches.
+    calibration_tab_ = new CalibrationTab;
+    latency_tab_ = new LatencyTab;
+    connect(latency_tab_, &LatencyTab::controller_latency_applied, this, [this](double latency_s) {
+        Scenario s = scenario_;
+        s.machine.controller_latency_s = latency_s;
+        edit_scenario(s, tr("apply the measured delay"));
+    });
+    tabs_ = new QTabWidget;
+    tabs_->setObjectName(QStringLiteral("tabs"));
+    tabs_->setDocumentMode(true);
+    tabs_->addTab(main_splitter_, QString());
+    tabs_->addTab(calibration_tab_, QString());
+    tabs_->addTab(latency_tab_, QString());
+    setCentralWidget(tabs_);
+
+    statusBar();  // file and preset messages
+    resize(1280, 800);
+}
+
+void MainWindow::build_actions() {
+    const auto icon = [this](QStyle::StandardPixmap pixmap) {
+        return style()->standardIcon(pixmap);
+    };
+    new_ = new QAction(icon(QStyle::SP_FileIcon), {}, this);
+    new_->setShortcut(QKeySequence::New);
+    connect(new_, &QAction::triggered, this, &MainWindow::new_scenario);
+    open_ = new QAction(icon(QStyle::SP_DialogOpenButton), {}, this);
+    open_->setShortcut(QKeySequence::Open);
+    connect(open_, &QAction::triggered, this, &MainWindow::open_dialog);
+    save_ = new QAction(icon(QStyle::SP_DialogSaveButton), {}, this);
+    save_->setShortcut(QKeySequence::Save);
+    connect(save_, &QAction::triggered, this, &MainWindow::save_action);
+    save_as_ = new QAction(this);
+    save_as_->setShortcut(QKeySequence::SaveAs);
+    connect(save_as_, &QAction::triggered, this, &MainWindow::save_as_dialog);
+    export_csv_ = new QAction(icon(QStyle::SP_FileDialogDetailedView), {}, this);
+    export_csv_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    connect(export_csv_, &QAction::triggered, this, &MainWindow::export_csv_dialog);
+    export_png_ = new QAction(icon(QStyle::SP_DesktopIcon), {}, this);
+    export_png_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
+    connect(export_png_, &QAction::triggered, this, &MainWindow::export_png_dialog);
+    quit_ = new QAction(this);
+    quit_->setShortcut(QKeySequence::Quit);
+    quit_->setMenuRole(QAction::QuitRole);
+    connect(quit_, &QAction::triggered, this, &QWidget::close);
+
+    // Own actions rather than QUndoStack's, so their prefix follows the language.
+    undo_action_ = new QAction(icon(QStyle::SP_ArrowBack), {}, this);
+    undo_action_->setShortcut(QKeySequence::Undo);
+    undo_action_->setEnabled(false);
+    connect(undo_action_, &QAction::triggered, undo_, &QUndoStack::undo);
+    connect(undo_, &QUndoStack::canUndoChanged, undo_action_, &QAction::setEnabled);
+    redo_action_ = new QAction(icon(QStyle::SP_ArrowForward), {}, this);
+    redo_action_->setShortcut(QKeySequence::Redo);
+    redo_action_->setEnabled(false);
+    connect(redo_action_, &QAction::triggered, undo_, &QUndoStack::redo);
+    connect(undo_, &QUndoStack::canRedoChanged, redo_action_, &QAction::setEnabled);
+    connect(undo_, &QUndoStack::indexChanged, this, &MainWindow::update_undo_texts);
+
+    pin_ = new QAction(icon(QStyle::SP_DialogApplyButton), {}, this);
+    pin_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+    connect(pin_, &QAction::triggered, this, &MainWindow::pin_baseline);
+    unpin_ = new QAction(icon(QStyle::SP_DialogDiscardButton), {}, this);
+    unpin_->setEnabled(false);
+    connect(unpin_, &QAction::triggered, this, &MainWindow::clear_baseline);
+
+    about_ = new QAction(this);
+    about_->setMenuRole(QAction::AboutRole);
+    connect(about_, &QAction::triggered, this, [this] {
+        QMessageBox::about(
+            this, tr("About ProbeCycle"),
+            tr("<p><b>ProbeCycle</b> %1</p><p>Cycle time, overtravel and uncertainty of "
+               "touch-trigger probing cycles on CNC machine tools.</p><p>Every value in the model "
+               "is a typical one until you replace it with your measured value.</p>")
+                .arg(QCoreApplication::applicationVersion()));
+    });
+
+    for (const PresetDef& def : kMachinePresets) {
+        auto* action = new QAction(this);
+        const QString path = QString::fromUtf8(def.path);
+        connect(action, &QAction::triggered, this, [this, path] { apply_preset(path); });
+        preset_actions_.append({action, def.name, def.tip});
+    }
+    for (const PresetDef& def : kProbePresets) {
+        auto* action = new QAction(this);
+        const QString path = QString::fromUtf8(def.path);
+        connect(action, &QAction::triggered, this, [this, path] { apply_preset(path); });
+        preset_actions_.append({action, def.name, def.tip});
+    }
+    presets_note_ = new QAction(this);
+    presets_note_->setEnabled(false);
+
+    language_group_ = new QActionGroup(this);
+    language_group_->setExclusive(true);
+    QStringList codes{QString()};
+    codes.append(available_languages());
+    for (const QString& code : codes) {
+        auto* action = new QAction(this);
+        action->setCheckable(true);
+        action->setData(code);
+        language_group_->addAction(action);
+        language_actions_.append(action);
+        connect(action, &QAction::triggered, this, [this, code] { set_language(code); });
+    }
+}
+
+void MainWindow::build_menus() {
+    file_menu_ = menuBar()->addMenu(QString());
+    file_menu_->addAction(new_);
+    file_menu_->addAction(open_);
+    recent_menu_ = file_menu_->addMenu(QString());
+    connect(recent_menu_, &QMenu::aboutToShow, this, &MainWindow::update_recent_menu);
+    file_menu_->addAction(save_);
+    file_menu_->addAction(save_as_);
+    file_menu_->addSeparator();
+    file_menu_->addAction(export_csv_);
+    file_menu_->addAction(export_png_);
+    file_menu_->addSeparator();
+    file_menu_->addAction(quit_);
+
+    edit_menu_ = menuBar()->addMenu(QString());
+    edit_menu_->addAction(undo_action_);
+    edit_menu_->addAction(redo_action_);
+
+    presets_menu_ = menuBar()->addMenu(QString());
+    presets_menu_->addAction(presets_note_);
+    presets_menu_->addSeparator();
+    machine_presets_menu_ = presets_menu_->addMenu(QString());
+    probe_presets_menu_ = presets_menu_->addMenu(QString());
+    const qsizetype machine_count = static_cast<qsizetype>(std::size(kMachinePresets));
+    for (qsizetype i = 0; i < preset_actions_.size(); ++i) {
+        (i < machine_count ? machine_presets_menu_ : probe_presets_menu_)
+            ->addAction(preset_actions_[i].action);
+    }
+    presets_menu_->setToolTipsVisible(true);
+    machine_presets_menu_->setToolTipsVisible(true);
+    probe_presets_menu_->setToolTipsVisible(true);
+
+    compare_menu_ = menuBar()->addMenu(QString());
+    compare_menu_->addAction(pin_);
+    compare_menu_->addAction(unpin_);
+
+    view_menu_ = menuBar()->addMenu(QString());
+    language_menu_ = view_menu_->addMenu(QString());
+    language_menu_->addActions(language_actions_);
+
+    help_menu_ = menuBar()->addMenu(QString());
+    help_menu_->addAction(about_);
+
+    auto* toolbar = addToolBar(QString());
+    toolbar->setObjectName(QStringLiteral("main-toolbar"));
+    toolbar->setMovable(false);
+    toolbar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    toolbar->setIconSize(QSize(16, 16));
+    toolbar->addAction(open_);
+    toolbar->addAction(save_);
+    toolbar->addSeparator();
+    toolbar->addAction(undo_action_);
+    toolbar->addAction(redo_action_);
+    toolbar->addSeparator();
+    toolbar->addAction(pin_);
+    toolbar->addAction(unpin_);
+    toolbar->addSeparator();
+    toolbar->addAction(export_csv_);
+    toolbar->addAction(export_png_);
+}
+
+void MainWindow::retranslate() {
+    tabs_->setTabText(0, tr("Cycle"));
+    tabs_->setTabText(1, tr("Calibration"));
+    tabs_->setTabText(2, tr("Latency"));
+    new_->setText(tr("&New"));
+    new_->setToolTip(tr("Start from the default scenario (typical values)"));
+    open_->setText(tr("&Open…"));
+    open_->setToolTip(tr("Open a scenario file (the JSON the command-line tool reads)"));
+    save_->setText(tr("&Save"));
+    save_->setToolTip(tr("Save the scenario as JSON"));
+    save_as_->setText(tr("Save &As…"));
+    export_csv_->setText(tr("Export CSV &Report…"));
+    export_csv_->setToolTip(
+        tr("Scenario, summary, phases, warnings and a feed sweep as CSV, the same as the "
+           "command-line tool writes"));
+    export_png_->setText(tr("Export Charts as &PNG…"));
+    export_png_->setToolTip(tr("Save the four charts as one PNG image"));
+    quit_->setText(tr("&Quit"));
+    update_undo_texts();
+    pin_->setText(tr("&Pin Baseline"));
+    pin_->setToolTip(
+        tr("Keep the current scenario as a baseline: its curves stay drawn dashed and the readouts "
+           "show the difference"));
+    unpin_->setText(tr("&Clear Baseline"));
+    about_->setText(tr("&About ProbeCycle"));
+    presets_note_->setText(tr("Presets hold typical values: replace them with measured ones"));
+    for (const PresetAction& preset : preset_actions_) {
+        preset.action->setText(tr(preset.name));
+        preset.action->setToolTip(tr(preset.tip));
+        preset.action->setStatusTip(tr(preset.tip));
+    }
+    for (QAction* action : language_actions_) {
+        const QString code = action->data().toString();
+        action->setText(code.isEmpty() ? tr("System language") : native_language_name(code));
+    }
+
+    file_menu_->setTitle(tr("&File"));
+    recent_menu_->setTitle(tr("Open &Recent"));
+    edit_menu_->setTitle(tr("&Edit"));
+    presets_menu_->setTitle(tr("&Presets"));
+    machine_presets_menu_->setTitle(tr("&Machine (skip input)"));
+    probe_presets_menu_->setTitle(tr("P&robe class"));
+    compare_menu_->setTitle(tr("&Compare"));
+    view_menu_->setTitle(tr("&View"));
+    language_menu_->setTitle(tr("&Language"));
+    help_menu_->setTitle(tr("&Help"));
+    warnings_title_->setText(tr("Warnings"));
+    if (auto* toolbar = findChild<QToolBar*>(QStringLiteral("main-toolbar"))) {
+        toolbar->setWindowTitle(tr("Main toolbar"));
+    }
+    update_title();
+}
+
+void MainWindow::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        if (recompute_count_ > 0) schedule_recompute();  // texts built from numbers
+    }
+    QMainWindow::changeEvent(event);
+}
+
+// --- settings -------------------------------------------------------------
+
+void MainWindow::restore_settings() {
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    main_splitter_->restoreState(settings.value(QStringLiteral("window/splitter")).toByteArray());
+    right_splitter_->restoreState(
+        settings.value(QStringLiteral("window/right_splitter")).toByteArray());
+    recent_files_ = settings.value(QStringLiteral("files/recent")).toStringList();
+    last_dir_ = settings.value(QStringLiteral("files/last_dir")).toString();
+    language_choice_ = settings.value(QStringLiteral("view/language")).toString();
+    for (QAction* action : language_actions_) {
+        action->setChecked(action->data().toString() == language_choice_);
+    }
+    const QString json = settings.value(QStringLiteral("scenario/last")).toString();
+    if (!json.isEmpty()) {
+        try {
+            scenario_ = scenario_from_json(json.toStdString());
+            current_file_ = settings.value(QStringLiteral("scenario/file")).toString();
+        } catch (const std::exception&) {
+            scenario_ = Scenario{};  // a stale or foreign entry: start from the defaults
+        }
+    }
+}
+
+void MainWindow::save_settings() const {
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    settings.setValue(QStringLiteral("window/splitter"), main_splitter_->saveState());
+    settings.setValue(QStringLiteral("window/right_splitter"), right_splitter_->saveState());
+    settings.setValue(QStringLiteral("files/recent"), recent_files_);
+    settings.setValue(QStringLiteral("files/last_dir"), last_dir_);
+    settings.setValue(QStringLiteral("view/language"), language_choice_);
+    settings.setValue(QStringLiteral("scenario/last"),
+                      QString::fromStdString(scenario_to_json(scenario_)));
+    // A file name is restored only with the file's own content.
+    settings.setValue(QStringLiteral("scenario/file"),
+                      undo_->isClean() ? current_file_ : QString());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (options_.show_dialogs && !undo_->isClean() && !current_file_.isEmpty()) {
+        const auto answer = QMessageBox::question(
+            this, tr("Unsaved changes"),
+            tr("Save the changes to %1?").arg(QFileInfo(current_file_).fileName()),
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+        if (answer == QMessageBox::Cancel || (answer == QMessageBox::Save && !save_action())) {
+            event->ignore();
+            return;
+        }
+    }
+    if (options_.persistent) save_settings();
+    event->accept();
+}
+
+void MainWindow::set_language(const QString& code) {
+    language_choice_ = code;
+    for (QAction* action : language_actions_) action->setChecked(action->data().toString() == code);
+    apply_language(code);  // LanguageChange events retranslate every widget
+    if (options_.persistent) QSettings().setValue(QStringLiteral("view/language"), code);
+}
+
+// --- editing --------------------------------------------------------------
+
+void MainWindow::apply_scenario(const Scenario& scenario) {
+    scenario_ = scenario;
+    panel_->set_scenario(scenario_);
+    latency_tab_->set_scenario(scenario_);
+    schedule_recompute();
+}
+
+void MainWindow::on_panel_edit(const Scenario& scenario, const QString& key) {
+    QString label = key;
+    if (const KeyInfo* info = find_key(key.toStdString())) {
+        label = parameter_view(*info).label;
+    } else if (key == QLatin1String("machine.accel_model")) {
+        label = tr("acceleration model");
+    } else if (key == QLatin1String("cycle.strategy")) {
+        label = tr("strategy");
+    } else if (key == QLatin1String("cycle.feature")) {
+        label = tr("feature");
+    } else if (key == QLatin1String("machine.latched_input")) {
+        label = tr("latched input");
+    }
+    undo_->push(new ScenarioCommand([this](const Scenario& s) { apply_scenario(s); }, scenario_,
+                                    scenario, tr("change %1").arg(label),
+                                    ScenarioCommand::merge_id_for(key)));
+}
+
+void MainWindow::edit_scenario(const Scenario& scenario, const QString& description) {
+    undo_->push(new ScenarioCommand([this](const Scenario& s) { apply_scenario(s); }, scenario_,
+                                    scenario, description));
+}
+
+void MainWindow::schedule_recompute() {
+    if (!recompute_timer_.isActive()) recompute_timer_.start();
+}
+
+void MainWindow::recompute_now() {
+    if (recompute_timer_.isActive()) {
+        recompute_timer_.stop();
+        recompute();
+    }
+}
+
+void MainWindow::recompute() {
+    const Computed& c = computation_.run(scenario_);
+    const Computed* baseline = baseline_ ? &*baseline_ : nullptr;
+    charts_->show_result(c);
+    readouts_->show_result(c, baseline);
+    warnings_->show_result(c);
+    ++recompute_count_;
+    emit recomputed();
+}
+
+// --- files ----------------------------------------------------------------
+
+void MainWindow::report_error(const QString& title, const QString& text) {
+    last_error_ = text;
+    statusBar()->showMessage(title, 8000);
+    if (!options_.show_dialogs) return;
+    auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::reset_document(const Scenario& scenario, const QString& file) {
+    undo_->clear();
+    current_file_ = file;
+    apply_scenario(scenario);
+    undo_->setClean();
+    update_title();
+}
+
+void MainWindow::new_scenario() {
+    reset_document(Scenario{}, QString());
+    statusBar()->showMessage(
+        tr("Default scenario: typical values, to be replaced with measured ones"), 6000);
+}
+
+bool MainWindow::open_scenario(const QString& path) {
+    QString error;
+    const QString text = read_file(path, error);
+    if (!error.isEmpty()) {
+        report_error(tr("Could not open the scenario"),
+                     tr("%1 could not be read: %2").arg(QDir::toNativeSeparators(path), error));
+        return false;
+    }
+    Scenario loaded;
+    try {
+        loaded = scenario_from_json(text.toStdString());
+        validate_or_throw(loaded);
+    } catch (const std::exception& e) {
+        // The message names the key, the value and what is allowed (core's ScenarioError).
+        report_error(tr("Could not open the scenario"),
+                     tr("%1 is not a valid scenario:\n%2")
+                         .arg(QDir::toNativeSeparators(path), QString::fromUtf8(e.what())));
+        return false;
+    }
+    reset_document(loaded, QFileInfo(path).absoluteFilePath());
+    remember_recent(current_file_);
+    last_dir_ = QFileInfo(path).absolutePath();
+    statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), 4000);
+    return true;
+}
+
+bool MainWindow::save_scenario(const QString& path) {
+    QSaveFile file(path);
+    const QByteArray bytes = QByteArray::fromStdString(scenario_to_json(scenario_));
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+        report_error(tr("Could not save the scenario"),
+                     tr("%1 could not be written: %2")
+                         .arg(QDir::toNativeSeparators(path), file.errorString()));
+        return false;
+    }
+    current_file_ = QFileInfo(path).absoluteFilePath();
+    undo_->setClean();
+    remember_recent(current_file_);
+    last_dir_ = QFileInfo(path).absolutePath();
+    update_title();
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 4000);
+    return true;
+}
+
+bool MainWindow::export_csv_report(const QString& path) {
+    recompute_now();
+    const Computed& c = computation_.result();
+    if (!c.valid()) {
+        report_error(tr("Could not export the report"),
+                     tr("The scenario is not valid; see the warnings panel."));
+        return false;
+    }
+    const std::vector<double> feeds = report_feeds(c.scenario, c.analysis);
+    const std::string csv = csv_report(c.scenario, c.analysis, sweep_feeds(c.scenario, feeds));
+    QSaveFile file(path);
+    const QByteArray bytes = QByteArray::fromStdString(csv);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+        report_error(tr("Could not export the report"),
+                     tr("%1 could not be written: %2")
+                         .arg(QDir::toNativeSeparators(path), file.errorString()));
+        return false;
+    }
+    statusBar()->showMessage(tr("Report written to %1").arg(QDir::toNativeSeparators(path)), 4000);
+    return true;
+}
+
+bool MainWindow::export_charts_png(const QString& path) {
+    recompute_now();
+    const QImage image = charts_->grab().toImage();
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit()) {
+        report_error(tr("Could not export the charts"),
+                     tr("%1 could not be written: %2")
+                         .arg(QDir::toNativeSeparators(path), file.errorString()));
+        return false;
+    }
+    statusBar()->showMessage(tr("Charts written to %1").arg(QDir::toNativeSeparators(path)), 4000);
+    return true;
+}
+
+bool MainWindow::apply_preset(const QString& resource_path) {
+    QString error;
+    const QString text = read_file(resource_path, error);
+    Scenario preset;
+    try {
+        if (!error.isEmpty()) throw std::runtime_error(error.toStdString());
+        preset = scenario_from_json(text.toStdString());
+    } catch (const std::exception& e) {
+        report_error(tr("Could not apply the preset"), QString::fromUtf8(e.what()));
+        return false;
+    }
+    // Only the keys the preset names change; everything else stays as the user set it.
+    const QJsonObject root = QJsonDocument::fromJson(text.toUtf8()).object();
+    Scenario next = scenario_;
+    for (auto section = root.begin(); section != root.end(); ++section) {
+        const QJsonObject keys = section.value().toObject();
+        for (auto key = keys.begin(); key != keys.end(); ++key) {
+            const std::string dotted = (section.key() + QLatin1Char('.') + key.key()).toStdString();
+            if (const auto value = get_number(preset, dotted)) {
+                set_number(next, dotted, *value);
+            } else if (dotted == "machine.accel_model") {
+                next.machine.accel_model = preset.machine.accel_model;
+            } else if (dotted == "machine.latched_input") {
+                next.machine.latched_input = preset.machine.latched_input;
+            } else if (dotted == "cycle.strategy") {
+                next.cycle.strategy = preset.cycle.strategy;
+            } else if (dotted == "cycle.feature") {
+                next.cycle.feature = preset.cycle.feature;
+            }
+        }
+    }
+    QString name = QFileInfo(resource_path).baseName();
+    for (const PresetDef& def : kMachinePresets) {
+        if (resource_path == QLatin1String(def.path)) name = tr(def.name);
+    }
+    for (const PresetDef& def : kProbePresets) {
+        if (resource_path == QLatin1String(def.path)) name = tr(def.name);
+    }
+    edit_scenario(next, tr("preset %1").arg(name));
+    statusBar()->showMessage(
+        tr("%1: typical values applied; replace them with your measured ones").arg(name), 8000);
+    return true;
+}
+
+void MainWindow::remember_recent(const QString& path) {
+    recent_files_.removeAll(path);
+    recent_files_.prepend(path);
+    while (recent_files_.size() > kMaxRecentFiles) recent_files_.removeLast();
+    if (options_.persistent) QSettings().setValue(QStringLiteral("files/recent"), recent_files_);
+}
+
+void MainWindow::update_recent_menu() {
+    recent_menu_->clear();
+    for (const QString& path : recent_files_) {
+        QAction* action = recent_menu_->addAction(QDir::toNativeSeparators(path));
+        connect(action, &QAction::triggered, this, [this, path] { open_scenario(path); });
+    }
+    if (recent_files_.isEmpty()) recent_menu_->addAction(tr("(none)"))->setEnabled(false);
+}
+
+void MainWindow::update_undo_texts() {
+    const QString undo_text = undo_->undoText();
+    const QString redo_text = undo_->redoText();
+    undo_action_->setText(undo_text.isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(undo_text));
+    redo_action_->setText(redo_text.isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(redo_text));
+    undo_action_->setIconText(tr("Undo"));
+    redo_action_->setIconText(tr("Redo"));
+}
+
+void MainWindow::update_title() {
+    const QString name =
+        current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();
+    setWindowTitle(QStringLiteral("%1[*] - ProbeCycle").arg(name));
+    setWindowModified(!undo_->isClean());
+}
+
+void MainWindow::open_dialog() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open scenario"), last_dir_,
+                                                      tr("Scenario (*.json);;All files (*)"));
+    if (!path.isEmpty()) open_scenario(path);
+}
+
+bool MainWindow::save_action() {
+    if (current_file_.isEmpty()) return save_as_dialog();
+    return save_scenario(current_file_);
+}
+
+bool MainWindow::save_as_dialog() {
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Save scenario"),
+        current_file_.isEmpty() ? last_dir_ + QStringLiteral("/scenario.json") : current_file_,
+        tr("Scenario (*.json)"));
+    if (path.isEmpty()) return false;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
+    return save_scenario(path);
+}
+
+void MainWindow::export_csv_dialog() {
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Export CSV report"), last_dir_ + QStringLiteral("/probecycle-report.csv"),
+        tr("CSV (*.csv)"));
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".csv");
+    export_csv_report(path);
+}
+
+void MainWindow::export_png_dialog() {
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Export charts as PNG"), last_dir_ + QStringLiteral("/probecycle-charts.png"),
+        tr("PNG image (*.png)"));
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".png");
+    export_charts_png(path);
+}
+
+// --- compare and fixes ----------------------------------------------------
+
+void MainWindow::pin_baseline() {
+    recompute_now();
+    if (!computation_.result().valid()) return;
+    baseline_ = computation_.result();
+    charts_->set_baseline(&*baseline_);
+    unpin_->setEnabled(true);
+    statusBar()->showMessage(tr("Baseline pinned: change parameters to compare against it"), 6000);
+    schedule_recompute();
+}
+
+void MainWindow::clear_baseline() {
+    baseline_.reset();
+    charts_->set_baseline(nullptr);
+    unpin_->setEnabled(false);
+    schedule_recompute();
+}
+
+bool MainWindow::apply_fix(Fix fix) {
+    recompute_now();
+    const std::optional<Scenario> fixed = probecycle::ui::apply_fix(computation_.result(), fix);
+    if (!fixed) return false;
+    QString text;
+    switch (fix) {
+        case Fix::backoff_to_recommended:
+            text = tr("set backoff to recommended");
+            break;
+        case Fix::feed_to_knee:
+            text = tr("drop feed to the knee");
+            break;
+        case Fix::approach_to_reach_feed:
+            text = tr("start far enough out to reach the feed");
+            break;
+        case Fix::none:
+            return false;
+    }
+    edit_scenario(*fixed, text);
+    return true;
+}
+
+bool MainWindow::apply_fix_for(const QString& warning_code) {
+    recompute_now();
+    return apply_fix(warnings_->fix_for(warning_code));
+}
+
+// --- what the user sees ---------------------------------------------------
+
+QString MainWindow::readout_text(Readout readout) const {
+    return readouts_->value_text(readout);
+}
+QString MainWindow::readout_detail(Readout readout) const {
+    return readouts_->detail_text(readout);
+}
+Alert MainWindow::readout_alert(Readout readout) const {
+    return readouts_->alert(readout);
+}
+QStringList MainWindow::warning_codes() const {
+    return warnings_->codes();
+}
+QStringList MainWindow::warning_texts() const {
+    return warnings_->texts();
+}
+QList<QPointF> MainWindow::series_points(const QString& id) const {
+    return charts_->series_points(id);
+}
+bool MainWindow::series_visible(const QString& id) const {
+    return charts_->series_visible(id);
+}
+QStringList MainWindow::series_ids() const {
+    return charts_->series_ids();
+}
+QWidget* MainWindow::charts_widget() const {
+    return charts_;
+}
+
+}  // namespace probecycle::ui

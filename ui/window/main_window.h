@@ -1,0 +1,190 @@
+#pragma once
+
+// The ProbeCycle window: parameter panel, readouts, live charts, warnings,
+// files, presets, compare, undo and languages. It edits a Scenario and draws
+// what the core computes from it; edits are coalesced into one recompute per
+// pass of the event loop.
+//
+// The public functions below the constructor are the window's behaviour as
+// tests, the benchmark and `--screenshot` drive it.
+
+#include <QList>
+#include <QMainWindow>
+#include <QPointF>
+#include <QString>
+#include <QStringList>
+#include <QTimer>
+#include <optional>
+
+#include "ui/cycle/computation.h"
+#include "ui/cycle/readouts.h"
+#include "ui/cycle/warnings_panel.h"
+
+class QAction;
+class QActionGroup;
+class QLabel;
+class QMenu;
+class QScrollArea;
+class QSplitter;
+class QTabWidget;
+class QUndoStack;
+
+namespace probecycle::ui {
+
+class CalibrationTab;
+class CycleCharts;
+class LatencyTab;
+class ParameterPanel;
+
+struct MainWindowOptions {
+    // Restore and save geometry, the last scenario and recent files (QSettings).
+    bool persistent{true};
+    // Errors in modal-free message boxes; off in tests, which read last_error().
+    bool show_dialogs{true};
+    std::size_t points_per_curve{500};
+};
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+  public:
+    explicit MainWindow(const MainWindowOptions& options = {}, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    const Scenario& scenario() const { return scenario_; }
+    const Computed& computed() const { return computation_.result(); }
+    // An undoable change of the whole scenario.
+    void edit_scenario(const Scenario& scenario, const QString& description);
+
+    // Files. Each returns false and reports through last_error() on failure;
+    // a file that does not load leaves the current scenario untouched.
+    void new_scenario();
+    bool open_scenario(const QString& path);
+    bool save_scenario(const QString& path);
+    bool export_csv_report(const QString& path);
+    bool export_charts_png(const QString& path);
+    // A preset from resources/ (":/presets/..."): its machine or probe section
+    // replaces the current one, as an undoable edit.
+    bool apply_preset(const QString& resource_path);
+    QString current_file() const { return current_file_; }
+    QString last_error() const { return last_error_; }
+
+    // Compare.
+    void pin_baseline();
+    void clear_baseline();
+    bool has_baseline() const { return baseline_.has_value(); }
+
+    // Fixes offered by the warnings panel.
+    bool apply_fix(Fix fix);
+    bool apply_fix_for(const QString& warning_code);
+
+    // What the user sees.
+    QString readout_text(Readout readout) const;
+    QString readout_detail(Readout readout) const;
+    Alert readout_alert(Readout readout) const;
+    QStringList warning_codes() const;
+    QStringList warning_texts() const;
+    QList<QPointF> series_points(const QString& id) const;
+    bool series_visible(const QString& id) const;
+    QStringList series_ids() const;
+    QWidget* charts_widget() const;
+
+    QUndoStack* undo_stack() const { return undo_; }
+    // Runs a pending recompute now (normally the event loop does).
+    void recompute_now();
+    int recompute_count() const { return recompute_count_; }
+    bool recompute_pending() const { return recompute_timer_.isActive(); }
+
+    void set_language(const QString& code);
+
+  signals:
+    void recomputed();
+
+  protected:
+    void closeEvent(QCloseEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
+  private:
+    void build_ui();
+    void build_actions();
+    void build_menus();
+    void retranslate();
+    void restore_settings();
+    void save_settings() const;
+
+    void apply_scenario(const Scenario& scenario);
+    void on_panel_edit(const Scenario& scenario, const QString& key);
+    void schedule_recompute();
+    void recompute();
+    void reset_document(const Scenario& scenario, const QString& file);
+    void report_error(const QString& title, const QString& text);
+    void remember_recent(const QString& path);
+    void update_title();
+    void update_undo_texts();
+    void update_recent_menu();
+
+    void open_dialog();
+    bool save_action();
+    bool save_as_dialog();
+    void export_csv_dialog();
+    void export_png_dialog();
+
+    MainWindowOptions options_;
+    Scenario scenario_;
+    Computation computation_;
+    std::optional<Computed> baseline_;
+    QTimer recompute_timer_;
+    int recompute_count_{0};
+    QString current_file_;
+    QString last_error_;
+    QString last_dir_;
+    QStringList recent_files_;
+
+    QUndoStack* undo_{nullptr};
+    ParameterPanel* panel_{nullptr};
+    QScrollArea* panel_scroll_{nullptr};
+    Readouts* readouts_{nullptr};
+    CycleCharts* charts_{nullptr};
+    WarningsPanel* warnings_{nullptr};
+    QLabel* warnings_title_{nullptr};
+    QSplitter* main_splitter_{nullptr};
+    QTabWidget* tabs_{nullptr};
+    CalibrationTab* calibration_tab_{nullptr};
+    LatencyTab* latency_tab_{nullptr};
+    QSplitter* right_splitter_{nullptr};
+
+    QMenu* file_menu_{nullptr};
+    QMenu* recent_menu_{nullptr};
+    QMenu* edit_menu_{nullptr};
+    QMenu* presets_menu_{nullptr};
+    QMenu* machine_presets_menu_{nullptr};
+    QMenu* probe_presets_menu_{nullptr};
+    QMenu* compare_menu_{nullptr};
+    QMenu* view_menu_{nullptr};
+    QMenu* language_menu_{nullptr};
+    QMenu* help_menu_{nullptr};
+    QAction* new_{nullptr};
+    QAction* open_{nullptr};
+    QAction* save_{nullptr};
+    QAction* save_as_{nullptr};
+    QAction* export_csv_{nullptr};
+    QAction* export_png_{nullptr};
+    QAction* quit_{nullptr};
+    QAction* undo_action_{nullptr};
+    QAction* redo_action_{nullptr};
+    QAction* pin_{nullptr};
+    QAction* unpin_{nullptr};
+    QAction* about_{nullptr};
+    QAction* presets_note_{nullptr};
+    QActionGroup* language_group_{nullptr};
+    QList<QAction*> language_actions_;
+    struct PresetAction {
+        QAction* action;
+        const char* name;
+        const char* tip;
+    };
+    QList<PresetAction> preset_actions_;
+    QString language_choice_;
+};
+
+}  // namespace probecycle::ui
