@@ -80,62 +80,96 @@ const char* to_string(WarningCode code) {
     return "?";
 }
 
-namespace {
-
-template <typename... Args>
-std::string format(const char* pattern, Args... args) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, pattern, args...);
-    return buffer;
-}
-
-}  // namespace
-
-std::string Warning::message() const {
+// The texts are the window's too (ui::translate); each exists here only.
+// Arguments in the units their names say.
+Message Warning::to_message() const {
+    Message m;
+    m.code = to_string(code);
+    m.context = "Warning";
     switch (code) {
         case WarningCode::overtravel_limit:
-            return format(
-                "Overtravel %.3f mm is %.0f %% of the probe's %.3f mm limit%s", a, 100.0 * a / b, b,
-                severity == Severity::error
-                    ? ": the probe or stylus will be damaged; lower the feed or the delays"
-                    : ": little margin left for the stylus");
+            m.text = severity == Severity::error
+                         ? QT_TRANSLATE_NOOP("Warning",
+                                             "Overtravel %1 is %2 % of the probe's %3 limit: the "
+                                             "probe or stylus will be damaged; lower the feed or "
+                                             "the delays")
+                         : QT_TRANSLATE_NOOP("Warning",
+                                             "Overtravel %1 is %2 % of the probe's %3 limit: "
+                                             "little margin left for the stylus");
+            m.args = {arg("overtravel_mm", ArgKind::length_mm, a, 3),
+                      arg("percent_of_limit", ArgKind::number, 100.0 * a / b, 0),
+                      arg("limit_mm", ArgKind::length_mm, b, 3)};
+            break;
         case WarningCode::backoff_too_small:
-            return format(
-                "Backoff %.3f mm is less than the first touch's overtravel plus reseat, %.3f mm: "
-                "the probe may not reseat before the second touch",
-                a, b);
+            m.text = QT_TRANSLATE_NOOP(
+                "Warning",
+                "Backoff %1 is less than the first touch's overtravel plus reseat, %2: the probe "
+                "may not reseat before the second touch");
+            m.args = {arg("backoff_mm", ArgKind::length_mm, a, 3),
+                      arg("recommended_backoff_mm", ArgKind::length_mm, b, 3)};
+            break;
         case WarningCode::backoff_excess:
-            return format(
-                "Backoff %.3f mm is more than the recommended %.3f mm and wastes %.2f s per cycle",
-                a, b, c);
+            m.text = QT_TRANSLATE_NOOP(
+                "Warning", "Backoff %1 is more than the recommended %2 and wastes %3 per cycle");
+            m.args = {arg("backoff_mm", ArgKind::length_mm, a, 3),
+                      arg("recommended_backoff_mm", ArgKind::length_mm, b, 3),
+                      arg("time_wasted_s", ArgKind::time_s, c, 2)};
+            break;
         case WarningCode::touch_while_accelerating:
-            return format(
-                "%s touch starts closer than the distance needed to reach its feed: it triggers at "
-                "%.1f mm/min instead of %.1f mm/min, an error of %.4f mm against a calibration at "
-                "full feed",
-                d > 0.5 ? "Second" : "First", mm_s_to_mm_min(a), mm_s_to_mm_min(b), c);
+            m.text = d > 0.5 ? QT_TRANSLATE_NOOP("Warning",
+                                                 "Second touch starts closer than the distance "
+                                                 "needed to reach its feed: it triggers at %1 "
+                                                 "instead of %2, an error of %3 against a "
+                                                 "calibration at full feed")
+                             : QT_TRANSLATE_NOOP("Warning",
+                                                 "First touch starts closer than the distance "
+                                                 "needed to reach its feed: it triggers at %1 "
+                                                 "instead of %2, an error of %3 against a "
+                                                 "calibration at full feed");
+            m.args = {arg("speed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 1),
+                      arg("feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 1),
+                      arg("error_mm", ArgKind::length_mm, c, 4),
+                      arg("touch", ArgKind::integer, d > 0.5 ? 2.0 : 1.0)};
+            break;
         case WarningCode::feed_beyond_knee:
             if (c <= 0.0) {
-                return format(
-                    "Probe feed %.0f mm/min is beyond the knee at %.0f mm/min and no faster: the "
-                    "cycle takes %.3f s longer, with more overtravel and uncertainty",
-                    mm_s_to_mm_min(a), mm_s_to_mm_min(b), -c);
+                m.text = QT_TRANSLATE_NOOP(
+                    "Warning",
+                    "Probing feed %1 is beyond the knee at %2 and no faster: the cycle takes %3 "
+                    "longer, with more overtravel and uncertainty");
+                m.args = {arg("feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 0),
+                          arg("knee_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 0),
+                          arg("time_lost_s", ArgKind::time_s, -c, 3)};
+            } else {
+                m.text = QT_TRANSLATE_NOOP(
+                    "Warning",
+                    "Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 "
+                    "(under 1 %) while overtravel and uncertainty grow");
+                m.args = {arg("feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 0),
+                          arg("knee_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 0),
+                          arg("time_saved_s", ArgKind::time_s, c, 3)};
             }
-            return format(
-                "Probe feed %.0f mm/min is beyond the knee at %.0f mm/min: the extra feed saves "
-                "only "
-                "%.3f s (under 1 %%) while overtravel and uncertainty grow",
-                mm_s_to_mm_min(a), mm_s_to_mm_min(b), c);
+            break;
         case WarningCode::uncertainty_over_target:
-            return format("Uncertainty %.4f mm exceeds the target %.4f mm", a, b);
+            m.text = QT_TRANSLATE_NOOP("Warning", "Uncertainty %1 exceeds the target %2");
+            m.args = {arg("uncertainty_mm", ArgKind::length_mm, a, 4),
+                      arg("target_mm", ArgKind::length_mm, b, 4)};
+            break;
         case WarningCode::calibration_feed_mismatch:
-            return format(
-                "Measuring at %.1f mm/min but calibrated at %.1f mm/min: the delay travel shifts "
-                "the "
-                "measured value by %.4f mm; calibrate at the measuring feed",
-                mm_s_to_mm_min(a), mm_s_to_mm_min(b), c);
+            m.text = QT_TRANSLATE_NOOP(
+                "Warning",
+                "Measuring at %1 but calibrated at %2: the delay travel shifts the measured value "
+                "by %3; calibrate at the measuring feed");
+            m.args = {arg("speed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 1),
+                      arg("calibration_speed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 1),
+                      arg("error_mm", ArgKind::length_mm, c, 4)};
+            break;
     }
-    return {};
+    return m;
+}
+
+std::string Warning::message() const {
+    return render(to_message());
 }
 
 // domain.md, "One touch": interface response t_i, controller latency t_c and,

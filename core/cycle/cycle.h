@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/message.h"
 #include "core/common/severity.h"
 #include "core/cycle/motion.h"
 #include "core/cycle/scenario.h"
@@ -54,8 +55,8 @@ enum class WarningCode {
 };
 const char* to_string(WarningCode code);
 
-// Numbers are kept and the message is formatted on demand, so evaluation
-// stays allocation-light; message() says what and by how much.
+// Numbers are kept and the message is built on demand, so evaluation stays
+// allocation-light; to_message() says what and by how much.
 struct Warning {
     WarningCode code{};
     Severity severity{};
@@ -68,7 +69,9 @@ struct Warning {
     // uncertainty_over_target:  a = uncertainty, b = target
     // calibration_feed_mismatch:a = measuring speed, b = calibration speed, c = error
     double a{0.0}, b{0.0}, c{0.0}, d{0.0};
-    std::string message() const;
+    // The message: code, template and the numbers above as named arguments.
+    Message to_message() const;
+    std::string message() const;  // in English: render(to_message())
 };
 
 // Where the probe is at a time in the cycle.

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/csv_writer.h"
+#include "core/common/message_json.h"
 #include "core/common/units.h"
 
 namespace probecycle {
@@ -20,9 +21,11 @@ std::string number(double value) {
 Json warnings_json(const std::vector<Warning>& warnings) {
     Json list = Json::array();
     for (const Warning& w : warnings) {
-        list.push_back({{"code", to_string(w.code)},
+        const Message m = w.to_message();
+        list.push_back({{"code", m.code},
                         {"severity", to_string(w.severity)},
-                        {"message", w.message()}});
+                        {"message", render(m)},
+                        {"values", message_values(m)}});
     }
     return list;
 }

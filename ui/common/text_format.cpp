@@ -4,9 +4,8 @@
 #include <QLocale>
 #include <cmath>
 
-#include "ui/common/language.h"
-#include "ui/common/parameter_info.h"
 #include "core/common/units.h"
+#include "ui/common/parameter_info.h"
 
 namespace probecycle::ui {
 
@@ -93,81 +92,56 @@ QString warning_title(WarningCode code) {
     return QString::fromUtf8(to_string(code));
 }
 
-QString warning_text(const Warning& w) {
-    if (current_language() == QLatin1String("en")) return QString::fromStdString(w.message());
-    // Meaning of a, b, c, d per code: cycle.h, struct Warning.
-    switch (w.code) {
-        case WarningCode::overtravel_limit: {
-            const QString percent = number(100.0 * w.a / w.b, 0);
-            return w.severity == Severity::error
-                       ? tr_warning(
-                             QT_TRANSLATE_NOOP(
-                                 "Warning",
-                                 "Overtravel %1 is %2 % of the probe's %3 limit: the probe or "
-                                 "stylus will be damaged; lower the feed or the delays"))
-                             .arg(format_mm(w.a), percent, format_mm(w.b))
-                       : tr_warning(QT_TRANSLATE_NOOP("Warning",
-                                                      "Overtravel %1 is %2 % of the probe's %3 "
-                                                      "limit: little margin left for the stylus"))
-                             .arg(format_mm(w.a), percent, format_mm(w.b));
-        }
-        case WarningCode::backoff_too_small:
-            return tr_warning(
-                       QT_TRANSLATE_NOOP(
-                           "Warning",
-                           "Backoff %1 is less than the first touch's overtravel plus reseat, "
-                           "%2: the probe may not reseat before the second touch"))
-                .arg(format_mm(w.a), format_mm(w.b));
-        case WarningCode::backoff_excess:
-            return tr_warning(
-                       QT_TRANSLATE_NOOP(
-                           "Warning",
-                           "Backoff %1 is more than the recommended %2 and wastes %3 per cycle"))
-                .arg(format_mm(w.a), format_mm(w.b), format_seconds(w.c));
-        case WarningCode::touch_while_accelerating: {
-            const char* text =
-                w.d > 0.5
-                    ? QT_TRANSLATE_NOOP("Warning",
-                                        "Second touch starts closer than the distance needed to "
-                                        "reach its feed: it triggers at %1 instead of %2, an error "
-                                        "of %3 against a calibration at full feed")
-                    : QT_TRANSLATE_NOOP(
-                          "Warning",
-                          "First touch starts closer than the distance needed to reach "
-                          "its feed: it triggers at %1 instead of %2, an error of %3 "
-                          "against a calibration at full feed");
-            return tr_warning(text).arg(format_feed(mm_s_to_mm_min(w.a)),
-                                        format_feed(mm_s_to_mm_min(w.b)), format_length(w.c));
-        }
-        case WarningCode::feed_beyond_knee:
-            if (w.c <= 0.0) {
-                return tr_warning(
-                           QT_TRANSLATE_NOOP(
-                               "Warning",
-                               "Probing feed %1 is beyond the knee at %2 and no faster: the "
-                               "cycle takes %3 longer, with more overtravel and uncertainty"))
-                    .arg(format_feed(mm_s_to_mm_min(w.a)), format_feed(mm_s_to_mm_min(w.b)),
-                         format_seconds(-w.c));
-            }
-            return tr_warning(QT_TRANSLATE_NOOP(
-                                  "Warning",
-                                  "Probing feed %1 is beyond the knee at %2: the extra feed saves "
-                                  "only %3 (under 1 %) while overtravel and uncertainty grow"))
-                .arg(format_feed(mm_s_to_mm_min(w.a)), format_feed(mm_s_to_mm_min(w.b)),
-                     format_seconds(w.c));
-        case WarningCode::uncertainty_over_target:
-            return tr_warning(QT_TRANSLATE_NOOP("Warning", "Uncertainty %1 exceeds the target %2"))
-                .arg(format_length(w.a), format_length(w.b));
-        case WarningCode::calibration_feed_mismatch:
-            return tr_warning(
-                       QT_TRANSLATE_NOOP(
-                           "Warning",
-                           "Measuring at %1 but calibrated at %2: the delay travel shifts the "
-                           "measured value by %3; calibrate at the measuring feed"))
-                .arg(format_feed(mm_s_to_mm_min(w.a)), format_feed(mm_s_to_mm_min(w.b)),
-                     format_length(w.c));
+QString format_arg(const MessageArg& a) {
+    switch (a.kind) {
+        case ArgKind::length_mm:
+            return format_length(a.number);
+        case ArgKind::time_s:
+            return format_seconds(a.number);
+        case ArgKind::feed_mm_min:
+            return format_feed(a.number);
+        case ArgKind::angle_deg:
+            return number(a.number, a.decimals < 0 ? 1 : a.decimals) + QChar(0x00B0);
+        case ArgKind::percent:
+            return with_unit(number(a.number, a.decimals < 0 ? 0 : a.decimals),
+                             QStringLiteral("%"));
+        case ArgKind::number:
+            return a.decimals < 0 ? QLocale().toString(a.number, 'g', 6)
+                                  : number(a.number, a.decimals);
+        case ArgKind::integer:
+            return QLocale().toString(static_cast<qlonglong>(std::llround(a.number)));
+        case ArgKind::text:
+            break;
     }
-    return QString::fromStdString(w.message());
+    return QString::fromStdString(a.text);
+}
+
+QString translate(const Message& message) {
+    const QString text = QCoreApplication::translate(message.context, message.text);
+    QStringList args;
+    args.reserve(static_cast<qsizetype>(message.args.size()));
+    for (const MessageArg& a : message.args) args << format_arg(a);
+    // One pass over %1..%9, as core's fill_template: an argument holding "%2"
+    // is not substituted again.
+    QString out;
+    out.reserve(text.size() + 16 * args.size());
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        const QChar ch = text.at(i);
+        if (ch == QLatin1Char('%') && i + 1 < text.size()) {
+            const int digit = text.at(i + 1).digitValue();
+            if (digit >= 1 && digit <= args.size()) {
+                out += args.at(digit - 1);
+                ++i;
+                continue;
+            }
+        }
+        out += ch;
+    }
+    return out;
+}
+
+QString warning_text(const Warning& w) {
+    return translate(w.to_message());
 }
 
 QString phase_label(Phase phase) {

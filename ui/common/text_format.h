@@ -17,8 +17,14 @@ QString format_feed(double mm_min);             // "1 850 mm/min"
 QString format_signed_seconds(double seconds);  // "+0.42 s" / "−0.42 s"
 QString format_signed_length(double mm);
 
-// A core warning in the interface language. English shows the core's own
-// message (the same text as the CLI); translations format the same numbers.
+// A core message in the interface language: its template translated
+// (QCoreApplication::translate with the message's context), each argument
+// formatted for the locale with its unit. Every text that comes from core
+// goes through here.
+QString translate(const Message& message);
+// One argument as the window writes it: "1.272 mm", "40 µs", "1,850 mm/min".
+QString format_arg(const MessageArg& arg);
+// A core warning in the interface language: translate(warning.to_message()).
 QString warning_text(const Warning& warning);
 // The colour of a severity, as "#rrggbb": the warnings panel and the lab's lists.
 const char* severity_colour(Severity severity);

@@ -1,0 +1,99 @@
+#include "core/common/message.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/common/number_format.h"
+
+namespace probecycle {
+
+MessageArg arg(std::string name, ArgKind kind, double value, int decimals) {
+    MessageArg a;
+    a.name = std::move(name);
+    a.kind = kind;
+    a.number = value;
+    a.decimals = decimals;
+    return a;
+}
+
+MessageArg text_arg(std::string name, std::string value) {
+    MessageArg a;
+    a.name = std::move(name);
+    a.kind = ArgKind::text;
+    a.text = std::move(value);
+    return a;
+}
+
+std::string fill_template(std::string_view text, const std::vector<std::string>& args) {
+    std::string out;
+    out.reserve(text.size() + 16 * args.size());
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char ch = text[i];
+        if (ch == '%' && i + 1 < text.size() && text[i + 1] >= '1' && text[i + 1] <= '9') {
+            const std::size_t index = static_cast<std::size_t>(text[i + 1] - '1');
+            if (index < args.size()) {
+                out += args[index];
+                ++i;
+                continue;
+            }
+        }
+        out += ch;
+    }
+    return out;
+}
+
+namespace {
+
+std::string plain_number(double value, int decimals) {
+    if (decimals < 0 || !std::isfinite(value)) return format_number(value, 6);
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    std::string text = buffer;
+    if (text == "-0" || text.rfind("-0.", 0) == 0) {
+        // A value that rounds to zero reads as 0, not -0.
+        if (text.find_first_not_of("-0.") == std::string::npos) text.erase(0, 1);
+    }
+    return text;
+}
+
+const char* unit_of(ArgKind kind) {
+    switch (kind) {
+        case ArgKind::length_mm:
+            return " mm";
+        case ArgKind::time_s:
+            return " s";
+        case ArgKind::feed_mm_min:
+            return " mm/min";
+        case ArgKind::angle_deg:
+            return " deg";
+        case ArgKind::percent:
+            return " %";
+        case ArgKind::number:
+        case ArgKind::integer:
+        case ArgKind::text:
+            break;
+    }
+    return "";
+}
+
+}  // namespace
+
+std::string render_arg(const MessageArg& a) {
+    switch (a.kind) {
+        case ArgKind::text:
+            return a.text;
+        case ArgKind::integer:
+            return plain_number(a.number, 0);
+        default:
+            return plain_number(a.number, a.decimals) + unit_of(a.kind);
+    }
+}
+
+std::string render(const Message& message) {
+    std::vector<std::string> args;
+    args.reserve(message.args.size());
+    for (const MessageArg& a : message.args) args.push_back(render_arg(a));
+    return fill_template(message.text, args);
+}
+
+}  // namespace probecycle

@@ -1,0 +1,18 @@
+#include "core/common/message_json.h"
+
+namespace probecycle {
+
+nlohmann::ordered_json message_values(const Message& message) {
+    nlohmann::ordered_json values = nlohmann::ordered_json::object();
+    for (const MessageArg& a : message.args) {
+        if (values.contains(a.name)) continue;
+        if (a.kind == ArgKind::text) {
+            values[a.name] = a.text;
+        } else {
+            values[a.name] = a.number;
+        }
+    }
+    return values;
+}
+
+}  // namespace probecycle

@@ -1,0 +1,65 @@
+#include "core/common/message.h"
+
+#include <gtest/gtest.h>
+
+#include "core/common/message_json.h"
+
+namespace probecycle {
+namespace {
+
+TEST(FillTemplate, ReplacesPlaceholdersInOnePass) {
+    EXPECT_EQ(fill_template("%2 before %1", {"a", "b"}), "b before a");
+    // An argument that holds a placeholder is not substituted again.
+    EXPECT_EQ(fill_template("%1 and %2", {"%2", "x"}), "%2 and x");
+    // A placeholder without an argument, a lone % and "% " stay as written.
+    EXPECT_EQ(fill_template("%3 is 50 % of %", {"a"}), "%3 is 50 % of %");
+}
+
+struct ArgCase {
+    ArgKind kind;
+    double value;
+    int decimals;
+    const char* english;
+};
+
+class RenderArg : public ::testing::TestWithParam<ArgCase> {};
+
+TEST_P(RenderArg, WritesTheValueWithItsUnit) {
+    const ArgCase& c = GetParam();
+    EXPECT_EQ(render_arg(arg("x", c.kind, c.value, c.decimals)), c.english);
+}
+
+// clang-format off
+INSTANTIATE_TEST_SUITE_P(Kinds, RenderArg, ::testing::Values(
+    ArgCase{ArgKind::length_mm,   1.27166,  3, "1.272 mm"},
+    ArgCase{ArgKind::length_mm,   0.004,   -1, "0.004 mm"},
+    ArgCase{ArgKind::time_s,      0.4249,   2, "0.42 s"},
+    ArgCase{ArgKind::feed_mm_min, 1999.96,  0, "2000 mm/min"},
+    ArgCase{ArgKind::angle_deg,   180.0,   -1, "180 deg"},
+    ArgCase{ArgKind::percent,     25.4,     0, "25 %"},
+    ArgCase{ArgKind::number,      3.25,    -1, "3.25"},
+    ArgCase{ArgKind::integer,     7.0,     -1, "7"},
+    // A value that rounds to zero never reads as -0.
+    ArgCase{ArgKind::length_mm,  -0.00001,  3, "0.000 mm"},
+    ArgCase{ArgKind::number,     -0.0,      0, "0"}));
+// clang-format on
+
+TEST(Render, FillsTheTemplateWithEnglishArguments) {
+    Message m;
+    m.code = "calibration_feed_mismatch";
+    m.context = "Warning";
+    m.text = QT_TRANSLATE_NOOP("Warning", "Measuring at %1 but calibrated at %2: off by %3");
+    m.args = {arg("speed_mm_min", ArgKind::feed_mm_min, 1500.0, 1),
+              arg("calibration_speed_mm_min", ArgKind::feed_mm_min, 500.0, 1),
+              arg("error_mm", ArgKind::length_mm, 0.0667, 4), text_arg("key", "probe.x")};
+    EXPECT_EQ(render(m),
+              "Measuring at 1500.0 mm/min but calibrated at 500.0 mm/min: off by 0.0667 mm");
+
+    const nlohmann::ordered_json values = message_values(m);
+    EXPECT_EQ(
+        values.dump(),
+        R"({"speed_mm_min":1500.0,"calibration_speed_mm_min":500.0,"error_mm":0.0667,"key":"probe.x"})");
+}
+
+}  // namespace
+}  // namespace probecycle
