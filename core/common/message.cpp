@@ -24,6 +24,14 @@ MessageArg text_arg(std::string name, std::string value) {
     return a;
 }
 
+MessageArg message_arg(std::string name, Message value) {
+    MessageArg a;
+    a.name = std::move(name);
+    a.kind = ArgKind::message;
+    a.nested.push_back(std::move(value));
+    return a;
+}
+
 std::string fill_template(std::string_view text, const std::vector<std::string>& args) {
     std::string out;
     out.reserve(text.size() + 16 * args.size());
@@ -71,6 +79,7 @@ const char* unit_of(ArgKind kind) {
         case ArgKind::number:
         case ArgKind::integer:
         case ArgKind::text:
+        case ArgKind::message:
             break;
     }
     return "";
@@ -82,6 +91,8 @@ std::string render_arg(const MessageArg& a) {
     switch (a.kind) {
         case ArgKind::text:
             return a.text;
+        case ArgKind::message:
+            return a.nested.empty() ? std::string() : render(a.nested.front());
         case ArgKind::integer:
             return plain_number(a.number, 0);
         default:

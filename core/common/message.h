@@ -36,13 +36,17 @@ enum class ArgKind {
     number,       // a plain number: a ratio, a count of cycles
     integer,      // a whole number: a count, a line number
     text,         // verbatim and never translated: a key, a file name, a value as given
+    message,      // another message, rendered (and translated) in place: "allowed: %3"
 };
+
+struct Message;
 
 struct MessageArg {
     std::string name;  // with its unit: "speed_mm_min", "line", "key"
     ArgKind kind{ArgKind::number};
-    double number{0.0};  // every kind but text
-    std::string text;    // text
+    double number{0.0};           // every kind but text
+    std::string text;             // text
+    std::vector<Message> nested;  // message: exactly one
     // English digits: decimals after the point, or -1 for up to 6 significant
     // digits without trailing zeros. The window formats by kind instead.
     int decimals{-1};
@@ -58,6 +62,7 @@ struct Message {
 // Argument builders: number(name, kind, value[, decimals]) and text(name, value).
 MessageArg arg(std::string name, ArgKind kind, double value, int decimals = -1);
 MessageArg text_arg(std::string name, std::string value);
+MessageArg message_arg(std::string name, Message value);
 
 // The template with %1..%9 replaced by `args` (each already formatted), in
 // one pass, so an argument that contains "%2" is not substituted again. A

@@ -8,6 +8,13 @@ nlohmann::ordered_json message_values(const Message& message) {
         if (values.contains(a.name)) continue;
         if (a.kind == ArgKind::text) {
             values[a.name] = a.text;
+        } else if (a.kind == ArgKind::message) {
+            // A nested message contributes its own values, under their names.
+            for (const Message& inner : a.nested) {
+                for (const auto& [name, value] : message_values(inner).items()) {
+                    if (!values.contains(name)) values[name] = value;
+                }
+            }
         } else {
             values[a.name] = a.number;
         }

@@ -10,7 +10,8 @@
 namespace probecycle {
 
 // {"speed_mm_min": 1500.0, "key": "machine.scan_period_s", ...}: numbers as
-// numbers, text as strings. A name given twice keeps the first value.
+// numbers, text as strings, a nested message's values merged in. A name
+// given twice keeps the first value.
 nlohmann::ordered_json message_values(const Message& message);
 
 }  // namespace probecycle

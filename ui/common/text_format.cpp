@@ -110,6 +110,8 @@ QString format_arg(const MessageArg& a) {
                                   : number(a.number, a.decimals);
         case ArgKind::integer:
             return QLocale().toString(static_cast<qlonglong>(std::llround(a.number)));
+        case ArgKind::message:
+            return a.nested.empty() ? QString() : translate(a.nested.front());
         case ArgKind::text:
             break;
     }

@@ -61,5 +61,20 @@ TEST(Render, FillsTheTemplateWithEnglishArguments) {
         R"({"speed_mm_min":1500.0,"calibration_speed_mm_min":500.0,"error_mm":0.0667,"key":"probe.x"})");
 }
 
+TEST(Render, NestsAMessageInPlace) {
+    Message range;
+    range.code = "range";
+    range.text = "a number from %1 to %2";
+    range.args = {arg("min_s", ArgKind::number, 0.0), arg("max_s", ArgKind::number, 0.1)};
+    Message m;
+    m.code = "out_of_range";
+    m.text = "%1: got %2; allowed: %3";
+    m.args = {text_arg("key", "machine.scan_period_s"), text_arg("value", "-1"),
+              message_arg("allowed", range)};
+    EXPECT_EQ(render(m), "machine.scan_period_s: got -1; allowed: a number from 0 to 0.1");
+    EXPECT_EQ(message_values(m).dump(),
+              R"({"key":"machine.scan_period_s","value":"-1","min_s":0.0,"max_s":0.1})");
+}
+
 }  // namespace
 }  // namespace probecycle
