@@ -11,8 +11,9 @@ nlohmann::ordered_json message_values(const Message& message) {
         } else if (a.kind == ArgKind::message) {
             // A nested message contributes its own values, under their names.
             for (const Message& inner : a.nested) {
-                for (const auto& [name, value] : message_values(inner).items()) {
-                    if (!values.contains(name)) values[name] = value;
+                const nlohmann::ordered_json inner_values = message_values(inner);
+                for (auto it = inner_values.begin(); it != inner_values.end(); ++it) {
+                    if (!values.contains(it.key())) values[it.key()] = it.value();
                 }
             }
         } else {
