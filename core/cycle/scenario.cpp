@@ -111,21 +111,42 @@ std::string number_text(double value) {
     return format_number(value, 12);
 }
 
-std::string range_text(const KeyInfo& info) {
-    return "a number from " + number_text(info.min) + " to " + number_text(info.max) + " " +
-           info.unit;
+Message range_text(const KeyInfo& info) {
+    Message m =
+        allowed_text("out_of_range", QT_TRANSLATE_NOOP("FieldError", "a number from %1 to %2 %3"));
+    m.args = {arg("min", ArgKind::number, info.min), arg("max", ArgKind::number, info.max),
+              text_arg("unit", info.unit)};
+    return m;
 }
 
-constexpr const char* kAccelWords = "one of time_constant, constant_accel, jerk_limited";
-constexpr const char* kStrategyWords = "one of single_touch, two_touch";
-constexpr const char* kFeatureWords = "one of surface, web, pocket, bore, boss";
-constexpr const char* kBoolWords = "true or false";
+Message one_of(const char* words) {
+    Message m = allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
+    m.args = {text_arg("allowed_words", words)};
+    return m;
+}
+
+Message bool_words() {
+    return allowed_text("not_a_bool", QT_TRANSLATE_NOOP("FieldError", "true or false"));
+}
 
 const char* enum_allowed(std::string_view key) {
-    if (key == "machine.accel_model") return kAccelWords;
-    if (key == "cycle.strategy") return kStrategyWords;
-    if (key == "cycle.feature") return kFeatureWords;
+    if (key == "machine.accel_model") return "time_constant, constant_accel, jerk_limited";
+    if (key == "cycle.strategy") return "single_touch, two_touch";
+    if (key == "cycle.feature") return "surface, web, pocket, bore, boss";
     return nullptr;
+}
+
+Message unknown_key(const std::string& section, const std::string& keys) {
+    Message m = allowed_text("unknown_key",
+                             QT_TRANSLATE_NOOP("FieldError", "unknown key; allowed in %1: %2"));
+    m.args = {text_arg("section", section), text_arg("allowed_keys", keys)};
+    return m;
+}
+
+Message with_detail(const char* code, const char* text, std::string detail) {
+    Message m = allowed_text(code, text);
+    m.args = {text_arg("detail", std::move(detail))};
+    return m;
 }
 
 // Sets an enum key from a word; false when the word is not one of the allowed.
@@ -177,11 +198,6 @@ std::string join(const std::vector<std::string>& words) {
 MotionLimits Scenario::motion_limits() const {
     return {machine.accel_model, machine.time_constant_s, machine.max_accel_mm_s2,
             machine.max_jerk_mm_s3};
-}
-
-std::string FieldError::message() const {
-    if (value.empty()) return key + ": " + allowed;
-    return key + ": got " + value + "; allowed: " + allowed;
 }
 
 namespace {
@@ -238,10 +254,12 @@ std::vector<FieldError> validate(const Scenario& scenario) {
     const Cycle& c = scenario.cycle;
     if ((c.feature == Feature::pocket || c.feature == Feature::bore) &&
         !(c.feature_size_mm > 2.0 * c.approach_mm)) {
-        errors.push_back({"cycle.feature_size_mm", number_text(c.feature_size_mm),
-                          "more than twice cycle.approach_mm (" +
-                              number_text(2.0 * c.approach_mm) + " mm) for a " +
-                              to_string(c.feature)});
+        Message allowed = allowed_text(
+            "feature_narrower_than_approach",
+            QT_TRANSLATE_NOOP("FieldError", "more than twice cycle.approach_mm (%1) for a %2"));
+        allowed.args = {arg("min_size_mm", ArgKind::length_mm, 2.0 * c.approach_mm),
+                        text_arg("feature", to_string(c.feature))};
+        errors.push_back({"cycle.feature_size_mm", number_text(c.feature_size_mm), allowed});
     }
     return errors;
 }
@@ -257,24 +275,42 @@ Scenario scenario_from_json(std::string_view text) {
         root = Json::parse(text.begin(), text.end());
     } catch (const nlohmann::json::parse_error& e) {
         // nlohmann's message names the line and column.
-        throw ScenarioError({{"file", "", std::string("malformed JSON: ") + e.what()}});
+        throw ScenarioError(
+            {{"file", "",
+              with_detail("malformed_json", QT_TRANSLATE_NOOP("FieldError", "malformed JSON: %1"),
+                          e.what())}});
     } catch (const nlohmann::json::exception& e) {
         // e.g. out_of_range.406 for a number such as 1e400 that no double holds.
-        throw ScenarioError({{"file", "", std::string("a number out of range: ") + e.what()}});
+        throw ScenarioError(
+            {{"file", "",
+              with_detail("number_overflow",
+                          QT_TRANSLATE_NOOP("FieldError", "a number out of range: %1"),
+                          e.what())}});
     }
     if (!root.is_object()) {
-        throw ScenarioError({{"file", "", "a JSON object with sections machine, probe, cycle"}});
+        throw ScenarioError({{"file", "",
+                              allowed_text("not_an_object",
+                                           QT_TRANSLATE_NOOP("FieldError",
+                                                             "a JSON object with sections machine, "
+                                                             "probe, cycle"))}});
     }
     Scenario scenario;
     std::vector<FieldError> errors;
     for (const auto& [section, body] : root.items()) {
         const std::vector<std::string>& keys = section_keys(section);
         if (keys.empty()) {
-            errors.push_back({section, "", "unknown section; allowed: machine, probe, cycle"});
+            errors.push_back(
+                {section, "",
+                 allowed_text(
+                     "unknown_section",
+                     QT_TRANSLATE_NOOP("FieldError",
+                                       "unknown section; allowed: machine, probe, cycle"))});
             continue;
         }
         if (!body.is_object()) {
-            errors.push_back({section, body.dump(), "an object of keys"});
+            errors.push_back({section, body.dump(),
+                              allowed_text("not_an_object",
+                                           QT_TRANSLATE_NOOP("FieldError", "an object of keys"))});
             continue;
         }
         for (const auto& [name, value] : body.items()) {
@@ -287,17 +323,16 @@ Scenario scenario_from_json(std::string_view text) {
                 }
             } else if (const char* words = enum_allowed(dotted)) {
                 if (!value.is_string() || !set_enum(scenario, dotted, value.get<std::string>())) {
-                    errors.push_back({dotted, value.dump(), words});
+                    errors.push_back({dotted, value.dump(), one_of(words)});
                 }
             } else if (dotted == "machine.latched_input") {
                 if (!value.is_boolean()) {
-                    errors.push_back({dotted, value.dump(), kBoolWords});
+                    errors.push_back({dotted, value.dump(), bool_words()});
                 } else {
                     scenario.machine.latched_input = value.get<bool>();
                 }
             } else {
-                errors.push_back(
-                    {dotted, "", "unknown key; allowed in " + section + ": " + join(keys)});
+                errors.push_back({dotted, "", unknown_key(section, join(keys))});
             }
         }
     }
@@ -334,7 +369,9 @@ std::string scenario_to_json(const Scenario& scenario) {
 void apply_setting(Scenario& scenario, std::string_view assignment) {
     const std::size_t eq = assignment.find('=');
     if (eq == std::string_view::npos || eq == 0) {
-        throw ScenarioError({{std::string(assignment), "", "section.key=value"}});
+        throw ScenarioError({{std::string(assignment), "",
+                              allowed_text("not_an_assignment",
+                                           QT_TRANSLATE_NOOP("FieldError", "section.key=value"))}});
     }
     const std::string key(assignment.substr(0, eq));
     const std::string value(assignment.substr(eq + 1));
@@ -349,14 +386,14 @@ void apply_setting(Scenario& scenario, std::string_view assignment) {
         }
         k->ref(scenario) = number;
     } else if (const char* words = enum_allowed(key)) {
-        if (!set_enum(scenario, key, value)) throw ScenarioError({{key, value, words}});
+        if (!set_enum(scenario, key, value)) throw ScenarioError({{key, value, one_of(words)}});
     } else if (key == "machine.latched_input") {
         if (value == "true") {
             scenario.machine.latched_input = true;
         } else if (value == "false") {
             scenario.machine.latched_input = false;
         } else {
-            throw ScenarioError({{key, value, kBoolWords}});
+            throw ScenarioError({{key, value, bool_words()}});
         }
     } else {
         const std::size_t dot = key.find('.');
@@ -364,8 +401,11 @@ void apply_setting(Scenario& scenario, std::string_view assignment) {
         const std::vector<std::string>& keys = section_keys(section);
         throw ScenarioError(
             {{key, "",
-              keys.empty() ? "unknown key; sections are machine, probe, cycle"
-                           : "unknown key; allowed in " + section + ": " + join(keys)}});
+              keys.empty() ? allowed_text("unknown_key",
+                                          QT_TRANSLATE_NOOP("FieldError",
+                                                            "unknown key; sections are machine, "
+                                                            "probe, cycle"))
+                           : unknown_key(section, join(keys))}});
     }
 }
 

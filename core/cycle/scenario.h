@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/common/field_error.h"
 #include "core/cycle/motion.h"
 
 namespace probecycle {
@@ -60,14 +61,6 @@ struct Scenario {
     Cycle cycle;
 
     MotionLimits motion_limits() const;
-};
-
-// One problem with one key: the dotted key, the value as given, what is allowed.
-struct FieldError {
-    std::string key;      // e.g. "machine.scan_period_s"
-    std::string value;    // the offending value as text
-    std::string allowed;  // e.g. "a number in [0, 0.1]"
-    std::string message() const;
 };
 
 class ScenarioError : public std::runtime_error {

@@ -105,15 +105,21 @@ std::vector<FieldError> validate(const CompensationSetup& setup) {
         const bool above = min_open ? value > min : value >= min;
         const bool below = max_open ? value < max : value <= max;
         if (!(above && below)) {
-            errors.push_back({key, format_number(value),
-                              std::string("a number in ") + (min_open ? "(" : "[") +
-                                  format_number(min) + ", " + format_number(max) +
-                                  (max_open ? ")" : "]")});
+            Message allowed = allowed_text(
+                "out_of_range",
+                min_open ? (max_open ? QT_TRANSLATE_NOOP("FieldError", "a number in (%1, %2)")
+                                     : QT_TRANSLATE_NOOP("FieldError", "a number in (%1, %2]"))
+                         : (max_open ? QT_TRANSLATE_NOOP("FieldError", "a number in [%1, %2)")
+                                     : QT_TRANSLATE_NOOP("FieldError", "a number in [%1, %2]")));
+            allowed.args = {arg("min", ArgKind::number, min), arg("max", ArgKind::number, max)};
+            errors.push_back({key, format_number(value), allowed});
         }
     };
     check("feed-mm-min", setup.feed_mm_min, 0.0, 100000.0, true, false);
     if (setup.direction != 1 && setup.direction != -1) {
-        errors.push_back({"direction", std::to_string(setup.direction), "+1 or -1"});
+        errors.push_back(
+            {"direction", std::to_string(setup.direction),
+             allowed_text("not_a_direction", QT_TRANSLATE_NOOP("FieldError", "+1 or -1"))});
     }
     check("speed-fraction", setup.braking_speed_fraction, 0.0, 1.0, true, false);
     check("interpolation-period-s", setup.interpolation_period_s, 1e-5, 0.1, false, false);
@@ -130,10 +136,13 @@ std::vector<FieldError> validate(const CompensationSetup& setup) {
             mm_min_to_mm_s(setup.feed_mm_min) * setup.interpolation_period_s * setup.counts_per_mm;
         const double half_range = std::ldexp(1.0, setup.counter_bits - 1);
         if (counts_per_cycle >= half_range) {
-            errors.push_back({"counter-bits", std::to_string(setup.counter_bits),
-                              "a counter wide enough that one cycle (" +
-                                  format_number(counts_per_cycle) +
-                                  " counts) moves it by less than half its range"});
+            Message allowed = allowed_text(
+                "counter_too_narrow",
+                QT_TRANSLATE_NOOP("FieldError",
+                                  "a counter wide enough that one cycle (%1 counts) moves it by "
+                                  "less than half its range"));
+            allowed.args = {arg("counts_per_cycle", ArgKind::number, counts_per_cycle)};
+            errors.push_back({"counter-bits", std::to_string(setup.counter_bits), allowed});
         }
     }
     return errors;

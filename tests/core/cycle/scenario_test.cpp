@@ -78,15 +78,15 @@ void expect_names(const std::optional<ScenarioError>& error, const std::string& 
         EXPECT_TRUE(contains(it->value, value)) << "value '" << it->value << "' for " << key;
         EXPECT_TRUE(contains(what, value)) << what;
     }
-    EXPECT_FALSE(it->allowed.empty()) << what;
-    EXPECT_TRUE(contains(what, it->allowed)) << what;
+    EXPECT_FALSE(render(it->allowed).empty()) << what;
+    EXPECT_TRUE(contains(what, render(it->allowed))) << what;
     for (const std::string& word : allowed_words) {
-        EXPECT_TRUE(contains(it->allowed, word))
-            << "allowed '" << it->allowed << "' lacks " << word;
+        EXPECT_TRUE(contains(render(it->allowed), word))
+            << "allowed '" << render(it->allowed) << "' lacks " << word;
     }
     const std::string message = it->message();
     EXPECT_TRUE(contains(message, key)) << message;
-    EXPECT_TRUE(contains(message, it->allowed)) << message;
+    EXPECT_TRUE(contains(message, render(it->allowed))) << message;
 }
 
 // Field-by-field equality through the public accessors.
@@ -400,9 +400,9 @@ TEST(ScenarioJson, EveryKeyBelowItsMinimumOrAboveItsMaximumIsRejected) {
             const auto it = std::find_if(error->errors().begin(), error->errors().end(),
                                          [&](const FieldError& e) { return e.key == key; });
             // The allowed range is spelled out.
-            EXPECT_TRUE(mentions_number(it->allowed, info.min)) << it->allowed;
+            EXPECT_TRUE(mentions_number(render(it->allowed), info.min)) << render(it->allowed);
             if (std::isfinite(info.max)) {
-                EXPECT_TRUE(mentions_number(it->allowed, info.max)) << it->allowed;
+                EXPECT_TRUE(mentions_number(render(it->allowed), info.max)) << render(it->allowed);
             }
             EXPECT_TRUE(mentions_number(it->value, value)) << it->value;
         }
@@ -463,7 +463,8 @@ TEST(ScenarioValidate, NanAndInfinityAreRejected) {
 }
 
 TEST(FieldError, MessageNamesKeyValueAndAllowed) {
-    const FieldError e{"machine.scan_period_s", "-1", "a number in [0, 0.1]"};
+    const FieldError e{"machine.scan_period_s", "-1",
+                       allowed_text("out_of_range", "a number in [0, 0.1]")};
     const std::string m = e.message();
     EXPECT_NE(m.find("machine.scan_period_s"), std::string::npos) << m;
     EXPECT_NE(m.find("-1"), std::string::npos) << m;

@@ -309,7 +309,7 @@ TEST(CompensationSetup, ValidationNamesTheField) {
     const auto errors = validate(setup);
     ASSERT_EQ(errors.size(), 3u);
     EXPECT_EQ(errors[0].key, "lag-cycles");
-    EXPECT_EQ(errors[0].allowed, "a number in [0, 49]");
+    EXPECT_EQ(render(errors[0].allowed), "a number in [0, 49]");
     EXPECT_EQ(errors[1].key, "trigger-phase");
     EXPECT_EQ(errors[2].key, "counter-bits");
 

@@ -1,0 +1,26 @@
+#pragma once
+
+// One problem with one input field: a scenario key, a CLI option, a column.
+// It names the field, the value as given and what is allowed; the allowed
+// part is a message of its own, so the window can translate it.
+
+#include <string>
+
+#include "core/common/message.h"
+
+namespace probecycle {
+
+struct FieldError {
+    std::string key;    // e.g. "machine.scan_period_s"
+    std::string value;  // the offending value as text; empty when there is none to show
+    Message allowed;    // e.g. "a number from 0 to 0.1 s"
+
+    // "%1: got %2; allowed: %3", or "%1: %3" without a value.
+    Message to_message() const;
+    std::string message() const;  // in English
+};
+
+// An "allowed" message with no arguments (its text marked for translation).
+Message allowed_text(const char* code, const char* text);
+
+}  // namespace probecycle
