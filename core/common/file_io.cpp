@@ -14,6 +14,31 @@
 
 namespace probecycle {
 
+namespace {
+
+Message file_message(FileError::Action action, const std::string& path, const std::string& reason) {
+    Message m;
+    m.code = action == FileError::Action::write ? "cannot_write" : "cannot_read";
+    m.context = "FileError";
+    m.text = action == FileError::Action::write
+                 ? QT_TRANSLATE_NOOP("FileError", "cannot write %1: %2")
+                 : QT_TRANSLATE_NOOP("FileError", "cannot open %1: %2");
+    m.args = {text_arg("path", path), text_arg("reason", reason)};
+    return m;
+}
+
+}  // namespace
+
+FileError::FileError(Action action, std::string path, std::string reason)
+    : std::runtime_error(render(file_message(action, path, reason))),
+      action_(action),
+      path_(std::move(path)),
+      reason_(std::move(reason)) {}
+
+Message FileError::to_message() const {
+    return file_message(action_, path_, reason_);
+}
+
 void write_file_atomically(const std::string& path_given, std::string_view contents) {
     // Through a symbolic link to its target, so the link survives the rename;
     // an existing file keeps its permissions.
@@ -31,7 +56,7 @@ void write_file_atomically(const std::string& path_given, std::string_view conte
     std::string temp = dir + "/." + base + ".tmp-XXXXXX";
     const int fd = ::mkstemp(temp.data());
     if (fd < 0) {
-        throw std::runtime_error("cannot write " + path_given + ": " + std::strerror(errno));
+        throw FileError(FileError::Action::write, path_given, std::strerror(errno));
     }
     const char* data = contents.data();
     std::size_t left = contents.size();
@@ -53,17 +78,16 @@ void write_file_atomically(const std::string& path_given, std::string_view conte
     if (!ok || std::rename(temp.c_str(), path.c_str()) != 0) {
         const int err = ok ? errno : saved_errno;
         ::unlink(temp.c_str());
-        throw std::runtime_error("cannot write " + path_given + ": " +
-                                 std::strerror(err ? err : EIO));
+        throw FileError(FileError::Action::write, path_given, std::strerror(err ? err : EIO));
     }
 }
 
 std::string read_text_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot open " + path + ": " + std::strerror(errno));
+    if (!in) throw FileError(FileError::Action::read, path, std::strerror(errno));
     std::ostringstream text;
     text << in.rdbuf();
-    if (in.bad()) throw std::runtime_error("cannot read " + path);
+    if (in.bad()) throw FileError(FileError::Action::read, path, std::strerror(EIO));
     return text.str();
 }
 

@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QBuffer>
 #include <QCloseEvent>
 #include <QDir>
 #include <QFile>
@@ -15,7 +16,6 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QSaveFile>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
@@ -29,14 +29,15 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "core/cycle/cycle_report.h"
 #include "ui/common/app_icon.h"
-#include "ui/cycle/cycle_charts.h"
-#include "ui/lab/calibration_tab.h"
-#include "ui/lab/latency_tab.h"
+#include "ui/common/file_write.h"
 #include "ui/common/language.h"
 #include "ui/common/parameter_info.h"
+#include "ui/cycle/cycle_charts.h"
 #include "ui/cycle/parameter_panel.h"
-#include "core/cycle/cycle_report.h"
+#include "ui/lab/calibration_tab.h"
+#include "ui/lab/latency_tab.h"
 #include "ui/window/scenario_command.h"
 
 namespace probecycle::ui {
@@ -567,12 +568,10 @@ bool MainWindow::open_scenario(const QString& path) {
 }
 
 bool MainWindow::save_scenario(const QString& path) {
-    QSaveFile file(path);
-    const QByteArray bytes = QByteArray::fromStdString(scenario_to_json(scenario_));
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+    QString error;
+    if (!write_file(path, QByteArray::fromStdString(scenario_to_json(scenario_)), error)) {
         report_error(tr("Could not save the scenario"),
-                     tr("%1 could not be written: %2")
-                         .arg(QDir::toNativeSeparators(path), file.errorString()));
+                     tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
     current_file_ = QFileInfo(path).absoluteFilePath();
@@ -594,12 +593,10 @@ bool MainWindow::export_csv_report(const QString& path) {
     }
     const std::vector<double> feeds = report_feeds(c.scenario, c.analysis);
     const std::string csv = csv_report(c.scenario, c.analysis, sweep_feeds(c.scenario, feeds));
-    QSaveFile file(path);
-    const QByteArray bytes = QByteArray::fromStdString(csv);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+    QString error;
+    if (!write_file(path, QByteArray::fromStdString(csv), error)) {
         report_error(tr("Could not export the report"),
-                     tr("%1 could not be written: %2")
-                         .arg(QDir::toNativeSeparators(path), file.errorString()));
+                     tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
     statusBar()->showMessage(tr("Report written to %1").arg(QDir::toNativeSeparators(path)), 4000);
@@ -609,11 +606,15 @@ bool MainWindow::export_csv_report(const QString& path) {
 bool MainWindow::export_charts_png(const QString& path) {
     recompute_now();
     const QImage image = charts_->grab().toImage();
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit()) {
+    QByteArray png;
+    QBuffer buffer(&png);
+    QString error;
+    if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG")) {
+        error = tr("the image could not be encoded as PNG");
+    }
+    if (!error.isEmpty() || !write_file(path, png, error)) {
         report_error(tr("Could not export the charts"),
-                     tr("%1 could not be written: %2")
-                         .arg(QDir::toNativeSeparators(path), file.errorString()));
+                     tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
     statusBar()->showMessage(tr("Charts written to %1").arg(QDir::toNativeSeparators(path)), 4000);

@@ -13,6 +13,8 @@
 #include <QSettings>
 #include <QSlider>
 #include <QTabWidget>
+#include <QDir>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <map>
@@ -284,6 +286,35 @@ TEST_F(MainWindowTest, SaveAndOpenRoundTrip) {
     QFile file(path);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     EXPECT_EQ(scenario_to_json(scenario_from_json(file.readAll().toStdString())), edited);
+}
+
+// The window writes with core's atomic writer, as the CLI does: saving
+// through a symbolic link keeps the link, a file keeps its permissions, and a
+// failed write keeps the old file.
+TEST_F(MainWindowTest, SaveWritesThroughLinksKeepsPermissionsAndOldFileOnFailure) {
+    QTemporaryDir dir;
+    const QString target = dir.filePath(QStringLiteral("target.json"));
+    const QString link = dir.filePath(QStringLiteral("link.json"));
+    ASSERT_TRUE(window_->save_scenario(target));
+    ASSERT_TRUE(QFile::setPermissions(target, QFile::ReadOwner | QFile::WriteOwner));
+    ASSERT_TRUE(QFile::link(target, link));
+
+    drag_to_fraction(slider("cycle.probe_feed_mm_min"), 0.7);
+    ASSERT_TRUE(window_->save_scenario(link)) << window_->last_error().toStdString();
+    EXPECT_TRUE(QFileInfo(link).isSymLink());
+    EXPECT_EQ(QFile::permissions(target) & (QFile::ReadGroup | QFile::ReadOther),
+              QFile::Permissions());
+    QFile file(target);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_EQ(file.readAll().toStdString(), json());
+    file.close();
+
+    // A directory that does not exist: refused, named, nothing written.
+    const QString missing = dir.filePath(QStringLiteral("no/such/dir/s.json"));
+    EXPECT_FALSE(window_->save_scenario(missing));
+    EXPECT_TRUE(window_->last_error().contains(QStringLiteral("no/such/dir")))
+        << window_->last_error().toStdString();
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 2);
 }
 
 TEST_F(MainWindowTest, BadFileNamesTheProblemAndKeepsTheCurrentScenario) {

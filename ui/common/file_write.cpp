@@ -1,0 +1,23 @@
+#include "ui/common/file_write.h"
+
+#include <QFile>
+#include <string_view>
+
+#include "core/common/file_io.h"
+#include "ui/common/text_format.h"
+
+namespace probecycle::ui {
+
+bool write_file(const QString& path, const QByteArray& bytes, QString& error) {
+    try {
+        write_file_atomically(
+            QFile::encodeName(path).toStdString(),
+            std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    } catch (const FileError& e) {
+        error = QString::fromLocal8Bit(e.reason().c_str());
+        return false;
+    }
+    return true;
+}
+
+}  // namespace probecycle::ui
