@@ -2,6 +2,100 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru_RU">
 <context>
+    <name>FieldError</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: got %2; allowed: %3</source>
+        <translation>%1: получено %2; допустимо: %3</translation>
+    </message>
+    <message>
+        <source>a number from %1 to %2 %3</source>
+        <translation>число от %1 до %2 %3</translation>
+    </message>
+    <message>
+        <source>one of %1</source>
+        <translation>одно из: %1</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true или false</translation>
+    </message>
+    <message>
+        <source>unknown key; allowed in %1: %2</source>
+        <translation>неизвестный ключ; допустимые в %1: %2</translation>
+    </message>
+    <message>
+        <source>more than twice cycle.approach_mm (%1) for a %2</source>
+        <translation>больше удвоенного cycle.approach_mm (%1) для %2</translation>
+    </message>
+    <message>
+        <source>malformed JSON: %1</source>
+        <translation>ошибка в JSON: %1</translation>
+    </message>
+    <message>
+        <source>a number out of range: %1</source>
+        <translation>число вне допустимого диапазона: %1</translation>
+    </message>
+    <message>
+        <source>a JSON object with sections machine, probe, cycle</source>
+        <translation>объект JSON с разделами machine, probe, cycle</translation>
+    </message>
+    <message>
+        <source>unknown section; allowed: machine, probe, cycle</source>
+        <translation>неизвестный раздел; допустимые: machine, probe, cycle</translation>
+    </message>
+    <message>
+        <source>an object of keys</source>
+        <translation>объект с ключами</translation>
+    </message>
+    <message>
+        <source>section.key=value</source>
+        <translation>раздел.ключ=значение (section.key=value)</translation>
+    </message>
+    <message>
+        <source>unknown key; sections are machine, probe, cycle</source>
+        <translation>неизвестный ключ; разделы: machine, probe, cycle</translation>
+    </message>
+    <message>
+        <source>a number in (%1, %2)</source>
+        <translation>число в интервале (%1, %2)</translation>
+    </message>
+    <message>
+        <source>a number in (%1, %2]</source>
+        <translation>число в интервале (%1, %2]</translation>
+    </message>
+    <message>
+        <source>a number in [%1, %2)</source>
+        <translation>число в интервале [%1, %2)</translation>
+    </message>
+    <message>
+        <source>a number in [%1, %2]</source>
+        <translation>число в интервале [%1, %2]</translation>
+    </message>
+    <message>
+        <source>+1 or -1</source>
+        <translation>+1 или -1</translation>
+    </message>
+    <message>
+        <source>a counter wide enough that one cycle (%1 counts) moves it by less than half its range</source>
+        <translation>счётчик такой разрядности, чтобы за один период (%1 импульсов) он изменялся меньше чем на половину своего диапазона</translation>
+    </message>
+</context>
+<context>
+    <name>FileError</name>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>не удаётся записать %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>не удаётся открыть %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>Parameter</name>
     <message>
         <source>Time constant</source>
@@ -1445,6 +1539,10 @@
     <message>
         <source>Latency</source>
         <translation>Задержка</translation>
+    </message>
+    <message>
+        <source>the image could not be encoded as PNG</source>
+        <translation>не удалось закодировать изображение в PNG</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,100 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>FieldError</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1: got %2; allowed: %3</source>
+        <translation>%1：值为 %2；允许：%3</translation>
+    </message>
+    <message>
+        <source>a number from %1 to %2 %3</source>
+        <translation>%1 到 %2 %3 之间的数值</translation>
+    </message>
+    <message>
+        <source>one of %1</source>
+        <translation>以下之一：%1</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true 或 false</translation>
+    </message>
+    <message>
+        <source>unknown key; allowed in %1: %2</source>
+        <translation>未知的键；%1 中允许：%2</translation>
+    </message>
+    <message>
+        <source>more than twice cycle.approach_mm (%1) for a %2</source>
+        <translation>对于 %2，须大于 cycle.approach_mm 的两倍（%1）</translation>
+    </message>
+    <message>
+        <source>malformed JSON: %1</source>
+        <translation>JSON 格式错误：%1</translation>
+    </message>
+    <message>
+        <source>a number out of range: %1</source>
+        <translation>数值超出范围：%1</translation>
+    </message>
+    <message>
+        <source>a JSON object with sections machine, probe, cycle</source>
+        <translation>含 machine、probe、cycle 三部分的 JSON 对象</translation>
+    </message>
+    <message>
+        <source>unknown section; allowed: machine, probe, cycle</source>
+        <translation>未知的部分；允许：machine、probe、cycle</translation>
+    </message>
+    <message>
+        <source>an object of keys</source>
+        <translation>由键组成的对象</translation>
+    </message>
+    <message>
+        <source>section.key=value</source>
+        <translation>部分.键=值（section.key=value）</translation>
+    </message>
+    <message>
+        <source>unknown key; sections are machine, probe, cycle</source>
+        <translation>未知的键；部分为 machine、probe、cycle</translation>
+    </message>
+    <message>
+        <source>a number in (%1, %2)</source>
+        <translation>(%1, %2) 内的数值</translation>
+    </message>
+    <message>
+        <source>a number in (%1, %2]</source>
+        <translation>(%1, %2] 内的数值</translation>
+    </message>
+    <message>
+        <source>a number in [%1, %2)</source>
+        <translation>[%1, %2) 内的数值</translation>
+    </message>
+    <message>
+        <source>a number in [%1, %2]</source>
+        <translation>[%1, %2] 内的数值</translation>
+    </message>
+    <message>
+        <source>+1 or -1</source>
+        <translation>+1 或 -1</translation>
+    </message>
+    <message>
+        <source>a counter wide enough that one cycle (%1 counts) moves it by less than half its range</source>
+        <translation>位数足够的计数器：一个周期（%1 个计数）的变化小于其量程的一半</translation>
+    </message>
+</context>
+<context>
+    <name>FileError</name>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>Parameter</name>
     <message>
         <source>Time constant</source>
@@ -1445,6 +1539,10 @@
     <message>
         <source>Latency</source>
         <translation>延迟</translation>
+    </message>
+    <message>
+        <source>the image could not be encoded as PNG</source>
+        <translation>无法将图像编码为 PNG</translation>
     </message>
 </context>
 <context>
