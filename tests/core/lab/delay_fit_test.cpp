@@ -356,7 +356,6 @@ TEST_P(DelayFileErrors, NameTheLine) {
     }
 }
 
-constexpr const char* kHeader = "axis,direction,feed_mm_min,measured_mm\n";
 
 // clang-format off
 INSTANTIATE_TEST_SUITE_P(
@@ -379,9 +378,26 @@ INSTANTIATE_TEST_SUITE_P(
     LatencyCaseName{});
 // clang-format on
 
-TEST(DelayCsv, HeaderConstantMatches) {
-    // The header the tests and the CLI document.
-    EXPECT_NO_THROW(parse_delay_csv(std::string(kHeader) + "X,1,100,0\n"));
+TEST(DelayCsv, ColumnsAreFoundByNameInAnyOrderWithExtraColumns) {
+    // The documented header, shuffled and with a column of the user's own: each
+    // value lands in its field, the axis upper-cased, the line remembered.
+    const std::vector<DelayTouch> touches = parse_delay_csv(
+        "# exported by hand\n"
+        "measured_mm,note,feed_mm_min,direction,axis\n"
+        "10.25,first,1500,-1,y\n"
+        "\n"
+        "-3.5,second,30,+1,Z2\n");
+    ASSERT_EQ(touches.size(), 2u);
+    EXPECT_EQ(touches[0].axis, "Y");
+    EXPECT_EQ(touches[0].direction, -1);
+    EXPECT_DOUBLE_EQ(touches[0].feed_mm_min, 1500.0);
+    EXPECT_DOUBLE_EQ(touches[0].measured_mm, 10.25);
+    EXPECT_EQ(touches[0].line, 3u);
+    EXPECT_EQ(touches[1].axis, "Z2");
+    EXPECT_EQ(touches[1].direction, 1);
+    EXPECT_DOUBLE_EQ(touches[1].feed_mm_min, 30.0);
+    EXPECT_DOUBLE_EQ(touches[1].measured_mm, -3.5);
+    EXPECT_EQ(touches[1].line, 5u);
 }
 
 }  // namespace
