@@ -94,6 +94,22 @@
         <source>cannot open %1: %2</source>
         <translation>не удаётся открыть %1: %2</translation>
     </message>
+    <message>
+        <source>it is a directory</source>
+        <translation>это папка</translation>
+    </message>
+    <message>
+        <source>it is not a regular file (a pipe, a device or a socket); ProbeCycle writes only regular files</source>
+        <translation>это не обычный файл (канал, устройство или сокет); ProbeCycle записывает только обычные файлы</translation>
+    </message>
+    <message>
+        <source>it is larger than %1 MiB, the limit for an input file (%2 MiB read)</source>
+        <translation>файл больше предела для входного файла, %1 МиБ (прочитано %2 МиБ)</translation>
+    </message>
+    <message>
+        <source>it is a symbolic link to a folder that does not exist</source>
+        <translation>это символическая ссылка на несуществующую папку</translation>
+    </message>
 </context>
 <context>
     <name>Parameter</name>

@@ -94,6 +94,22 @@
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
+    <message>
+        <source>it is a directory</source>
+        <translation>它是一个文件夹</translation>
+    </message>
+    <message>
+        <source>it is not a regular file (a pipe, a device or a socket); ProbeCycle writes only regular files</source>
+        <translation>它不是普通文件（而是管道、设备或套接字）；ProbeCycle 只写入普通文件</translation>
+    </message>
+    <message>
+        <source>it is larger than %1 MiB, the limit for an input file (%2 MiB read)</source>
+        <translation>文件大于输入文件的上限 %1 MiB（已读取 %2 MiB）</translation>
+    </message>
+    <message>
+        <source>it is a symbolic link to a folder that does not exist</source>
+        <translation>它是指向不存在的文件夹的符号链接</translation>
+    </message>
 </context>
 <context>
     <name>Parameter</name>

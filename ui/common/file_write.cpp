@@ -14,7 +14,7 @@ bool write_file(const QString& path, const QByteArray& bytes, QString& error) {
             QFile::encodeName(path).toStdString(),
             std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
     } catch (const FileError& e) {
-        error = QString::fromLocal8Bit(e.reason().c_str());
+        error = translate(e.reason());
         return false;
     }
     return true;
