@@ -98,7 +98,8 @@ Message Warning::to_message() const {
                                              "little margin left for the stylus");
             m.args = {arg("overtravel_mm", ArgKind::length_mm, a, 3),
                       arg("percent_of_limit", ArgKind::number, 100.0 * a / b, 0),
-                      arg("limit_mm", ArgKind::length_mm, b, 3)};
+                      arg("limit_mm", ArgKind::length_mm, b, 3),
+                      arg("touch", ArgKind::integer, d > 1.5 ? 2.0 : 1.0)};
             break;
         case WarningCode::backoff_too_small:
             m.text = QT_TRANSLATE_NOOP(
@@ -495,6 +496,10 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
         b.replay_sequence(sequence_phases, sequence_segments);
     }
     const double worst_overtravel = std::max(first.overtravel_mm, measuring.overtravel_mm);
+    // Two-touch: a faster first touch may overtravel less than the slow second
+    // one when a fixed backoff leaves the second approach too short to brake
+    // from; the user must see which touch sets the worst.
+    r.overtravel_touch_ = two_touch && measuring.overtravel_mm > first.overtravel_mm ? 2 : 1;
 
     r.total_s_ = b.now();
     r.overtravel_mm_ = worst_overtravel;
@@ -508,10 +513,10 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     std::vector<Warning>& w = r.warnings_;
     if (worst_overtravel >= p.overtravel_limit_mm) {
         w.push_back({WarningCode::overtravel_limit, Severity::error, worst_overtravel,
-                     p.overtravel_limit_mm});
+                     p.overtravel_limit_mm, 0.0, static_cast<double>(r.overtravel_touch_)});
     } else if (worst_overtravel >= 0.8 * p.overtravel_limit_mm) {
         w.push_back({WarningCode::overtravel_limit, Severity::warning, worst_overtravel,
-                     p.overtravel_limit_mm});
+                     p.overtravel_limit_mm, 0.0, static_cast<double>(r.overtravel_touch_)});
     }
     if (two_touch) {
         const double recommended = r.recommended_backoff_mm_;

@@ -61,7 +61,7 @@ struct Warning {
     WarningCode code{};
     Severity severity{};
     // Meaning by code (all in internal units: mm, s, mm/s):
-    // overtravel_limit:         a = overtravel, b = limit
+    // overtravel_limit:         a = overtravel, b = limit, d = the touch (1 first, 2 second)
     // backoff_too_small:        a = backoff, b = recommended backoff
     // backoff_excess:           a = backoff, b = recommended, c = time wasted
     // touch_while_accelerating: a = speed reached, b = programmed feed, c = error, d = touch (0/1)
@@ -114,7 +114,9 @@ class CycleResult {
     // Sum of the time spent in one kind of phase over all touches.
     double phase_time(Phase phase) const { return phase_time_s_[static_cast<std::size_t>(phase)]; }
 
-    double overtravel_mm() const { return overtravel_mm_; }            // worst over all touches
+    double overtravel_mm() const { return overtravel_mm_; }  // worst over all touches
+    // Which touch overtravels most: 1 = the first, 2 = the second of two-touch.
+    int overtravel_touch() const { return overtravel_touch_; }
     double trigger_speed_mm_s() const { return trigger_speed_mm_s_; }  // of the measuring touch
     double scan_range_mm() const { return scan_range_mm_; }
     // Expanded (k = 2) uncertainty of the measuring touch: uniform scan phase
@@ -137,6 +139,7 @@ class CycleResult {
     std::array<double, kPhaseCount> phase_time_s_{};
     double total_s_{0.0};
     double overtravel_mm_{0.0};
+    int overtravel_touch_{1};
     double trigger_speed_mm_s_{0.0};
     double scan_range_mm_{0.0};
     double uncertainty_mm_{0.0};

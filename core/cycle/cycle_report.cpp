@@ -37,6 +37,7 @@ std::string evaluation_to_json(const Analysis& analysis) {
     Json out = Json::object();
     out["cycle_time_s"] = r.total();
     out["overtravel_mm"] = r.overtravel_mm();
+    out["overtravel_touch"] = r.overtravel_touch() == 2 ? "second" : "first";
     out["trigger_speed_mm_min"] = mm_s_to_mm_min(r.trigger_speed_mm_s());
     out["uncertainty_mm"] = r.uncertainty_mm();
     out["scan_range_mm"] = r.scan_range_mm();

@@ -15,7 +15,11 @@ namespace probecycle {
 struct SweepPoint {
     double feed_mm_min{0.0};
     double cycle_time_s{0.0};
-    double overtravel_mm{0.0};
+    double overtravel_mm{0.0};  // the worst touch's
+    // Of each touch: a fast first touch can overtravel less than the second
+    // (two-touch with a fixed backoff). second is 0 for single-touch.
+    double first_overtravel_mm{0.0};
+    double second_overtravel_mm{0.0};
     double uncertainty_mm{0.0};
     std::array<double, kPhaseCount> phase_time_s{};  // by Phase, summed over touches
 };

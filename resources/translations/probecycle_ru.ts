@@ -843,10 +843,6 @@
         <translation>Фазы текущего цикла в порядке времени; в каждой строке — суммарное время фазы по всем касаниям.</translation>
     </message>
     <message>
-        <source>Red: overtravel of a touch at each feed against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted). Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
-        <translation>Красный: перебег касания на каждой подаче и предел датчика (штрих); на заштрихованных подачах перебег выше предела. Синий, правая ось: неопределённость (k = 2) касания, измеренного на каждой подаче, и цель (пунктир). Вертикальные линии: подача измерения и, для двукратного касания, подача второго касания (синий пунктир).</translation>
-    </message>
-    <message>
         <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle.</source>
         <translation>Положение вдоль направления измерения для каждого касания (поверхность — штрих) и скорость по траектории в течение всего цикла.</translation>
     </message>
@@ -857,6 +853,18 @@
     <message>
         <source>This cycle</source>
         <translation>Этот цикл</translation>
+    </message>
+    <message>
+        <source>Red: overtravel of a touch at each feed against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Two-touch: the first touch solid, the second dotted; with a fixed backoff a fast first touch leaves the second too little room to brake, so the second may overtravel more. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted). Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
+        <translation>Красный: перебег касания при каждой подаче относительно предела датчика (штрих); на заштрихованных подачах перебег выходит за предел. Двукратное касание: первое касание — сплошная линия, второе — пунктир; при постоянном отводе быстрое первое касание оставляет второму слишком мало места для торможения, и перебег второго может быть больше. Синий, правая ось: неопределённость (k = 2) касания, измеренного при каждой подаче, относительно цели (пунктир). Вертикальные линии: скорость подачи поиска и, для двукратного касания, скорость измерительной подачи (синий пунктир).</translation>
+    </message>
+    <message>
+        <source>Overtravel, 1st touch</source>
+        <translation>Перебег, первое касание</translation>
+    </message>
+    <message>
+        <source>Overtravel, 2nd touch</source>
+        <translation>Перебег, второе касание</translation>
     </message>
 </context>
 <context>
@@ -1700,6 +1708,10 @@
     <message>
         <source>as programmed</source>
         <translation>как задано</translation>
+    </message>
+    <message>
+        <source>%1 % of %2, 2nd touch</source>
+        <translation>%1 % от %2, второе касание</translation>
     </message>
 </context>
 <context>

@@ -843,10 +843,6 @@
         <translation>当前循环按时间顺序排列的各阶段，每行给出其在所有触测中的总时间。</translation>
     </message>
     <message>
-        <source>Red: overtravel of a touch at each feed against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted). Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
-        <translation>红色：各进给率下一次触测的过行程与测头极限（虚线）的比较；阴影区的进给率会超出极限。蓝色（右轴）：在各进给率下测量的一次触测的不确定度 (k = 2) 与目标（点线）的比较。竖线：测量进给率，以及二次触发的第二次触测进给率（蓝色点线）。</translation>
-    </message>
-    <message>
         <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle.</source>
         <translation>每次触测沿测量方向的位置（虚线为表面）以及整个循环中的轨迹速度。</translation>
     </message>
@@ -857,6 +853,18 @@
     <message>
         <source>This cycle</source>
         <translation>当前循环</translation>
+    </message>
+    <message>
+        <source>Red: overtravel of a touch at each feed against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Two-touch: the first touch solid, the second dotted; with a fixed backoff a fast first touch leaves the second too little room to brake, so the second may overtravel more. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted). Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
+        <translation>红色：各进给率下触测的过行程与测头极限（虚线）的比较；阴影区的进给率会超出极限。二次触发：第一次触测为实线，第二次为点线；回退距离固定时，快速的第一次触测会使第二次触测的制动空间不足，因此第二次的过行程可能更大。蓝色（右轴）：在各进给率下测量的一次触测的不确定度 (k = 2) 与目标（点线）的比较。竖线：探测进给率，以及二次触发的测量进给率（蓝色点线）。</translation>
+    </message>
+    <message>
+        <source>Overtravel, 1st touch</source>
+        <translation>过行程，第一次触测</translation>
+    </message>
+    <message>
+        <source>Overtravel, 2nd touch</source>
+        <translation>过行程，第二次触测</translation>
     </message>
 </context>
 <context>
@@ -1700,6 +1708,10 @@
     <message>
         <source>as programmed</source>
         <translation>与编程值相同</translation>
+    </message>
+    <message>
+        <source>%1 % of %2, 2nd touch</source>
+        <translation>为 %2 的 %1 %，第二次触测</translation>
     </message>
 </context>
 <context>

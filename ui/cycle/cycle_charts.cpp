@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
+#include "core/common/units.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/text_format.h"
-#include "core/common/units.h"
 
 namespace probecycle::ui {
 
@@ -165,7 +165,9 @@ void fill_motion(std::vector<double>& times, QList<QPointF>& position, QList<QPo
 
 CycleCharts::CycleCharts(QWidget* parent) : QWidget(parent) {
     const qsizetype reserve = 1024;
-    for (PingPong* b : {&single_, &two_, &overtravel_pts_, &uncertainty_pts_}) b->reserve(reserve);
+    for (PingPong* b : {&single_, &two_, &overtravel_pts_, &overtravel2_pts_, &uncertainty_pts_}) {
+        b->reserve(reserve);
+    }
     position_pts_.reserve(2 * reserve);
     speed_pts_.reserve(2 * reserve);
     times_.reserve(2 * static_cast<std::size_t>(reserve));
@@ -245,6 +247,10 @@ void CycleCharts::build() {
                                             Dash::dotted, Side::right}));
     ot_overtravel_ = add(QStringLiteral("overtravel.overtravel"), overtravel_,
                          overtravel_->add_line({QStringLiteral("o"), kOvertravelColour, 2.0}));
+    ot_overtravel2_ =
+        add(QStringLiteral("overtravel.second_touch"), overtravel_,
+            overtravel_->add_line({QStringLiteral("o2"), kOvertravelColour, 2.0, Dash::dotted}));
+    overtravel_->set_visible(ot_overtravel2_.curve, false);
     ot_uncertainty_ = add(QStringLiteral("overtravel.uncertainty"), overtravel_,
                           overtravel_->add_line({QStringLiteral("u"), kUncertaintyColour, 2.0,
                                                  Dash::solid, Side::right}));
@@ -302,7 +308,7 @@ void CycleCharts::retranslate() {
                                          QStringLiteral("%.3g"), kOvertravelColour});
     overtravel_->set_y_axis(Side::right, {Scale::log, tr("Uncertainty, k = 2 [%1]").arg(unit_um()),
                                           QStringLiteral("%g"), kUncertaintyColour});
-    overtravel_->set_name(ot_overtravel_.curve, tr("Overtravel"));
+    name_overtravel_curves();
     overtravel_->set_name(ot_limit_.curve, tr("Limit"));
     overtravel_->set_name(ot_uncertainty_.curve, tr("Uncertainty"));
     overtravel_->set_name(ot_target_.curve, tr("Target"));
@@ -324,11 +330,13 @@ void CycleCharts::retranslate() {
     phases_->setToolTip(
         tr("The phases of the current cycle in time order, each row with its total "
            "time over all touches."));
-    overtravel_->setToolTip(
-        tr("Red: overtravel of a touch at each feed against the probe's limit (dashed); the "
-           "shaded feeds overtravel beyond it. Blue, right axis: the uncertainty (k = 2) of a "
-           "touch measured at each feed against the target (dotted). Vertical lines: the probing "
-           "feed and, for two-touch, the measuring feed (blue, dotted)."));
+    overtravel_->setToolTip(tr(
+        "Red: overtravel of a touch at each feed against the probe's limit (dashed); the "
+        "shaded feeds overtravel beyond it. Two-touch: the first touch solid, the second "
+        "dotted; with a fixed backoff a fast first touch leaves the second too little room to "
+        "brake, so the second may overtravel more. Blue, right axis: the uncertainty (k = 2) of a "
+        "touch measured at each feed against the target (dotted). Vertical lines: the probing "
+        "feed and, for two-touch, the measuring feed (blue, dotted)."));
     motion_->setToolTip(
         tr("Position along the probing direction of each touch (the surface is "
            "dashed) and path speed through the whole cycle."));
@@ -452,13 +460,31 @@ void CycleCharts::draw_phases(const Computed& c) {
     }
 }
 
+void CycleCharts::name_overtravel_curves() {
+    overtravel_->set_name(ot_overtravel_.curve,
+                          two_touch_overtravel_ ? tr("Overtravel, 1st touch") : tr("Overtravel"));
+    overtravel_->set_name(ot_overtravel2_.curve, tr("Overtravel, 2nd touch"));
+}
+
 void CycleCharts::draw_overtravel(const Computed& c) {
     using Side = PlotView::Side;
     const SweepResult& own = c.own_sweep();
     const double limit = c.scenario.probe.overtravel_limit_mm;
     Buffer& overtravel = overtravel_pts_.next();
     Buffer& uncertainty = uncertainty_pts_.next();
-    fill_sweep(overtravel, own, &SweepPoint::overtravel_mm, 1.0, 0.0);
+    const bool two_touch = c.scenario.cycle.strategy == Strategy::two_touch;
+    fill_sweep(overtravel, own, &SweepPoint::first_overtravel_mm, 1.0, 0.0);
+    Buffer& overtravel2 = overtravel2_pts_.next();
+    if (two_touch) {
+        fill_sweep(overtravel2, own, &SweepPoint::second_overtravel_mm, 1.0, 0.0);
+    } else {
+        overtravel2.clear();
+    }
+    if (two_touch != two_touch_overtravel_) {
+        two_touch_overtravel_ = two_touch;
+        name_overtravel_curves();
+        overtravel_->set_visible(ot_overtravel2_.curve, two_touch);
+    }
     // Uncertainty of one touch at each feed: the single-touch sweep measures at the swept feed.
     fill_sweep(uncertainty, c.single_touch, &SweepPoint::uncertainty_mm, 1000.0,
                kUncertaintyFloor_um);
@@ -466,6 +492,7 @@ void CycleCharts::draw_overtravel(const Computed& c) {
     Span left;
     left.add(limit);
     left.add_y(overtravel);
+    left.add_y(overtravel2);
     Span right;
     right.add_y(uncertainty);
     const double target_um = c.scenario.cycle.target_uncertainty_mm * 1000.0;
@@ -479,6 +506,7 @@ void CycleCharts::draw_overtravel(const Computed& c) {
     const auto [ulo, uhi] = decade_range(right, kUncertaintyFloor_um);
     overtravel_->set_y_range(Side::right, ulo, uhi);
     set_if_changed(ot_overtravel_, overtravel_pts_);
+    set_if_changed(ot_overtravel2_, overtravel2_pts_);
     set_if_changed(ot_uncertainty_, uncertainty_pts_);
 
     fill_segment(line_, kFeedLo, limit, kFeedHi, limit);

@@ -12,8 +12,8 @@
 #include <map>
 #include <optional>
 
-#include "ui/cycle/computation.h"
 #include "ui/common/plot_view.h"
+#include "ui/cycle/computation.h"
 
 namespace probecycle::ui {
 
@@ -96,11 +96,16 @@ class CycleCharts : public QWidget {
     // Curves, by chart.
     Ref ct_single_, ct_two_, ct_feed_, ct_knee_, ct_cycle_, ct_base_single_, ct_base_two_;
     std::array<Ref, kPhaseCount> phase_areas_{};
-    Ref ot_overtravel_, ot_limit_, ot_beyond_, ot_uncertainty_, ot_target_, ot_feed_,
-        ot_measure_feed_, ot_base_overtravel_, ot_base_uncertainty_;
+    Ref ot_overtravel_, ot_overtravel2_, ot_limit_, ot_beyond_, ot_uncertainty_, ot_target_,
+        ot_feed_, ot_measure_feed_, ot_base_overtravel_, ot_base_uncertainty_;
     Ref mo_position_, mo_speed_, mo_surface_, mo_base_position_, mo_base_speed_;
 
-    PingPong single_, two_, overtravel_pts_, uncertainty_pts_, position_pts_, speed_pts_;
+    PingPong single_, two_, overtravel_pts_, overtravel2_pts_, uncertainty_pts_, position_pts_,
+        speed_pts_;
+    // Two-touch draws each touch's overtravel (a fast first touch can
+    // overtravel less than the second); the legend names them then.
+    bool two_touch_overtravel_{false};
+    void name_overtravel_curves();
     Buffer line_, line2_, band_upper_, band_lower_, knee_, current_cycle_;
     std::array<Buffer, kPhaseCount> phase_upper_, phase_lower_;
     std::vector<double> times_;

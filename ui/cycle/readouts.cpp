@@ -8,9 +8,9 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "core/common/units.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/text_format.h"
-#include "core/common/units.h"
 
 namespace probecycle::ui {
 
@@ -179,7 +179,11 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
     const double share = r.overtravel_mm() / limit;
     now[1] = r.overtravel_mm();
     cards_[1].value->setText(format_mm(r.overtravel_mm()));
-    detail[1] = tr("%1 % of %2").arg(locale.toString(100.0 * share, 'f', 0), format_mm(limit));
+    detail[1] =
+        r.overtravel_touch() == 2
+            ? tr("%1 % of %2, 2nd touch")
+                  .arg(locale.toString(100.0 * share, 'f', 0), format_mm(limit))
+            : tr("%1 % of %2").arg(locale.toString(100.0 * share, 'f', 0), format_mm(limit));
     set_alert(cards_[1], alert_for(r, WarningCode::overtravel_limit));
 
     // Trigger speed of the measuring touch

@@ -11,10 +11,10 @@
 #include <tuple>
 #include <vector>
 
+#include "core/common/units.h"
 #include "core/cycle/motion.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
-#include "core/common/units.h"
 
 namespace probecycle {
 namespace {
@@ -1220,6 +1220,45 @@ TEST(CycleProperty, EvaluateIntoReusesBuffersWithoutLeftovers) {
     EXPECT_EQ(reused.total(), fresh.total());
     EXPECT_EQ(reused.segments().size(), fresh.segments().size());
     for (Phase phase : all_phases()) EXPECT_EQ(reused.phase_time(phase), fresh.phase_time(phase));
+}
+
+// The worst overtravel says which touch it is: a slow first touch followed by
+// a fast second one (a measuring feed above the probing feed) overtravels most
+// on the second touch, and the sweep carries both touches' overtravel.
+TEST(Overtravel, NamesTheTouchThatOvertravelsMost) {
+    Scenario s;
+    s.cycle.strategy = Strategy::two_touch;
+    s.cycle.probe_feed_mm_min = 100.0;
+    s.cycle.measure_feed_mm_min = 3000.0;
+    s.cycle.backoff_mm = 20.0;
+    s.probe.overtravel_limit_mm = 2.0;
+    const CycleResult r = evaluate(s);
+    ASSERT_GT(r.measuring_touch().overtravel_mm, r.first_touch().overtravel_mm);
+    EXPECT_EQ(r.overtravel_touch(), 2);
+    EXPECT_DOUBLE_EQ(r.overtravel_mm(), r.measuring_touch().overtravel_mm);
+    const Warning* w = find_warning(r, WarningCode::overtravel_limit);
+    ASSERT_NE(w, nullptr);
+    EXPECT_EQ(render_arg(w->to_message().args.back()), "2");
+
+    s.cycle.measure_feed_mm_min = 30.0;
+    EXPECT_EQ(evaluate(s).overtravel_touch(), 1);
+    s.cycle.strategy = Strategy::single_touch;
+    EXPECT_EQ(evaluate(s).overtravel_touch(), 1);
+}
+
+TEST(Overtravel, SweepCarriesEachTouch) {
+    Scenario s;
+    s.cycle.strategy = Strategy::two_touch;
+    const std::vector<double> feeds = {100.0, 1000.0, 5000.0};
+    for (const SweepPoint& p : sweep_feeds(s, feeds).points) {
+        EXPECT_GT(p.second_overtravel_mm, 0.0) << p.feed_mm_min;
+        EXPECT_DOUBLE_EQ(p.overtravel_mm, std::max(p.first_overtravel_mm, p.second_overtravel_mm));
+    }
+    s.cycle.strategy = Strategy::single_touch;
+    for (const SweepPoint& p : sweep_feeds(s, feeds).points) {
+        EXPECT_EQ(p.second_overtravel_mm, 0.0);
+        EXPECT_DOUBLE_EQ(p.overtravel_mm, p.first_overtravel_mm);
+    }
 }
 
 }  // namespace
