@@ -859,12 +859,12 @@
         <translation>红色：各进给率下触测的过行程与测头极限（虚线）的比较；阴影区的进给率会超出极限。二次触发：第一次触测为实线，第二次为点线；回退距离固定时，快速的第一次触测会使第二次触测的制动空间不足，因此第二次的过行程可能更大。蓝色（右轴）：在各进给率下测量的一次触测的不确定度 (k = 2) 与目标（点线）的比较。竖线：探测进给率，以及二次触发的测量进给率（蓝色点线）。</translation>
     </message>
     <message>
-        <source>Overtravel, 1st touch</source>
-        <translation>过行程，第一次触测</translation>
+        <source>1st touch</source>
+        <translation>第一次触测</translation>
     </message>
     <message>
-        <source>Overtravel, 2nd touch</source>
-        <translation>过行程，第二次触测</translation>
+        <source>2nd touch</source>
+        <translation>第二次触测</translation>
     </message>
 </context>
 <context>

@@ -462,8 +462,8 @@ void CycleCharts::draw_phases(const Computed& c) {
 
 void CycleCharts::name_overtravel_curves() {
     overtravel_->set_name(ot_overtravel_.curve,
-                          two_touch_overtravel_ ? tr("Overtravel, 1st touch") : tr("Overtravel"));
-    overtravel_->set_name(ot_overtravel2_.curve, tr("Overtravel, 2nd touch"));
+                          two_touch_overtravel_ ? tr("1st touch") : tr("Overtravel"));
+    overtravel_->set_name(ot_overtravel2_.curve, tr("2nd touch"));
 }
 
 void CycleCharts::draw_overtravel(const Computed& c) {
