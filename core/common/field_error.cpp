@@ -9,9 +9,17 @@ Message FieldError::to_message() const {
     if (value.empty()) {
         m.text = QT_TRANSLATE_NOOP("FieldError", "%1: %2");
         m.args = {text_arg("key", key), message_arg("allowed", allowed)};
-    } else {
+    } else if (value.size() <= kMaxShownValueChars) {
         m.text = QT_TRANSLATE_NOOP("FieldError", "%1: got %2; allowed: %3");
         m.args = {text_arg("key", key), text_arg("value", value), message_arg("allowed", allowed)};
+    } else {
+        // A value of megabytes is not echoed whole: its start and its length.
+        std::size_t cut = kShownStartChars;
+        while (cut > 0 && (static_cast<unsigned char>(value[cut]) & 0xC0) == 0x80) --cut;  // UTF-8
+        m.text = QT_TRANSLATE_NOOP("FieldError", "%1: got %2... (%4 characters); allowed: %3");
+        m.args = {text_arg("key", key), text_arg("value", value.substr(0, cut)),
+                  message_arg("allowed", allowed),
+                  arg("value_length", ArgKind::integer, static_cast<double>(value.size()))};
     }
     return m;
 }

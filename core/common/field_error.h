@@ -4,18 +4,24 @@
 // It names the field, the value as given and what is allowed; the allowed
 // part is a message of its own, so the window can translate it.
 
+#include <cstddef>
 #include <string>
 
 #include "core/common/message.h"
 
 namespace probecycle {
 
+// A value longer than this is shown by its first kShownStartChars characters
+// and its length.
+constexpr std::size_t kMaxShownValueChars = 80;
+constexpr std::size_t kShownStartChars = 40;
+
 struct FieldError {
     std::string key;    // e.g. "machine.scan_period_s"
     std::string value;  // the offending value as text; empty when there is none to show
     Message allowed;    // e.g. "a number from 0 to 0.1 s"
 
-    // "%1: got %2; allowed: %3", or "%1: %3" without a value.
+    // "%1: got %2; allowed: %3", or "%1: %3" without a value; a long value is cut.
     Message to_message() const;
     std::string message() const;  // in English
 };

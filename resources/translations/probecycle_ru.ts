@@ -83,6 +83,30 @@
         <source>a counter wide enough that one cycle (%1 counts) moves it by less than half its range</source>
         <translation>счётчик такой разрядности, чтобы за один период (%1 импульсов) он изменялся меньше чем на половину своего диапазона</translation>
     </message>
+    <message>
+        <source>text without NUL bytes; one is at line %1, column %2</source>
+        <translation>текст без байтов NUL; такой байт в строке %1, столбце %2</translation>
+    </message>
+    <message>
+        <source>at most %3 levels of nesting; line %1, column %2 opens one more</source>
+        <translation>не более %3 уровней вложенности; строка %1, столбец %2 открывает ещё один</translation>
+    </message>
+    <message>
+        <source>a key with a name; line %1, column %2 has an empty key &quot;&quot;</source>
+        <translation>ключ с именем; в строке %1, столбце %2 пустой ключ &quot;&quot;</translation>
+    </message>
+    <message>
+        <source>each key once per object; it is given at line %1 and again at line %2</source>
+        <translation>каждый ключ один раз в объекте; он задан в строке %1 и ещё раз в строке %2</translation>
+    </message>
+    <message>
+        <source>a number a double can hold (up to about 1.8e308), at line %1</source>
+        <translation>число, представимое типом double (до примерно 1,8e308), в строке %1</translation>
+    </message>
+    <message>
+        <source>%1: got %2... (%4 characters); allowed: %3</source>
+        <translation>%1: получено %2... (%4 символов); допустимо: %3</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>

@@ -83,6 +83,30 @@
         <source>a counter wide enough that one cycle (%1 counts) moves it by less than half its range</source>
         <translation>位数足够的计数器：一个周期（%1 个计数）的变化小于其量程的一半</translation>
     </message>
+    <message>
+        <source>text without NUL bytes; one is at line %1, column %2</source>
+        <translation>不含 NUL 字节的文本；第 %1 行第 %2 列有一个</translation>
+    </message>
+    <message>
+        <source>at most %3 levels of nesting; line %1, column %2 opens one more</source>
+        <translation>最多 %3 层嵌套；第 %1 行第 %2 列又打开了一层</translation>
+    </message>
+    <message>
+        <source>a key with a name; line %1, column %2 has an empty key &quot;&quot;</source>
+        <translation>有名称的键；第 %1 行第 %2 列是空键 &quot;&quot;</translation>
+    </message>
+    <message>
+        <source>each key once per object; it is given at line %1 and again at line %2</source>
+        <translation>每个对象中每个键只出现一次；它在第 %1 行给出，又在第 %2 行给出</translation>
+    </message>
+    <message>
+        <source>a number a double can hold (up to about 1.8e308), at line %1</source>
+        <translation>双精度数能表示的数值（最大约 1.8e308），位于第 %1 行</translation>
+    </message>
+    <message>
+        <source>%1: got %2... (%4 characters); allowed: %3</source>
+        <translation>%1：值为 %2...（共 %4 个字符）；允许：%3</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>

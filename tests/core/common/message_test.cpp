@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/common/field_error.h"
 #include "core/common/message_json.h"
 
 namespace probecycle {
@@ -74,6 +75,23 @@ TEST(Render, NestsAMessageInPlace) {
     EXPECT_EQ(render(m), "machine.scan_period_s: got -1; allowed: a number from 0 to 0.1");
     EXPECT_EQ(message_values(m).dump(),
               R"({"key":"machine.scan_period_s","value":"-1","min_s":0.0,"max_s":0.1})");
+}
+
+// A value of megabytes is not echoed whole (a 10 MB string went to stderr).
+TEST(FieldErrorText, ALongValueIsCutAndItsLengthSaid) {
+    const FieldError e{"cycle.strategy", "\"" + std::string(10'000'000, 'x') + "\"",
+                       allowed_text("unknown_word", "one of single_touch, two_touch")};
+    const std::string m = e.message();
+    EXPECT_LT(m.size(), 200u) << m.substr(0, 300);
+    EXPECT_NE(m.find("(10000002 characters)"), std::string::npos) << m;
+    EXPECT_NE(m.find("one of single_touch, two_touch"), std::string::npos) << m;
+    // A cut never splits a UTF-8 character.
+    const FieldError utf{"k", std::string(39, 'a') + "\xc3\xa9" + std::string(100, 'b'),
+                         allowed_text("x", "y")};
+    EXPECT_NE(utf.message().find(std::string(39, 'a') + "..."), std::string::npos) << utf.message();
+    // A short value is shown whole.
+    EXPECT_EQ(FieldError({"k", "short", allowed_text("x", "y")}).message(),
+              "k: got short; allowed: y");
 }
 
 }  // namespace
