@@ -162,7 +162,7 @@ class Scanner {
             Message m = allowed_text("number_overflow",
                                      QT_TRANSLATE_NOOP("FieldError",
                                                        "a number a double can hold (up to about "
-                                                       "1.8e308), at line %1"));
+                                                       "1.8e308); at line %1 it is out of range"));
             m.args = {arg("line", ArgKind::integer, static_cast<double>(line_))};
             return problem(std::move(m), token);
         }

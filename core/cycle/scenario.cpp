@@ -1,13 +1,13 @@
 #include "core/cycle/scenario.h"
 
+#include "core/common/json_guard.h"
 #include "core/common/number_format.h"
 
-#include <cerrno>
+#include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
-#include <functional>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 namespace probecycle {
 
@@ -15,93 +15,275 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// A numeric key and where it lives in the scenario.
-struct NumericKey {
+constexpr std::array kAccelModels = {AccelModel::time_constant, AccelModel::constant_accel,
+                                     AccelModel::jerk_limited};
+constexpr std::array kStrategies = {Strategy::single_touch, Strategy::two_touch};
+constexpr std::array kFeatures = {Feature::surface, Feature::web, Feature::pocket, Feature::bore,
+                                  Feature::boss};
+
+// The words of an enum, from its own to_string, so the list cannot drift.
+template <typename Enum, std::size_t N>
+std::vector<std::string> enum_words(const std::array<Enum, N>& values) {
+    std::vector<std::string> words;
+    for (const Enum v : values) words.emplace_back(to_string(v));
+    return words;
+}
+
+template <typename Enum>
+bool set_from(Enum& field, std::optional<Enum> value) {
+    if (!value) return false;
+    field = *value;
+    return true;
+}
+
+// A key of the table and where it lives in the scenario.
+struct KeyEntry {
     KeyInfo info;
-    double& (*ref)(Scenario&);
+    double& (*number)(Scenario&) = nullptr;  // number keys
+    bool& (*flag)(Scenario&) = nullptr;      // flag keys
+    std::vector<std::string> words;          // word keys: allowed, in order
+    std::string (*get_word)(const Scenario&) = nullptr;
+    bool (*set_word)(Scenario&, std::string_view) = nullptr;
 };
 
-#define PC_REF(section, field) [](Scenario& s) -> double& { return s.section.field; }
+KeyEntry number(KeyInfo info, double& (*ref)(Scenario&)) {
+    KeyEntry e;
+    e.info = info;
+    e.number = ref;
+    return e;
+}
 
-// The one table of numeric keys: names, units, ranges, meanings. Validation,
-// JSON, --set and the window's editors all read it. Ranges are what a real
-// machine or probe can plausibly have; zero is allowed where the issue says
-// delays and distances may be 0.
-const std::vector<NumericKey>& numeric_key_table() {
-    static const std::vector<NumericKey> table = {
-        {{"machine.time_constant_s", "s", 0.001, 2.0,
-          "Acceleration time constant T: the programmed feed is reached in T seconds (a = v/T). "
-          "Used by the time_constant model."},
-         PC_REF(machine, time_constant_s)},
-        {{"machine.max_accel_mm_s2", "mm/s^2", 1.0, 200000.0,
-          "Maximum axis acceleration. Used by the constant_accel and jerk_limited models."},
-         PC_REF(machine, max_accel_mm_s2)},
-        {{"machine.max_jerk_mm_s3", "mm/s^3", 10.0, 1.0e9,
-          "Maximum axis jerk. Used by the jerk_limited (S-curve) model."},
-         PC_REF(machine, max_jerk_mm_s3)},
-        {{"machine.rapid_feed_mm_min", "mm/min", 100.0, 200000.0,
-          "Rapid feed, used for the positioning moves between touches."},
-         PC_REF(machine, rapid_feed_mm_min)},
-        {{"machine.scan_period_s", "s", 0.0, 0.1,
-          "Period at which the controller scans the skip input (~4 ms standard, ~4 us high-speed). "
-          "The wait for the next scan is the single-touch uncertainty and adds to overtravel."},
-         PC_REF(machine, scan_period_s)},
-        {{"machine.controller_latency_s", "s", 0.0, 0.5,
-          "Fixed controller latency after the scan; the axis keeps moving (overtravel)."},
-         PC_REF(machine, controller_latency_s)},
-        {{"probe.pretravel_mm", "mm", 0.0, 1.0,
-          "Mechanical pretravel from first contact to trigger (typically 0.001-0.05 mm)."},
-         PC_REF(probe, pretravel_mm)},
-        {{"probe.interface_delay_s", "s", 0.0, 0.5,
-          "Time the probe interface (receiver) takes to pass the trigger to the controller."},
-         PC_REF(probe, interface_delay_s)},
-        {{"probe.repeatability_2sigma_mm", "mm", 0.0, 1.0,
-          "Probe unidirectional repeatability (2 sigma), combined into the uncertainty."},
-         PC_REF(probe, repeatability_2sigma_mm)},
-        {{"probe.overtravel_limit_mm", "mm", 0.01, 100.0,
-          "Stylus deflection range: the probe must stop within it or the probe or stylus is "
-          "damaged."},
-         PC_REF(probe, overtravel_limit_mm)},
-        {{"probe.reseat_mm", "mm", 0.0, 10.0,
-          "Distance the probe needs to reseat after a trigger; the backoff must clear overtravel "
-          "plus this."},
-         PC_REF(probe, reseat_mm)},
-        {{"probe.calibration_feed_mm_min", "mm/min", 0.0, 100000.0,
-          "Feed at which the probe was calibrated; 0 = the measuring feed. A different measuring "
-          "feed shifts the delay travel and so the measured value."},
-         PC_REF(probe, calibration_feed_mm_min)},
-        {{"cycle.feature_size_mm", "mm", 0.0, 10000.0,
-          "Distance between opposite stylus-centre contact points (web/pocket width, bore/boss "
-          "diameter less the ball diameter). Unused for a surface."},
-         PC_REF(cycle, feature_size_mm)},
-        {{"cycle.approach_mm", "mm", 0.0, 1000.0,
-          "Start distance in front of the nominal surface. Should cover the part's position "
-          "uncertainty and the distance needed to reach the feed."},
-         PC_REF(cycle, approach_mm)},
-        {{"cycle.probe_feed_mm_min", "mm/min", 1.0, 100000.0,
-          "Feed of the (first) touch; single-touch measures at it."},
-         PC_REF(cycle, probe_feed_mm_min)},
-        {{"cycle.measure_feed_mm_min", "mm/min", 1.0, 100000.0,
-          "Feed of the second, measuring touch of two-touch (typically 30 mm/min)."},
-         PC_REF(cycle, measure_feed_mm_min)},
-        {{"cycle.backoff_mm", "mm", 0.0, 1000.0,
-          "Two-touch: distance backed off from where the first touch stopped."},
-         PC_REF(cycle, backoff_mm)},
-        {{"cycle.return_feed_mm_min", "mm/min", 1.0, 200000.0,
-          "Feed of the backoff and of the return to the start position."},
-         PC_REF(cycle, return_feed_mm_min)},
-        {{"cycle.target_uncertainty_mm", "mm", 0.0, 10.0,
-          "Target for the expanded (k=2) uncertainty; 0 = no target."},
-         PC_REF(cycle, target_uncertainty_mm)},
+KeyEntry flag(KeyInfo info, bool& (*ref)(Scenario&)) {
+    KeyEntry e;
+    e.info = info;
+    e.flag = ref;
+    return e;
+}
+
+KeyEntry word(KeyInfo info, std::vector<std::string> words, std::string (*get)(const Scenario&),
+              bool (*set)(Scenario&, std::string_view)) {
+    KeyEntry e;
+    e.info = info;
+    e.words = std::move(words);
+    e.get_word = get;
+    e.set_word = set;
+    return e;
+}
+
+#define PC_NUMBER(section, field) [](Scenario& s) -> double& { return s.section.field; }
+
+// The one table of scenario keys, in file order. Ranges are what a real
+// machine or probe can plausibly have; zero is allowed where delays and
+// distances may be 0. Labels and descriptions are the window's (translated
+// there, context "Parameter"); units are the internal ones.
+const std::vector<KeyEntry>& key_table() {
+    static const std::vector<KeyEntry> table = {
+        word(
+            {"machine.accel_model", "", 0.0, 0.0,
+             QT_TRANSLATE_NOOP("Parameter",
+                               "How the control accelerates: a time constant (a = v/T, common "
+                               "on many controls), a constant acceleration, or a jerk-limited "
+                               "S-curve. Sets every move time and the braking distance after "
+                               "the trigger."),
+             QT_TRANSLATE_NOOP("Parameter", "Acceleration model"), KeyKind::word},
+            enum_words<AccelModel>(kAccelModels),
+            [](const Scenario& s) { return std::string(to_string(s.machine.accel_model)); },
+            [](Scenario& s, std::string_view w) {
+                return set_from(s.machine.accel_model, accel_model_from_string(w));
+            }),
+        number(
+            {"machine.time_constant_s", "s", 0.001, 2.0,
+             QT_TRANSLATE_NOOP(
+                 "Parameter",
+                 "Acceleration time constant T: the control reaches any programmed feed in T (a "
+                 "= v/T). Sets the distance to reach the feed (v*T/2) and the braking distance "
+                 "after the trigger, and so overtravel and cycle time. Used by the time-constant "
+                 "model."),
+             QT_TRANSLATE_NOOP("Parameter", "Time constant")},
+            PC_NUMBER(machine, time_constant_s)),
+        number({"machine.max_accel_mm_s2", "mm/s^2", 1.0, 200000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Maximum axis acceleration, used by the constant-acceleration and jerk-limited "
+                    "models for every move and for braking after the trigger."),
+                QT_TRANSLATE_NOOP("Parameter", "Max. acceleration")},
+               PC_NUMBER(machine, max_accel_mm_s2)),
+        number({"machine.max_jerk_mm_s3", "mm/s^3", 10.0, 1.0e9,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Maximum axis jerk, used by the jerk-limited (S-curve) model: lower jerk "
+                    "lengthens every acceleration and the braking after the trigger."),
+                QT_TRANSLATE_NOOP("Parameter", "Max. jerk")},
+               PC_NUMBER(machine, max_jerk_mm_s3)),
+        number(
+            {"machine.rapid_feed_mm_min", "mm/min", 100.0, 200000.0,
+             QT_TRANSLATE_NOOP(
+                 "Parameter",
+                 "Rapid feed of the positioning moves between the touches of a web, pocket, bore "
+                 "or boss."),
+             QT_TRANSLATE_NOOP("Parameter", "Rapid feed")},
+            PC_NUMBER(machine, rapid_feed_mm_min)),
+        number(
+            {"machine.scan_period_s", "s", 0.0, 0.1,
+             QT_TRANSLATE_NOOP(
+                 "Parameter",
+                 "Period at which the control scans the skip input (about 4 ms on a standard "
+                 "input, 4 µs on a high-speed input). The wait for the next scan is the "
+                 "single-touch uncertainty (trigger speed × scan period) and, worst case, adds a "
+                 "full period of travel to the overtravel."),
+             QT_TRANSLATE_NOOP("Parameter", "Scan period")},
+            PC_NUMBER(machine, scan_period_s)),
+        number({"machine.controller_latency_s", "s", 0.0, 0.5,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Fixed latency of the control after it has seen the input. Removed by "
+                    "calibration, but the axis keeps moving: adds trigger speed × latency to the "
+                    "overtravel."),
+                QT_TRANSLATE_NOOP("Parameter", "Machine response time")},
+               PC_NUMBER(machine, controller_latency_s)),
+        flag({"machine.latched_input", "", 0.0, 0.0,
+              QT_TRANSLATE_NOOP("Parameter",
+                                "The control latches (or timestamps) the position in hardware at "
+                                "the trigger: the scan-period wait leaves the measured value, but "
+                                "not the travel - the machine still stops late."),
+              QT_TRANSLATE_NOOP("Parameter", "Latched (hardware-captured) input"), KeyKind::flag},
+             [](Scenario& s) -> bool& { return s.machine.latched_input; }),
+        number({"probe.pretravel_mm", "mm", 0.0, 1.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Mechanical pretravel from first contact to the trigger threshold (typically "
+                    "1-50 µm). Independent of speed and removed by calibration; adds to the "
+                    "overtravel and takes pretravel / speed."),
+                QT_TRANSLATE_NOOP("Parameter", "Pretravel")},
+               PC_NUMBER(probe, pretravel_mm)),
+        number({"probe.interface_delay_s", "s", 0.0, 0.5,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Time the probe interface (receiver) needs to pass the trigger to the control. "
+                    "Constant, so calibration removes it from the measured value, but it adds "
+                    "trigger speed × delay to the overtravel."),
+                QT_TRANSLATE_NOOP("Parameter", "Interface response time")},
+               PC_NUMBER(probe, interface_delay_s)),
+        number({"probe.repeatability_2sigma_mm", "mm", 0.0, 1.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Unidirectional repeatability of the probe, 2 sigma. Combined with the "
+                    "scan-period range into the expanded (k = 2) uncertainty."),
+                QT_TRANSLATE_NOOP("Parameter", "Repeatability (2σ)")},
+               PC_NUMBER(probe, repeatability_2sigma_mm)),
+        number({"probe.overtravel_limit_mm", "mm", 0.01, 100.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Stylus deflection range of the probe in the probing direction. The axis must "
+                    "stop within it or the probe or stylus is damaged; short styli along Z and "
+                    "small bores are the critical cases."),
+                QT_TRANSLATE_NOOP("Parameter", "Overtravel limit")},
+               PC_NUMBER(probe, overtravel_limit_mm)),
+        number(
+            {"probe.reseat_mm", "mm", 0.0, 10.0,
+             QT_TRANSLATE_NOOP(
+                 "Parameter",
+                 "Distance the probe needs to reseat after a trigger. The two-touch backoff must "
+                 "clear the first touch's overtravel plus this."),
+             QT_TRANSLATE_NOOP("Parameter", "Reseat distance")},
+            PC_NUMBER(probe, reseat_mm)),
+        number({"probe.calibration_feed_mm_min", "mm/min", 0.0, 100000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Feed at which the probe was calibrated. Measuring at another feed shifts the "
+                    "delay travel and so the measured value; 0 means calibrated at the measuring "
+                    "feed."),
+                QT_TRANSLATE_NOOP("Parameter", "Calibration feed")},
+               PC_NUMBER(probe, calibration_feed_mm_min)),
+        word(
+            {"cycle.strategy", "", 0.0, 0.0,
+             QT_TRANSLATE_NOOP("Parameter",
+                               "Single-touch measures at the probing feed. Two-touch finds the "
+                               "surface fast, backs off, and measures with a slow second touch."),
+             QT_TRANSLATE_NOOP("Parameter", "Strategy"), KeyKind::word},
+            enum_words<Strategy>(kStrategies),
+            [](const Scenario& s) { return std::string(to_string(s.cycle.strategy)); },
+            [](Scenario& s, std::string_view w) {
+                return set_from(s.cycle.strategy, strategy_from_string(w));
+            }),
+        word(
+            {"cycle.feature", "", 0.0, 0.0,
+             QT_TRANSLATE_NOOP("Parameter",
+                               "A surface needs one touch, a web or pocket two opposite touches, "
+                               "a bore or boss four, with positioning moves at the rapid feed "
+                               "between them."),
+             QT_TRANSLATE_NOOP("Parameter", "Feature"), KeyKind::word},
+            enum_words<Feature>(kFeatures),
+            [](const Scenario& s) { return std::string(to_string(s.cycle.feature)); },
+            [](Scenario& s, std::string_view w) {
+                return set_from(s.cycle.feature, feature_from_string(w));
+            }),
+        number({"cycle.feature_size_mm", "mm", 0.0, 10000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Distance between opposite stylus-centre contact points: web or pocket width, "
+                    "bore or boss diameter less the ball diameter. Sets the positioning moves "
+                    "between touches; unused for a surface."),
+                QT_TRANSLATE_NOOP("Parameter", "Feature size")},
+               PC_NUMBER(cycle, feature_size_mm)),
+        number(
+            {"cycle.approach_mm", "mm", 0.0, 1000.0,
+             QT_TRANSLATE_NOOP(
+                 "Parameter",
+                 "Start distance in front of the nominal surface. Must cover the part's position "
+                 "uncertainty, and should cover the distance needed to reach the feed so the "
+                 "touch happens at full speed. Approached at the probing feed, returned at the "
+                 "return feed."),
+             QT_TRANSLATE_NOOP("Parameter", "Approach distance")},
+            PC_NUMBER(cycle, approach_mm)),
+        number(
+            {"cycle.probe_feed_mm_min", "mm/min", 1.0, 100000.0,
+             QT_TRANSLATE_NOOP(
+                 "Parameter",
+                 "Feed of the (first) touch; single-touch measures at it. A higher feed shortens "
+                 "the approach but lengthens the braking, the overtravel and the return, and "
+                 "raises the single-touch uncertainty."),
+             QT_TRANSLATE_NOOP("Parameter", "Probing feedrate")},
+            PC_NUMBER(cycle, probe_feed_mm_min)),
+        number({"cycle.measure_feed_mm_min", "mm/min", 1.0, 100000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets "
+                    "the two-touch uncertainty; the second approach, backoff less the first "
+                    "overtravel, is travelled at it."),
+                QT_TRANSLATE_NOOP("Parameter", "Measuring feedrate")},
+               PC_NUMBER(cycle, measure_feed_mm_min)),
+        number({"cycle.backoff_mm", "mm", 0.0, 1000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Two-touch: distance the probe backs off from where the first touch stopped. "
+                    "Must be at least the first touch's overtravel plus the reseat distance; any "
+                    "more is approached again at the slow measuring feed and wasted."),
+                QT_TRANSLATE_NOOP("Parameter", "Backoff")},
+               PC_NUMBER(cycle, backoff_mm)),
+        number({"cycle.return_feed_mm_min", "mm/min", 1.0, 200000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Feed of the backoff and of the return to the start position (start distance "
+                    "plus overtravel)."),
+                QT_TRANSLATE_NOOP("Parameter", "Return feedrate")},
+               PC_NUMBER(cycle, return_feed_mm_min)),
+        number({"cycle.target_uncertainty_mm", "mm", 0.0, 10.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Target for the expanded (k = 2) uncertainty of the measuring touch; a warning "
+                    "appears above it. 0 means no target."),
+                QT_TRANSLATE_NOOP("Parameter", "Target uncertainty")},
+               PC_NUMBER(cycle, target_uncertainty_mm)),
     };
     return table;
 }
 
-#undef PC_REF
+#undef PC_NUMBER
 
-const NumericKey* find_numeric(std::string_view key) {
-    for (const NumericKey& k : numeric_key_table()) {
-        if (key == k.info.key) return &k;
+const KeyEntry* find_entry(std::string_view key) {
+    for (const KeyEntry& e : key_table()) {
+        if (key == e.info.key) return &e;
     }
     return nullptr;
 }
@@ -119,21 +301,24 @@ Message range_text(const KeyInfo& info) {
     return m;
 }
 
-Message one_of(const char* words) {
+std::string join(const std::vector<std::string>& words) {
+    std::string out;
+    for (const std::string& w : words) {
+        if (!out.empty()) out += ", ";
+        out += w;
+    }
+    return out;
+}
+
+// What a key allows, for its error message.
+Message allowed_for(const KeyEntry& e) {
+    if (e.number != nullptr) return range_text(e.info);
+    if (e.flag != nullptr) {
+        return allowed_text("not_a_bool", QT_TRANSLATE_NOOP("FieldError", "true or false"));
+    }
     Message m = allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
-    m.args = {text_arg("allowed_words", words)};
+    m.args = {text_arg("allowed_words", join(e.words))};
     return m;
-}
-
-Message bool_words() {
-    return allowed_text("not_a_bool", QT_TRANSLATE_NOOP("FieldError", "true or false"));
-}
-
-const char* enum_allowed(std::string_view key) {
-    if (key == "machine.accel_model") return "time_constant, constant_accel, jerk_limited";
-    if (key == "cycle.strategy") return "single_touch, two_touch";
-    if (key == "cycle.feature") return "surface, web, pocket, bore, boss";
-    return nullptr;
 }
 
 Message unknown_key(const std::string& section, const std::string& keys) {
@@ -143,55 +328,45 @@ Message unknown_key(const std::string& section, const std::string& keys) {
     return m;
 }
 
+Message unknown_section() {
+    Message m = allowed_text("unknown_section",
+                             QT_TRANSLATE_NOOP("FieldError", "unknown section; allowed: %1"));
+    m.args = {text_arg("allowed_sections", join(scenario_sections()))};
+    return m;
+}
+
 Message with_detail(const char* code, const char* text, std::string detail) {
     Message m = allowed_text(code, text);
     m.args = {text_arg("detail", std::move(detail))};
     return m;
 }
 
-// Sets an enum key from a word; false when the word is not one of the allowed.
-bool set_enum(Scenario& s, std::string_view key, std::string_view word) {
-    if (key == "machine.accel_model") {
-        if (auto v = accel_model_from_string(word)) return s.machine.accel_model = *v, true;
-    } else if (key == "cycle.strategy") {
-        if (auto v = strategy_from_string(word)) return s.cycle.strategy = *v, true;
-    } else if (key == "cycle.feature") {
-        if (auto v = feature_from_string(word)) return s.cycle.feature = *v, true;
-    }
-    return false;
+// -0 and +0 are one value; the files and reports write 0.
+double without_negative_zero(double value) {
+    return value == 0.0 ? 0.0 : value;
 }
 
-const std::vector<std::string>& section_keys(std::string_view section) {
-    static const std::vector<std::string> machine = {
-        "accel_model",       "time_constant_s", "max_accel_mm_s2",      "max_jerk_mm_s3",
-        "rapid_feed_mm_min", "scan_period_s",   "controller_latency_s", "latched_input"};
-    static const std::vector<std::string> probe = {
-        "pretravel_mm",        "interface_delay_s", "repeatability_2sigma_mm",
-        "overtravel_limit_mm", "reseat_mm",         "calibration_feed_mm_min"};
-    static const std::vector<std::string> cycle = {"strategy",
-                                                   "feature",
-                                                   "feature_size_mm",
-                                                   "approach_mm",
-                                                   "probe_feed_mm_min",
-                                                   "measure_feed_mm_min",
-                                                   "backoff_mm",
-                                                   "return_feed_mm_min",
-                                                   "target_uncertainty_mm"};
-    static const std::vector<std::string> none;
-    if (section == "machine") return machine;
-    if (section == "probe") return probe;
-    if (section == "cycle") return cycle;
-    return none;
+// A decimal number, the whole text (white space around it ignored): no hex,
+// no "inf" or "nan", nothing that does not fit a double.
+std::optional<double> parse_decimal(std::string_view text) {
+    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    while (!text.empty() && space(text.front())) text.remove_prefix(1);
+    while (!text.empty() && space(text.back())) text.remove_suffix(1);
+    if (text.empty() || (text.size() > 1 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X'))) {
+        return std::nullopt;
+    }
+    double value = 0.0;
+    const auto [end, ec] =
+        std::from_chars(text.data(), text.data() + text.size(), value, std::chars_format::general);
+    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
+        return std::nullopt;
+    }
+    return value;
 }
 
-std::string join(const std::vector<std::string>& words) {
-    std::string out;
-    for (const std::string& w : words) {
-        if (!out.empty()) out += ", ";
-        out += w;
-    }
-    return out;
-}
+// Deeper than a scenario needs (root, section, value, and one more so that a
+// list given as a value is refused as a wrong type, not as nesting).
+constexpr std::size_t kMaxJsonDepth = 4;
 
 }  // namespace
 
@@ -214,39 +389,92 @@ std::string join_messages(const std::vector<FieldError>& errors) {
 ScenarioError::ScenarioError(std::vector<FieldError> errors)
     : std::runtime_error(join_messages(errors)), errors_(std::move(errors)) {}
 
+const std::vector<KeyInfo>& scenario_keys() {
+    static const std::vector<KeyInfo> keys = [] {
+        std::vector<KeyInfo> out;
+        for (const KeyEntry& e : key_table()) out.push_back(e.info);
+        return out;
+    }();
+    return keys;
+}
+
 const std::vector<KeyInfo>& numeric_keys() {
     static const std::vector<KeyInfo> keys = [] {
         std::vector<KeyInfo> out;
-        for (const NumericKey& k : numeric_key_table()) out.push_back(k.info);
+        for (const KeyEntry& e : key_table()) {
+            if (e.number != nullptr) out.push_back(e.info);
+        }
         return out;
     }();
     return keys;
 }
 
 const KeyInfo* find_key(std::string_view dotted_key) {
-    const NumericKey* k = find_numeric(dotted_key);
-    return k ? &k->info : nullptr;
+    const KeyEntry* e = find_entry(dotted_key);
+    return e != nullptr && e->number != nullptr ? &e->info : nullptr;
+}
+
+const KeyInfo* find_any_key(std::string_view dotted_key) {
+    const KeyEntry* e = find_entry(dotted_key);
+    return e != nullptr ? &e->info : nullptr;
+}
+
+const std::vector<std::string>& scenario_sections() {
+    static const std::vector<std::string> sections = [] {
+        std::vector<std::string> out;
+        for (const KeyEntry& e : key_table()) {
+            const std::string_view key = e.info.key;
+            const std::string section(key.substr(0, key.find('.')));
+            if (std::find(out.begin(), out.end(), section) == out.end()) out.push_back(section);
+        }
+        return out;
+    }();
+    return sections;
+}
+
+std::vector<std::string> section_key_names(std::string_view section) {
+    std::vector<std::string> names;
+    for (const KeyEntry& e : key_table()) {
+        const std::string_view key = e.info.key;
+        const std::size_t dot = key.find('.');
+        if (key.substr(0, dot) == section) names.emplace_back(key.substr(dot + 1));
+    }
+    return names;
+}
+
+std::vector<std::string> allowed_words(const KeyInfo& key) {
+    const KeyEntry* e = find_entry(key.key);
+    return e != nullptr ? e->words : std::vector<std::string>{};
+}
+
+std::string value_text(const Scenario& scenario, const KeyInfo& key) {
+    const KeyEntry* e = find_entry(key.key);
+    if (e == nullptr) return {};
+    auto& s = const_cast<Scenario&>(scenario);  // the accessors only read here
+    if (e->number != nullptr) return number_text(e->number(s));
+    if (e->flag != nullptr) return e->flag(s) ? "true" : "false";
+    return e->get_word(scenario);
 }
 
 std::optional<double> get_number(const Scenario& scenario, std::string_view dotted_key) {
-    const NumericKey* k = find_numeric(dotted_key);
-    if (!k) return std::nullopt;
-    return k->ref(const_cast<Scenario&>(scenario));  // the accessor only reads here
+    const KeyEntry* e = find_entry(dotted_key);
+    if (e == nullptr || e->number == nullptr) return std::nullopt;
+    return e->number(const_cast<Scenario&>(scenario));  // the accessor only reads here
 }
 
 bool set_number(Scenario& scenario, std::string_view dotted_key, double value) {
-    const NumericKey* k = find_numeric(dotted_key);
-    if (!k) return false;
-    k->ref(scenario) = value;
+    const KeyEntry* e = find_entry(dotted_key);
+    if (e == nullptr || e->number == nullptr) return false;
+    e->number(scenario) = without_negative_zero(value);
     return true;
 }
 
 std::vector<FieldError> validate(const Scenario& scenario) {
     std::vector<FieldError> errors;
-    for (const NumericKey& k : numeric_key_table()) {
-        const double value = *get_number(scenario, k.info.key);
-        if (!std::isfinite(value) || value < k.info.min || value > k.info.max) {
-            errors.push_back({k.info.key, number_text(value), range_text(k.info)});
+    for (const KeyInfo& key : numeric_keys()) {
+        const double value = *get_number(scenario, key.key);
+        if (!std::isfinite(value) || value < key.min || value > key.max) {
+            errors.push_back({key.key, number_text(value), range_text(key)});
         }
     }
     // Internal features: both start positions lie inside the feature
@@ -269,7 +497,12 @@ void validate_or_throw(const Scenario& scenario) {
     if (!errors.empty()) throw ScenarioError(std::move(errors));
 }
 
-Scenario scenario_from_json(std::string_view text) {
+Scenario merge_json(const Scenario& base, std::string_view text) {
+    // What nlohmann would accept silently or crash on: depth, NUL bytes,
+    // duplicate and empty keys, numbers too large (with key and line).
+    if (std::optional<FieldError> error = check_json_text(text, kMaxJsonDepth)) {
+        throw ScenarioError({std::move(*error)});
+    }
     Json root;
     try {
         root = Json::parse(text.begin(), text.end());
@@ -280,7 +513,6 @@ Scenario scenario_from_json(std::string_view text) {
               with_detail("malformed_json", QT_TRANSLATE_NOOP("FieldError", "malformed JSON: %1"),
                           e.what())}});
     } catch (const nlohmann::json::exception& e) {
-        // e.g. out_of_range.406 for a number such as 1e400 that no double holds.
         throw ScenarioError(
             {{"file", "",
               with_detail("number_overflow",
@@ -294,17 +526,12 @@ Scenario scenario_from_json(std::string_view text) {
                                                              "a JSON object with sections machine, "
                                                              "probe, cycle"))}});
     }
-    Scenario scenario;
+    Scenario scenario = base;
     std::vector<FieldError> errors;
     for (const auto& [section, body] : root.items()) {
-        const std::vector<std::string>& keys = section_keys(section);
+        const std::vector<std::string> keys = section_key_names(section);
         if (keys.empty()) {
-            errors.push_back(
-                {section, "",
-                 allowed_text(
-                     "unknown_section",
-                     QT_TRANSLATE_NOOP("FieldError",
-                                       "unknown section; allowed: machine, probe, cycle"))});
+            errors.push_back({section, "", unknown_section()});
             continue;
         }
         if (!body.is_object()) {
@@ -315,24 +542,16 @@ Scenario scenario_from_json(std::string_view text) {
         }
         for (const auto& [name, value] : body.items()) {
             const std::string dotted = section + "." + name;
-            if (const NumericKey* k = find_numeric(dotted)) {
-                if (!value.is_number()) {
-                    errors.push_back({dotted, value.dump(), range_text(k->info)});
-                } else {
-                    k->ref(scenario) = value.get<double>();
-                }
-            } else if (const char* words = enum_allowed(dotted)) {
-                if (!value.is_string() || !set_enum(scenario, dotted, value.get<std::string>())) {
-                    errors.push_back({dotted, value.dump(), one_of(words)});
-                }
-            } else if (dotted == "machine.latched_input") {
-                if (!value.is_boolean()) {
-                    errors.push_back({dotted, value.dump(), bool_words()});
-                } else {
-                    scenario.machine.latched_input = value.get<bool>();
-                }
-            } else {
+            const KeyEntry* e = find_entry(dotted);
+            if (e == nullptr) {
                 errors.push_back({dotted, "", unknown_key(section, join(keys))});
+            } else if (e->number != nullptr && value.is_number()) {
+                e->number(scenario) = without_negative_zero(value.get<double>());
+            } else if (e->flag != nullptr && value.is_boolean()) {
+                e->flag(scenario) = value.get<bool>();
+            } else if (e->set_word == nullptr || !value.is_string() ||
+                       !e->set_word(scenario, value.get<std::string>())) {
+                errors.push_back({dotted, value.dump(), allowed_for(*e)});
             }
         }
     }
@@ -343,25 +562,25 @@ Scenario scenario_from_json(std::string_view text) {
     return scenario;
 }
 
+Scenario scenario_from_json(std::string_view text) {
+    return merge_json(Scenario{}, text);
+}
+
 std::string scenario_to_json(const Scenario& scenario) {
     Json root = Json::object();
-    for (const char* section : {"machine", "probe", "cycle"}) {
-        Json body = Json::object();
-        for (const std::string& name : section_keys(section)) {
-            const std::string dotted = std::string(section) + "." + name;
-            if (const NumericKey* k = find_numeric(dotted)) {
-                body[name] = *get_number(scenario, k->info.key);
-            } else if (dotted == "machine.accel_model") {
-                body[name] = to_string(scenario.machine.accel_model);
-            } else if (dotted == "machine.latched_input") {
-                body[name] = scenario.machine.latched_input;
-            } else if (dotted == "cycle.strategy") {
-                body[name] = to_string(scenario.cycle.strategy);
-            } else if (dotted == "cycle.feature") {
-                body[name] = to_string(scenario.cycle.feature);
-            }
+    for (const KeyEntry& e : key_table()) {
+        const std::string_view key = e.info.key;
+        const std::size_t dot = key.find('.');
+        Json& body = root[std::string(key.substr(0, dot))];
+        const std::string name(key.substr(dot + 1));
+        auto& s = const_cast<Scenario&>(scenario);  // the accessors only read here
+        if (e.number != nullptr) {
+            body[name] = without_negative_zero(e.number(s));
+        } else if (e.flag != nullptr) {
+            body[name] = e.flag(s);
+        } else {
+            body[name] = e.get_word(scenario);
         }
-        root[section] = std::move(body);
     }
     return root.dump(2) + "\n";
 }
@@ -375,30 +594,10 @@ void apply_setting(Scenario& scenario, std::string_view assignment) {
     }
     const std::string key(assignment.substr(0, eq));
     const std::string value(assignment.substr(eq + 1));
-    if (const NumericKey* k = find_numeric(key)) {
-        // Strict: the whole text is a finite number (strtod also reads "nan", "inf").
-        errno = 0;
-        char* end = nullptr;
-        const double number = std::strtod(value.c_str(), &end);
-        if (value.empty() || end != value.c_str() + value.size() || errno == ERANGE ||
-            !std::isfinite(number)) {
-            throw ScenarioError({{key, value.empty() ? "nothing" : value, range_text(k->info)}});
-        }
-        k->ref(scenario) = number;
-    } else if (const char* words = enum_allowed(key)) {
-        if (!set_enum(scenario, key, value)) throw ScenarioError({{key, value, one_of(words)}});
-    } else if (key == "machine.latched_input") {
-        if (value == "true") {
-            scenario.machine.latched_input = true;
-        } else if (value == "false") {
-            scenario.machine.latched_input = false;
-        } else {
-            throw ScenarioError({{key, value, bool_words()}});
-        }
-    } else {
-        const std::size_t dot = key.find('.');
-        const std::string section = dot == std::string::npos ? key : key.substr(0, dot);
-        const std::vector<std::string>& keys = section_keys(section);
+    const KeyEntry* e = find_entry(key);
+    if (e == nullptr) {
+        const std::string section = key.substr(0, key.find('.'));
+        const std::vector<std::string> keys = section_key_names(section);
         throw ScenarioError(
             {{key, "",
               keys.empty() ? allowed_text("unknown_key",
@@ -406,6 +605,22 @@ void apply_setting(Scenario& scenario, std::string_view assignment) {
                                                             "unknown key; sections are machine, "
                                                             "probe, cycle"))
                            : unknown_key(section, join(keys))}});
+    }
+    if (e->number != nullptr) {
+        const std::optional<double> number = parse_decimal(value);
+        if (!number)
+            throw ScenarioError({{key, value.empty() ? "nothing" : value, allowed_for(*e)}});
+        e->number(scenario) = without_negative_zero(*number);
+    } else if (e->flag != nullptr) {
+        if (value == "true") {
+            e->flag(scenario) = true;
+        } else if (value == "false") {
+            e->flag(scenario) = false;
+        } else {
+            throw ScenarioError({{key, value, allowed_for(*e)}});
+        }
+    } else if (!e->set_word(scenario, value)) {
+        throw ScenarioError({{key, value, allowed_for(*e)}});
     }
 }
 
@@ -430,22 +645,21 @@ const char* to_string(Feature feature) {
 }
 
 std::optional<Strategy> strategy_from_string(std::string_view word) {
-    if (word == "single_touch") return Strategy::single_touch;
-    if (word == "two_touch") return Strategy::two_touch;
+    for (Strategy s : kStrategies) {
+        if (word == to_string(s)) return s;
+    }
     return std::nullopt;
 }
 
 std::optional<Feature> feature_from_string(std::string_view word) {
-    for (Feature f :
-         {Feature::surface, Feature::web, Feature::pocket, Feature::bore, Feature::boss}) {
+    for (Feature f : kFeatures) {
         if (word == to_string(f)) return f;
     }
     return std::nullopt;
 }
 
 std::optional<AccelModel> accel_model_from_string(std::string_view word) {
-    for (AccelModel m :
-         {AccelModel::time_constant, AccelModel::constant_accel, AccelModel::jerk_limited}) {
+    for (AccelModel m : kAccelModels) {
         if (word == to_string(m)) return m;
     }
     return std::nullopt;

@@ -76,29 +76,52 @@ class ScenarioError : public std::runtime_error {
 std::vector<FieldError> validate(const Scenario& scenario);
 void validate_or_throw(const Scenario& scenario);
 
-// A documented numeric key: its dotted name, range and what it means.
+// One table describes every key of the scenario file: its dotted name, kind,
+// unit and range, a short label and what it means (both marked for
+// translation, context "Parameter"). Validation, JSON in and out, --set,
+// presets, the CLI's `defaults` and the window's editors and tooltips all
+// read it; defaults come from the structs above.
+enum class KeyKind { number, word, flag };  // word: one of a list (an enum)
 struct KeyInfo {
-    const char* key;
-    const char* unit;
-    double min;
+    const char* key;   // "machine.scan_period_s"
+    const char* unit;  // numbers: the internal unit ("s", "mm", "mm/min"); else ""
+    double min;        // numbers: the allowed range, inclusive
     double max;
-    const char* description;
+    const char* description;  // what it is and how it enters the model
+    const char* label{""};    // a short name for an editor or a column
+    KeyKind kind{KeyKind::number};
 };
-// Every numeric key, in file order.
+// Every key, in file order (sections machine, probe, cycle).
+const std::vector<KeyInfo>& scenario_keys();
+// The numeric keys, in file order.
 const std::vector<KeyInfo>& numeric_keys();
-// Lookup by dotted key; nullptr when unknown.
+// Lookup by dotted key: find_key() among the numeric keys, find_any_key()
+// among all; nullptr when unknown.
 const KeyInfo* find_key(std::string_view dotted_key);
+const KeyInfo* find_any_key(std::string_view dotted_key);
+// The sections, in file order, and the keys' names (without the section) of one.
+const std::vector<std::string>& scenario_sections();
+std::vector<std::string> section_key_names(std::string_view section);
+// The words a word key allows, in order ("time_constant", ...); empty otherwise.
+std::vector<std::string> allowed_words(const KeyInfo& key);
+// A key's value in a scenario as the file writes it ("0.004", "two_touch", "true").
+std::string value_text(const Scenario& scenario, const KeyInfo& key);
 
 // Read/write a numeric key by dotted name (the UI's editors and --set use these).
 std::optional<double> get_number(const Scenario& scenario, std::string_view dotted_key);
-// Returns false when the key is not numeric; the value is not range-checked here.
+// Returns false when the key is not numeric; the value is not range-checked
+// here. A negative zero is stored as zero.
 bool set_number(Scenario& scenario, std::string_view dotted_key, double value);
 
 // JSON. Parsing checks every key, type, enum word and range; it throws
 // ScenarioError (naming the key or the line) and never returns a partial scenario.
 Scenario scenario_from_json(std::string_view text);
+// A partial scenario file (a preset) over `base`: only the keys it names
+// change. Checked like scenario_from_json, all or nothing.
+Scenario merge_json(const Scenario& base, std::string_view partial_json);
 std::string scenario_to_json(const Scenario& scenario);
-// `--set section.key=value`: the value is JSON (number, true/false) or a bare enum word.
+// `--set section.key=value`: a decimal number, true/false, or a bare enum word;
+// white space around the value is ignored.
 void apply_setting(Scenario& scenario, std::string_view assignment);
 
 const char* to_string(Strategy strategy);

@@ -44,10 +44,6 @@
         <translation>объект JSON с разделами machine, probe, cycle</translation>
     </message>
     <message>
-        <source>unknown section; allowed: machine, probe, cycle</source>
-        <translation>неизвестный раздел; допустимые: machine, probe, cycle</translation>
-    </message>
-    <message>
         <source>an object of keys</source>
         <translation>объект с ключами</translation>
     </message>
@@ -100,12 +96,16 @@
         <translation>каждый ключ один раз в объекте; он задан в строке %1 и ещё раз в строке %2</translation>
     </message>
     <message>
-        <source>a number a double can hold (up to about 1.8e308), at line %1</source>
-        <translation>число, представимое типом double (до примерно 1,8e308), в строке %1</translation>
-    </message>
-    <message>
         <source>%1: got %2... (%4 characters); allowed: %3</source>
         <translation>%1: получено %2... (%4 символов); допустимо: %3</translation>
+    </message>
+    <message>
+        <source>a number a double can hold (up to about 1.8e308); at line %1 it is out of range</source>
+        <translation>число, представимое типом double (до примерно 1,8e308); в строке %1 оно вне диапазона</translation>
+    </message>
+    <message>
+        <source>unknown section; allowed: %1</source>
+        <translation>неизвестный раздел; допустимые: %1</translation>
     </message>
 </context>
 <context>
@@ -380,6 +380,38 @@
     <message>
         <source>Time constant (T)</source>
         <translation>Постоянная T</translation>
+    </message>
+    <message>
+        <source>How the control accelerates: a time constant (a = v/T, common on many controls), a constant acceleration, or a jerk-limited S-curve. Sets every move time and the braking distance after the trigger.</source>
+        <translation>Как разгоняется ЧПУ: с постоянной времени (a = v/T, распространено), с постоянным ускорением или по S-кривой с ограничением рывка. Определяет время каждого перемещения и тормозной путь после срабатывания.</translation>
+    </message>
+    <message>
+        <source>Acceleration model</source>
+        <translation>Модель разгона</translation>
+    </message>
+    <message>
+        <source>The control latches (or timestamps) the position in hardware at the trigger: the scan-period wait leaves the measured value, but not the travel - the machine still stops late.</source>
+        <translation>ЧПУ аппаратно защёлкивает (или отмечает временем) положение в момент срабатывания: ожидание опроса уходит из измеренного значения, но не из пути — станок всё равно останавливается поздно.</translation>
+    </message>
+    <message>
+        <source>Latched (hardware-captured) input</source>
+        <translation>Вход с защёлкой (аппаратной)</translation>
+    </message>
+    <message>
+        <source>Single-touch measures at the probing feed. Two-touch finds the surface fast, backs off, and measures with a slow second touch.</source>
+        <translation>Однократное касание измеряет на подаче измерения. Двукратное быстро находит поверхность, отводится и измеряет медленным вторым касанием.</translation>
+    </message>
+    <message>
+        <source>Strategy</source>
+        <translation>Стратегия</translation>
+    </message>
+    <message>
+        <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four, with positioning moves at the rapid feed between them.</source>
+        <translation>Плоскости нужно одно касание, стенке или пазу — два противоположных, отверстию или бобышке — четыре, с позиционированием на ускоренной подаче между ними.</translation>
+    </message>
+    <message>
+        <source>Feature</source>
+        <translation>Элемент</translation>
     </message>
 </context>
 <context>
@@ -1419,22 +1451,6 @@
         <translation>Сохранить изменения в %1?</translation>
     </message>
     <message>
-        <source>acceleration model</source>
-        <translation>модель разгона</translation>
-    </message>
-    <message>
-        <source>strategy</source>
-        <translation>стратегия</translation>
-    </message>
-    <message>
-        <source>feature</source>
-        <translation>элемент</translation>
-    </message>
-    <message>
-        <source>latched input</source>
-        <translation>вход с защёлкой</translation>
-    </message>
-    <message>
         <source>change %1</source>
         <translation>изменение: %1</translation>
     </message>
@@ -1595,38 +1611,6 @@
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>
-    <message>
-        <source>Acceleration model</source>
-        <translation>Модель разгона</translation>
-    </message>
-    <message>
-        <source>Strategy</source>
-        <translation>Стратегия</translation>
-    </message>
-    <message>
-        <source>Feature</source>
-        <translation>Элемент</translation>
-    </message>
-    <message>
-        <source>Latched (hardware-captured) input</source>
-        <translation>Вход с защёлкой (аппаратной)</translation>
-    </message>
-    <message>
-        <source>How the control accelerates: a time constant (a = v/T, common on many controls), a constant acceleration, or a jerk-limited S-curve. Sets every move time and the braking distance after the trigger.</source>
-        <translation>Как разгоняется ЧПУ: с постоянной времени (a = v/T, распространено), с постоянным ускорением или по S-кривой с ограничением рывка. Определяет время каждого перемещения и тормозной путь после срабатывания.</translation>
-    </message>
-    <message>
-        <source>Single-touch measures at the probing feed. Two-touch finds the surface fast, backs off, and measures with a slow second touch.</source>
-        <translation>Однократное касание измеряет на подаче измерения. Двукратное быстро находит поверхность, отводится и измеряет медленным вторым касанием.</translation>
-    </message>
-    <message>
-        <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four, with positioning moves at the rapid feed between them.</source>
-        <translation>Плоскости нужно одно касание, стенке или пазу — два противоположных, отверстию или бобышке — четыре, с позиционированием на ускоренной подаче между ними.</translation>
-    </message>
-    <message>
-        <source>The control latches (or timestamps) the position in hardware at the trigger: the scan-period wait leaves the measured value, but not the travel - the machine still stops late.</source>
-        <translation>ЧПУ аппаратно защёлкивает (или отмечает временем) положение в момент срабатывания: ожидание опроса уходит из измеренного значения, но не из пути — станок всё равно останавливается поздно.</translation>
-    </message>
     <message>
         <source>Typical values: replace them with your measured ones.</source>
         <translation>Типовые значения: замените их измеренными.</translation>

@@ -44,10 +44,6 @@
         <translation>含 machine、probe、cycle 三部分的 JSON 对象</translation>
     </message>
     <message>
-        <source>unknown section; allowed: machine, probe, cycle</source>
-        <translation>未知的部分；允许：machine、probe、cycle</translation>
-    </message>
-    <message>
         <source>an object of keys</source>
         <translation>由键组成的对象</translation>
     </message>
@@ -100,12 +96,16 @@
         <translation>每个对象中每个键只出现一次；它在第 %1 行给出，又在第 %2 行给出</translation>
     </message>
     <message>
-        <source>a number a double can hold (up to about 1.8e308), at line %1</source>
-        <translation>双精度数能表示的数值（最大约 1.8e308），位于第 %1 行</translation>
-    </message>
-    <message>
         <source>%1: got %2... (%4 characters); allowed: %3</source>
         <translation>%1：值为 %2...（共 %4 个字符）；允许：%3</translation>
+    </message>
+    <message>
+        <source>a number a double can hold (up to about 1.8e308); at line %1 it is out of range</source>
+        <translation>双精度数能表示的数值（最大约 1.8e308）；第 %1 行的数值超出范围</translation>
+    </message>
+    <message>
+        <source>unknown section; allowed: %1</source>
+        <translation>未知的部分；允许：%1</translation>
     </message>
 </context>
 <context>
@@ -380,6 +380,38 @@
     <message>
         <source>Time constant (T)</source>
         <translation>时间常数 (T)</translation>
+    </message>
+    <message>
+        <source>How the control accelerates: a time constant (a = v/T, common on many controls), a constant acceleration, or a jerk-limited S-curve. Sets every move time and the braking distance after the trigger.</source>
+        <translation>数控系统的加速方式：时间常数（a = v/T，许多系统常用）、恒加速度，或限加加速度的 S 曲线。它决定每次移动的时间以及触发后的制动距离。</translation>
+    </message>
+    <message>
+        <source>Acceleration model</source>
+        <translation>加速模型</translation>
+    </message>
+    <message>
+        <source>The control latches (or timestamps) the position in hardware at the trigger: the scan-period wait leaves the measured value, but not the travel - the machine still stops late.</source>
+        <translation>数控系统在触发时由硬件锁存（或打时间戳）位置：扫描周期等待不再影响测量值，但不影响行程——机床仍然会晚停。</translation>
+    </message>
+    <message>
+        <source>Latched (hardware-captured) input</source>
+        <translation>锁存（硬件捕获）输入</translation>
+    </message>
+    <message>
+        <source>Single-touch measures at the probing feed. Two-touch finds the surface fast, backs off, and measures with a slow second touch.</source>
+        <translation>一次触发以测量进给率测量。二次触发先快速找到表面，回退，再以慢速的第二次触测进行测量。</translation>
+    </message>
+    <message>
+        <source>Strategy</source>
+        <translation>策略</translation>
+    </message>
+    <message>
+        <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four, with positioning moves at the rapid feed between them.</source>
+        <translation>平面需要一次触测，凸台或槽需要两次相对的触测，孔或圆柱需要四次，各次之间以快移速度定位。</translation>
+    </message>
+    <message>
+        <source>Feature</source>
+        <translation>特征</translation>
     </message>
 </context>
 <context>
@@ -1419,22 +1451,6 @@
         <translation>是否保存对 %1 的更改？</translation>
     </message>
     <message>
-        <source>acceleration model</source>
-        <translation>加速模型</translation>
-    </message>
-    <message>
-        <source>strategy</source>
-        <translation>策略</translation>
-    </message>
-    <message>
-        <source>feature</source>
-        <translation>特征</translation>
-    </message>
-    <message>
-        <source>latched input</source>
-        <translation>锁存输入</translation>
-    </message>
-    <message>
         <source>change %1</source>
         <translation>更改%1</translation>
     </message>
@@ -1595,38 +1611,6 @@
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>
-    <message>
-        <source>Acceleration model</source>
-        <translation>加速模型</translation>
-    </message>
-    <message>
-        <source>Strategy</source>
-        <translation>策略</translation>
-    </message>
-    <message>
-        <source>Feature</source>
-        <translation>特征</translation>
-    </message>
-    <message>
-        <source>Latched (hardware-captured) input</source>
-        <translation>锁存（硬件捕获）输入</translation>
-    </message>
-    <message>
-        <source>How the control accelerates: a time constant (a = v/T, common on many controls), a constant acceleration, or a jerk-limited S-curve. Sets every move time and the braking distance after the trigger.</source>
-        <translation>数控系统的加速方式：时间常数（a = v/T，许多系统常用）、恒加速度，或限加加速度的 S 曲线。它决定每次移动的时间以及触发后的制动距离。</translation>
-    </message>
-    <message>
-        <source>Single-touch measures at the probing feed. Two-touch finds the surface fast, backs off, and measures with a slow second touch.</source>
-        <translation>一次触发以测量进给率测量。二次触发先快速找到表面，回退，再以慢速的第二次触测进行测量。</translation>
-    </message>
-    <message>
-        <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four, with positioning moves at the rapid feed between them.</source>
-        <translation>平面需要一次触测，凸台或槽需要两次相对的触测，孔或圆柱需要四次，各次之间以快移速度定位。</translation>
-    </message>
-    <message>
-        <source>The control latches (or timestamps) the position in hardware at the trigger: the scan-period wait leaves the measured value, but not the travel - the machine still stops late.</source>
-        <translation>数控系统在触发时由硬件锁存（或打时间戳）位置：扫描周期等待不再影响测量值，但不影响行程——机床仍然会晚停。</translation>
-    </message>
     <message>
         <source>Typical values: replace them with your measured ones.</source>
         <translation>典型值：请替换为您的实测值。</translation>

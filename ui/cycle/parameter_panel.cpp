@@ -2,6 +2,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QEvent>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -124,31 +125,27 @@ void ParameterPanel::retranslate() {
     machine_box_->setTitle(section_label(QStringLiteral("machine")));
     probe_box_->setTitle(section_label(QStringLiteral("probe")));
     cycle_box_->setTitle(section_label(QStringLiteral("cycle")));
-    accel_label_->setText(tr("Acceleration model"));
-    strategy_label_->setText(tr("Strategy"));
-    feature_label_->setText(tr("Feature"));
-    latched_->setText(tr("Latched (hardware-captured) input"));
-
-    const QString accel_tip =
-        tr("How the control accelerates: a time constant (a = v/T, common on many controls), a "
-           "constant acceleration, or a jerk-limited S-curve. Sets every move time and the braking "
-           "distance after the trigger.");
-    accel_label_->setToolTip(accel_tip);
-    accel_model_->setToolTip(accel_tip);
-    const QString strategy_tip =
-        tr("Single-touch measures at the probing feed. Two-touch finds the surface fast, backs "
-           "off, and measures with a slow second touch.");
-    strategy_label_->setToolTip(strategy_tip);
-    strategy_->setToolTip(strategy_tip);
-    const QString feature_tip =
-        tr("A surface needs one touch, a web or pocket two opposite touches, a bore or boss four, "
-           "with positioning moves at the rapid feed between them.");
-    feature_label_->setToolTip(feature_tip);
-    feature_->setToolTip(feature_tip);
-    latched_->setToolTip(
-        tr("The control latches (or timestamps) the position in hardware at the trigger: the "
-           "scan-period wait leaves the measured value, but not the travel - the machine still "
-           "stops late."));
+    // Labels and help of the word and flag keys: the core's key table.
+    const auto label_of = [](const char* key) {
+        return QCoreApplication::translate("Parameter", find_any_key(key)->label);
+    };
+    const auto help_of = [](const char* key) {
+        return QCoreApplication::translate("Parameter", find_any_key(key)->description);
+    };
+    accel_label_->setText(label_of("machine.accel_model"));
+    strategy_label_->setText(label_of("cycle.strategy"));
+    feature_label_->setText(label_of("cycle.feature"));
+    latched_->setText(label_of("machine.latched_input"));
+    for (QWidget* w : {static_cast<QWidget*>(accel_label_), static_cast<QWidget*>(accel_model_)}) {
+        w->setToolTip(help_of("machine.accel_model"));
+    }
+    for (QWidget* w : {static_cast<QWidget*>(strategy_label_), static_cast<QWidget*>(strategy_)}) {
+        w->setToolTip(help_of("cycle.strategy"));
+    }
+    for (QWidget* w : {static_cast<QWidget*>(feature_label_), static_cast<QWidget*>(feature_)}) {
+        w->setToolTip(help_of("cycle.feature"));
+    }
+    latched_->setToolTip(help_of("machine.latched_input"));
 
     {
         const QSignalBlocker b1(accel_model_);

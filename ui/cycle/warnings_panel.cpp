@@ -167,7 +167,7 @@ void WarningsPanel::show_result(const Computed& c) {
     if (!c.valid()) {
         for (const FieldError& e : c.errors) {
             show_row(n++, QStringLiteral("invalid:") + QString::fromStdString(e.key),
-                     Severity::error, tr("Invalid scenario"), QString::fromStdString(e.message()),
+                     Severity::error, tr("Invalid scenario"), translate(e.to_message()),
                      Fix::none, {});
         }
     } else {

@@ -10,8 +10,6 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QImage>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
@@ -29,11 +27,13 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "core/common/file_io.h"
 #include "core/cycle/cycle_report.h"
 #include "ui/common/app_icon.h"
 #include "ui/common/file_write.h"
 #include "ui/common/language.h"
 #include "ui/common/parameter_info.h"
+#include "ui/common/text_format.h"
 #include "ui/cycle/cycle_charts.h"
 #include "ui/cycle/parameter_panel.h"
 #include "ui/lab/calibration_tab.h"
@@ -87,6 +87,13 @@ QString read_file(const QString& path, QString& error) {
         return {};
     }
     return QString::fromUtf8(file.readAll());
+}
+
+// Every problem of a refused scenario, one a line, in the interface language.
+QString error_list(const ScenarioError& error) {
+    QStringList lines;
+    for (const FieldError& e : error.errors()) lines << translate(e.to_message());
+    return lines.join(QLatin1Char('\n'));
 }
 
 }  // namespace
@@ -474,16 +481,8 @@ void MainWindow::apply_scenario(const Scenario& scenario) {
 
 void MainWindow::on_panel_edit(const Scenario& scenario, const QString& key) {
     QString label = key;
-    if (const KeyInfo* info = find_key(key.toStdString())) {
-        label = parameter_view(*info).label;
-    } else if (key == QLatin1String("machine.accel_model")) {
-        label = tr("acceleration model");
-    } else if (key == QLatin1String("cycle.strategy")) {
-        label = tr("strategy");
-    } else if (key == QLatin1String("cycle.feature")) {
-        label = tr("feature");
-    } else if (key == QLatin1String("machine.latched_input")) {
-        label = tr("latched input");
+    if (const KeyInfo* info = find_any_key(key.toStdString())) {
+        label = QCoreApplication::translate("Parameter", info->label);
     }
     undo_->push(new ScenarioCommand([this](const Scenario& s) { apply_scenario(s); }, scenario_,
                                     scenario, tr("change %1").arg(label),
@@ -542,22 +541,24 @@ void MainWindow::new_scenario() {
 }
 
 bool MainWindow::open_scenario(const QString& path) {
-    QString error;
-    const QString text = read_file(path, error);
-    if (!error.isEmpty()) {
+    // Read by core, as the CLI reads it: the same size limit and messages.
+    std::string text;
+    try {
+        text = read_text_file(QFile::encodeName(path).toStdString());
+    } catch (const FileError& e) {
         report_error(tr("Could not open the scenario"),
-                     tr("%1 could not be read: %2").arg(QDir::toNativeSeparators(path), error));
+                     tr("%1 could not be read: %2")
+                         .arg(QDir::toNativeSeparators(path), translate(e.reason())));
         return false;
     }
     Scenario loaded;
     try {
-        loaded = scenario_from_json(text.toStdString());
-        validate_or_throw(loaded);
-    } catch (const std::exception& e) {
-        // The message names the key, the value and what is allowed (core's ScenarioError).
+        loaded = scenario_from_json(text);
+    } catch (const ScenarioError& e) {
+        // Each line names the key, the value and what is allowed, translated.
         report_error(tr("Could not open the scenario"),
                      tr("%1 is not a valid scenario:\n%2")
-                         .arg(QDir::toNativeSeparators(path), QString::fromUtf8(e.what())));
+                         .arg(QDir::toNativeSeparators(path), error_list(e)));
         return false;
     }
     reset_document(loaded, QFileInfo(path).absoluteFilePath());
@@ -624,33 +625,17 @@ bool MainWindow::export_charts_png(const QString& path) {
 bool MainWindow::apply_preset(const QString& resource_path) {
     QString error;
     const QString text = read_file(resource_path, error);
-    Scenario preset;
-    try {
-        if (!error.isEmpty()) throw std::runtime_error(error.toStdString());
-        preset = scenario_from_json(text.toStdString());
-    } catch (const std::exception& e) {
-        report_error(tr("Could not apply the preset"), QString::fromUtf8(e.what()));
+    if (!error.isEmpty()) {
+        report_error(tr("Could not apply the preset"), error);
         return false;
     }
     // Only the keys the preset names change; everything else stays as the user set it.
-    const QJsonObject root = QJsonDocument::fromJson(text.toUtf8()).object();
-    Scenario next = scenario_;
-    for (auto section = root.begin(); section != root.end(); ++section) {
-        const QJsonObject keys = section.value().toObject();
-        for (auto key = keys.begin(); key != keys.end(); ++key) {
-            const std::string dotted = (section.key() + QLatin1Char('.') + key.key()).toStdString();
-            if (const auto value = get_number(preset, dotted)) {
-                set_number(next, dotted, *value);
-            } else if (dotted == "machine.accel_model") {
-                next.machine.accel_model = preset.machine.accel_model;
-            } else if (dotted == "machine.latched_input") {
-                next.machine.latched_input = preset.machine.latched_input;
-            } else if (dotted == "cycle.strategy") {
-                next.cycle.strategy = preset.cycle.strategy;
-            } else if (dotted == "cycle.feature") {
-                next.cycle.feature = preset.cycle.feature;
-            }
-        }
+    Scenario next;
+    try {
+        next = merge_json(scenario_, text.toStdString());
+    } catch (const ScenarioError& e) {
+        report_error(tr("Could not apply the preset"), error_list(e));
+        return false;
     }
     QString name = QFileInfo(resource_path).baseName();
     for (const PresetDef& def : kMachinePresets) {

@@ -371,6 +371,9 @@ TEST(ScenarioJson, NumberBeyondDoubleIsAScenarioError) {
         [&] { scenario_from_json(R"({"machine": {"scan_period_s": 1e400}})"); });
     ASSERT_TRUE(error.has_value());
     EXPECT_TRUE(contains(error->what(), "out of range")) << error->what();
+    // It names the key and the line (it said only "number overflow parsing '1e400'").
+    EXPECT_TRUE(contains(error->what(), "machine.scan_period_s")) << error->what();
+    EXPECT_TRUE(contains(error->what(), "line 1")) << error->what();
 }
 
 TEST(ScenarioJson, TopLevelMustBeAnObject) {
@@ -595,6 +598,153 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
     EXPECT_THROW(apply_setting(s, "machine.nope=1"), ScenarioError);
     EXPECT_THROW(apply_setting(s, "machine.latched_input=yes"), ScenarioError);
     EXPECT_EQ(scenario_to_json(s), before);
+}
+
+// --- The key table (one table of every key) ---
+
+TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
+    const Scenario defaults;
+    ASSERT_EQ(scenario_keys().size(), 23u);
+    for (const KeyInfo& key : scenario_keys()) {
+        SCOPED_TRACE(key.key);
+        EXPECT_GT(std::string(key.label).size(), 0u);
+        EXPECT_GT(std::string(key.description).size(), 20u);
+        ASSERT_NE(find_any_key(key.key), nullptr);
+        EXPECT_STREQ(find_any_key(key.key)->label, key.label);
+        const std::string value = value_text(defaults, key);
+        EXPECT_FALSE(value.empty());
+        if (key.kind == KeyKind::number) {
+            EXPECT_GT(std::string(key.unit).size(), 0u);
+            EXPECT_LE(key.min, key.max);
+            const double v = *get_number(defaults, key.key);
+            EXPECT_LE(key.min, v);
+            EXPECT_LE(v, key.max);
+            EXPECT_EQ(find_key(key.key), find_any_key(key.key));
+        } else {
+            EXPECT_EQ(find_key(key.key), nullptr) << "find_key() is for numbers only";
+        }
+        if (key.kind == KeyKind::word) {
+            const std::vector<std::string> words = allowed_words(key);
+            EXPECT_NE(std::find(words.begin(), words.end(), value), words.end());
+        }
+    }
+}
+
+TEST(KeyTable, SectionsAndTheirKeysComeFromTheTable) {
+    EXPECT_EQ(scenario_sections(), (std::vector<std::string>{"machine", "probe", "cycle"}));
+    std::size_t total = 0;
+    for (const std::string& section : scenario_sections()) {
+        for (const std::string& name : section_key_names(section)) {
+            EXPECT_NE(find_any_key(section + "." + name), nullptr) << section << "." << name;
+            ++total;
+        }
+    }
+    EXPECT_EQ(total, scenario_keys().size());
+    EXPECT_TRUE(section_key_names("nope").empty());
+}
+
+TEST(KeyTable, EveryWordOfEveryWordKeyIsAcceptedBySetAndJson) {
+    for (const KeyInfo& key : scenario_keys()) {
+        for (const std::string& word : allowed_words(key)) {
+            Scenario s;
+            apply_setting(s, std::string(key.key) + "=" + word);
+            EXPECT_EQ(value_text(s, key), word);
+            EXPECT_EQ(value_text(scenario_from_json(scenario_to_json(s)), key), word);
+        }
+    }
+}
+
+// --- Presets merge over the current scenario ---
+
+TEST(MergeJson, APresetChangesOnlyItsKeys) {
+    Scenario base;
+    base.cycle.probe_feed_mm_min = 1234.0;
+    base.machine.accel_model = AccelModel::jerk_limited;
+    const Scenario merged =
+        merge_json(base, R"({"machine": {"scan_period_s": 0.000004, "latched_input": true},
+                  "probe": {"pretravel_mm": 0.0005}})");
+    EXPECT_EQ(merged.machine.scan_period_s, 0.000004);
+    EXPECT_TRUE(merged.machine.latched_input);
+    EXPECT_EQ(merged.probe.pretravel_mm, 0.0005);
+    EXPECT_EQ(merged.cycle.probe_feed_mm_min, 1234.0);
+    EXPECT_EQ(merged.machine.accel_model, AccelModel::jerk_limited);
+}
+
+TEST(MergeJson, ABadPresetChangesNothingAndNamesTheKey) {
+    const Scenario base;
+    const auto error = scenario_error_from([&] {
+        (void)merge_json(base, R"({"machine": {"scan_period_s": 0.001, "time_constant_s": -1}})");
+    });
+    ASSERT_TRUE(error.has_value());
+    EXPECT_TRUE(contains(error->what(), "machine.time_constant_s")) << error->what();
+    // A merge that fails returns nothing, so the base is all the caller has.
+    EXPECT_EQ(scenario_to_json(base), scenario_to_json(Scenario{}));
+}
+
+// --- Hardening: what fuzzing found (each failed before its fix) ---
+
+TEST(ScenarioJson, DeepNestingIsRefusedNamingKeyAndLine) {
+    for (const std::string& text :
+         {"{\"machine\":{\"time_constant_s\":" + std::string(60000, '[') + std::string(60000, ']') +
+              "}}",
+          "{\"machine\":" + std::string(60000, '[') + std::string(60000, ']') + "}"}) {
+        const auto error = scenario_error_from([&] { (void)scenario_from_json(text); });
+        ASSERT_TRUE(error.has_value());
+        EXPECT_TRUE(contains(error->what(), "machine")) << error->what();
+        EXPECT_TRUE(contains(error->what(), "line 1")) << error->what();
+        EXPECT_TRUE(contains(error->what(), "nesting")) << error->what();
+    }
+}
+
+TEST(ScenarioJson, BytesAfterANulAreNotIgnored) {
+    const std::string text = std::string(R"({"cycle":{"strategy":"single_touch"}})") + '\0' + "{{{";
+    const auto error = scenario_error_from([&] { (void)scenario_from_json(text); });
+    ASSERT_TRUE(error.has_value());
+    EXPECT_TRUE(contains(error->what(), "NUL")) << error->what();
+}
+
+TEST(ScenarioJson, ADuplicateKeyIsRefusedNamingBothLines) {
+    const auto error = scenario_error_from([&] {
+        (void)scenario_from_json(
+            "{\"machine\":{\"time_constant_s\":5,\n\"time_constant_s\":0.05}}");
+    });
+    ASSERT_TRUE(error.has_value());
+    EXPECT_TRUE(contains(error->what(), "machine.time_constant_s")) << error->what();
+    EXPECT_TRUE(contains(error->what(), "line 1 and again at line 2")) << error->what();
+}
+
+TEST(ScenarioJson, AnEmptyKeyIsCalledAnEmptyKey) {
+    const auto error = scenario_error_from([&] { (void)scenario_from_json(R"({"":{}})"); });
+    ASSERT_TRUE(error.has_value());
+    EXPECT_TRUE(contains(error->what(), "empty key")) << error->what();
+}
+
+TEST(ApplySetting, NumbersAreDecimalAndWhiteSpaceIsIgnoredOnBothSides) {
+    Scenario s;
+    for (const char* bad : {"0x10", "0X10", "1e400", "inf", "nan", "10 mm", "1,5", ""}) {
+        EXPECT_TRUE(scenario_error_from([&] {
+                        apply_setting(s, std::string("cycle.probe_feed_mm_min=") + bad);
+                    }).has_value())
+            << bad;
+    }
+    apply_setting(s, "cycle.probe_feed_mm_min= 1500");
+    EXPECT_EQ(s.cycle.probe_feed_mm_min, 1500.0);
+    apply_setting(s, "cycle.probe_feed_mm_min=1600 ");
+    EXPECT_EQ(s.cycle.probe_feed_mm_min, 1600.0);
+    apply_setting(s, "cycle.probe_feed_mm_min=1.7e3");
+    EXPECT_EQ(s.cycle.probe_feed_mm_min, 1700.0);
+}
+
+TEST(ApplySetting, NegativeZeroIsWrittenAsZero) {
+    Scenario s;
+    apply_setting(s, "machine.scan_period_s=-0");
+    EXPECT_FALSE(std::signbit(s.machine.scan_period_s));
+    EXPECT_EQ(scenario_to_json(s).find("-0"), std::string::npos);
+    const Scenario from_file = scenario_from_json(R"({"machine": {"scan_period_s": -0.0}})");
+    EXPECT_FALSE(std::signbit(from_file.machine.scan_period_s));
+    Scenario direct;
+    set_number(direct, "cycle.backoff_mm", -0.0);
+    EXPECT_FALSE(std::signbit(direct.cycle.backoff_mm));
 }
 
 }  // namespace
