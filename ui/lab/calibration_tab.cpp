@@ -21,11 +21,11 @@
 #include <stdexcept>
 
 #include "core/common/file_io.h"
+#include "core/cycle/cycle_report.h"
 #include "core/lab/calibration_report.h"
-#include "ui/lab/lab_widgets.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
-#include "core/cycle/cycle_report.h"
+#include "ui/lab/lab_widgets.h"
 
 namespace probecycle::ui {
 
@@ -393,8 +393,8 @@ bool CalibrationTab::fit_text(const QString& text, const QString& source) {
         points = parse_ring_csv(text.toStdString());
         result = calibrate_ring(points, options);
     } catch (const std::exception& e) {
-        // CsvError names the line and column; invalid_argument says what is wrong.
-        const QString message = QString::fromStdString(e.what());
+        // CsvError names the line and column; LabError says what is wrong.
+        const QString message = lab_error_text(e);
         set_error(source.isEmpty() ? message : tr("%1: %2").arg(source, message));
         return false;
     }
@@ -413,7 +413,7 @@ bool CalibrationTab::refit() {
         options_ = options;
         result_ = std::move(result);
     } catch (const std::exception& e) {
-        set_error(QString::fromStdString(e.what()));
+        set_error(lab_error_text(e));
         return false;
     }
     set_error({});
@@ -665,7 +665,7 @@ void CalibrationTab::compute_length() {
             length_result_ = calibrate_length(input);
             length_input_ = input;
         } catch (const std::exception& e) {
-            length_error_ = QString::fromStdString(e.what());
+            length_error_ = lab_error_text(e);
         }
     }
 
@@ -711,7 +711,7 @@ bool CalibrationTab::export_report(const QString& path) {
         write_file_atomically(QFile::encodeName(path).toStdString(),
                               calibration_report_csv(ring, length));
     } catch (const std::exception& e) {
-        last_error_ = QString::fromStdString(e.what());
+        last_error_ = lab_error_text(e);
         show_error(export_status_, last_error_);
         return false;
     }

@@ -25,10 +25,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "ui/lab/lab_widgets.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
 #include "ui/common/text_format.h"
+#include "ui/lab/lab_widgets.h"
 
 namespace probecycle::ui {
 
@@ -84,6 +84,27 @@ QString method_legend(CompensationMethod method) {
 
 QString number(double value, int decimals) {
     return QLocale().toString(value, 'f', decimals);
+}
+
+// A setup field as the window names it: validate() names the fields by the
+// CLI's options ("feed-mm-min"), which mean nothing here.
+QString setup_field_label(const std::string& key) {
+    if (key == "feed-mm-min") return LatencyTab::tr("Feed");
+    if (key == "interpolation-period-s") return LatencyTab::tr("Interpolation period");
+    if (key == "lag-cycles") return LatencyTab::tr("Lag");
+    if (key == "speed-fraction") return LatencyTab::tr("Speed at the trigger");
+    if (key == "direction") return LatencyTab::tr("Direction of travel");
+    if (key == "trigger-phase") return LatencyTab::tr("Trigger phase in its cycle");
+    if (key == "counts-per-mm") return LatencyTab::tr("Encoder counts per mm");
+    if (key == "counter-bits") return LatencyTab::tr("Encoder counter width");
+    if (key == "naive-delay-s") return LatencyTab::tr("Delay for v·τ");
+    return QString::fromStdString(key);
+}
+
+// A setup error with the window's name of its field.
+QString setup_error_text(FieldError error) {
+    error.key = setup_field_label(error.key).toStdString();
+    return translate(error.to_message());
 }
 
 }  // namespace
@@ -479,7 +500,7 @@ void LatencyTab::apply_period() {
         fit_options_ = options;
         fit_ = std::move(fit);
     } catch (const std::exception& e) {
-        set_error(QString::fromStdString(e.what()));
+        set_error(lab_error_text(e));
         return;
     }
     show_fit();
@@ -511,7 +532,7 @@ bool LatencyTab::fit_text(const QString& text, const QString& source) {
         touches = parse_delay_csv(text.toStdString());
         fit = fit_delay(touches, options);
     } catch (const std::exception& e) {
-        const QString message = QString::fromStdString(e.what());
+        const QString message = lab_error_text(e);
         set_error(source.isEmpty() ? message : tr("%1: %2").arg(source, message));
         return false;
     }
@@ -701,14 +722,9 @@ LatencyTab::ApplyState LatencyTab::evaluate_apply() const {
         // The result must be a valid scenario (the key's range).
         apply_delay(*scenario_, applied);
         state.applied = std::move(applied);
-    } catch (const ScenarioError& e) {
-        QStringList messages;
-        for (const FieldError& error : e.errors()) {
-            messages << QString::fromStdString(error.message());
-        }
-        state.problem = messages.join(QLatin1Char('\n'));
     } catch (const std::exception& e) {
-        state.problem = QString::fromStdString(e.what());
+        // LabError from the rule, ScenarioError from the key's range.
+        state.problem = lab_error_text(e);
     }
     return state;
 }
@@ -735,7 +751,7 @@ void LatencyTab::update_apply() {
                      lab_ms(a.interface_delay_s), half_scan, lab_ms(a.controller_latency_s),
                      lab_ms(a.previous_s)));
         apply_breakdown_->setStyleSheet({});
-        apply_breakdown_->setToolTip(QString::fromStdString(a.rule));
+        apply_breakdown_->setToolTip(translate(a.rule));
     } else if (fit_ && scenario_) {
         show_error(apply_breakdown_, state.problem);
         apply_breakdown_->setToolTip({});
@@ -834,7 +850,7 @@ void LatencyTab::update_comparison_now() {
     comparison_error_.clear();
     if (const auto errors = validate(setup); !errors.empty()) {
         QStringList messages;
-        for (const FieldError& e : errors) messages << QString::fromStdString(e.message());
+        for (const FieldError& e : errors) messages << setup_error_text(e);
         comparison_error_ = messages.join(QLatin1Char('\n'));
         comparison_.reset();
         sweep_.clear();
