@@ -919,6 +919,146 @@
     </message>
 </context>
 <context>
+    <name>probecycle::ui::CompensationPanel</name>
+    <message>
+        <source>Uncompensated</source>
+        <translation>Без компенсации</translation>
+    </message>
+    <message>
+        <source>Naive v·τ</source>
+        <translation>Простая v·τ</translation>
+    </message>
+    <message>
+        <source>Cycle lag (real increments)</source>
+        <translation>Запаздывание в периодах (реальные приращения)</translation>
+    </message>
+    <message>
+        <source>Timestamp interpolation</source>
+        <translation>Интерполяция по метке времени</translation>
+    </message>
+    <message>
+        <source>Real increments</source>
+        <translation>Реальные приращения</translation>
+    </message>
+    <message>
+        <source>Timestamp</source>
+        <translation>Метка времени</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Подача</translation>
+    </message>
+    <message>
+        <source>Interpolation period</source>
+        <translation>Период интерполяции</translation>
+    </message>
+    <message>
+        <source>Lag</source>
+        <translation>Запаздывание</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger</source>
+        <translation>Скорость при срабатывании</translation>
+    </message>
+    <message>
+        <source>Direction of travel</source>
+        <translation>Направление движения</translation>
+    </message>
+    <message>
+        <source>Trigger phase in its cycle</source>
+        <translation>Фаза срабатывания в периоде</translation>
+    </message>
+    <message>
+        <source>Encoder counts per mm</source>
+        <translation>Импульсов энкодера на мм</translation>
+    </message>
+    <message>
+        <source>Encoder counter width</source>
+        <translation>Разрядность счётчика энкодера</translation>
+    </message>
+    <message>
+        <source>Delay for v·τ</source>
+        <translation>Задержка для v·τ</translation>
+    </message>
+    <message>
+        <source>Compensation of the trigger position</source>
+        <translation>Компенсация положения срабатывания</translation>
+    </message>
+    <message>
+        <source>The programmed probing feed.</source>
+        <translation>Запрограммированная подача измерения.</translation>
+    </message>
+    <message>
+        <source>The control&apos;s interpolation cycle.</source>
+        <translation>Период интерполяции ЧПУ.</translation>
+    </message>
+    <message>
+        <source>Cycles between the end of the trigger&apos;s cycle and the recorded position; the delay-stability test above measures it.</source>
+        <translation>Число периодов между концом периода срабатывания и записанным положением; его измеряет испытание стабильности задержки выше.</translation>
+    </message>
+    <message>
+        <source> cycles</source>
+        <translation> периодов</translation>
+    </message>
+    <message>
+        <source>Touch</source>
+        <translation>Касание</translation>
+    </message>
+    <message>
+        <source>At constant speed, or while the axis is braking.</source>
+        <translation>На постоянной скорости или во время торможения оси.</translation>
+    </message>
+    <message>
+        <source>At constant speed</source>
+        <translation>На постоянной скорости</translation>
+    </message>
+    <message>
+        <source>While braking</source>
+        <translation>Во время торможения</translation>
+    </message>
+    <message>
+        <source>While braking: the speed at the trigger, in % of the feed.</source>
+        <translation>Во время торможения: скорость при срабатывании в % от подачи.</translation>
+    </message>
+    <message>
+        <source>Take period and lag from the fit</source>
+        <translation>Взять период и запаздывание из подбора</translation>
+    </message>
+    <message>
+        <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
+        <translation>Динамика станка — из сценария. При торможении v·τ считает подачу постоянной всю задержку и перекорректирует; реальные приращения последних периодов дают ошибку в пределах пути за один период.</translation>
+    </message>
+    <message>
+        <source>Error of the corrected position while braking</source>
+        <translation>Ошибка исправленного положения при торможении</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger [% of the feed]</source>
+        <translation>Скорость при срабатывании [% от подачи]</translation>
+    </message>
+    <message>
+        <source>Error [%1]</source>
+        <translation>Ошибка [%1]</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Метод</translation>
+    </message>
+    <message>
+        <source>Position [%1]</source>
+        <translation>Положение [%1]</translation>
+    </message>
+    <message>
+        <source>Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ uses τ = %4.</source>
+        <extracomment>%1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses</extracomment>
+        <translation>Срабатывание на %1 мм/с, запись через %2 периодов на %3 мм/с; v·τ использует τ = %4.</translation>
+    </message>
+    <message>
+        <source>Counter roll-overs: %1.</source>
+        <translation>Переполнений счётчика: %1.</translation>
+    </message>
+</context>
+<context>
     <name>probecycle::ui::CycleCharts</name>
     <message>
         <source>Probing feedrate [%1]</source>
@@ -1034,92 +1174,7 @@
     </message>
 </context>
 <context>
-    <name>probecycle::ui::Lab</name>
-    <message>
-        <source>Points on one side</source>
-        <translation>Точки с одной стороны</translation>
-    </message>
-    <message>
-        <source>Large stylus runout</source>
-        <translation>Большое биение наконечника</translation>
-    </message>
-    <message>
-        <source>Point off the circle</source>
-        <translation>Точка вне окружности</translation>
-    </message>
-    <message>
-        <source>One orientation only: no runout</source>
-        <translation>Только одна ориентация: биения нет</translation>
-    </message>
-    <message>
-        <source>Three points: exact fit</source>
-        <translation>Три точки: точный подбор</translation>
-    </message>
-    <message>
-        <source>Length far from the nominal</source>
-        <translation>Длина далека от номинальной</translation>
-    </message>
-    <message>
-        <source>Fewer than 3 feeds</source>
-        <translation>Меньше 3 подач</translation>
-    </message>
-    <message>
-        <source>Unstable delay</source>
-        <translation>Нестабильная задержка</translation>
-    </message>
-    <message>
-        <source>Residuals curve: the delay changes</source>
-        <translation>Остатки искривлены: задержка меняется</translation>
-    </message>
-    <message>
-        <source>Negative delay</source>
-        <translation>Отрицательная задержка</translation>
-    </message>
-    <message>
-        <source>One touch at a feed</source>
-        <translation>Одно касание на подаче</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>%1 could not be read: %2</source>
-        <translation>Не удалось прочитать %1: %2</translation>
-    </message>
-    <message>
-        <source>Unexpected error: %1</source>
-        <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
-        <translation>Непредвиденная ошибка: %1</translation>
-    </message>
-</context>
-<context>
-    <name>probecycle::ui::LatencyTab</name>
-    <message>
-        <source>Uncompensated</source>
-        <translation>Без компенсации</translation>
-    </message>
-    <message>
-        <source>Naive v·τ</source>
-        <translation>Простая v·τ</translation>
-    </message>
-    <message>
-        <source>Cycle lag (real increments)</source>
-        <translation>Запаздывание в периодах (реальные приращения)</translation>
-    </message>
-    <message>
-        <source>Timestamp interpolation</source>
-        <translation>Интерполяция по метке времени</translation>
-    </message>
-    <message>
-        <source>Real increments</source>
-        <translation>Реальные приращения</translation>
-    </message>
-    <message>
-        <source>Timestamp</source>
-        <translation>Метка времени</translation>
-    </message>
+    <name>probecycle::ui::DelayFitPanel</name>
     <message>
         <source>Delay from touches at several feeds (delay-stability test)</source>
         <translation>Задержка по касаниям на нескольких подачах (испытание стабильности задержки)</translation>
@@ -1153,8 +1208,16 @@
         <translation>Подобрать</translation>
     </message>
     <message>
+        <source>Measured minus zero-speed position, against feed</source>
+        <translation>Измеренное минус положение при нулевой скорости, по подаче</translation>
+    </message>
+    <message>
         <source>Feed [%1]</source>
         <translation>Подача [%1]</translation>
+    </message>
+    <message>
+        <source>Deviation [%1]</source>
+        <translation>Отклонение [%1]</translation>
     </message>
     <message>
         <source>Group / feed</source>
@@ -1221,82 +1284,6 @@
         <translation>Задаёт machine.controller_latency_s равной подобранной задержке минус задержка интерфейса датчика и половина периода опроса (для входа с защёлкой — без неё).</translation>
     </message>
     <message>
-        <source>Compensation of the trigger position</source>
-        <translation>Компенсация положения срабатывания</translation>
-    </message>
-    <message>
-        <source>Feed</source>
-        <translation>Подача</translation>
-    </message>
-    <message>
-        <source>The programmed probing feed.</source>
-        <translation>Запрограммированная подача измерения.</translation>
-    </message>
-    <message>
-        <source>The control&apos;s interpolation cycle.</source>
-        <translation>Период интерполяции ЧПУ.</translation>
-    </message>
-    <message>
-        <source>Lag</source>
-        <translation>Запаздывание</translation>
-    </message>
-    <message>
-        <source>Cycles between the end of the trigger&apos;s cycle and the recorded position; the delay-stability test above measures it.</source>
-        <translation>Число периодов между концом периода срабатывания и записанным положением; его измеряет испытание стабильности задержки выше.</translation>
-    </message>
-    <message>
-        <source> cycles</source>
-        <translation> периодов</translation>
-    </message>
-    <message>
-        <source>Touch</source>
-        <translation>Касание</translation>
-    </message>
-    <message>
-        <source>At constant speed, or while the axis is braking.</source>
-        <translation>На постоянной скорости или во время торможения оси.</translation>
-    </message>
-    <message>
-        <source>At constant speed</source>
-        <translation>На постоянной скорости</translation>
-    </message>
-    <message>
-        <source>While braking</source>
-        <translation>Во время торможения</translation>
-    </message>
-    <message>
-        <source>Speed at the trigger</source>
-        <translation>Скорость при срабатывании</translation>
-    </message>
-    <message>
-        <source>While braking: the speed at the trigger, in % of the feed.</source>
-        <translation>Во время торможения: скорость при срабатывании в % от подачи.</translation>
-    </message>
-    <message>
-        <source>Take period and lag from the fit</source>
-        <translation>Взять период и запаздывание из подбора</translation>
-    </message>
-    <message>
-        <source>Error of the corrected position while braking</source>
-        <translation>Ошибка исправленного положения при торможении</translation>
-    </message>
-    <message>
-        <source>Speed at the trigger [% of the feed]</source>
-        <translation>Скорость при срабатывании [% от подачи]</translation>
-    </message>
-    <message>
-        <source>Error [%1]</source>
-        <translation>Ошибка [%1]</translation>
-    </message>
-    <message>
-        <source>Method</source>
-        <translation>Метод</translation>
-    </message>
-    <message>
-        <source>Position [%1]</source>
-        <translation>Положение [%1]</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1337,46 +1324,66 @@
         <extracomment>%1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now</extracomment>
         <translation>Задержка ЧПУ = %1 задержка %2 − интерфейс %3 − половина опроса %4 = &lt;b&gt;%5&lt;/b&gt; (сейчас %6)</translation>
     </message>
+</context>
+<context>
+    <name>probecycle::ui::Lab</name>
     <message>
-        <source>Measured minus zero-speed position, against feed</source>
-        <translation>Измеренное минус положение при нулевой скорости, по подаче</translation>
+        <source>Points on one side</source>
+        <translation>Точки с одной стороны</translation>
     </message>
     <message>
-        <source>Deviation [%1]</source>
-        <translation>Отклонение [%1]</translation>
+        <source>Large stylus runout</source>
+        <translation>Большое биение наконечника</translation>
     </message>
     <message>
-        <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
-        <translation>Динамика станка — из сценария. При торможении v·τ считает подачу постоянной всю задержку и перекорректирует; реальные приращения последних периодов дают ошибку в пределах пути за один период.</translation>
+        <source>Point off the circle</source>
+        <translation>Точка вне окружности</translation>
     </message>
     <message>
-        <source>Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ uses τ = %4.</source>
-        <extracomment>%1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses</extracomment>
-        <translation>Срабатывание на %1 мм/с, запись через %2 периодов на %3 мм/с; v·τ использует τ = %4.</translation>
+        <source>One orientation only: no runout</source>
+        <translation>Только одна ориентация: биения нет</translation>
     </message>
     <message>
-        <source>Counter roll-overs: %1.</source>
-        <translation>Переполнений счётчика: %1.</translation>
+        <source>Three points: exact fit</source>
+        <translation>Три точки: точный подбор</translation>
     </message>
     <message>
-        <source>Direction of travel</source>
-        <translation>Направление движения</translation>
+        <source>Length far from the nominal</source>
+        <translation>Длина далека от номинальной</translation>
     </message>
     <message>
-        <source>Trigger phase in its cycle</source>
-        <translation>Фаза срабатывания в периоде</translation>
+        <source>Fewer than 3 feeds</source>
+        <translation>Меньше 3 подач</translation>
     </message>
     <message>
-        <source>Encoder counts per mm</source>
-        <translation>Импульсов энкодера на мм</translation>
+        <source>Unstable delay</source>
+        <translation>Нестабильная задержка</translation>
     </message>
     <message>
-        <source>Encoder counter width</source>
-        <translation>Разрядность счётчика энкодера</translation>
+        <source>Residuals curve: the delay changes</source>
+        <translation>Остатки искривлены: задержка меняется</translation>
     </message>
     <message>
-        <source>Delay for v·τ</source>
-        <translation>Задержка для v·τ</translation>
+        <source>Negative delay</source>
+        <translation>Отрицательная задержка</translation>
+    </message>
+    <message>
+        <source>One touch at a feed</source>
+        <translation>Одно касание на подаче</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>Не удалось прочитать %1: %2</translation>
+    </message>
+    <message>
+        <source>Unexpected error: %1</source>
+        <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
+        <translation>Непредвиденная ошибка: %1</translation>
     </message>
 </context>
 <context>

@@ -919,6 +919,146 @@
     </message>
 </context>
 <context>
+    <name>probecycle::ui::CompensationPanel</name>
+    <message>
+        <source>Uncompensated</source>
+        <translation>未补偿</translation>
+    </message>
+    <message>
+        <source>Naive v·τ</source>
+        <translation>简单 v·τ</translation>
+    </message>
+    <message>
+        <source>Cycle lag (real increments)</source>
+        <translation>周期滞后（实际增量）</translation>
+    </message>
+    <message>
+        <source>Timestamp interpolation</source>
+        <translation>时间戳插值</translation>
+    </message>
+    <message>
+        <source>Real increments</source>
+        <translation>实际增量</translation>
+    </message>
+    <message>
+        <source>Timestamp</source>
+        <translation>时间戳</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>进给率</translation>
+    </message>
+    <message>
+        <source>Interpolation period</source>
+        <translation>插补周期</translation>
+    </message>
+    <message>
+        <source>Lag</source>
+        <translation>滞后</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger</source>
+        <translation>触发时速度</translation>
+    </message>
+    <message>
+        <source>Direction of travel</source>
+        <translation>行程方向</translation>
+    </message>
+    <message>
+        <source>Trigger phase in its cycle</source>
+        <translation>触发在其周期内的相位</translation>
+    </message>
+    <message>
+        <source>Encoder counts per mm</source>
+        <translation>每毫米编码器计数</translation>
+    </message>
+    <message>
+        <source>Encoder counter width</source>
+        <translation>编码器计数器位数</translation>
+    </message>
+    <message>
+        <source>Delay for v·τ</source>
+        <translation>v·τ 所用的延迟</translation>
+    </message>
+    <message>
+        <source>Compensation of the trigger position</source>
+        <translation>触发位置的补偿</translation>
+    </message>
+    <message>
+        <source>The programmed probing feed.</source>
+        <translation>编程的测量进给率。</translation>
+    </message>
+    <message>
+        <source>The control&apos;s interpolation cycle.</source>
+        <translation>数控系统的插补周期。</translation>
+    </message>
+    <message>
+        <source>Cycles between the end of the trigger&apos;s cycle and the recorded position; the delay-stability test above measures it.</source>
+        <translation>从触发所在周期结束到记录位置之间的周期数；由上面的延迟稳定性测试测得。</translation>
+    </message>
+    <message>
+        <source> cycles</source>
+        <translation> 个周期</translation>
+    </message>
+    <message>
+        <source>Touch</source>
+        <translation>触测</translation>
+    </message>
+    <message>
+        <source>At constant speed, or while the axis is braking.</source>
+        <translation>匀速时，或轴正在制动时。</translation>
+    </message>
+    <message>
+        <source>At constant speed</source>
+        <translation>匀速</translation>
+    </message>
+    <message>
+        <source>While braking</source>
+        <translation>制动中</translation>
+    </message>
+    <message>
+        <source>While braking: the speed at the trigger, in % of the feed.</source>
+        <translation>制动中：触发时的速度，以进给率的 % 表示。</translation>
+    </message>
+    <message>
+        <source>Take period and lag from the fit</source>
+        <translation>采用拟合得到的周期和滞后</translation>
+    </message>
+    <message>
+        <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
+        <translation>机床动态取自场景。制动中，v·τ 假定整个延迟期间都保持进给率，因而过度修正；最近几个周期的实际增量则保持在一个周期的行程之内。</translation>
+    </message>
+    <message>
+        <source>Error of the corrected position while braking</source>
+        <translation>制动中修正后位置的误差</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger [% of the feed]</source>
+        <translation>触发时速度 [进给率的 %]</translation>
+    </message>
+    <message>
+        <source>Error [%1]</source>
+        <translation>误差 [%1]</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <source>Position [%1]</source>
+        <translation>位置 [%1]</translation>
+    </message>
+    <message>
+        <source>Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ uses τ = %4.</source>
+        <extracomment>%1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses</extracomment>
+        <translation>以 %1 mm/s 触发，%2 个周期后以 %3 mm/s 记录；v·τ 使用 τ = %4。</translation>
+    </message>
+    <message>
+        <source>Counter roll-overs: %1.</source>
+        <translation>计数器溢出：%1 次。</translation>
+    </message>
+</context>
+<context>
     <name>probecycle::ui::CycleCharts</name>
     <message>
         <source>Probing feedrate [%1]</source>
@@ -1034,92 +1174,7 @@
     </message>
 </context>
 <context>
-    <name>probecycle::ui::Lab</name>
-    <message>
-        <source>Points on one side</source>
-        <translation>测点集中在一侧</translation>
-    </message>
-    <message>
-        <source>Large stylus runout</source>
-        <translation>测针跳动过大</translation>
-    </message>
-    <message>
-        <source>Point off the circle</source>
-        <translation>测点偏离圆</translation>
-    </message>
-    <message>
-        <source>One orientation only: no runout</source>
-        <translation>只有一个方向：无法求跳动</translation>
-    </message>
-    <message>
-        <source>Three points: exact fit</source>
-        <translation>三点：精确拟合</translation>
-    </message>
-    <message>
-        <source>Length far from the nominal</source>
-        <translation>长度与名义值相差过大</translation>
-    </message>
-    <message>
-        <source>Fewer than 3 feeds</source>
-        <translation>少于 3 个进给率</translation>
-    </message>
-    <message>
-        <source>Unstable delay</source>
-        <translation>延迟不稳定</translation>
-    </message>
-    <message>
-        <source>Residuals curve: the delay changes</source>
-        <translation>残差呈曲线：延迟在变化</translation>
-    </message>
-    <message>
-        <source>Negative delay</source>
-        <translation>负延迟</translation>
-    </message>
-    <message>
-        <source>One touch at a feed</source>
-        <translation>某进给率只有一次触测</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
-        <source>%1 could not be read: %2</source>
-        <translation>无法读取 %1：%2</translation>
-    </message>
-    <message>
-        <source>Unexpected error: %1</source>
-        <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
-        <translation>意外错误：%1</translation>
-    </message>
-</context>
-<context>
-    <name>probecycle::ui::LatencyTab</name>
-    <message>
-        <source>Uncompensated</source>
-        <translation>未补偿</translation>
-    </message>
-    <message>
-        <source>Naive v·τ</source>
-        <translation>简单 v·τ</translation>
-    </message>
-    <message>
-        <source>Cycle lag (real increments)</source>
-        <translation>周期滞后（实际增量）</translation>
-    </message>
-    <message>
-        <source>Timestamp interpolation</source>
-        <translation>时间戳插值</translation>
-    </message>
-    <message>
-        <source>Real increments</source>
-        <translation>实际增量</translation>
-    </message>
-    <message>
-        <source>Timestamp</source>
-        <translation>时间戳</translation>
-    </message>
+    <name>probecycle::ui::DelayFitPanel</name>
     <message>
         <source>Delay from touches at several feeds (delay-stability test)</source>
         <translation>由多个进给率下的触测求延迟（延迟稳定性测试）</translation>
@@ -1153,8 +1208,16 @@
         <translation>拟合</translation>
     </message>
     <message>
+        <source>Measured minus zero-speed position, against feed</source>
+        <translation>测量值减零速位置，与进给率的关系</translation>
+    </message>
+    <message>
         <source>Feed [%1]</source>
         <translation>进给率 [%1]</translation>
+    </message>
+    <message>
+        <source>Deviation [%1]</source>
+        <translation>偏差 [%1]</translation>
     </message>
     <message>
         <source>Group / feed</source>
@@ -1221,82 +1284,6 @@
         <translation>将 machine.controller_latency_s 设为拟合的延迟减去测头接口延迟和半个扫描周期（锁存输入时不减扫描周期）。</translation>
     </message>
     <message>
-        <source>Compensation of the trigger position</source>
-        <translation>触发位置的补偿</translation>
-    </message>
-    <message>
-        <source>Feed</source>
-        <translation>进给率</translation>
-    </message>
-    <message>
-        <source>The programmed probing feed.</source>
-        <translation>编程的测量进给率。</translation>
-    </message>
-    <message>
-        <source>The control&apos;s interpolation cycle.</source>
-        <translation>数控系统的插补周期。</translation>
-    </message>
-    <message>
-        <source>Lag</source>
-        <translation>滞后</translation>
-    </message>
-    <message>
-        <source>Cycles between the end of the trigger&apos;s cycle and the recorded position; the delay-stability test above measures it.</source>
-        <translation>从触发所在周期结束到记录位置之间的周期数；由上面的延迟稳定性测试测得。</translation>
-    </message>
-    <message>
-        <source> cycles</source>
-        <translation> 个周期</translation>
-    </message>
-    <message>
-        <source>Touch</source>
-        <translation>触测</translation>
-    </message>
-    <message>
-        <source>At constant speed, or while the axis is braking.</source>
-        <translation>匀速时，或轴正在制动时。</translation>
-    </message>
-    <message>
-        <source>At constant speed</source>
-        <translation>匀速</translation>
-    </message>
-    <message>
-        <source>While braking</source>
-        <translation>制动中</translation>
-    </message>
-    <message>
-        <source>Speed at the trigger</source>
-        <translation>触发时速度</translation>
-    </message>
-    <message>
-        <source>While braking: the speed at the trigger, in % of the feed.</source>
-        <translation>制动中：触发时的速度，以进给率的 % 表示。</translation>
-    </message>
-    <message>
-        <source>Take period and lag from the fit</source>
-        <translation>采用拟合得到的周期和滞后</translation>
-    </message>
-    <message>
-        <source>Error of the corrected position while braking</source>
-        <translation>制动中修正后位置的误差</translation>
-    </message>
-    <message>
-        <source>Speed at the trigger [% of the feed]</source>
-        <translation>触发时速度 [进给率的 %]</translation>
-    </message>
-    <message>
-        <source>Error [%1]</source>
-        <translation>误差 [%1]</translation>
-    </message>
-    <message>
-        <source>Method</source>
-        <translation>方法</translation>
-    </message>
-    <message>
-        <source>Position [%1]</source>
-        <translation>位置 [%1]</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -1337,46 +1324,66 @@
         <extracomment>%1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now</extracomment>
         <translation>控制器延迟 = %1 延迟 %2 − 接口 %3 − 半个扫描周期 %4 = &lt;b&gt;%5&lt;/b&gt;（当前 %6）</translation>
     </message>
+</context>
+<context>
+    <name>probecycle::ui::Lab</name>
     <message>
-        <source>Measured minus zero-speed position, against feed</source>
-        <translation>测量值减零速位置，与进给率的关系</translation>
+        <source>Points on one side</source>
+        <translation>测点集中在一侧</translation>
     </message>
     <message>
-        <source>Deviation [%1]</source>
-        <translation>偏差 [%1]</translation>
+        <source>Large stylus runout</source>
+        <translation>测针跳动过大</translation>
     </message>
     <message>
-        <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
-        <translation>机床动态取自场景。制动中，v·τ 假定整个延迟期间都保持进给率，因而过度修正；最近几个周期的实际增量则保持在一个周期的行程之内。</translation>
+        <source>Point off the circle</source>
+        <translation>测点偏离圆</translation>
     </message>
     <message>
-        <source>Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ uses τ = %4.</source>
-        <extracomment>%1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses</extracomment>
-        <translation>以 %1 mm/s 触发，%2 个周期后以 %3 mm/s 记录；v·τ 使用 τ = %4。</translation>
+        <source>One orientation only: no runout</source>
+        <translation>只有一个方向：无法求跳动</translation>
     </message>
     <message>
-        <source>Counter roll-overs: %1.</source>
-        <translation>计数器溢出：%1 次。</translation>
+        <source>Three points: exact fit</source>
+        <translation>三点：精确拟合</translation>
     </message>
     <message>
-        <source>Direction of travel</source>
-        <translation>行程方向</translation>
+        <source>Length far from the nominal</source>
+        <translation>长度与名义值相差过大</translation>
     </message>
     <message>
-        <source>Trigger phase in its cycle</source>
-        <translation>触发在其周期内的相位</translation>
+        <source>Fewer than 3 feeds</source>
+        <translation>少于 3 个进给率</translation>
     </message>
     <message>
-        <source>Encoder counts per mm</source>
-        <translation>每毫米编码器计数</translation>
+        <source>Unstable delay</source>
+        <translation>延迟不稳定</translation>
     </message>
     <message>
-        <source>Encoder counter width</source>
-        <translation>编码器计数器位数</translation>
+        <source>Residuals curve: the delay changes</source>
+        <translation>残差呈曲线：延迟在变化</translation>
     </message>
     <message>
-        <source>Delay for v·τ</source>
-        <translation>v·τ 所用的延迟</translation>
+        <source>Negative delay</source>
+        <translation>负延迟</translation>
+    </message>
+    <message>
+        <source>One touch at a feed</source>
+        <translation>某进给率只有一次触测</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>Unexpected error: %1</source>
+        <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
+        <translation>意外错误：%1</translation>
     </message>
 </context>
 <context>
