@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/common/file_io.h"
+#include "core/common/message_json.h"
 #include "core/lab/calibration.h"
 #include "core/lab/calibration_report.h"
 #include "app/cli/cli_common.h"
@@ -48,9 +49,7 @@ template <typename W>
 Json warnings_json(const std::vector<W>& warnings) {
     Json out = Json::array();
     for (const auto& w : warnings) {
-        out.push_back({{"code", to_string(w.code)},
-                       {"severity", to_string(w.severity)},
-                       {"message", w.message}});
+        out.push_back(warning_json(to_string(w.code), w.severity, w.message));
     }
     return out;
 }
@@ -236,10 +235,11 @@ int run_latency_fit(std::span<const std::string> argv) {
         group["feeds"] = feeds;
         groups.push_back(group);
         for (const auto& w : g.warnings) {
-            warnings.push_back({{"code", to_string(w.code)},
-                                {"severity", to_string(w.severity)},
-                                {"group", g.name()},
-                                {"message", w.message}});
+            Json warning = {{"code", to_string(w.code)},
+                            {"severity", to_string(w.severity)},
+                            {"group", g.name()}};
+            warning.update(message_json(w.message));
+            warnings.push_back(warning);
         }
     }
     out["groups"] = groups;
@@ -267,7 +267,7 @@ int run_latency_fit(std::span<const std::string> argv) {
             {"value_s", applied.controller_latency_s},
             {"previous_s", applied.previous_s},
             {"group", applied.group},
-            {"rule", applied.rule},
+            {"rule", render(applied.rule)},
             {"total_delay_s", applied.total_delay_s},
             {"less_interface_delay_s", applied.interface_delay_s},
             {"less_half_scan_period_s", applied.half_scan_s},

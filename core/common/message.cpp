@@ -16,6 +16,12 @@ MessageArg arg(std::string name, ArgKind kind, double value, int decimals) {
     return a;
 }
 
+MessageArg significant_arg(std::string name, ArgKind kind, double value, int significant) {
+    MessageArg a = arg(std::move(name), kind, value);
+    a.significant = significant;
+    return a;
+}
+
 MessageArg text_arg(std::string name, std::string value) {
     MessageArg a;
     a.name = std::move(name);
@@ -52,8 +58,8 @@ std::string fill_template(std::string_view text, const std::vector<std::string>&
 
 namespace {
 
-std::string plain_number(double value, int decimals) {
-    if (decimals < 0 || !std::isfinite(value)) return format_number(value, 6);
+std::string plain_number(double value, int decimals, int significant) {
+    if (decimals < 0 || !std::isfinite(value)) return format_number(value, significant);
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
     std::string text = buffer;
@@ -70,6 +76,8 @@ const char* unit_of(ArgKind kind) {
             return " mm";
         case ArgKind::time_s:
             return " s";
+        case ArgKind::delay_s:
+            return " ms";
         case ArgKind::feed_mm_min:
             return " mm/min";
         case ArgKind::angle_deg:
@@ -94,9 +102,11 @@ std::string render_arg(const MessageArg& a) {
         case ArgKind::message:
             return a.nested.empty() ? std::string() : render(a.nested.front());
         case ArgKind::integer:
-            return plain_number(a.number, 0);
+            return plain_number(a.number, 0, a.significant);
+        case ArgKind::delay_s:
+            return plain_number(a.number * 1000.0, a.decimals, a.significant) + unit_of(a.kind);
         default:
-            return plain_number(a.number, a.decimals) + unit_of(a.kind);
+            return plain_number(a.number, a.decimals, a.significant) + unit_of(a.kind);
     }
 }
 

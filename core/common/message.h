@@ -30,6 +30,7 @@ namespace probecycle {
 enum class ArgKind {
     length_mm,    // a length; English "1.272 mm"
     time_s,       // a duration; English "0.42 s"
+    delay_s,      // a delay or another short time, in s; English in ms: "8.5 ms"
     feed_mm_min,  // a feed or speed; English "2000 mm/min"
     angle_deg,    // English "180 deg"
     percent,      // English "25 %"
@@ -47,9 +48,11 @@ struct MessageArg {
     double number{0.0};           // every kind but text
     std::string text;             // text
     std::vector<Message> nested;  // message: exactly one
-    // English digits: decimals after the point, or -1 for up to 6 significant
-    // digits without trailing zeros. The window formats by kind instead.
+    // English digits: decimals after the point, or -1 for up to `significant`
+    // significant digits without trailing zeros. The window formats lengths,
+    // times and feeds by kind instead, and a plain number to `significant`.
     int decimals{-1};
+    int significant{6};
 };
 
 struct Message {
@@ -61,6 +64,8 @@ struct Message {
 
 // Argument builders: number(name, kind, value[, decimals]) and text(name, value).
 MessageArg arg(std::string name, ArgKind kind, double value, int decimals = -1);
+// A number written in English to `significant` significant digits ("0.0036 mm").
+MessageArg significant_arg(std::string name, ArgKind kind, double value, int significant);
 MessageArg text_arg(std::string name, std::string value);
 MessageArg message_arg(std::string name, Message value);
 

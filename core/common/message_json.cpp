@@ -23,4 +23,20 @@ nlohmann::ordered_json message_values(const Message& message) {
     return values;
 }
 
+nlohmann::ordered_json message_json(const Message& message) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    out["message"] = render(message);
+    out["values"] = message_values(message);
+    return out;
+}
+
+nlohmann::ordered_json warning_json(std::string_view code, Severity severity,
+                                    const Message& message) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    out["code"] = code;
+    out["severity"] = to_string(severity);
+    out.update(message_json(message));
+    return out;
+}
+
 }  // namespace probecycle

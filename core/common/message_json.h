@@ -5,7 +5,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string_view>
+
 #include "core/common/message.h"
+#include "core/common/severity.h"
 
 namespace probecycle {
 
@@ -13,5 +16,12 @@ namespace probecycle {
 // numbers, text as strings, a nested message's values merged in. A name
 // given twice keeps the first value.
 nlohmann::ordered_json message_values(const Message& message);
+
+// {"message": English text, "values": message_values(message)}.
+nlohmann::ordered_json message_json(const Message& message);
+
+// A finding as the CLI lists it: {"code", "severity", "message", "values"}.
+nlohmann::ordered_json warning_json(std::string_view code, Severity severity,
+                                    const Message& message);
 
 }  // namespace probecycle

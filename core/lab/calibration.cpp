@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "core/common/csv_reader.h"
-#include "core/common/number_format.h"
+#include "core/lab/lab_error.h"
 
 namespace probecycle {
 
@@ -17,13 +17,43 @@ constexpr double kPi = std::numbers::pi;
 // An orientation is 0 or 180 deg; allow for a file written with rounding.
 constexpr double kOrientationTolerance_deg = 1e-6;
 
-std::string mm(double value_mm) {
-    return format_number(value_mm, 4) + " mm";
+constexpr std::array<double, 2> kOrientations_deg = {0.0, 180.0};
+
+// Lengths in messages: 4 significant digits, "0.003606 mm" (the window
+// formats its own).
+MessageArg mm(std::string name, double value_mm) {
+    return significant_arg(std::move(name), ArgKind::length_mm, value_mm, 4);
+}
+// A spindle orientation by its index, "0 deg" / "180 deg".
+MessageArg orientation_arg(std::string name, std::size_t index) {
+    return arg(std::move(name), ArgKind::angle_deg, kOrientations_deg[index], 0);
 }
 
-constexpr std::array<const char*, 2> kOrientationNames = {"0 deg", "180 deg"};
+// Templates in context "Calibration", like every text of this file.
+Message calibration_message(const char* code, const char* text, std::vector<MessageArg> args) {
+    return Message{code, "Calibration", text, std::move(args)};
+}
+
+CalibrationWarning warning(CalibrationWarningCode code, Severity severity, const char* text,
+                           std::vector<MessageArg> args) {
+    return {code, severity, calibration_message(to_string(code), text, std::move(args))};
+}
+
+CsvError orientation_not_allowed(std::size_t line, double orientation_deg) {
+    return CsvError(
+        line, "orientation_deg",
+        calibration_message("orientation_not_allowed",
+                            QT_TRANSLATE_NOOP("Calibration",
+                                              "%1 is not allowed: the spindle "
+                                              "orientation is 0 or 180"),
+                            {arg("orientation_deg", ArgKind::number, orientation_deg)}));
+}
 
 }  // namespace
+
+std::string CalibrationWarning::text() const {
+    return render(message);
+}
 
 std::optional<std::size_t> orientation_index(double orientation_deg) {
     if (std::abs(orientation_deg) <= kOrientationTolerance_deg) return 0;
@@ -130,181 +160,277 @@ std::vector<RingPoint> parse_ring_csv(std::string_view text) {
         point.y_mm = csv_coordinate(row, 2, "y_mm");
         point.line = row.line;
         if (!orientation_index(point.orientation_deg)) {
-            throw CsvError(row.line, "orientation_deg",
-                           format_number(point.orientation_deg) +
-                               " is not allowed: the spindle orientation is 0 or 180");
+            throw orientation_not_allowed(row.line, point.orientation_deg);
         }
         points.push_back(point);
     }
     return points;
 }
 
-RingCalibration calibrate_ring(std::span<const RingPoint> points,
-                               const RingCalibrationOptions& options) {
-    if (points.empty()) throw CsvError(0, {}, "no points; a ring needs 3 or more per orientation");
-    std::array<std::vector<const RingPoint*>, 2> by_orientation;
+std::array<std::vector<RingPoint>, 2> split_by_orientation(std::span<const RingPoint> points) {
+    if (points.empty()) {
+        throw CsvError(0, {},
+                       calibration_message("no_points",
+                                           QT_TRANSLATE_NOOP("Calibration",
+                                                             "no points; a ring needs 3 or more "
+                                                             "per orientation"),
+                                           {}));
+    }
+    std::array<std::vector<RingPoint>, 2> by_orientation;
     for (const auto& point : points) {
         const auto index = orientation_index(point.orientation_deg);
-        if (!index) {
-            throw CsvError(point.line, "orientation_deg",
-                           format_number(point.orientation_deg) +
-                               " is not allowed: the spindle orientation is 0 or 180");
-        }
-        by_orientation[*index].push_back(&point);
+        if (!index) throw orientation_not_allowed(point.line, point.orientation_deg);
+        by_orientation[*index].push_back(point);
+    }
+    return by_orientation;
+}
+
+OrientationFit fit_orientation(std::span<const RingPoint> points, std::size_t orientation) {
+    std::vector<std::size_t> lines;
+    for (const auto& point : points) lines.push_back(point.line);
+    const std::size_t first_line = lines.empty() ? 0 : lines.front();
+    if (points.size() < 3) {
+        throw CsvError(
+            first_line, {},
+            calibration_message(
+                "too_few_points",
+                points.size() == 1
+                    ? QT_TRANSLATE_NOOP("Calibration",
+                                        "orientation %1 has only %2 point (%3); a circle needs 3 "
+                                        "or more per orientation (typically 4: X+, X-, Y+, Y-)")
+                    : QT_TRANSLATE_NOOP("Calibration",
+                                        "orientation %1 has only %2 points (%3); a circle needs "
+                                        "3 or more per orientation (typically 4: X+, X-, Y+, Y-)"),
+                {orientation_arg("orientation_deg", orientation),
+                 arg("points", ArgKind::integer, static_cast<double>(points.size())),
+                 message_arg("lines", describe_lines(lines))}));
+    }
+    Eigen::MatrixX2d xy(static_cast<Eigen::Index>(points.size()), 2);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        xy(static_cast<Eigen::Index>(i), 0) = points[i].x_mm;
+        xy(static_cast<Eigen::Index>(i), 1) = points[i].y_mm;
+    }
+    const auto circle = fit_circle(xy);
+    if (!circle) {
+        throw CsvError(
+            first_line, {},
+            calibration_message("no_circle",
+                                QT_TRANSLATE_NOOP("Calibration",
+                                                  "the points at orientation %1 (%2) lie on a line "
+                                                  "or repeat: no circle through them; touch 3 or "
+                                                  "more distinct points around the bore"),
+                                {orientation_arg("orientation_deg", orientation),
+                                 message_arg("lines", describe_lines(lines))}));
     }
 
-    RingCalibration result;
-    auto& warnings = result.warnings;
-    const double gauge_radius_mm = options.gauge_diameter_mm / 2.0;
-
-    struct WorstPoint {
-        double residual_mm{-1.0};
-        std::size_t line{0};
-    } worst;
-    std::array<double, 4> radius_sum{};
-    std::array<int, 4> radius_count{};
-
-    for (std::size_t o = 0; o < 2; ++o) {
-        const auto& group = by_orientation[o];
-        if (group.empty()) continue;
-        std::vector<std::size_t> lines;
-        for (const auto* point : group) lines.push_back(point->line);
-        if (group.size() < 3) {
-            throw CsvError(lines.front(), {},
-                           "orientation " + std::string(kOrientationNames[o]) + " has only " +
-                               std::to_string(group.size()) +
-                               (group.size() == 1 ? " point" : " points") + " (" +
-                               describe_lines(lines) +
-                               "); a circle needs 3 or more per orientation (typically 4: X+, X-, "
-                               "Y+, Y-)");
+    OrientationFit fit;
+    fit.circle = *circle;
+    fit.points = points.size();
+    fit.worst_residual_mm = -1.0;
+    std::vector<double> angles(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const RingPoint& point = points[i];
+        const double dx = point.x_mm - circle->center_x_mm;
+        const double dy = point.y_mm - circle->center_y_mm;
+        angles[i] = std::atan2(dy, dx);
+        const double residual = std::abs(std::hypot(dx, dy) - circle->radius_mm);
+        if (residual > fit.worst_residual_mm) {
+            fit.worst_residual_mm = residual;
+            fit.worst_line = point.line;
         }
-        Eigen::MatrixX2d xy(static_cast<Eigen::Index>(group.size()), 2);
-        for (std::size_t i = 0; i < group.size(); ++i) {
-            xy(static_cast<Eigen::Index>(i), 0) = group[i]->x_mm;
-            xy(static_cast<Eigen::Index>(i), 1) = group[i]->y_mm;
-        }
-        const auto fit = fit_circle(xy);
-        if (!fit) {
-            throw CsvError(lines.front(), {},
-                           "the points at orientation " + std::string(kOrientationNames[o]) + " (" +
-                               describe_lines(lines) +
-                               ") lie on a line or repeat: no circle through them; touch 3 or "
-                               "more distinct points around the bore");
-        }
-        result.fits[o] = fit;
+    }
+    std::sort(angles.begin(), angles.end());
+    double largest_gap = angles.front() + 2.0 * kPi - angles.back();
+    for (std::size_t i = 1; i < angles.size(); ++i) {
+        largest_gap = std::max(largest_gap, angles[i] - angles[i - 1]);
+    }
+    fit.largest_gap_rad = largest_gap;
+    return fit;
+}
 
-        // Angles about the fitted centre: spread, direction sectors, worst residual.
-        std::vector<double> angles;
-        for (const auto* point : group) {
-            const double dx = point->x_mm - fit->center_x_mm;
-            const double dy = point->y_mm - fit->center_y_mm;
-            const double distance = std::hypot(dx, dy);
-            angles.push_back(std::atan2(dy, dx));
-            const double residual = std::abs(distance - fit->radius_mm);
-            if (residual > worst.residual_mm) worst = {residual, point->line};
+RingCentre combine_orientations(const std::array<std::optional<CircleFit>, 2>& fits) {
+    const auto& fit0 = fits[0];
+    const auto& fit180 = fits[1];
+    RingCentre centre;
+    if (fit0 && fit180) {
+        // Issue 4: ball centre = recorded + runout at 0 deg, recorded - runout at
+        // 180 deg. The recorded circles are then centred at C - r and C + r: the
+        // gauge centre C is their mean, the runout r half of (180 - 0).
+        centre.center_x_mm = 0.5 * (fit0->center_x_mm + fit180->center_x_mm);
+        centre.center_y_mm = 0.5 * (fit0->center_y_mm + fit180->center_y_mm);
+        centre.runout_x_mm = 0.5 * (fit180->center_x_mm - fit0->center_x_mm);
+        centre.runout_y_mm = 0.5 * (fit180->center_y_mm - fit0->center_y_mm);
+        centre.mean_radius_mm = 0.5 * (fit0->radius_mm + fit180->radius_mm);
+    } else {
+        const CircleFit& fit = fit0 ? *fit0 : *fit180;
+        centre.center_x_mm = fit.center_x_mm;
+        centre.center_y_mm = fit.center_y_mm;
+        centre.mean_radius_mm = fit.radius_mm;
+    }
+    return centre;
+}
+
+DirectionalRadius directional_radii(std::span<const RingPoint> points,
+                                    const std::array<std::optional<CircleFit>, 2>& fits,
+                                    double gauge_radius_mm) {
+    std::array<double, 4> sum{};
+    std::array<int, 4> count{};
+    // Orientation by orientation, as the fits were made.
+    for (std::size_t o = 0; o < fits.size(); ++o) {
+        if (!fits[o]) continue;
+        for (const auto& point : points) {
+            if (orientation_index(point.orientation_deg) != o) continue;
+            const double dx = point.x_mm - fits[o]->center_x_mm;
+            const double dy = point.y_mm - fits[o]->center_y_mm;
             // The recorded point less its orientation's centre is the ball centre
             // less the gauge centre (the runout cancels): domain.md, "Calibration",
             // "effective ball radius ... gauge radius minus the distance from
             // centre to trigger point".
             if (const auto sector = touch_direction(dx, dy)) {
-                radius_sum[static_cast<std::size_t>(*sector)] += gauge_radius_mm - distance;
-                ++radius_count[static_cast<std::size_t>(*sector)];
+                sum[static_cast<std::size_t>(*sector)] += gauge_radius_mm - std::hypot(dx, dy);
+                ++count[static_cast<std::size_t>(*sector)];
             }
         }
-        std::sort(angles.begin(), angles.end());
-        double largest_gap = angles.front() + 2.0 * kPi - angles.back();
-        for (std::size_t i = 1; i < angles.size(); ++i) {
-            largest_gap = std::max(largest_gap, angles[i] - angles[i - 1]);
+    }
+    constexpr std::array<std::optional<double> DirectionalRadius::*, 4> kSlots = {
+        &DirectionalRadius::x_plus_mm, &DirectionalRadius::x_minus_mm,
+        &DirectionalRadius::y_plus_mm, &DirectionalRadius::y_minus_mm};
+    DirectionalRadius radii;
+    for (std::size_t i = 0; i < kSlots.size(); ++i) {
+        if (count[i] > 0) radii.*kSlots[i] = sum[i] / count[i];
+    }
+    return radii;
+}
+
+std::vector<CalibrationWarning> orientation_warnings(const OrientationFit& fit,
+                                                     std::size_t orientation) {
+    std::vector<CalibrationWarning> warnings;
+    if (fit.largest_gap_rad > kPi) {
+        warnings.push_back(warning(
+            CalibrationWarningCode::points_one_side, Severity::warning,
+            QT_TRANSLATE_NOOP("Calibration",
+                              "the points at %1 cover only %2 of the bore (all on one side): the "
+                              "centre across that side is poorly determined; touch around the "
+                              "whole bore (X+, X-, Y+, Y-)"),
+            {orientation_arg("orientation_deg", orientation),
+             significant_arg("covered_deg", ArgKind::angle_deg,
+                             (2.0 * kPi - fit.largest_gap_rad) * 180.0 / kPi, 3)}));
+    }
+    if (fit.points == 3) {
+        warnings.push_back(warning(
+            CalibrationWarningCode::exact_fit, Severity::info,
+            QT_TRANSLATE_NOOP("Calibration",
+                              "3 points at %1: the circle passes through them exactly, so the "
+                              "residual shows nothing; a fourth point checks the touches"),
+            {orientation_arg("orientation_deg", orientation)}));
+    }
+    return warnings;
+}
+
+std::optional<CalibrationWarning> runout_warning(double runout_x_mm, double runout_y_mm,
+                                                 double limit_mm) {
+    const double runout_mm = std::hypot(runout_x_mm, runout_y_mm);
+    if (!(runout_mm > limit_mm)) return std::nullopt;
+    return warning(CalibrationWarningCode::large_runout, Severity::warning,
+                   QT_TRANSLATE_NOOP("Calibration",
+                                     "stylus runout %1 (x %2, y %3) exceeds %4: set the stylus on "
+                                     "centre, and check that the spindle orients repeatably"),
+                   {mm("runout_mm", runout_mm), mm("runout_x_mm", runout_x_mm),
+                    mm("runout_y_mm", runout_y_mm), mm("limit_mm", limit_mm)});
+}
+
+CalibrationWarning single_orientation_warning(std::size_t given_orientation) {
+    return warning(CalibrationWarningCode::single_orientation, Severity::warning,
+                   QT_TRANSLATE_NOOP("Calibration",
+                                     "only orientation %1 given: no runout. The centre is that of "
+                                     "the %1 circle and is off the gauge centre by the stylus "
+                                     "runout; touch the same points at %2 to separate the two"),
+                   {orientation_arg("orientation_deg", given_orientation),
+                    orientation_arg("missing_orientation_deg", 1 - given_orientation)});
+}
+
+std::optional<CalibrationWarning> residual_warning(double residual_mm, std::size_t line,
+                                                   double limit_mm) {
+    if (!(residual_mm > limit_mm)) return std::nullopt;
+    if (line == 0) {
+        return warning(CalibrationWarningCode::large_residual, Severity::warning,
+                       QT_TRANSLATE_NOOP("Calibration",
+                                         "a point is %1 off the fitted circle (limit %2): clean "
+                                         "the gauge and the stylus, check the gauge is clamped, "
+                                         "and repeat the touch"),
+                       {mm("residual_mm", residual_mm), mm("limit_mm", limit_mm)});
+    }
+    return warning(CalibrationWarningCode::large_residual, Severity::warning,
+                   QT_TRANSLATE_NOOP("Calibration",
+                                     "the point on line %1 is %2 off the fitted circle (limit %3): "
+                                     "clean the gauge and the stylus, check the gauge is clamped, "
+                                     "and repeat the touch"),
+                   {arg("line", ArgKind::integer, static_cast<double>(line)),
+                    mm("residual_mm", residual_mm), mm("limit_mm", limit_mm)});
+}
+
+RingCalibration calibrate_ring(std::span<const RingPoint> points,
+                               const RingCalibrationOptions& options) {
+    const auto by_orientation = split_by_orientation(points);
+    RingCalibration result;
+    auto& warnings = result.warnings;
+    double worst_residual_mm = -1.0;
+    std::size_t worst_line = 0;
+    for (std::size_t o = 0; o < by_orientation.size(); ++o) {
+        if (by_orientation[o].empty()) continue;
+        const OrientationFit fit = fit_orientation(by_orientation[o], o);
+        result.fits[o] = fit.circle;
+        if (fit.worst_residual_mm > worst_residual_mm) {
+            worst_residual_mm = fit.worst_residual_mm;
+            worst_line = fit.worst_line;
         }
-        if (largest_gap > kPi) {
-            warnings.push_back(
-                {CalibrationWarningCode::points_one_side, Severity::warning,
-                 "the points at " + std::string(kOrientationNames[o]) + " cover only " +
-                     format_number((2.0 * kPi - largest_gap) * 180.0 / kPi, 3) +
-                     " deg of the bore (all on one side): the centre across that side is poorly "
-                     "determined; touch around the whole bore (X+, X-, Y+, Y-)"});
-        }
-        if (group.size() == 3) {
-            warnings.push_back(
-                {CalibrationWarningCode::exact_fit, Severity::info,
-                 "3 points at " + std::string(kOrientationNames[o]) +
-                     ": the circle passes through them exactly, so the residual shows nothing; "
-                     "a fourth point checks the touches"});
-        }
+        for (auto& w : orientation_warnings(fit, o)) warnings.push_back(std::move(w));
     }
 
-    const auto& fit0 = result.fits[0];
-    const auto& fit180 = result.fits[1];
-    double mean_radius_mm = 0.0;
-    if (fit0 && fit180) {
-        // Issue 4: ball centre = recorded + runout at 0 deg, recorded - runout at
-        // 180 deg. The recorded circles are then centred at C - r and C + r: the
-        // gauge centre C is their mean, the runout r half of (180 - 0).
-        result.center_x_mm = 0.5 * (fit0->center_x_mm + fit180->center_x_mm);
-        result.center_y_mm = 0.5 * (fit0->center_y_mm + fit180->center_y_mm);
-        result.runout_x_mm = 0.5 * (fit180->center_x_mm - fit0->center_x_mm);
-        result.runout_y_mm = 0.5 * (fit180->center_y_mm - fit0->center_y_mm);
-        mean_radius_mm = 0.5 * (fit0->radius_mm + fit180->radius_mm);
-        const double runout_mm = std::hypot(*result.runout_x_mm, *result.runout_y_mm);
-        if (runout_mm > options.runout_limit_mm) {
-            warnings.push_back(
-                {CalibrationWarningCode::large_runout, Severity::warning,
-                 "stylus runout " + mm(runout_mm) + " (x " + mm(*result.runout_x_mm) + ", y " +
-                     mm(*result.runout_y_mm) + ") exceeds " + mm(options.runout_limit_mm) +
-                     ": set the stylus on centre, and check that the spindle orients "
-                     "repeatably"});
+    const RingCentre centre = combine_orientations(result.fits);
+    result.center_x_mm = centre.center_x_mm;
+    result.center_y_mm = centre.center_y_mm;
+    result.runout_x_mm = centre.runout_x_mm;
+    result.runout_y_mm = centre.runout_y_mm;
+    if (centre.runout_x_mm && centre.runout_y_mm) {
+        if (auto w =
+                runout_warning(*centre.runout_x_mm, *centre.runout_y_mm, options.runout_limit_mm)) {
+            warnings.push_back(std::move(*w));
         }
     } else {
-        const std::size_t given = fit0 ? 0 : 1;
-        const auto& fit = fit0 ? fit0 : fit180;
-        result.center_x_mm = fit->center_x_mm;
-        result.center_y_mm = fit->center_y_mm;
-        mean_radius_mm = fit->radius_mm;
-        warnings.push_back(
-            {CalibrationWarningCode::single_orientation, Severity::warning,
-             "only orientation " + std::string(kOrientationNames[given]) +
-                 " given: no runout. The centre is that of the " + kOrientationNames[given] +
-                 " circle and is off the gauge centre by the stylus runout; touch the same points "
-                 "at " +
-                 kOrientationNames[1 - given] + " to separate the two"});
+        warnings.push_back(single_orientation_warning(result.fits[0] ? 0 : 1));
     }
 
     // Domain.md, "Calibration": effective ball radius = gauge radius minus the
     // distance from the centre to the trigger points (the trigger points of a bore
     // lie inside it, by the ball radius plus the pretravel and delay travel).
-    result.effective_radius_mm = gauge_radius_mm - mean_radius_mm;
+    const double gauge_radius_mm = options.gauge_diameter_mm / 2.0;
+    result.effective_radius_mm = gauge_radius_mm - centre.mean_radius_mm;
     if (!(result.effective_radius_mm > 0.0)) {
-        throw std::invalid_argument(
-            "the touches lie on a circle of radius " + mm(mean_radius_mm) +
-            ", not inside the gauge of radius " + mm(gauge_radius_mm) + " (diameter " +
-            mm(options.gauge_diameter_mm) +
-            "): the effective ball radius would not be positive; check the gauge diameter");
+        throw LabError(calibration_message(
+            "radius_outside_gauge",
+            QT_TRANSLATE_NOOP("Calibration",
+                              "the touches lie on a circle of radius %1, not inside the gauge of "
+                              "radius %2 (diameter %3): the effective ball radius would not be "
+                              "positive; check the gauge diameter"),
+            {mm("radius_mm", centre.mean_radius_mm), mm("gauge_radius_mm", gauge_radius_mm),
+             mm("gauge_diameter_mm", options.gauge_diameter_mm)}));
     }
-    constexpr std::array<std::optional<double> DirectionalRadius::*, 4> kSlots = {
-        &DirectionalRadius::x_plus_mm, &DirectionalRadius::x_minus_mm,
-        &DirectionalRadius::y_plus_mm, &DirectionalRadius::y_minus_mm};
-    for (std::size_t i = 0; i < kSlots.size(); ++i) {
-        if (radius_count[i] > 0) {
-            result.radius_by_direction.*kSlots[i] = radius_sum[i] / radius_count[i];
-        }
-    }
+    result.radius_by_direction = directional_radii(points, result.fits, gauge_radius_mm);
 
-    result.residual_max_mm = std::max(worst.residual_mm, 0.0);
-    if (result.residual_max_mm > options.residual_limit_mm) {
-        warnings.push_back({CalibrationWarningCode::large_residual, Severity::warning,
-                            (worst.line > 0 ? "the point on line " + std::to_string(worst.line)
-                                            : std::string("a point")) +
-                                " is " + mm(result.residual_max_mm) +
-                                " off the fitted circle (limit " + mm(options.residual_limit_mm) +
-                                "): clean the gauge and the stylus, check the gauge is clamped, "
-                                "and repeat the touch"});
+    result.residual_max_mm = std::max(worst_residual_mm, 0.0);
+    if (auto w = residual_warning(result.residual_max_mm, worst_line, options.residual_limit_mm)) {
+        warnings.push_back(std::move(*w));
     }
     return result;
 }
 
 LengthCalibration calibrate_length(const LengthCalibrationInput& input) {
     if (input.trigger_z_mm.empty()) {
-        throw std::invalid_argument("no trigger Z given; touch the surface at least once");
+        throw LabError(calibration_message(
+            "no_trigger_z",
+            QT_TRANSLATE_NOOP("Calibration", "no trigger Z given; touch the surface at least once"),
+            {}));
     }
     LengthCalibration result;
     result.touches = input.trigger_z_mm.size();
@@ -319,20 +445,24 @@ LengthCalibration calibrate_length(const LengthCalibrationInput& input) {
     result.effective_length_mm =
         input.active_length_mm + result.trigger_z_mean_mm - input.surface_z_mm;
     if (!(result.effective_length_mm > 0.0)) {
-        throw std::invalid_argument(
-            "effective length " + mm(result.effective_length_mm) +
-            " is not positive: with Z up, the trigger Z plus the active length offset must lie "
-            "above the surface Z");
+        throw LabError(calibration_message(
+            "length_not_positive",
+            QT_TRANSLATE_NOOP("Calibration",
+                              "effective length %1 is not positive: with Z up, the trigger Z plus "
+                              "the active length offset must lie above the surface Z"),
+            {mm("effective_length_mm", result.effective_length_mm)}));
     }
     if (input.nominal_length_mm) {
         // A wear offset adds to the nominal (geometry) length.
         result.wear_mm = result.effective_length_mm - *input.nominal_length_mm;
         if (std::abs(*result.wear_mm) > input.wear_limit_mm) {
-            result.warnings.push_back(
-                {CalibrationWarningCode::length_wear, Severity::warning,
-                 "the effective length differs from the nominal " + mm(*input.nominal_length_mm) +
-                     " by " + mm(*result.wear_mm) + " (limit " + mm(input.wear_limit_mm) +
-                     "): check the nominal, the surface Z and the stylus"});
+            result.warnings.push_back(warning(
+                CalibrationWarningCode::length_wear, Severity::warning,
+                QT_TRANSLATE_NOOP("Calibration",
+                                  "the effective length differs from the nominal %1 by %2 (limit "
+                                  "%3): check the nominal, the surface Z and the stylus"),
+                {mm("nominal_length_mm", *input.nominal_length_mm), mm("wear_mm", *result.wear_mm),
+                 mm("limit_mm", input.wear_limit_mm)}));
         }
     }
     return result;

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/common/message.h"
 #include "core/common/severity.h"
 
 namespace probecycle {
@@ -54,7 +55,10 @@ const char* to_string(CalibrationWarningCode code);
 struct CalibrationWarning {
     CalibrationWarningCode code{};
     Severity severity{};
-    std::string message;
+    // Code, template (context "Calibration") and the numbers as named
+    // arguments; the window translates it, the CLI renders it.
+    Message message;
+    std::string text() const;  // in English: render(message)
 };
 
 struct RingCalibrationOptions {
@@ -95,11 +99,61 @@ struct RingCalibration {
 // and column: not a number, an orientation other than 0 or 180.
 std::vector<RingPoint> parse_ring_csv(std::string_view text);
 
-// Fits and evaluates. Throws CsvError (naming the lines) when an orientation has
-// fewer than 3 points, or its points lie on a line, and std::invalid_argument when
-// the fitted radius is not inside the gauge (effective radius not positive).
+// Fits and evaluates, by the steps below. Throws CsvError (naming the lines)
+// when an orientation has fewer than 3 points, or its points lie on a line, and
+// LabError (a std::invalid_argument) when the fitted radius is not inside the
+// gauge (effective radius not positive).
 RingCalibration calibrate_ring(std::span<const RingPoint> points,
                                const RingCalibrationOptions& options);
+
+// --- The steps of calibrate_ring, each usable alone ---
+
+// The points of each orientation, [0] at 0 deg and [1] at 180 deg, in their
+// order. Throws CsvError with no points, or an orientation other than 0 or 180.
+std::array<std::vector<RingPoint>, 2> split_by_orientation(std::span<const RingPoint> points);
+
+// One orientation's circle and how its points sit on it.
+struct OrientationFit {
+    CircleFit circle;
+    std::size_t points{0};
+    // The largest angle between neighbouring points about the centre; above
+    // pi the points lie on one side of the bore.
+    double largest_gap_rad{0.0};
+    double worst_residual_mm{0.0};  // the largest |distance to centre - radius|
+    std::size_t worst_line{0};      // that point's line (0 when typed in)
+};
+// Fits the points of orientation `orientation` (0 for 0 deg, 1 for 180 deg).
+// Throws CsvError naming their lines with fewer than 3 points, or no circle
+// through them.
+OrientationFit fit_orientation(std::span<const RingPoint> points, std::size_t orientation);
+
+// The gauge centre and the runout from the fits present (at least one).
+struct RingCentre {
+    double center_x_mm{0.0};
+    double center_y_mm{0.0};
+    std::optional<double> runout_x_mm;  // nullopt with one orientation
+    std::optional<double> runout_y_mm;
+    double mean_radius_mm{0.0};  // of the fitted circles
+};
+RingCentre combine_orientations(const std::array<std::optional<CircleFit>, 2>& fits);
+
+// The effective ball radius per touch direction: the gauge radius less each
+// point's distance from its orientation's centre (the runout cancels), averaged
+// over the points in a direction's sector (touch_direction).
+DirectionalRadius directional_radii(std::span<const RingPoint> points,
+                                    const std::array<std::optional<CircleFit>, 2>& fits,
+                                    double gauge_radius_mm);
+
+// The warnings, each with its numbers: points on one side and an exact fit
+// (per orientation), a runout over the limit, one orientation only, a point
+// off its circle by more than the limit (line 0: "a point").
+std::vector<CalibrationWarning> orientation_warnings(const OrientationFit& fit,
+                                                     std::size_t orientation);
+std::optional<CalibrationWarning> runout_warning(double runout_x_mm, double runout_y_mm,
+                                                 double limit_mm);
+CalibrationWarning single_orientation_warning(std::size_t given_orientation);
+std::optional<CalibrationWarning> residual_warning(double residual_mm, std::size_t line,
+                                                   double limit_mm);
 
 // Index into RingCalibration::fits of a spindle orientation: 0 for 0 deg,
 // 1 for 180 deg (within a small tolerance), nullopt otherwise.
@@ -137,7 +191,8 @@ struct LengthCalibration {
     std::vector<CalibrationWarning> warnings;
 };
 
-// Throws std::invalid_argument with no touch, or when the length is not positive.
+// Throws LabError (a std::invalid_argument) with no touch, or when the length is
+// not positive.
 LengthCalibration calibrate_length(const LengthCalibrationInput& input);
 
 }  // namespace probecycle

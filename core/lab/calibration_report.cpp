@@ -103,7 +103,7 @@ std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
     csv += "# warnings\ncode,severity,message\n";
     for (const CalibrationWarning& w : warnings) {
         csv += std::string(to_string(w.code)) + ',' + to_string(w.severity) + ',' +
-               csv_quote(w.message) + '\n';
+               csv_quote(w.text()) + '\n';
     }
     return csv;
 }

@@ -13,8 +13,8 @@
 #include <span>
 #include <vector>
 
+#include "core/common/field_error.h"
 #include "core/cycle/motion.h"
-#include "core/cycle/scenario.h"  // FieldError
 
 namespace probecycle {
 

@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "core/common/csv_reader.h"
-#include "core/common/number_format.h"
 #include "core/common/units.h"
+#include "core/lab/lab_error.h"
 
 namespace probecycle {
 
@@ -18,14 +18,41 @@ namespace {
 
 constexpr double kMaxFeed_mm_min = 100000.0;
 
-std::string mm(double value_mm) {
-    return format_number(value_mm, 3) + " mm";
+// Numbers in messages, in English to 3 significant digits ("0.0531 mm",
+// "5.1 ms") and feeds to 6 ("1000 mm/min"); the window formats its own.
+MessageArg mm(std::string name, double value_mm) {
+    return significant_arg(std::move(name), ArgKind::length_mm, value_mm, 3);
 }
-std::string ms(double value_s) {
-    return format_number(value_s * 1000.0, 3) + " ms";
+MessageArg ms(std::string name, double value_s) {
+    return significant_arg(std::move(name), ArgKind::delay_s, value_s, 3);
 }
-std::string feed(double feed_mm_min) {
-    return format_number(feed_mm_min, 6) + " mm/min";
+MessageArg feed(std::string name, double feed_mm_min) {
+    return significant_arg(std::move(name), ArgKind::feed_mm_min, feed_mm_min, 6);
+}
+
+// Templates in context "DelayFit", like every text of this file.
+Message delay_message(const char* code, const char* text, std::vector<MessageArg> args) {
+    return Message{code, "DelayFit", text, std::move(args)};
+}
+
+// A group's warning: its name is the first argument, "%1: ...".
+LatencyWarning warning(const DelayGroup& group, LatencyWarningCode code, Severity severity,
+                       const char* text, std::vector<MessageArg> args) {
+    std::vector<MessageArg> all{text_arg("group", group.name())};
+    all.insert(all.end(), std::make_move_iterator(args.begin()),
+               std::make_move_iterator(args.end()));
+    return {code, severity, delay_message(to_string(code), text, std::move(all))};
+}
+
+// "500 mm/min, 900 mm/min": the feeds from `first` on, as nested "%1, %2"
+// messages, so that the window writes the units and the separator in its
+// language. The feeds are named feed_1_mm_min, feed_2_mm_min, ...
+MessageArg feed_list(const std::vector<double>& feeds_mm_min, std::size_t first = 0) {
+    MessageArg item = feed("feed_" + std::to_string(first + 1) + "_mm_min", feeds_mm_min[first]);
+    if (first + 1 >= feeds_mm_min.size()) return item;
+    //: a list of feeds, "500 mm/min, 900 mm/min"; %2 is the rest of the list
+    return message_arg("feeds", delay_message("feed_list", QT_TRANSLATE_NOOP("DelayFit", "%1, %2"),
+                                              {item, feed_list(feeds_mm_min, first + 1)}));
 }
 
 // Two degrees of freedom less than the touches for the line: its standard
@@ -84,30 +111,35 @@ std::optional<Curvature> curvature(const DelayGroup& group, std::span<const Dela
 
 void add_warnings(DelayGroup& group, std::span<const DelayTouch> touches, const LineFit& line,
                   const DelayFitOptions& options) {
-    const std::string name = group.name();
     auto& warnings = group.warnings;
     if (group.feeds.size() < 3) {
-        warnings.push_back({LatencyWarningCode::few_feeds, Severity::warning,
-                            name + ": only " + std::to_string(group.feeds.size()) +
-                                " feeds; a line through two feeds cannot show whether the delay "
-                                "is constant: touch at 3 or more"});
+        warnings.push_back(warning(
+            group, LatencyWarningCode::few_feeds, Severity::warning,
+            QT_TRANSLATE_NOOP("DelayFit",
+                              "%1: only %2 feeds; a line through two feeds cannot show whether "
+                              "the delay is constant: touch at 3 or more"),
+            {arg("feeds", ArgKind::integer, static_cast<double>(group.feeds.size()))}));
     }
     if (group.delay_s < 0.0) {
-        warnings.push_back(
-            {LatencyWarningCode::negative_delay, Severity::warning,
-             name + ": the fitted delay is negative (" + ms(group.delay_s) +
-                 "): the recorded position moves against the travel as the feed rises; check "
-                 "the direction column (+1/-1 is the direction of travel)"});
+        warnings.push_back(warning(
+            group, LatencyWarningCode::negative_delay, Severity::warning,
+            QT_TRANSLATE_NOOP("DelayFit",
+                              "%1: the fitted delay is negative (%2): the recorded position moves "
+                              "against the travel as the feed rises; check the direction column "
+                              "(+1/-1 is the direction of travel)"),
+            {ms("delay_s", group.delay_s)}));
     }
-    std::string single_feeds;
+    std::vector<double> single_feeds;
     for (const auto& f : group.feeds) {
-        if (f.n == 1) single_feeds += (single_feeds.empty() ? "" : ", ") + feed(f.feed_mm_min);
+        if (f.n == 1) single_feeds.push_back(f.feed_mm_min);
     }
     if (!single_feeds.empty()) {
-        warnings.push_back({LatencyWarningCode::single_touch_feed, Severity::info,
-                            name + ": one touch only at " + single_feeds +
-                                ": no scatter there; repeat each touch (5 or more) to see the "
-                                "stability"});
+        warnings.push_back(warning(
+            group, LatencyWarningCode::single_touch_feed, Severity::info,
+            QT_TRANSLATE_NOOP("DelayFit",
+                              "%1: one touch only at %2: no scatter there; repeat each touch (5 or "
+                              "more) to see the stability"),
+            {feed_list(single_feeds)}));
     }
 
     // A delay that jitters by a fixed time spreads the touches over a range
@@ -128,32 +160,41 @@ void add_warnings(DelayGroup& group, std::span<const DelayTouch> touches, const 
         if (fi.range_mm > options.unstable_ratio * predicted &&
             fi.range_mm > options.scatter_floor_mm) {
             const double v = mm_min_to_mm_s(fi.feed_mm_min);
-            warnings.push_back(
-                {LatencyWarningCode::unstable_delay, Severity::warning,
-                 name + ": at " + feed(fi.feed_mm_min) + " the touches spread over " +
-                     mm(fi.range_mm) + " (" + ms(fi.range_mm / v) + " of travel), more than " +
-                     format_number(options.unstable_ratio, 3) + "x what the other feeds predict (" +
-                     mm(predicted) +
-                     "): the delay is not stable there; repeat the touches and check the input "
-                     "and the controller load"});
+            warnings.push_back(warning(
+                group, LatencyWarningCode::unstable_delay, Severity::warning,
+                QT_TRANSLATE_NOOP("DelayFit",
+                                  "%1: at %2 the touches spread over %3 (%4 of travel), more than "
+                                  "%5x what the other feeds predict (%6): the delay is not stable "
+                                  "there; repeat the touches and check the input and the "
+                                  "controller load"),
+                {feed("feed_mm_min", fi.feed_mm_min), mm("range_mm", fi.range_mm),
+                 ms("travel_time_s", fi.range_mm / v),
+                 significant_arg("ratio", ArgKind::number, options.unstable_ratio, 3),
+                 mm("predicted_range_mm", predicted)}));
         }
     }
 
     if (const auto curve = curvature(group, touches, line)) {
         if (curve->bow_mm > options.curvature_floor_mm && std::abs(curve->t_value) > 3.0) {
-            warnings.push_back(
-                {LatencyWarningCode::curved_residuals, Severity::warning,
-                 name + ": the residuals curve: the touches depart from the line by up to " +
-                     mm(curve->bow_mm) + "; the delay is not constant but goes from " +
-                     ms(curve->delay_low_s) + " at " + feed(group.feeds.front().feed_mm_min) +
-                     " to " + ms(curve->delay_high_s) + " at " +
-                     feed(group.feeds.back().feed_mm_min) +
-                     "; a correction with one delay is right at one feed only"});
+            warnings.push_back(warning(
+                group, LatencyWarningCode::curved_residuals, Severity::warning,
+                QT_TRANSLATE_NOOP("DelayFit",
+                                  "%1: the residuals curve: the touches depart from the line by up "
+                                  "to %2; the delay is not constant but goes from %3 at %4 to %5 "
+                                  "at %6; a correction with one delay is right at one feed only"),
+                {mm("bow_mm", curve->bow_mm), ms("delay_low_s", curve->delay_low_s),
+                 feed("feed_low_mm_min", group.feeds.front().feed_mm_min),
+                 ms("delay_high_s", curve->delay_high_s),
+                 feed("feed_high_mm_min", group.feeds.back().feed_mm_min)}));
         }
     }
 }
 
 }  // namespace
+
+std::string LatencyWarning::text() const {
+    return render(message);
+}
 
 const char* to_string(LatencyWarningCode code) {
     switch (code) {
@@ -211,23 +252,33 @@ std::vector<DelayTouch> parse_delay_csv(std::string_view text) {
                                 });
         if (!valid_axis) {
             throw CsvError(row.line, "axis",
-                           "'" + axis + "' is not an axis name (a letter, e.g. X, Y, Z)");
+                           delay_message("not_an_axis",
+                                         QT_TRANSLATE_NOOP("DelayFit",
+                                                           "'%1' is not an axis name (a letter, "
+                                                           "e.g. X, Y, Z)"),
+                                         {text_arg("axis", axis)}));
         }
         for (const char c : axis) {
             touch.axis += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
         }
         const double direction = csv_number(row, 1, "direction");
         if (direction != 1.0 && direction != -1.0) {
-            throw CsvError(
-                row.line, "direction",
-                "'" + row.fields[1] + "' is not allowed: +1 or -1, the direction of travel");
+            throw CsvError(row.line, "direction",
+                           delay_message("not_a_direction",
+                                         QT_TRANSLATE_NOOP("DelayFit",
+                                                           "'%1' is not allowed: +1 or -1, the "
+                                                           "direction of travel"),
+                                         {text_arg("direction", row.fields[1])}));
         }
         touch.direction = direction > 0.0 ? 1 : -1;
         touch.feed_mm_min = csv_number(row, 2, "feed_mm_min");
         if (!(touch.feed_mm_min > 0.0 && touch.feed_mm_min <= kMaxFeed_mm_min)) {
-            throw CsvError(row.line, "feed_mm_min",
-                           format_number(touch.feed_mm_min) + " is out of range: (0, " +
-                               format_number(kMaxFeed_mm_min) + "] mm/min");
+            throw CsvError(
+                row.line, "feed_mm_min",
+                delay_message("feed_out_of_range",
+                              QT_TRANSLATE_NOOP("DelayFit", "%1 is out of range: (0, %2] mm/min"),
+                              {arg("feed_mm_min", ArgKind::number, touch.feed_mm_min),
+                               arg("max_feed_mm_min", ArgKind::number, kMaxFeed_mm_min)}));
         }
         touch.measured_mm = csv_coordinate(row, 3, "measured_mm");
         touches.push_back(std::move(touch));
@@ -262,16 +313,28 @@ DelayFit fit_delay(std::span<const DelayTouch> touches, const DelayFitOptions& o
             y.push_back(touch.measured_mm);
         }
         if (by_feed.size() < 2) {
-            const std::string what =
+            const MessageArg name = text_arg("group", group.name());
+            const MessageArg at = feed("feed_mm_min", by_feed.begin()->first);
+            const MessageArg lines = message_arg("lines", describe_lines(group.lines));
+            throw CsvError(
+                members.front().line, "feed_mm_min",
                 members.size() == 1
-                    ? "only one touch (" + feed(by_feed.begin()->first) + ", " +
-                          describe_lines(group.lines) + ")"
-                    : "all " + std::to_string(members.size()) + " touches are at one feed (" +
-                          feed(by_feed.begin()->first) + ", " + describe_lines(group.lines) + ")";
-            throw CsvError(members.front().line, "feed_mm_min",
-                           group.name() + ": " + what +
-                               "; the delay is the slope over feeds: touch at 2 or more feeds, 3 "
-                               "or more to check that it is constant");
+                    ? delay_message("one_feed",
+                                    QT_TRANSLATE_NOOP("DelayFit",
+                                                      "%1: only one touch (%2, %3); the delay is "
+                                                      "the slope over feeds: touch at 2 or more "
+                                                      "feeds, 3 or more to check that it is "
+                                                      "constant"),
+                                    {name, at, lines})
+                    : delay_message(
+                          "one_feed",
+                          QT_TRANSLATE_NOOP("DelayFit",
+                                            "%1: all %2 touches are at one feed (%3, %4); the "
+                                            "delay is the slope over feeds: touch at 2 or more "
+                                            "feeds, 3 or more to check that it is constant"),
+                          {name,
+                           arg("touches", ArgKind::integer, static_cast<double>(members.size())),
+                           at, lines}));
         }
         const auto line = fit_line(x, y);  // two distinct feeds: never nullopt
         group.delay_s = line->slope;
@@ -301,7 +364,10 @@ DelayFit fit_delay(std::span<const DelayTouch> touches, const DelayFitOptions& o
 }
 
 ChosenGroup choose_group(const DelayFit& fit, const std::optional<std::string>& name) {
-    if (fit.groups.empty()) throw std::invalid_argument("the fit has no groups of touches");
+    if (fit.groups.empty()) {
+        throw LabError(delay_message(
+            "no_groups", QT_TRANSLATE_NOOP("DelayFit", "the fit has no groups of touches"), {}));
+    }
     if (name) {
         std::string wanted;
         for (const char c : *name) {
@@ -309,21 +375,34 @@ ChosenGroup choose_group(const DelayFit& fit, const std::optional<std::string>& 
         }
         std::string available;
         for (const DelayGroup& g : fit.groups) {
-            if (g.name() == wanted) return {&g, "the group chosen"};
+            if (g.name() == wanted) {
+                return {&g, delay_message("group_chosen",
+                                          QT_TRANSLATE_NOOP("DelayFit", "the group chosen"), {})};
+            }
             if (!available.empty()) available += ", ";
             available += g.name();
         }
-        throw std::invalid_argument("got '" + *name + "'; allowed: a group of the file (" +
-                                    available + ")");
+        throw LabError(delay_message(
+            "unknown_group",
+            QT_TRANSLATE_NOOP("DelayFit", "got '%1'; allowed: a group of the file (%2)"),
+            {text_arg("group", *name), text_arg("groups", available)}));
     }
-    if (fit.groups.size() == 1) return {&fit.groups.front(), "the only group"};
+    if (fit.groups.size() == 1) {
+        return {&fit.groups.front(),
+                delay_message("only_group", QT_TRANSLATE_NOOP("DelayFit", "the only group"), {})};
+    }
     // The scenario has one controller latency for every axis; the longest
     // delay gives the longest overtravel, the safe side for the stylus.
     const DelayGroup& longest = *std::max_element(
         fit.groups.begin(), fit.groups.end(),
         [](const DelayGroup& a, const DelayGroup& b) { return a.delay_s < b.delay_s; });
-    return {&longest, "the longest delay of " + std::to_string(fit.groups.size()) +
-                          " groups (the safe side for overtravel); choose one to override"};
+    return {
+        &longest,
+        delay_message("longest_delay",
+                      QT_TRANSLATE_NOOP("DelayFit",
+                                        "the longest delay of %1 groups (the safe side for "
+                                        "overtravel); choose one to override"),
+                      {arg("groups", ArgKind::integer, static_cast<double>(fit.groups.size()))})};
 }
 
 AppliedDelay controller_latency_from_fit(const DelayFit& fit, const Scenario& scenario,
@@ -341,14 +420,17 @@ AppliedDelay controller_latency_from_fit(const DelayFit& fit, const Scenario& sc
     applied.controller_latency_s =
         applied.total_delay_s - applied.interface_delay_s - applied.half_scan_s;
     if (applied.controller_latency_s < 0.0) {
-        throw std::invalid_argument(
-            "the fitted delay of " + applied.group + ", " +
-            format_number(applied.total_delay_s * 1000.0) +
-            " ms, is shorter than the scenario's probe.interface_delay_s + half of "
-            "machine.scan_period_s (" +
-            format_number((applied.interface_delay_s + applied.half_scan_s) * 1000.0) +
-            " ms): the controller latency would be negative; check those keys (or "
-            "machine.latched_input) in the scenario");
+        throw LabError(delay_message(
+            "negative_latency",
+            QT_TRANSLATE_NOOP("DelayFit",
+                              "the fitted delay of %1, %2, is shorter than the scenario's "
+                              "probe.interface_delay_s + half of machine.scan_period_s (%3): the "
+                              "controller latency would be negative; check those keys (or "
+                              "machine.latched_input) in the scenario"),
+            {text_arg("group", applied.group),
+             significant_arg("delay_s", ArgKind::delay_s, applied.total_delay_s, 6),
+             significant_arg("interface_and_half_scan_s", ArgKind::delay_s,
+                             applied.interface_delay_s + applied.half_scan_s, 6)}));
     }
     return applied;
 }

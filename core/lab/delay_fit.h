@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/common/message.h"
 #include "core/common/severity.h"
 #include "core/cycle/scenario.h"  // the delay is applied to a scenario
 
@@ -37,7 +38,10 @@ const char* to_string(LatencyWarningCode code);
 struct LatencyWarning {
     LatencyWarningCode code{};
     Severity severity{};
-    std::string message;
+    // Code, template (context "DelayFit") and the numbers as named arguments,
+    // the group ("X+") first; the window translates it, the CLI renders it.
+    Message message;
+    std::string text() const;  // in English: render(message)
 };
 
 struct FeedScatter {
@@ -99,7 +103,7 @@ DelayFit fit_delay(std::span<const DelayTouch> touches, const DelayFitOptions& o
 // what remains: tau - t_i - t_s/2 (no t_s/2 when the input is latched).
 struct AppliedDelay {
     std::string group;  // "X+", the group whose delay was used
-    std::string rule;   // why that group
+    Message rule;       // why that group
     double total_delay_s{0.0};
     double interface_delay_s{0.0};
     double half_scan_s{0.0};
@@ -108,18 +112,20 @@ struct AppliedDelay {
 };
 // The group whose delay goes into the scenario: the named one
 // (case-insensitive), the only one, or else the one with the longest delay.
-// Throws std::invalid_argument for an unknown name or a fit with no groups.
+// Throws LabError (a std::invalid_argument) for an unknown name or a fit with
+// no groups.
 struct ChosenGroup {
     const DelayGroup* group{nullptr};
-    std::string rule;  // why that group
+    Message rule;  // why that group: "the only group", ...
 };
 ChosenGroup choose_group(const DelayFit& fit, const std::optional<std::string>& name);
 
 // Uses the named group (case-insensitive), the only group, or else the
 // longest delay: the scenario has one controller latency for every axis, and
 // the longest gives the longest overtravel (the safe side for the stylus).
-// Throws std::invalid_argument naming the problem: an unknown group, a fit
-// with no groups, or a delay shorter than t_i + t_s/2 (a negative latency).
+// Throws LabError (a std::invalid_argument) naming the problem: an unknown
+// group, a fit with no groups, or a delay shorter than t_i + t_s/2 (a negative
+// latency).
 AppliedDelay controller_latency_from_fit(const DelayFit& fit, const Scenario& scenario,
                                          const std::optional<std::string>& group = std::nullopt);
 // The scenario with the applied controller latency (validated; throws ScenarioError).

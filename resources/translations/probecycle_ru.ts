@@ -2,6 +2,196 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru_RU">
 <context>
+    <name>Calibration</name>
+    <message>
+        <source>%1 is not allowed: the spindle orientation is 0 or 180</source>
+        <translation>%1 не допускается: ориентация шпинделя — 0 или 180</translation>
+    </message>
+    <message>
+        <source>no points; a ring needs 3 or more per orientation</source>
+        <translation>нет точек; для кольца нужно 3 или более точек на каждую ориентацию</translation>
+    </message>
+    <message>
+        <source>orientation %1 has only %2 point (%3); a circle needs 3 or more per orientation (typically 4: X+, X-, Y+, Y-)</source>
+        <translation>для ориентации %1 только %2 точка (%3); для окружности нужно 3 или более точек на ориентацию (обычно 4: X+, X-, Y+, Y-)</translation>
+    </message>
+    <message>
+        <source>orientation %1 has only %2 points (%3); a circle needs 3 or more per orientation (typically 4: X+, X-, Y+, Y-)</source>
+        <translation>для ориентации %1 только %2 точки (%3); для окружности нужно 3 или более точек на ориентацию (обычно 4: X+, X-, Y+, Y-)</translation>
+    </message>
+    <message>
+        <source>the points at orientation %1 (%2) lie on a line or repeat: no circle through them; touch 3 or more distinct points around the bore</source>
+        <translation>точки при ориентации %1 (%2) лежат на одной прямой или повторяются: окружность через них не проходит; коснитесь 3 или более разных точек по окружности отверстия</translation>
+    </message>
+    <message>
+        <source>the points at %1 cover only %2 of the bore (all on one side): the centre across that side is poorly determined; touch around the whole bore (X+, X-, Y+, Y-)</source>
+        <translation>точки при %1 охватывают только %2 отверстия (все с одной стороны): центр в направлении этой стороны определён плохо; касайтесь по всему отверстию (X+, X-, Y+, Y-)</translation>
+    </message>
+    <message>
+        <source>3 points at %1: the circle passes through them exactly, so the residual shows nothing; a fourth point checks the touches</source>
+        <translation>3 точки при %1: окружность проходит через них точно, поэтому остаток ничего не показывает; четвёртая точка проверяет касания</translation>
+    </message>
+    <message>
+        <source>stylus runout %1 (x %2, y %3) exceeds %4: set the stylus on centre, and check that the spindle orients repeatably</source>
+        <translation>биение наконечника %1 (x %2, y %3) превышает %4: выставьте наконечник по центру и проверьте повторяемость ориентации шпинделя</translation>
+    </message>
+    <message>
+        <source>only orientation %1 given: no runout. The centre is that of the %1 circle and is off the gauge centre by the stylus runout; touch the same points at %2 to separate the two</source>
+        <translation>задана только ориентация %1: биения нет. Центр — это центр окружности при %1, он смещён от центра кольца на биение наконечника; коснитесь тех же точек при %2, чтобы разделить их</translation>
+    </message>
+    <message>
+        <source>a point is %1 off the fitted circle (limit %2): clean the gauge and the stylus, check the gauge is clamped, and repeat the touch</source>
+        <translation>одна точка отстоит от подобранной окружности на %1 (предел %2): очистите кольцо и наконечник, проверьте закрепление кольца и повторите касание</translation>
+    </message>
+    <message>
+        <source>the point on line %1 is %2 off the fitted circle (limit %3): clean the gauge and the stylus, check the gauge is clamped, and repeat the touch</source>
+        <translation>точка в строке %1 отстоит от подобранной окружности на %2 (предел %3): очистите кольцо и наконечник, проверьте закрепление кольца и повторите касание</translation>
+    </message>
+    <message>
+        <source>the touches lie on a circle of radius %1, not inside the gauge of radius %2 (diameter %3): the effective ball radius would not be positive; check the gauge diameter</source>
+        <translation>касания лежат на окружности радиусом %1, а не внутри кольца радиусом %2 (диаметр %3): эффективный радиус шарика был бы неположительным; проверьте диаметр кольца</translation>
+    </message>
+    <message>
+        <source>no trigger Z given; touch the surface at least once</source>
+        <translation>Z срабатывания не задана; коснитесь поверхности хотя бы один раз</translation>
+    </message>
+    <message>
+        <source>effective length %1 is not positive: with Z up, the trigger Z plus the active length offset must lie above the surface Z</source>
+        <translation>эффективная длина %1 неположительна: при оси Z, направленной вверх, Z срабатывания плюс активная коррекция длины должна быть выше Z поверхности</translation>
+    </message>
+    <message>
+        <source>the effective length differs from the nominal %1 by %2 (limit %3): check the nominal, the surface Z and the stylus</source>
+        <translation>эффективная длина отличается от номинальной %1 на %2 (предел %3): проверьте номинал, Z поверхности и наконечник</translation>
+    </message>
+</context>
+<context>
+    <name>CsvError</name>
+    <message>
+        <source>line %1: %2</source>
+        <translation>строка %1: %2</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>строка %1, столбец %2: %3</translation>
+    </message>
+    <message>
+        <source>missing column &apos;%1&apos;; the header must name the columns %2 (comma-separated)</source>
+        <translation>нет столбца «%1»; в заголовке должны быть столбцы %2 (через запятую)</translation>
+    </message>
+    <message>
+        <source>column &apos;%1&apos; appears twice in the header</source>
+        <translation>столбец «%1» встречается в заголовке дважды</translation>
+    </message>
+    <message>
+        <source>%1 fields, but the header has %2 (%3)</source>
+        <translation>полей: %1, а в заголовке: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>the file is empty; expected a header line %1 and one line per touch</source>
+        <translation>файл пуст; ожидаются строка заголовка %1 и по строке на каждое касание</translation>
+    </message>
+    <message>
+        <source>no data after the header; expected one line per touch under %1</source>
+        <translation>после заголовка нет данных; ожидается по строке на каждое касание под %1</translation>
+    </message>
+    <message>
+        <source>empty; expected a number</source>
+        <translation>пусто; ожидается число</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number (use &apos;.&apos; as the decimal point)</source>
+        <translation>«%1» — не число (десятичный разделитель — точка «.»)</translation>
+    </message>
+    <message>
+        <source>no line</source>
+        <translation>нет строки</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>строка %1</translation>
+    </message>
+    <message>
+        <source>lines %1</source>
+        <translation>строки %1</translation>
+    </message>
+    <message>
+        <source>out of range: a coordinate within +-%1 mm</source>
+        <translation>вне диапазона: координата в пределах ±%1 мм</translation>
+    </message>
+</context>
+<context>
+    <name>DelayFit</name>
+    <message>
+        <source>%1, %2</source>
+        <extracomment>a list of feeds, &quot;500 mm/min, 900 mm/min&quot;; %2 is the rest of the list</extracomment>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>%1: only %2 feeds; a line through two feeds cannot show whether the delay is constant: touch at 3 or more</source>
+        <translation>%1: только %2 подачи; прямая по двум подачам не показывает, постоянна ли задержка: выполните касания на 3 или более подачах</translation>
+    </message>
+    <message>
+        <source>%1: the fitted delay is negative (%2): the recorded position moves against the travel as the feed rises; check the direction column (+1/-1 is the direction of travel)</source>
+        <translation>%1: подобранная задержка отрицательна (%2): с ростом подачи записанное положение смещается против направления движения; проверьте столбец direction (+1/-1 — направление движения)</translation>
+    </message>
+    <message>
+        <source>%1: one touch only at %2: no scatter there; repeat each touch (5 or more) to see the stability</source>
+        <translation>%1: только одно касание на подаче %2: разброса там не видно; повторите каждое касание (5 раз или более), чтобы увидеть стабильность</translation>
+    </message>
+    <message>
+        <source>%1: at %2 the touches spread over %3 (%4 of travel), more than %5x what the other feeds predict (%6): the delay is not stable there; repeat the touches and check the input and the controller load</source>
+        <translation>%1: на подаче %2 касания разбросаны на %3 (%4 движения), более чем в %5 раза больше, чем предсказывают другие подачи (%6): задержка там нестабильна; повторите касания и проверьте вход и загрузку ЧПУ</translation>
+    </message>
+    <message>
+        <source>%1: the residuals curve: the touches depart from the line by up to %2; the delay is not constant but goes from %3 at %4 to %5 at %6; a correction with one delay is right at one feed only</source>
+        <translation>%1: остатки искривлены: касания отклоняются от прямой до %2; задержка не постоянна, а меняется от %3 при %4 до %5 при %6; коррекция одной задержкой верна только на одной подаче</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not an axis name (a letter, e.g. X, Y, Z)</source>
+        <translation>«%1» — не имя оси (буква, напр. X, Y, Z)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed: +1 or -1, the direction of travel</source>
+        <translation>«%1» не допускается: +1 или -1, направление движения</translation>
+    </message>
+    <message>
+        <source>%1 is out of range: (0, %2] mm/min</source>
+        <translation>%1 вне диапазона: (0, %2] мм/мин</translation>
+    </message>
+    <message>
+        <source>%1: only one touch (%2, %3); the delay is the slope over feeds: touch at 2 or more feeds, 3 or more to check that it is constant</source>
+        <translation>%1: только одно касание (%2, %3); задержка — это наклон по подачам: выполните касания на 2 или более подачах, на 3 или более — чтобы проверить её постоянство</translation>
+    </message>
+    <message>
+        <source>%1: all %2 touches are at one feed (%3, %4); the delay is the slope over feeds: touch at 2 or more feeds, 3 or more to check that it is constant</source>
+        <translation>%1: все касания (%2) выполнены на одной подаче (%3, %4); задержка — это наклон по подачам: выполните касания на 2 или более подачах, на 3 или более — чтобы проверить её постоянство</translation>
+    </message>
+    <message>
+        <source>the fit has no groups of touches</source>
+        <translation>в подборе нет групп касаний</translation>
+    </message>
+    <message>
+        <source>the group chosen</source>
+        <translation>выбранная группа</translation>
+    </message>
+    <message>
+        <source>got &apos;%1&apos;; allowed: a group of the file (%2)</source>
+        <translation>получено «%1»; допустимо: группа из файла (%2)</translation>
+    </message>
+    <message>
+        <source>the only group</source>
+        <translation>единственная группа</translation>
+    </message>
+    <message>
+        <source>the longest delay of %1 groups (the safe side for overtravel); choose one to override</source>
+        <translation>наибольшая задержка из %1 групп (в безопасную сторону для перебега); выберите группу, чтобы заменить</translation>
+    </message>
+    <message>
+        <source>the fitted delay of %1, %2, is shorter than the scenario&apos;s probe.interface_delay_s + half of machine.scan_period_s (%3): the controller latency would be negative; check those keys (or machine.latched_input) in the scenario</source>
+        <translation>подобранная задержка %1, %2, меньше, чем probe.interface_delay_s плюс половина machine.scan_period_s в сценарии (%3): задержка ЧПУ была бы отрицательной; проверьте эти ключи (или machine.latched_input) в сценарии</translation>
+    </message>
+</context>
+<context>
     <name>FieldError</name>
     <message>
         <source>%1: %2</source>
@@ -801,6 +991,146 @@
     </message>
 </context>
 <context>
+    <name>probecycle::ui::CompensationPanel</name>
+    <message>
+        <source>Uncompensated</source>
+        <translation>Без компенсации</translation>
+    </message>
+    <message>
+        <source>Naive v·τ</source>
+        <translation>Простая v·τ</translation>
+    </message>
+    <message>
+        <source>Cycle lag (real increments)</source>
+        <translation>Запаздывание в периодах (реальные приращения)</translation>
+    </message>
+    <message>
+        <source>Timestamp interpolation</source>
+        <translation>Интерполяция по метке времени</translation>
+    </message>
+    <message>
+        <source>Real increments</source>
+        <translation>Реальные приращения</translation>
+    </message>
+    <message>
+        <source>Timestamp</source>
+        <translation>Метка времени</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Подача</translation>
+    </message>
+    <message>
+        <source>Interpolation period</source>
+        <translation>Период интерполяции</translation>
+    </message>
+    <message>
+        <source>Lag</source>
+        <translation>Запаздывание</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger</source>
+        <translation>Скорость при срабатывании</translation>
+    </message>
+    <message>
+        <source>Direction of travel</source>
+        <translation>Направление движения</translation>
+    </message>
+    <message>
+        <source>Trigger phase in its cycle</source>
+        <translation>Фаза срабатывания в периоде</translation>
+    </message>
+    <message>
+        <source>Encoder counts per mm</source>
+        <translation>Импульсов энкодера на мм</translation>
+    </message>
+    <message>
+        <source>Encoder counter width</source>
+        <translation>Разрядность счётчика энкодера</translation>
+    </message>
+    <message>
+        <source>Delay for v·τ</source>
+        <translation>Задержка для v·τ</translation>
+    </message>
+    <message>
+        <source>Compensation of the trigger position</source>
+        <translation>Компенсация положения срабатывания</translation>
+    </message>
+    <message>
+        <source>The programmed probing feed.</source>
+        <translation>Запрограммированная подача измерения.</translation>
+    </message>
+    <message>
+        <source>The control&apos;s interpolation cycle.</source>
+        <translation>Период интерполяции ЧПУ.</translation>
+    </message>
+    <message>
+        <source>Cycles between the end of the trigger&apos;s cycle and the recorded position; the delay-stability test above measures it.</source>
+        <translation>Число периодов между концом периода срабатывания и записанным положением; его измеряет испытание стабильности задержки выше.</translation>
+    </message>
+    <message>
+        <source> cycles</source>
+        <translation> периодов</translation>
+    </message>
+    <message>
+        <source>Touch</source>
+        <translation>Касание</translation>
+    </message>
+    <message>
+        <source>At constant speed, or while the axis is braking.</source>
+        <translation>На постоянной скорости или во время торможения оси.</translation>
+    </message>
+    <message>
+        <source>At constant speed</source>
+        <translation>На постоянной скорости</translation>
+    </message>
+    <message>
+        <source>While braking</source>
+        <translation>Во время торможения</translation>
+    </message>
+    <message>
+        <source>While braking: the speed at the trigger, in % of the feed.</source>
+        <translation>Во время торможения: скорость при срабатывании в % от подачи.</translation>
+    </message>
+    <message>
+        <source>Take period and lag from the fit</source>
+        <translation>Взять период и запаздывание из подбора</translation>
+    </message>
+    <message>
+        <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
+        <translation>Динамика станка — из сценария. При торможении v·τ считает подачу постоянной всю задержку и перекорректирует; реальные приращения последних периодов дают ошибку в пределах пути за один период.</translation>
+    </message>
+    <message>
+        <source>Error of the corrected position while braking</source>
+        <translation>Ошибка исправленного положения при торможении</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger [% of the feed]</source>
+        <translation>Скорость при срабатывании [% от подачи]</translation>
+    </message>
+    <message>
+        <source>Error [%1]</source>
+        <translation>Ошибка [%1]</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Метод</translation>
+    </message>
+    <message>
+        <source>Position [%1]</source>
+        <translation>Положение [%1]</translation>
+    </message>
+    <message>
+        <source>Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ uses τ = %4.</source>
+        <extracomment>%1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses</extracomment>
+        <translation>Срабатывание на %1 мм/с, запись через %2 периодов на %3 мм/с; v·τ использует τ = %4.</translation>
+    </message>
+    <message>
+        <source>Counter roll-overs: %1.</source>
+        <translation>Переполнений счётчика: %1.</translation>
+    </message>
+</context>
+<context>
     <name>probecycle::ui::CycleCharts</name>
     <message>
         <source>Probing feedrate [%1]</source>
@@ -924,87 +1254,7 @@
     </message>
 </context>
 <context>
-    <name>probecycle::ui::Lab</name>
-    <message>
-        <source>Points on one side</source>
-        <translation>Точки с одной стороны</translation>
-    </message>
-    <message>
-        <source>Large stylus runout</source>
-        <translation>Большое биение наконечника</translation>
-    </message>
-    <message>
-        <source>Point off the circle</source>
-        <translation>Точка вне окружности</translation>
-    </message>
-    <message>
-        <source>One orientation only: no runout</source>
-        <translation>Только одна ориентация: биения нет</translation>
-    </message>
-    <message>
-        <source>Three points: exact fit</source>
-        <translation>Три точки: точный подбор</translation>
-    </message>
-    <message>
-        <source>Length far from the nominal</source>
-        <translation>Длина далека от номинальной</translation>
-    </message>
-    <message>
-        <source>Fewer than 3 feeds</source>
-        <translation>Меньше 3 подач</translation>
-    </message>
-    <message>
-        <source>Unstable delay</source>
-        <translation>Нестабильная задержка</translation>
-    </message>
-    <message>
-        <source>Residuals curve: the delay changes</source>
-        <translation>Остатки искривлены: задержка меняется</translation>
-    </message>
-    <message>
-        <source>Negative delay</source>
-        <translation>Отрицательная задержка</translation>
-    </message>
-    <message>
-        <source>One touch at a feed</source>
-        <translation>Одно касание на подаче</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>%1 could not be read: %2</source>
-        <translation>Не удалось прочитать %1: %2</translation>
-    </message>
-</context>
-<context>
-    <name>probecycle::ui::LatencyTab</name>
-    <message>
-        <source>Uncompensated</source>
-        <translation>Без компенсации</translation>
-    </message>
-    <message>
-        <source>Naive v·τ</source>
-        <translation>Простая v·τ</translation>
-    </message>
-    <message>
-        <source>Cycle lag (real increments)</source>
-        <translation>Запаздывание в периодах (реальные приращения)</translation>
-    </message>
-    <message>
-        <source>Timestamp interpolation</source>
-        <translation>Интерполяция по метке времени</translation>
-    </message>
-    <message>
-        <source>Real increments</source>
-        <translation>Реальные приращения</translation>
-    </message>
-    <message>
-        <source>Timestamp</source>
-        <translation>Метка времени</translation>
-    </message>
+    <name>probecycle::ui::DelayFitPanel</name>
     <message>
         <source>Delay from touches at several feeds (delay-stability test)</source>
         <translation>Задержка по касаниям на нескольких подачах (испытание стабильности задержки)</translation>
@@ -1038,8 +1288,16 @@
         <translation>Подобрать</translation>
     </message>
     <message>
+        <source>Measured minus zero-speed position, against feed</source>
+        <translation>Измеренное минус положение при нулевой скорости, по подаче</translation>
+    </message>
+    <message>
         <source>Feed [%1]</source>
         <translation>Подача [%1]</translation>
+    </message>
+    <message>
+        <source>Deviation [%1]</source>
+        <translation>Отклонение [%1]</translation>
     </message>
     <message>
         <source>Group / feed</source>
@@ -1106,82 +1364,6 @@
         <translation>Задаёт machine.controller_latency_s равной подобранной задержке минус задержка интерфейса датчика и половина периода опроса (для входа с защёлкой — без неё).</translation>
     </message>
     <message>
-        <source>Compensation of the trigger position</source>
-        <translation>Компенсация положения срабатывания</translation>
-    </message>
-    <message>
-        <source>Feed</source>
-        <translation>Подача</translation>
-    </message>
-    <message>
-        <source>The programmed probing feed.</source>
-        <translation>Запрограммированная подача измерения.</translation>
-    </message>
-    <message>
-        <source>The control&apos;s interpolation cycle.</source>
-        <translation>Период интерполяции ЧПУ.</translation>
-    </message>
-    <message>
-        <source>Lag</source>
-        <translation>Запаздывание</translation>
-    </message>
-    <message>
-        <source>Cycles between the end of the trigger&apos;s cycle and the recorded position; the delay-stability test above measures it.</source>
-        <translation>Число периодов между концом периода срабатывания и записанным положением; его измеряет испытание стабильности задержки выше.</translation>
-    </message>
-    <message>
-        <source> cycles</source>
-        <translation> периодов</translation>
-    </message>
-    <message>
-        <source>Touch</source>
-        <translation>Касание</translation>
-    </message>
-    <message>
-        <source>At constant speed, or while the axis is braking.</source>
-        <translation>На постоянной скорости или во время торможения оси.</translation>
-    </message>
-    <message>
-        <source>At constant speed</source>
-        <translation>На постоянной скорости</translation>
-    </message>
-    <message>
-        <source>While braking</source>
-        <translation>Во время торможения</translation>
-    </message>
-    <message>
-        <source>Speed at the trigger</source>
-        <translation>Скорость при срабатывании</translation>
-    </message>
-    <message>
-        <source>While braking: the speed at the trigger, in % of the feed.</source>
-        <translation>Во время торможения: скорость при срабатывании в % от подачи.</translation>
-    </message>
-    <message>
-        <source>Take period and lag from the fit</source>
-        <translation>Взять период и запаздывание из подбора</translation>
-    </message>
-    <message>
-        <source>Error of the corrected position while braking</source>
-        <translation>Ошибка исправленного положения при торможении</translation>
-    </message>
-    <message>
-        <source>Speed at the trigger [% of the feed]</source>
-        <translation>Скорость при срабатывании [% от подачи]</translation>
-    </message>
-    <message>
-        <source>Error [%1]</source>
-        <translation>Ошибка [%1]</translation>
-    </message>
-    <message>
-        <source>Method</source>
-        <translation>Метод</translation>
-    </message>
-    <message>
-        <source>Position [%1]</source>
-        <translation>Положение [%1]</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1222,26 +1404,66 @@
         <extracomment>%1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now</extracomment>
         <translation>Задержка ЧПУ = %1 задержка %2 − интерфейс %3 − половина опроса %4 = &lt;b&gt;%5&lt;/b&gt; (сейчас %6)</translation>
     </message>
+</context>
+<context>
+    <name>probecycle::ui::Lab</name>
     <message>
-        <source>Measured minus zero-speed position, against feed</source>
-        <translation>Измеренное минус положение при нулевой скорости, по подаче</translation>
+        <source>Points on one side</source>
+        <translation>Точки с одной стороны</translation>
     </message>
     <message>
-        <source>Deviation [%1]</source>
-        <translation>Отклонение [%1]</translation>
+        <source>Large stylus runout</source>
+        <translation>Большое биение наконечника</translation>
     </message>
     <message>
-        <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
-        <translation>Динамика станка — из сценария. При торможении v·τ считает подачу постоянной всю задержку и перекорректирует; реальные приращения последних периодов дают ошибку в пределах пути за один период.</translation>
+        <source>Point off the circle</source>
+        <translation>Точка вне окружности</translation>
     </message>
     <message>
-        <source>Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ uses τ = %4.</source>
-        <extracomment>%1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses</extracomment>
-        <translation>Срабатывание на %1 мм/с, запись через %2 периодов на %3 мм/с; v·τ использует τ = %4.</translation>
+        <source>One orientation only: no runout</source>
+        <translation>Только одна ориентация: биения нет</translation>
     </message>
     <message>
-        <source>Counter roll-overs: %1.</source>
-        <translation>Переполнений счётчика: %1.</translation>
+        <source>Three points: exact fit</source>
+        <translation>Три точки: точный подбор</translation>
+    </message>
+    <message>
+        <source>Length far from the nominal</source>
+        <translation>Длина далека от номинальной</translation>
+    </message>
+    <message>
+        <source>Fewer than 3 feeds</source>
+        <translation>Меньше 3 подач</translation>
+    </message>
+    <message>
+        <source>Unstable delay</source>
+        <translation>Нестабильная задержка</translation>
+    </message>
+    <message>
+        <source>Residuals curve: the delay changes</source>
+        <translation>Остатки искривлены: задержка меняется</translation>
+    </message>
+    <message>
+        <source>Negative delay</source>
+        <translation>Отрицательная задержка</translation>
+    </message>
+    <message>
+        <source>One touch at a feed</source>
+        <translation>Одно касание на подаче</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>Не удалось прочитать %1: %2</translation>
+    </message>
+    <message>
+        <source>Unexpected error: %1</source>
+        <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
+        <translation>Непредвиденная ошибка: %1</translation>
     </message>
 </context>
 <context>

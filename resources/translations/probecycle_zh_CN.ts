@@ -2,6 +2,196 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>Calibration</name>
+    <message>
+        <source>%1 is not allowed: the spindle orientation is 0 or 180</source>
+        <translation>不允许 %1：主轴定向只能为 0 或 180</translation>
+    </message>
+    <message>
+        <source>no points; a ring needs 3 or more per orientation</source>
+        <translation>没有测点；环规每个定向需要 3 个或更多测点</translation>
+    </message>
+    <message>
+        <source>orientation %1 has only %2 point (%3); a circle needs 3 or more per orientation (typically 4: X+, X-, Y+, Y-)</source>
+        <translation>定向 %1 只有 %2 个测点（%3）；拟合圆每个定向需要 3 个或更多测点（通常为 4 个：X+、X-、Y+、Y-）</translation>
+    </message>
+    <message>
+        <source>orientation %1 has only %2 points (%3); a circle needs 3 or more per orientation (typically 4: X+, X-, Y+, Y-)</source>
+        <translation>定向 %1 只有 %2 个测点（%3）；拟合圆每个定向需要 3 个或更多测点（通常为 4 个：X+、X-、Y+、Y-）</translation>
+    </message>
+    <message>
+        <source>the points at orientation %1 (%2) lie on a line or repeat: no circle through them; touch 3 or more distinct points around the bore</source>
+        <translation>定向 %1 的测点（%2）共线或重复：无法通过它们拟合圆；请在孔周围触测 3 个或更多不同的点</translation>
+    </message>
+    <message>
+        <source>the points at %1 cover only %2 of the bore (all on one side): the centre across that side is poorly determined; touch around the whole bore (X+, X-, Y+, Y-)</source>
+        <translation>%1 的测点只覆盖孔的 %2（全部在一侧）：中心在该侧方向上确定不准；请沿整个孔触测（X+、X-、Y+、Y-）</translation>
+    </message>
+    <message>
+        <source>3 points at %1: the circle passes through them exactly, so the residual shows nothing; a fourth point checks the touches</source>
+        <translation>%1 下只有 3 个测点：圆恰好通过这些点，因此残差说明不了什么；第四个点可以校核触测</translation>
+    </message>
+    <message>
+        <source>stylus runout %1 (x %2, y %3) exceeds %4: set the stylus on centre, and check that the spindle orients repeatably</source>
+        <translation>测针跳动 %1（x %2，y %3）超过 %4：请将测针调至中心，并检查主轴定向是否可重复</translation>
+    </message>
+    <message>
+        <source>only orientation %1 given: no runout. The centre is that of the %1 circle and is off the gauge centre by the stylus runout; touch the same points at %2 to separate the two</source>
+        <translation>只给出了定向 %1：无法求跳动。中心为 %1 圆的中心，与环规中心相差一个测针跳动；请在 %2 下触测相同的点，以将二者分开</translation>
+    </message>
+    <message>
+        <source>a point is %1 off the fitted circle (limit %2): clean the gauge and the stylus, check the gauge is clamped, and repeat the touch</source>
+        <translation>有一个测点偏离拟合圆 %1（极限 %2）：请清洁环规和测针，检查环规是否夹紧，然后重新触测</translation>
+    </message>
+    <message>
+        <source>the point on line %1 is %2 off the fitted circle (limit %3): clean the gauge and the stylus, check the gauge is clamped, and repeat the touch</source>
+        <translation>第 %1 行的测点偏离拟合圆 %2（极限 %3）：请清洁环规和测针，检查环规是否夹紧，然后重新触测</translation>
+    </message>
+    <message>
+        <source>the touches lie on a circle of radius %1, not inside the gauge of radius %2 (diameter %3): the effective ball radius would not be positive; check the gauge diameter</source>
+        <translation>触测点位于半径 %1 的圆上，不在半径 %2（直径 %3）的环规之内：有效测球半径将不为正；请检查环规直径</translation>
+    </message>
+    <message>
+        <source>no trigger Z given; touch the surface at least once</source>
+        <translation>未给出触发 Z；请至少触测表面一次</translation>
+    </message>
+    <message>
+        <source>effective length %1 is not positive: with Z up, the trigger Z plus the active length offset must lie above the surface Z</source>
+        <translation>有效长度 %1 不为正：Z 轴向上为正时，触发 Z 加上当前长度补偿必须高于表面 Z</translation>
+    </message>
+    <message>
+        <source>the effective length differs from the nominal %1 by %2 (limit %3): check the nominal, the surface Z and the stylus</source>
+        <translation>有效长度与名义长度 %1 相差 %2（极限 %3）：请检查名义长度、表面 Z 和测针</translation>
+    </message>
+</context>
+<context>
+    <name>CsvError</name>
+    <message>
+        <source>line %1: %2</source>
+        <translation>第 %1 行：%2</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>第 %1 行，%2 列：%3</translation>
+    </message>
+    <message>
+        <source>missing column &apos;%1&apos;; the header must name the columns %2 (comma-separated)</source>
+        <translation>缺少列“%1”；表头必须列出 %2 这些列（以逗号分隔）</translation>
+    </message>
+    <message>
+        <source>column &apos;%1&apos; appears twice in the header</source>
+        <translation>列“%1”在表头中出现了两次</translation>
+    </message>
+    <message>
+        <source>%1 fields, but the header has %2 (%3)</source>
+        <translation>有 %1 个字段，但表头有 %2 个（%3）</translation>
+    </message>
+    <message>
+        <source>the file is empty; expected a header line %1 and one line per touch</source>
+        <translation>文件为空；应有表头行 %1，且每次触测一行</translation>
+    </message>
+    <message>
+        <source>no data after the header; expected one line per touch under %1</source>
+        <translation>表头之后没有数据；%1 之下应每次触测一行</translation>
+    </message>
+    <message>
+        <source>empty; expected a number</source>
+        <translation>为空；应为数值</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number (use &apos;.&apos; as the decimal point)</source>
+        <translation>“%1”不是数值（小数点请用“.”）</translation>
+    </message>
+    <message>
+        <source>no line</source>
+        <translation>无行</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>第 %1 行</translation>
+    </message>
+    <message>
+        <source>lines %1</source>
+        <translation>第 %1 行</translation>
+    </message>
+    <message>
+        <source>out of range: a coordinate within +-%1 mm</source>
+        <translation>超出范围：坐标应在 ±%1 mm 以内</translation>
+    </message>
+</context>
+<context>
+    <name>DelayFit</name>
+    <message>
+        <source>%1, %2</source>
+        <extracomment>a list of feeds, &quot;500 mm/min, 900 mm/min&quot;; %2 is the rest of the list</extracomment>
+        <translation>%1、%2</translation>
+    </message>
+    <message>
+        <source>%1: only %2 feeds; a line through two feeds cannot show whether the delay is constant: touch at 3 or more</source>
+        <translation>%1：只有 %2 个进给率；通过两个进给率的直线无法显示延迟是否恒定：请在 3 个或更多进给率下触测</translation>
+    </message>
+    <message>
+        <source>%1: the fitted delay is negative (%2): the recorded position moves against the travel as the feed rises; check the direction column (+1/-1 is the direction of travel)</source>
+        <translation>%1：拟合的延迟为负（%2）：进给率升高时，记录的位置逆行程方向移动；请检查 direction 列（+1/-1 为行程方向）</translation>
+    </message>
+    <message>
+        <source>%1: one touch only at %2: no scatter there; repeat each touch (5 or more) to see the stability</source>
+        <translation>%1：在 %2 下只有一次触测：那里看不出分散；请重复每次触测（5 次或更多）以查看稳定性</translation>
+    </message>
+    <message>
+        <source>%1: at %2 the touches spread over %3 (%4 of travel), more than %5x what the other feeds predict (%6): the delay is not stable there; repeat the touches and check the input and the controller load</source>
+        <translation>%1：在 %2 下触测分散达 %3（相当于 %4 的行程），超过其他进给率预测值（%6）的 %5 倍：该处延迟不稳定；请重复触测，并检查输入信号和控制器负载</translation>
+    </message>
+    <message>
+        <source>%1: the residuals curve: the touches depart from the line by up to %2; the delay is not constant but goes from %3 at %4 to %5 at %6; a correction with one delay is right at one feed only</source>
+        <translation>%1：残差呈曲线：触测点偏离直线最多 %2；延迟并不恒定，而是从 %4 下的 %3 变为 %6 下的 %5；用单一延迟的补偿只在一个进给率下正确</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not an axis name (a letter, e.g. X, Y, Z)</source>
+        <translation>“%1”不是轴名（应为字母，如 X、Y、Z）</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed: +1 or -1, the direction of travel</source>
+        <translation>不允许“%1”：应为 +1 或 -1，即行程方向</translation>
+    </message>
+    <message>
+        <source>%1 is out of range: (0, %2] mm/min</source>
+        <translation>%1 超出范围：(0, %2] mm/min</translation>
+    </message>
+    <message>
+        <source>%1: only one touch (%2, %3); the delay is the slope over feeds: touch at 2 or more feeds, 3 or more to check that it is constant</source>
+        <translation>%1：只有一次触测（%2，%3）；延迟是随进给率变化的斜率：请在 2 个或更多进给率下触测，3 个或更多可检验其是否恒定</translation>
+    </message>
+    <message>
+        <source>%1: all %2 touches are at one feed (%3, %4); the delay is the slope over feeds: touch at 2 or more feeds, 3 or more to check that it is constant</source>
+        <translation>%1：全部 %2 次触测都在同一进给率下（%3，%4）；延迟是随进给率变化的斜率：请在 2 个或更多进给率下触测，3 个或更多可检验其是否恒定</translation>
+    </message>
+    <message>
+        <source>the fit has no groups of touches</source>
+        <translation>拟合中没有触测组</translation>
+    </message>
+    <message>
+        <source>the group chosen</source>
+        <translation>所选的组</translation>
+    </message>
+    <message>
+        <source>got &apos;%1&apos;; allowed: a group of the file (%2)</source>
+        <translation>值为“%1”；允许：文件中的组（%2）</translation>
+    </message>
+    <message>
+        <source>the only group</source>
+        <translation>唯一的组</translation>
+    </message>
+    <message>
+        <source>the longest delay of %1 groups (the safe side for overtravel); choose one to override</source>
+        <translation>%1 个组中延迟最长者（对过行程偏于安全）；可选择一个组来替代</translation>
+    </message>
+    <message>
+        <source>the fitted delay of %1, %2, is shorter than the scenario&apos;s probe.interface_delay_s + half of machine.scan_period_s (%3): the controller latency would be negative; check those keys (or machine.latched_input) in the scenario</source>
+        <translation>%1 的拟合延迟 %2 短于场景中 probe.interface_delay_s 加 machine.scan_period_s 的一半（%3）：控制器延迟将为负；请检查场景中的这些键（或 machine.latched_input）</translation>
+    </message>
+</context>
+<context>
     <name>FieldError</name>
     <message>
         <source>%1: %2</source>
@@ -801,6 +991,146 @@
     </message>
 </context>
 <context>
+    <name>probecycle::ui::CompensationPanel</name>
+    <message>
+        <source>Uncompensated</source>
+        <translation>未补偿</translation>
+    </message>
+    <message>
+        <source>Naive v·τ</source>
+        <translation>简单 v·τ</translation>
+    </message>
+    <message>
+        <source>Cycle lag (real increments)</source>
+        <translation>周期滞后（实际增量）</translation>
+    </message>
+    <message>
+        <source>Timestamp interpolation</source>
+        <translation>时间戳插值</translation>
+    </message>
+    <message>
+        <source>Real increments</source>
+        <translation>实际增量</translation>
+    </message>
+    <message>
+        <source>Timestamp</source>
+        <translation>时间戳</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>进给率</translation>
+    </message>
+    <message>
+        <source>Interpolation period</source>
+        <translation>插补周期</translation>
+    </message>
+    <message>
+        <source>Lag</source>
+        <translation>滞后</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger</source>
+        <translation>触发时速度</translation>
+    </message>
+    <message>
+        <source>Direction of travel</source>
+        <translation>行程方向</translation>
+    </message>
+    <message>
+        <source>Trigger phase in its cycle</source>
+        <translation>触发在其周期内的相位</translation>
+    </message>
+    <message>
+        <source>Encoder counts per mm</source>
+        <translation>每毫米编码器计数</translation>
+    </message>
+    <message>
+        <source>Encoder counter width</source>
+        <translation>编码器计数器位数</translation>
+    </message>
+    <message>
+        <source>Delay for v·τ</source>
+        <translation>v·τ 所用的延迟</translation>
+    </message>
+    <message>
+        <source>Compensation of the trigger position</source>
+        <translation>触发位置的补偿</translation>
+    </message>
+    <message>
+        <source>The programmed probing feed.</source>
+        <translation>编程的测量进给率。</translation>
+    </message>
+    <message>
+        <source>The control&apos;s interpolation cycle.</source>
+        <translation>数控系统的插补周期。</translation>
+    </message>
+    <message>
+        <source>Cycles between the end of the trigger&apos;s cycle and the recorded position; the delay-stability test above measures it.</source>
+        <translation>从触发所在周期结束到记录位置之间的周期数；由上面的延迟稳定性测试测得。</translation>
+    </message>
+    <message>
+        <source> cycles</source>
+        <translation> 个周期</translation>
+    </message>
+    <message>
+        <source>Touch</source>
+        <translation>触测</translation>
+    </message>
+    <message>
+        <source>At constant speed, or while the axis is braking.</source>
+        <translation>匀速时，或轴正在制动时。</translation>
+    </message>
+    <message>
+        <source>At constant speed</source>
+        <translation>匀速</translation>
+    </message>
+    <message>
+        <source>While braking</source>
+        <translation>制动中</translation>
+    </message>
+    <message>
+        <source>While braking: the speed at the trigger, in % of the feed.</source>
+        <translation>制动中：触发时的速度，以进给率的 % 表示。</translation>
+    </message>
+    <message>
+        <source>Take period and lag from the fit</source>
+        <translation>采用拟合得到的周期和滞后</translation>
+    </message>
+    <message>
+        <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
+        <translation>机床动态取自场景。制动中，v·τ 假定整个延迟期间都保持进给率，因而过度修正；最近几个周期的实际增量则保持在一个周期的行程之内。</translation>
+    </message>
+    <message>
+        <source>Error of the corrected position while braking</source>
+        <translation>制动中修正后位置的误差</translation>
+    </message>
+    <message>
+        <source>Speed at the trigger [% of the feed]</source>
+        <translation>触发时速度 [进给率的 %]</translation>
+    </message>
+    <message>
+        <source>Error [%1]</source>
+        <translation>误差 [%1]</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <source>Position [%1]</source>
+        <translation>位置 [%1]</translation>
+    </message>
+    <message>
+        <source>Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ uses τ = %4.</source>
+        <extracomment>%1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses</extracomment>
+        <translation>以 %1 mm/s 触发，%2 个周期后以 %3 mm/s 记录；v·τ 使用 τ = %4。</translation>
+    </message>
+    <message>
+        <source>Counter roll-overs: %1.</source>
+        <translation>计数器溢出：%1 次。</translation>
+    </message>
+</context>
+<context>
     <name>probecycle::ui::CycleCharts</name>
     <message>
         <source>Probing feedrate [%1]</source>
@@ -924,87 +1254,7 @@
     </message>
 </context>
 <context>
-    <name>probecycle::ui::Lab</name>
-    <message>
-        <source>Points on one side</source>
-        <translation>测点集中在一侧</translation>
-    </message>
-    <message>
-        <source>Large stylus runout</source>
-        <translation>测针跳动过大</translation>
-    </message>
-    <message>
-        <source>Point off the circle</source>
-        <translation>测点偏离圆</translation>
-    </message>
-    <message>
-        <source>One orientation only: no runout</source>
-        <translation>只有一个方向：无法求跳动</translation>
-    </message>
-    <message>
-        <source>Three points: exact fit</source>
-        <translation>三点：精确拟合</translation>
-    </message>
-    <message>
-        <source>Length far from the nominal</source>
-        <translation>长度与名义值相差过大</translation>
-    </message>
-    <message>
-        <source>Fewer than 3 feeds</source>
-        <translation>少于 3 个进给率</translation>
-    </message>
-    <message>
-        <source>Unstable delay</source>
-        <translation>延迟不稳定</translation>
-    </message>
-    <message>
-        <source>Residuals curve: the delay changes</source>
-        <translation>残差呈曲线：延迟在变化</translation>
-    </message>
-    <message>
-        <source>Negative delay</source>
-        <translation>负延迟</translation>
-    </message>
-    <message>
-        <source>One touch at a feed</source>
-        <translation>某进给率只有一次触测</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
-        <source>%1 could not be read: %2</source>
-        <translation>无法读取 %1：%2</translation>
-    </message>
-</context>
-<context>
-    <name>probecycle::ui::LatencyTab</name>
-    <message>
-        <source>Uncompensated</source>
-        <translation>未补偿</translation>
-    </message>
-    <message>
-        <source>Naive v·τ</source>
-        <translation>简单 v·τ</translation>
-    </message>
-    <message>
-        <source>Cycle lag (real increments)</source>
-        <translation>周期滞后（实际增量）</translation>
-    </message>
-    <message>
-        <source>Timestamp interpolation</source>
-        <translation>时间戳插值</translation>
-    </message>
-    <message>
-        <source>Real increments</source>
-        <translation>实际增量</translation>
-    </message>
-    <message>
-        <source>Timestamp</source>
-        <translation>时间戳</translation>
-    </message>
+    <name>probecycle::ui::DelayFitPanel</name>
     <message>
         <source>Delay from touches at several feeds (delay-stability test)</source>
         <translation>由多个进给率下的触测求延迟（延迟稳定性测试）</translation>
@@ -1038,8 +1288,16 @@
         <translation>拟合</translation>
     </message>
     <message>
+        <source>Measured minus zero-speed position, against feed</source>
+        <translation>测量值减零速位置，与进给率的关系</translation>
+    </message>
+    <message>
         <source>Feed [%1]</source>
         <translation>进给率 [%1]</translation>
+    </message>
+    <message>
+        <source>Deviation [%1]</source>
+        <translation>偏差 [%1]</translation>
     </message>
     <message>
         <source>Group / feed</source>
@@ -1106,82 +1364,6 @@
         <translation>将 machine.controller_latency_s 设为拟合的延迟减去测头接口延迟和半个扫描周期（锁存输入时不减扫描周期）。</translation>
     </message>
     <message>
-        <source>Compensation of the trigger position</source>
-        <translation>触发位置的补偿</translation>
-    </message>
-    <message>
-        <source>Feed</source>
-        <translation>进给率</translation>
-    </message>
-    <message>
-        <source>The programmed probing feed.</source>
-        <translation>编程的测量进给率。</translation>
-    </message>
-    <message>
-        <source>The control&apos;s interpolation cycle.</source>
-        <translation>数控系统的插补周期。</translation>
-    </message>
-    <message>
-        <source>Lag</source>
-        <translation>滞后</translation>
-    </message>
-    <message>
-        <source>Cycles between the end of the trigger&apos;s cycle and the recorded position; the delay-stability test above measures it.</source>
-        <translation>从触发所在周期结束到记录位置之间的周期数；由上面的延迟稳定性测试测得。</translation>
-    </message>
-    <message>
-        <source> cycles</source>
-        <translation> 个周期</translation>
-    </message>
-    <message>
-        <source>Touch</source>
-        <translation>触测</translation>
-    </message>
-    <message>
-        <source>At constant speed, or while the axis is braking.</source>
-        <translation>匀速时，或轴正在制动时。</translation>
-    </message>
-    <message>
-        <source>At constant speed</source>
-        <translation>匀速</translation>
-    </message>
-    <message>
-        <source>While braking</source>
-        <translation>制动中</translation>
-    </message>
-    <message>
-        <source>Speed at the trigger</source>
-        <translation>触发时速度</translation>
-    </message>
-    <message>
-        <source>While braking: the speed at the trigger, in % of the feed.</source>
-        <translation>制动中：触发时的速度，以进给率的 % 表示。</translation>
-    </message>
-    <message>
-        <source>Take period and lag from the fit</source>
-        <translation>采用拟合得到的周期和滞后</translation>
-    </message>
-    <message>
-        <source>Error of the corrected position while braking</source>
-        <translation>制动中修正后位置的误差</translation>
-    </message>
-    <message>
-        <source>Speed at the trigger [% of the feed]</source>
-        <translation>触发时速度 [进给率的 %]</translation>
-    </message>
-    <message>
-        <source>Error [%1]</source>
-        <translation>误差 [%1]</translation>
-    </message>
-    <message>
-        <source>Method</source>
-        <translation>方法</translation>
-    </message>
-    <message>
-        <source>Position [%1]</source>
-        <translation>位置 [%1]</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -1222,26 +1404,66 @@
         <extracomment>%1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now</extracomment>
         <translation>控制器延迟 = %1 延迟 %2 − 接口 %3 − 半个扫描周期 %4 = &lt;b&gt;%5&lt;/b&gt;（当前 %6）</translation>
     </message>
+</context>
+<context>
+    <name>probecycle::ui::Lab</name>
     <message>
-        <source>Measured minus zero-speed position, against feed</source>
-        <translation>测量值减零速位置，与进给率的关系</translation>
+        <source>Points on one side</source>
+        <translation>测点集中在一侧</translation>
     </message>
     <message>
-        <source>Deviation [%1]</source>
-        <translation>偏差 [%1]</translation>
+        <source>Large stylus runout</source>
+        <translation>测针跳动过大</translation>
     </message>
     <message>
-        <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
-        <translation>机床动态取自场景。制动中，v·τ 假定整个延迟期间都保持进给率，因而过度修正；最近几个周期的实际增量则保持在一个周期的行程之内。</translation>
+        <source>Point off the circle</source>
+        <translation>测点偏离圆</translation>
     </message>
     <message>
-        <source>Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ uses τ = %4.</source>
-        <extracomment>%1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses</extracomment>
-        <translation>以 %1 mm/s 触发，%2 个周期后以 %3 mm/s 记录；v·τ 使用 τ = %4。</translation>
+        <source>One orientation only: no runout</source>
+        <translation>只有一个方向：无法求跳动</translation>
     </message>
     <message>
-        <source>Counter roll-overs: %1.</source>
-        <translation>计数器溢出：%1 次。</translation>
+        <source>Three points: exact fit</source>
+        <translation>三点：精确拟合</translation>
+    </message>
+    <message>
+        <source>Length far from the nominal</source>
+        <translation>长度与名义值相差过大</translation>
+    </message>
+    <message>
+        <source>Fewer than 3 feeds</source>
+        <translation>少于 3 个进给率</translation>
+    </message>
+    <message>
+        <source>Unstable delay</source>
+        <translation>延迟不稳定</translation>
+    </message>
+    <message>
+        <source>Residuals curve: the delay changes</source>
+        <translation>残差呈曲线：延迟在变化</translation>
+    </message>
+    <message>
+        <source>Negative delay</source>
+        <translation>负延迟</translation>
+    </message>
+    <message>
+        <source>One touch at a feed</source>
+        <translation>某进给率只有一次触测</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>Unexpected error: %1</source>
+        <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
+        <translation>意外错误：%1</translation>
     </message>
 </context>
 <context>

@@ -97,6 +97,7 @@ QString format_arg(const MessageArg& a) {
         case ArgKind::length_mm:
             return format_length(a.number);
         case ArgKind::time_s:
+        case ArgKind::delay_s:
             return format_seconds(a.number);
         case ArgKind::feed_mm_min:
             return format_feed(a.number);
@@ -106,7 +107,7 @@ QString format_arg(const MessageArg& a) {
             return with_unit(number(a.number, a.decimals < 0 ? 0 : a.decimals),
                              QStringLiteral("%"));
         case ArgKind::number:
-            return a.decimals < 0 ? QLocale().toString(a.number, 'g', 6)
+            return a.decimals < 0 ? QLocale().toString(a.number, 'g', a.significant)
                                   : number(a.number, a.decimals);
         case ArgKind::integer:
             return QLocale().toString(static_cast<qlonglong>(std::llround(a.number)));

@@ -21,11 +21,11 @@
 #include <stdexcept>
 
 #include "core/common/file_io.h"
+#include "core/cycle/cycle_report.h"
 #include "core/lab/calibration_report.h"
-#include "ui/lab/lab_widgets.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
-#include "core/cycle/cycle_report.h"
+#include "ui/lab/lab_widgets.h"
 
 namespace probecycle::ui {
 
@@ -78,8 +78,24 @@ std::optional<double> parse_number(const QString& text) {
 
 CalibrationTab::CalibrationTab(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("lab-calibration"));
+    auto* input_column = new QVBoxLayout;
+    input_column->setContentsMargins(0, 0, 0, 0);
+    input_column->addWidget(build_ring_group(), 1);
+    input_column->addWidget(build_length_group());
+    auto* input_widget = new QWidget(this);
+    input_widget->setLayout(input_column);
+    input_widget->setFixedWidth(350);
 
-    // --- Input: the touches in the ring gauge ---
+    auto* root = new QHBoxLayout(this);
+    root->addWidget(input_widget);
+    root->addLayout(build_plot_column(), 1);
+    root->addWidget(build_result_group());
+    connect_inputs();
+    retranslate();  // also shows the (empty) result and the length
+}
+
+// The paste box of ring-gauge touches, the gauge and the warning limits.
+QGroupBox* CalibrationTab::build_ring_group() {
     ring_group_ = new QGroupBox(this);
     format_hint_ = new QLabel(ring_group_);
     format_hint_->setWordWrap(true);
@@ -125,8 +141,11 @@ CalibrationTab::CalibrationTab(QWidget* parent) : QWidget(parent) {
     ring_column->addLayout(ring_form);
     ring_column->addLayout(buttons);
     ring_column->addWidget(error_label_);
+    return ring_group_;
+}
 
-    // --- Length from a surface of known Z ---
+// The effective length from a surface of known Z.
+QGroupBox* CalibrationTab::build_length_group() {
     length_group_ = new QGroupBox(this);
     surface_z_ = new UnitSpinBox(-100000.0, 100000.0, 4, 0.0, length_group_);
     surface_z_->set_unit(unit_mm);
@@ -155,16 +174,11 @@ CalibrationTab::CalibrationTab(QWidget* parent) : QWidget(parent) {
     length_column->addLayout(length_form_);
     length_column->addWidget(length_result_label_);
     length_column->addWidget(length_warnings_);
+    return length_group_;
+}
 
-    auto* input_column = new QVBoxLayout;
-    input_column->addWidget(ring_group_, 1);
-    input_column->addWidget(length_group_);
-    auto* input_widget = new QWidget(this);
-    input_widget->setLayout(input_column);
-    input_column->setContentsMargins(0, 0, 0, 0);
-    input_widget->setFixedWidth(350);
-
-    // --- Drawing ---
+// The magnification box over the plot of the points and the fitted circles.
+QLayout* CalibrationTab::build_plot_column() {
     magnification_label_ = new QLabel(this);
     magnification_ = new QComboBox(this);
     magnification_->setObjectName(QStringLiteral("magnification"));
@@ -193,8 +207,11 @@ CalibrationTab::CalibrationTab(QWidget* parent) : QWidget(parent) {
     auto* plot_column = new QVBoxLayout;
     plot_column->addLayout(magnification_row);
     plot_column->addWidget(plot_, 1);
+    return plot_column;
+}
 
-    // --- Result ---
+// The result rows, the warnings and the export button.
+QGroupBox* CalibrationTab::build_result_group() {
     result_group_ = new QGroupBox(this);
     result_form_ = new QFormLayout;
     result_form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
@@ -230,12 +247,11 @@ CalibrationTab::CalibrationTab(QWidget* parent) : QWidget(parent) {
     result_column->addWidget(export_status_);
     result_column->addLayout(export_row);
     result_group_->setFixedWidth(370);
+    return result_group_;
+}
 
-    auto* root = new QHBoxLayout(this);
-    root->addWidget(input_widget);
-    root->addLayout(plot_column, 1);
-    root->addWidget(result_group_);
-
+// Edits refit the ring (with a result), redraw or recompute the length.
+void CalibrationTab::connect_inputs() {
     connect(fit_button_, &QPushButton::clicked, this, [this] { fit(); });
     connect(import_button_, &QPushButton::clicked, this, &CalibrationTab::import_dialog);
     connect(export_button_, &QPushButton::clicked, this, &CalibrationTab::export_dialog);
@@ -249,8 +265,6 @@ CalibrationTab::CalibrationTab(QWidget* parent) : QWidget(parent) {
         connect(box, &QDoubleSpinBox::valueChanged, this, &CalibrationTab::compute_length);
     }
     connect(trigger_z_, &QLineEdit::textChanged, this, &CalibrationTab::compute_length);
-
-    retranslate();  // also shows the (empty) result and the length
 }
 
 CalibrationTab::~CalibrationTab() = default;
@@ -393,8 +407,8 @@ bool CalibrationTab::fit_text(const QString& text, const QString& source) {
         points = parse_ring_csv(text.toStdString());
         result = calibrate_ring(points, options);
     } catch (const std::exception& e) {
-        // CsvError names the line and column; invalid_argument says what is wrong.
-        const QString message = QString::fromStdString(e.what());
+        // CsvError names the line and column; LabError says what is wrong.
+        const QString message = lab_error_text(e);
         set_error(source.isEmpty() ? message : tr("%1: %2").arg(source, message));
         return false;
     }
@@ -413,7 +427,7 @@ bool CalibrationTab::refit() {
         options_ = options;
         result_ = std::move(result);
     } catch (const std::exception& e) {
-        set_error(QString::fromStdString(e.what()));
+        set_error(lab_error_text(e));
         return false;
     }
     set_error({});
@@ -665,7 +679,7 @@ void CalibrationTab::compute_length() {
             length_result_ = calibrate_length(input);
             length_input_ = input;
         } catch (const std::exception& e) {
-            length_error_ = QString::fromStdString(e.what());
+            length_error_ = lab_error_text(e);
         }
     }
 
@@ -711,7 +725,7 @@ bool CalibrationTab::export_report(const QString& path) {
         write_file_atomically(QFile::encodeName(path).toStdString(),
                               calibration_report_csv(ring, length));
     } catch (const std::exception& e) {
-        last_error_ = QString::fromStdString(e.what());
+        last_error_ = lab_error_text(e);
         show_error(export_status_, last_error_);
         return false;
     }

@@ -26,6 +26,7 @@ class QComboBox;
 class QFormLayout;
 class QGroupBox;
 class QLabel;
+class QLayout;
 class QLineEdit;
 class QPlainTextEdit;
 class QPushButton;
@@ -97,6 +98,11 @@ class CalibrationTab : public QWidget {
     bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
+    QGroupBox* build_ring_group();
+    QGroupBox* build_length_group();
+    QLayout* build_plot_column();
+    QGroupBox* build_result_group();
+    void connect_inputs();
     bool fit_text(const QString& text, const QString& source);
     bool refit();
     void set_error(const QString& text);

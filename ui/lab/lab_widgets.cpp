@@ -11,6 +11,10 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "core/common/csv_reader.h"
+#include "core/common/file_io.h"
+#include "core/cycle/scenario.h"
+#include "core/lab/lab_error.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/text_format.h"
 
@@ -117,7 +121,7 @@ LabWarningList::Item warning_item(const CalibrationWarning& warning) {
     item.code = QString::fromUtf8(to_string(warning.code));
     item.severity = warning.severity;
     // The core's message is the same text the CLI prints; the title is translated.
-    item.message = QString::fromStdString(warning.message);
+    item.message = translate(warning.message);
     switch (warning.code) {
         case CalibrationWarningCode::points_one_side:
             item.title = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Points on one side"));
@@ -148,7 +152,7 @@ LabWarningList::Item warning_item(const LatencyWarning& warning, const QString& 
     LabWarningList::Item item;
     item.code = QString::fromUtf8(to_string(warning.code));
     item.severity = warning.severity;
-    item.message = QString::fromStdString(warning.message);
+    item.message = translate(warning.message);
     QString title;
     switch (warning.code) {
         case LatencyWarningCode::few_feeds:
@@ -206,6 +210,26 @@ void show_error(QLabel* label, const QString& text) {
     label->setStyleSheet(QStringLiteral("color: #c0392b;"));
     label->setText(text);
     label->setVisible(!text.isEmpty());
+}
+
+QString lab_error_text(const std::exception& error) {
+    if (const auto* csv = dynamic_cast<const CsvError*>(&error)) {
+        return translate(csv->to_message());
+    }
+    if (const auto* lab = dynamic_cast<const LabError*>(&error)) {
+        return translate(lab->to_message());
+    }
+    if (const auto* file = dynamic_cast<const FileError*>(&error)) {
+        return translate(file->to_message());
+    }
+    if (const auto* scenario = dynamic_cast<const ScenarioError*>(&error)) {
+        QStringList lines;
+        for (const FieldError& e : scenario->errors()) lines << translate(e.to_message());
+        return lines.join(QLatin1Char('\n'));
+    }
+    //: an exception the lab does not expect (out of memory...); %1 its English text
+    return tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Unexpected error: %1"))
+        .arg(QString::fromLocal8Bit(error.what()));
 }
 
 QString lab_mm(double mm, int decimals) {

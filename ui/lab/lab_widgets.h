@@ -9,6 +9,7 @@
 #include <QString>
 #include <QStringList>
 #include <QWidget>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -81,6 +82,10 @@ std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& pa
 
 // A message in the error colour.
 void show_error(QLabel* label, const QString& text);
+// What the core threw, in the interface language: CsvError, LabError,
+// ScenarioError and FileError carry messages (translate()); anything else is
+// unexpected and shown as such.
+QString lab_error_text(const std::exception& error);
 
 // Lengths and times at the resolution calibration needs (4 decimals in mm,
 // 0.1 µm), in the interface language.

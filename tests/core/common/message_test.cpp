@@ -35,6 +35,8 @@ INSTANTIATE_TEST_SUITE_P(Kinds, RenderArg, ::testing::Values(
     ArgCase{ArgKind::length_mm,   1.27166,  3, "1.272 mm"},
     ArgCase{ArgKind::length_mm,   0.004,   -1, "0.004 mm"},
     ArgCase{ArgKind::time_s,      0.4249,   2, "0.42 s"},
+    ArgCase{ArgKind::delay_s,     0.0085,  -1, "8.5 ms"},
+    ArgCase{ArgKind::delay_s,     0.00426,  1, "4.3 ms"},
     ArgCase{ArgKind::feed_mm_min, 1999.96,  0, "2000 mm/min"},
     ArgCase{ArgKind::angle_deg,   180.0,   -1, "180 deg"},
     ArgCase{ArgKind::percent,     25.4,     0, "25 %"},
@@ -44,6 +46,15 @@ INSTANTIATE_TEST_SUITE_P(Kinds, RenderArg, ::testing::Values(
     ArgCase{ArgKind::length_mm,  -0.00001,  3, "0.000 mm"},
     ArgCase{ArgKind::number,     -0.0,      0, "0"}));
 // clang-format on
+
+TEST(RenderArg, SignificantDigitsWithoutTrailingZeros) {
+    EXPECT_EQ(render_arg(significant_arg("runout_mm", ArgKind::length_mm, 0.00360555, 4)),
+              "0.003606 mm");
+    EXPECT_EQ(render_arg(significant_arg("radius_mm", ArgKind::length_mm, 22.0, 4)), "22 mm");
+    EXPECT_EQ(render_arg(significant_arg("delay_s", ArgKind::delay_s, 0.0051234, 3)),
+              "5.12 ms");
+    EXPECT_EQ(render_arg(significant_arg("ratio", ArgKind::number, 3.0, 3)), "3");
+}
 
 TEST(Render, FillsTheTemplateWithEnglishArguments) {
     Message m;
@@ -92,6 +103,18 @@ TEST(FieldErrorText, ALongValueIsCutAndItsLengthSaid) {
     // A short value is shown whole.
     EXPECT_EQ(FieldError({"k", "short", allowed_text("x", "y")}).message(),
               "k: got short; allowed: y");
+}
+
+TEST(WarningJson, ListsCodeSeverityEnglishAndValues) {
+    Message m;
+    m.code = "large_runout";
+    m.text = "stylus runout %1 exceeds %2";
+    m.args = {significant_arg("runout_mm", ArgKind::length_mm, 0.0051, 4),
+              significant_arg("limit_mm", ArgKind::length_mm, 0.001, 4)};
+    EXPECT_EQ(
+        warning_json("large_runout", Severity::warning, m).dump(),
+        R"({"code":"large_runout","severity":"warning","message":"stylus runout 0.0051 mm exceeds )"
+        R"(0.001 mm","values":{"runout_mm":0.0051,"limit_mm":0.001}})");
 }
 
 }  // namespace

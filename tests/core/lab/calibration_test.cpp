@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "core/common/csv_reader.h"
+#include "core/lab/lab_error.h"
+#include "tests/core/common/message_checks.h"
 
 namespace probecycle {
 namespace {
@@ -217,7 +219,7 @@ TEST(RingCalibration, ExactDataGivesCentreRunoutAndRadius) {
     // Recorded circles sit at C - r (0 deg) and C + r (180 deg).
     EXPECT_NEAR(result.fits[0]->center_x_mm, ring.center_x_mm - ring.runout_x_mm, kExact);
     EXPECT_NEAR(result.fits[1]->center_y_mm, ring.center_y_mm + ring.runout_y_mm, kExact);
-    EXPECT_TRUE(result.warnings.empty()) << result.warnings.front().message;
+    EXPECT_TRUE(result.warnings.empty()) << result.warnings.front().text();
 }
 
 TEST(RingCalibration, RunoutSignFollowsTheIssueConvention) {
@@ -293,7 +295,7 @@ TEST(RingCalibration, SingleOrientationHasNoRunoutAndSaysSo) {
     EXPECT_NEAR(result.center_x_mm, ring.center_x_mm - ring.runout_x_mm, kExact);
     EXPECT_NEAR(result.effective_radius_mm, ring.ball_radius_mm, kExact);
     ASSERT_TRUE(has_warning(result.warnings, CalibrationWarningCode::single_orientation));
-    EXPECT_NE(result.warnings.front().message.find("no runout"), std::string::npos);
+    EXPECT_NE(result.warnings.front().text().find("no runout"), std::string::npos);
 
     const auto only_180 = calibrate_ring(ring.points(false, true), gauge(50.0));
     EXPECT_NEAR(only_180.center_y_mm, ring.center_y_mm + ring.runout_y_mm, kExact);
@@ -331,8 +333,8 @@ TEST(RingCalibration, LargeResidualNamesTheLine) {
     ASSERT_TRUE(has_warning(result.warnings, CalibrationWarningCode::large_residual));
     for (const auto& w : result.warnings) {
         if (w.code == CalibrationWarningCode::large_residual) {
-            EXPECT_NE(w.message.find("line " + std::to_string(points[3].line)), std::string::npos)
-                << w.message;
+            EXPECT_NE(w.text().find("line " + std::to_string(points[3].line)), std::string::npos)
+                << w.text();
         }
     }
 }
@@ -497,6 +499,221 @@ TEST(LengthCalibration, BadInputIsAnError) {
     below.surface_z_mm = 10.0;
     below.trigger_z_mm = {5.0};
     EXPECT_THROW(calibrate_length(below), std::invalid_argument);
+}
+
+// ---------------------------------------------------------------------------
+// The steps of calibrate_ring, alone
+
+TEST(RingSteps, SplitByOrientationKeepsTheOrder) {
+    const auto by = split_by_orientation(SyntheticRing{}.points());
+    ASSERT_EQ(by[0].size(), 4u);
+    ASSERT_EQ(by[1].size(), 4u);
+    EXPECT_EQ(by[0][0].line, 2u);
+    EXPECT_EQ(by[1][3].line, 9u);
+    EXPECT_THROW(split_by_orientation({}), CsvError);
+    const std::vector<RingPoint> tilted{{45.0, 1.0, 1.0, 3}};
+    EXPECT_THROW(split_by_orientation(tilted), CsvError);
+}
+
+TEST(RingSteps, FitOrientationGivesTheCircleTheGapAndTheWorstPoint) {
+    SyntheticRing ring;
+    ring.runout_x_mm = 0.0;
+    ring.runout_y_mm = 0.0;
+    ring.angles_deg = {0, 45, 90, 135, 180, 225, 270, 315};
+    auto points = ring.points(true, false);
+    points[2].y_mm += 0.004;  // Y+ (line 4) lies 4 um outside
+    const OrientationFit fit = fit_orientation(points, 0);
+    EXPECT_EQ(fit.points, 8u);
+    EXPECT_NEAR(fit.largest_gap_rad, kPi / 4.0, 1e-3);
+    EXPECT_EQ(fit.worst_line, 4u);
+    EXPECT_GT(fit.worst_residual_mm, 0.0005);
+    EXPECT_NEAR(fit.circle.radius_mm, 25.0 - ring.ball_radius_mm, 0.002);
+
+    // Three points on one side: a 270 deg gap.
+    ring.angles_deg = {0, 45, 90};
+    const OrientationFit side = fit_orientation(ring.points(true, false), 0);
+    EXPECT_NEAR(side.largest_gap_rad, 1.5 * kPi, 1e-9);
+
+    const std::vector<RingPoint> two{{180, 1, 0, 5}, {180, 2, 0, 6}};
+    try {
+        (void)fit_orientation(two, 1);
+        FAIL() << "two points fitted";
+    } catch (const CsvError& e) {
+        EXPECT_EQ(e.line(), 5u);
+        EXPECT_EQ(std::string(e.what()),
+                  "line 5: orientation 180 deg has only 2 points (lines 5, 6); a circle needs 3 "
+                  "or more per orientation (typically 4: X+, X-, Y+, Y-)");
+        test::expect_translatable(e.problem(), {"orientation_deg", "points", "lines"});
+    }
+}
+
+TEST(RingSteps, CombineOrientationsAveragesTheCentresAndHalvesTheirDifference) {
+    const std::array<std::optional<CircleFit>, 2> both{CircleFit{1.0, 2.0, 20.0, 0.0},
+                                                       CircleFit{1.004, 1.998, 20.002, 0.0}};
+    const RingCentre centre = combine_orientations(both);
+    EXPECT_NEAR(centre.center_x_mm, 1.002, kExact);
+    EXPECT_NEAR(centre.center_y_mm, 1.999, kExact);
+    EXPECT_NEAR(*centre.runout_x_mm, 0.002, kExact);
+    EXPECT_NEAR(*centre.runout_y_mm, -0.001, kExact);
+    EXPECT_NEAR(centre.mean_radius_mm, 20.001, kExact);
+
+    const std::array<std::optional<CircleFit>, 2> only_180{std::nullopt,
+                                                           CircleFit{5.0, 6.0, 7.0, 0.0}};
+    const RingCentre single = combine_orientations(only_180);
+    EXPECT_EQ(single.center_x_mm, 5.0);
+    EXPECT_FALSE(single.runout_x_mm);
+    EXPECT_EQ(single.mean_radius_mm, 7.0);
+}
+
+TEST(RingSteps, DirectionalRadiiPerSector) {
+    const std::vector<RingPoint> points{{0, 20.0, 0.0, 2}, {0, -19.0, 0.0, 3}, {0, 0.0, 21.0, 4}};
+    const std::array<std::optional<CircleFit>, 2> fits{CircleFit{0.0, 0.0, 20.0, 0.0},
+                                                       std::nullopt};
+    const DirectionalRadius radii = directional_radii(points, fits, 25.0);
+    EXPECT_NEAR(*radii.x_plus_mm, 5.0, kExact);
+    EXPECT_NEAR(*radii.x_minus_mm, 6.0, kExact);
+    EXPECT_NEAR(*radii.y_plus_mm, 4.0, kExact);
+    EXPECT_FALSE(radii.y_minus_mm);
+}
+
+TEST(RingSteps, WarningsAloneWithTheirNumbers) {
+    OrientationFit fit;
+    fit.points = 3;
+    fit.largest_gap_rad = 1.5 * kPi;
+    const auto warnings = orientation_warnings(fit, 1);
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_EQ(warnings[0].code, CalibrationWarningCode::points_one_side);
+    EXPECT_EQ(warnings[0].text(),
+              "the points at 180 deg cover only 90 deg of the bore (all on one side): the centre "
+              "across that side is poorly determined; touch around the whole bore (X+, X-, Y+, "
+              "Y-)");
+    EXPECT_EQ(warnings[1].code, CalibrationWarningCode::exact_fit);
+
+    EXPECT_FALSE(runout_warning(0.003, 0.004, 0.005));
+    const auto runout = runout_warning(0.003, 0.004, 0.001);
+    ASSERT_TRUE(runout);
+    EXPECT_EQ(runout->text(),
+              "stylus runout 0.005 mm (x 0.003 mm, y 0.004 mm) exceeds 0.001 mm: set the stylus on "
+              "centre, and check that the spindle orients repeatably");
+    EXPECT_NEAR(message_values(runout->message).at("runout_mm").get<double>(), 0.005, kExact);
+
+    EXPECT_FALSE(residual_warning(0.004, 7, 0.005));
+    EXPECT_NE(residual_warning(0.006, 7, 0.005)->text().find("the point on line 7 is 0.006 mm"),
+              std::string::npos);
+    EXPECT_EQ(residual_warning(0.006, 0, 0.005)->text().rfind("a point is 0.006 mm", 0), 0u);
+
+    EXPECT_EQ(single_orientation_warning(0).text(),
+              "only orientation 0 deg given: no runout. The centre is that of the 0 deg circle "
+              "and is off the gauge centre by the stylus runout; touch the same points at 180 deg "
+              "to separate the two");
+}
+
+// ---------------------------------------------------------------------------
+// Messages: every warning and error a code, a template and its numbers named
+
+TEST(CalibrationMessages, EveryWarningNamesItsNumbers) {
+    struct Expected {
+        CalibrationWarningCode code;
+        std::vector<std::string> values;
+    };
+    std::vector<CalibrationWarning> all;
+    SyntheticRing side;
+    side.angles_deg = {0, 45, 90};  // on one side, and 3 points
+    side.runout_x_mm = 0.02;        // a large runout
+    for (auto& w : calibrate_ring(side.points(), gauge(50.0)).warnings) all.push_back(w);
+    for (auto& w : calibrate_ring(SyntheticRing{}.points(true, false), gauge(50.0)).warnings) {
+        all.push_back(w);
+    }
+    SyntheticRing chipped;
+    chipped.angles_deg = {0, 45, 90, 135, 180, 225, 270, 315};
+    auto points = chipped.points();
+    points[3].x_mm += 0.02;
+    for (auto& w : calibrate_ring(points, gauge(50.0)).warnings) all.push_back(w);
+    LengthCalibrationInput length;
+    length.trigger_z_mm = {151.0};
+    length.nominal_length_mm = 150.0;
+    for (auto& w : calibrate_length(length).warnings) all.push_back(w);
+
+    const std::vector<Expected> expected{
+        {CalibrationWarningCode::points_one_side, {"orientation_deg", "covered_deg"}},
+        {CalibrationWarningCode::exact_fit, {"orientation_deg"}},
+        {CalibrationWarningCode::large_runout,
+         {"runout_mm", "runout_x_mm", "runout_y_mm", "limit_mm"}},
+        {CalibrationWarningCode::single_orientation,
+         {"orientation_deg", "missing_orientation_deg"}},
+        {CalibrationWarningCode::large_residual, {"line", "residual_mm", "limit_mm"}},
+        {CalibrationWarningCode::length_wear, {"nominal_length_mm", "wear_mm", "limit_mm"}},
+    };
+    for (const Expected& e : expected) {
+        bool found = false;
+        for (const CalibrationWarning& w : all) {
+            if (w.code != e.code) continue;
+            found = true;
+            EXPECT_EQ(w.message.code, to_string(w.code));
+            EXPECT_STREQ(w.message.context, "Calibration");
+            test::expect_translatable(w.message, e.values);
+            EXPECT_EQ(w.text(), render(w.message));
+        }
+        EXPECT_TRUE(found) << to_string(e.code);
+    }
+    // The wear in its own unit, as a number.
+    for (const CalibrationWarning& w : all) {
+        if (w.code == CalibrationWarningCode::length_wear) {
+            EXPECT_NEAR(message_values(w.message).at("wear_mm").get<double>(), 1.0, 1e-9);
+        }
+    }
+}
+
+TEST(CalibrationMessages, RefusalsAreLabErrorsWithTheirNumbers) {
+    try {
+        (void)calibrate_ring(SyntheticRing{}.points(), gauge(25.0));
+        FAIL() << "a gauge smaller than the touches was accepted";
+    } catch (const LabError& e) {
+        EXPECT_EQ(e.to_message().code, "radius_outside_gauge");
+        test::expect_translatable(e.to_message(),
+                                  {"radius_mm", "gauge_radius_mm", "gauge_diameter_mm"});
+        EXPECT_EQ(std::string(e.what()).rfind("the touches lie on a circle of radius 22 mm, not "
+                                              "inside the gauge of radius 12.5 mm (diameter 25 mm)",
+                                              0),
+                  0u)
+            << e.what();
+    }
+    LengthCalibrationInput below;
+    below.surface_z_mm = 200.0;
+    below.trigger_z_mm = {110.0};
+    try {
+        (void)calibrate_length(below);
+        FAIL() << "a negative length was accepted";
+    } catch (const LabError& e) {
+        test::expect_translatable(e.to_message(), {"effective_length_mm"});
+        EXPECT_EQ(std::string(e.what()).rfind("effective length -90 mm is not positive", 0), 0u);
+    }
+    try {
+        (void)calibrate_length(LengthCalibrationInput{});
+        FAIL() << "no touch was accepted";
+    } catch (const LabError& e) {
+        test::expect_translatable(e.to_message(), {});
+    }
+}
+
+TEST(CalibrationMessages, FileErrorsNameTheLineAsAnArgument) {
+    try {
+        (void)parse_ring_csv("orientation_deg,x_mm,y_mm\n90,1,2\n");
+        FAIL() << "orientation 90 accepted";
+    } catch (const CsvError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "line 2, column orientation_deg: 90 is not allowed: the spindle orientation is 0 "
+                  "or 180");
+        test::expect_translatable(e.problem(), {"orientation_deg"});
+        test::expect_translatable(e.to_message(), {"line", "column", "orientation_deg"});
+    }
+    const std::vector<RingPoint> line{{0, 1, 1, 2}, {0, 2, 2, 3}, {0, 3, 3, 4}};
+    try {
+        (void)calibrate_ring(line, gauge(50.0));
+        FAIL() << "points on a line accepted";
+    } catch (const CsvError& e) {
+        test::expect_translatable(e.problem(), {"orientation_deg", "lines"});
+    }
 }
 
 }  // namespace

@@ -11,6 +11,8 @@
 
 #include "core/common/csv_reader.h"
 #include "core/common/units.h"
+#include "core/lab/lab_error.h"
+#include "tests/core/common/message_checks.h"
 
 namespace probecycle {
 namespace {
@@ -78,7 +80,7 @@ TEST(DelayFit, ExactDataBothDirections) {
     EXPECT_EQ(xp.feeds[0].n, 5u);
     EXPECT_NEAR(xp.feeds[5].mean_mm, 10.0 + 50.0 * 0.0085, 1e-12);
     EXPECT_EQ(xp.feeds[5].range_mm, 0.0);
-    EXPECT_TRUE(xp.warnings.empty()) << xp.warnings.front().message;
+    EXPECT_TRUE(xp.warnings.empty()) << xp.warnings.front().text();
     EXPECT_EQ(xp.lines.size(), 30u);
 
     const auto& xm = fit.groups[1];
@@ -131,7 +133,7 @@ TEST(ChooseGroup, NamedOnlyOrLongest) {
     EXPECT_THROW((void)choose_group(fit, std::string("Y+")), std::invalid_argument);
     DelayFit one;
     one.groups.push_back(fit.groups.front());
-    EXPECT_EQ(choose_group(one, std::nullopt).rule, "the only group");
+    EXPECT_EQ(render(choose_group(one, std::nullopt).rule), "the only group");
 }
 
 TEST(DelayCsv, CoordinateBeyondTheMachineNamesTheLine) {
@@ -246,7 +248,7 @@ TEST(DelayFit, OneUnstableFeedWarns) {
     for (const auto& w : g.warnings) {
         if (w.code != LatencyWarningCode::unstable_delay) continue;
         ++count;
-        EXPECT_NE(w.message.find("1000 mm/min"), std::string::npos) << w.message;
+        EXPECT_NE(w.text().find("1000 mm/min"), std::string::npos) << w.text();
     }
     EXPECT_EQ(count, 1);
 }
@@ -279,8 +281,8 @@ TEST(DelayFit, DelayGrowingWithSpeedCurves) {
     for (const auto& w : g.warnings) {
         if (w.code == LatencyWarningCode::curved_residuals) {
             // The secant delay at the ends: 5.1 ms at 60 mm/min, 11 ms at 3600.
-            EXPECT_NE(w.message.find("5.1 ms"), std::string::npos) << w.message;
-            EXPECT_NE(w.message.find("11 ms"), std::string::npos) << w.message;
+            EXPECT_NE(w.text().find("5.1 ms"), std::string::npos) << w.text();
+            EXPECT_NE(w.text().find("11 ms"), std::string::npos) << w.text();
         }
     }
 }
@@ -357,6 +359,8 @@ TEST_P(DelayFileErrors, NameTheLine) {
 }
 
 
+constexpr const char* kHeader = "axis,direction,feed_mm_min,measured_mm\n";
+
 // clang-format off
 INSTANTIATE_TEST_SUITE_P(
     Files, DelayFileErrors,
@@ -398,6 +402,134 @@ TEST(DelayCsv, ColumnsAreFoundByNameInAnyOrderWithExtraColumns) {
     EXPECT_DOUBLE_EQ(touches[1].feed_mm_min, 30.0);
     EXPECT_DOUBLE_EQ(touches[1].measured_mm, -3.5);
     EXPECT_EQ(touches[1].line, 5u);
+}
+
+// ---------------------------------------------------------------------------
+// Messages: every warning and error a code, a template and its numbers named
+
+TEST(DelayFitMessages, EveryWarningNamesItsNumbers) {
+    std::vector<LatencyWarning> all;
+    const auto collect = [&all](const std::vector<DelayTouch>& touches) {
+        for (const DelayGroup& g : fit_delay(touches).groups) {
+            all.insert(all.end(), g.warnings.begin(), g.warnings.end());
+        }
+    };
+    // Two feeds, one touch each, against the travel: few feeds, single
+    // touches, a negative delay.
+    std::vector<DelayTouch> sparse;
+    add_touches(sparse, "X", 1, 0.0, 0.008, {100, 1000}, 1);
+    for (auto& t : sparse) t.direction = -1;
+    collect(sparse);
+    // One unstable feed.
+    std::vector<DelayTouch> unstable;
+    for (const double feed : {100.0, 500.0, 1000.0, 2000.0}) {
+        for (const double offset : {0.0, 0.001, 0.0005}) {
+            const double spread = feed == 1000.0 ? 40.0 : 1.0;
+            unstable.push_back({"Y", 1, feed, mm_min_to_mm_s(feed) * 0.01 + offset * spread, 0});
+        }
+    }
+    collect(unstable);
+    // A delay that grows with the speed.
+    std::vector<DelayTouch> curved;
+    for (const double feed : {60.0, 600.0, 1200.0, 2400.0, 3600.0}) {
+        const double v = mm_min_to_mm_s(feed);
+        for (int i = 0; i < 3; ++i) curved.push_back({"Z", -1, feed, -v * (0.005 + 0.0001 * v), 0});
+    }
+    collect(curved);
+
+    struct Expected {
+        LatencyWarningCode code;
+        std::vector<std::string> values;
+    };
+    const std::vector<Expected> expected{
+        {LatencyWarningCode::few_feeds, {"group", "feeds"}},
+        {LatencyWarningCode::negative_delay, {"group", "delay_s"}},
+        {LatencyWarningCode::single_touch_feed, {"group", "feed_1_mm_min", "feed_2_mm_min"}},
+        {LatencyWarningCode::unstable_delay,
+         {"group", "feed_mm_min", "range_mm", "travel_time_s", "ratio", "predicted_range_mm"}},
+        {LatencyWarningCode::curved_residuals,
+         {"group", "bow_mm", "delay_low_s", "feed_low_mm_min", "delay_high_s", "feed_high_mm_min"}},
+    };
+    for (const Expected& e : expected) {
+        bool found = false;
+        for (const LatencyWarning& w : all) {
+            if (w.code != e.code) continue;
+            found = true;
+            EXPECT_EQ(w.message.code, to_string(w.code));
+            EXPECT_STREQ(w.message.context, "DelayFit");
+            test::expect_translatable(w.message, e.values);
+            EXPECT_EQ(w.text(), render(w.message));
+        }
+        EXPECT_TRUE(found) << to_string(e.code);
+    }
+    // The English is the CLI's, numbers in their units in the values.
+    for (const LatencyWarning& w : all) {
+        if (w.code == LatencyWarningCode::single_touch_feed) {
+            EXPECT_EQ(w.text(),
+                      "X-: one touch only at 100 mm/min, 1000 mm/min: no scatter there; repeat "
+                      "each touch (5 or more) to see the stability");
+        }
+        if (w.code == LatencyWarningCode::negative_delay) {
+            EXPECT_NE(w.text().find("(-8 ms)"), std::string::npos) << w.text();
+            EXPECT_NEAR(message_values(w.message).at("delay_s").get<double>(), -0.008, 1e-12);
+        }
+    }
+}
+
+TEST(DelayFitMessages, TheRuleAndTheRefusalsAreMessages) {
+    std::vector<DelayTouch> touches;
+    add_touches(touches, "X", +1, 10.0, 0.0085, {100, 1000, 2000}, 2);
+    add_touches(touches, "Z", -1, -5.0, 0.012, {100, 1000, 2000}, 2);
+    const DelayFit fit = fit_delay(touches);
+    const ChosenGroup longest = choose_group(fit, std::nullopt);
+    EXPECT_EQ(render(longest.rule),
+              "the longest delay of 2 groups (the safe side for overtravel); choose one to "
+              "override");
+    test::expect_translatable(longest.rule, {"groups"});
+    test::expect_translatable(choose_group(fit, std::string("x+")).rule, {});
+
+    try {
+        (void)choose_group(fit, std::string("q+"));
+        FAIL() << "an unknown group was accepted";
+    } catch (const LabError& e) {
+        EXPECT_EQ(std::string(e.what()), "got 'q+'; allowed: a group of the file (X+, Z-)");
+        test::expect_translatable(e.to_message(), {"group", "groups"});
+    }
+    Scenario scenario;
+    scenario.probe.interface_delay_s = 0.008;
+    scenario.machine.scan_period_s = 0.004;
+    try {
+        (void)controller_latency_from_fit(fit, scenario, std::string("X+"));
+        FAIL() << "a negative latency was accepted";
+    } catch (const LabError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("the fitted delay of X+, 8.5 ms, is shorter than the "
+                                              "scenario's probe.interface_delay_s + half of "
+                                              "machine.scan_period_s (10 ms)",
+                                              0),
+                  0u)
+            << e.what();
+        test::expect_translatable(e.to_message(),
+                                  {"group", "delay_s", "interface_and_half_scan_s"});
+    }
+}
+
+TEST(DelayFitMessages, FileErrorsCarryTheirValues) {
+    try {
+        (void)fit_delay(parse_delay_csv(std::string(kHeader) + "X,1,500,1\nX,1,500,1.001\n"));
+        FAIL() << "one feed accepted";
+    } catch (const CsvError& e) {
+        test::expect_translatable(e.problem(), {"group", "touches", "feed_mm_min", "lines"});
+        test::expect_translatable(e.to_message(),
+                                  {"line", "column", "group", "touches", "feed_mm_min", "lines"});
+    }
+    try {
+        (void)parse_delay_csv(std::string(kHeader) + "X,1,-5,1\n");
+        FAIL() << "a negative feed accepted";
+    } catch (const CsvError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "line 2, column feed_mm_min: -5 is out of range: (0, 100000] mm/min");
+        test::expect_translatable(e.problem(), {"feed_mm_min", "max_feed_mm_min"});
+    }
 }
 
 }  // namespace

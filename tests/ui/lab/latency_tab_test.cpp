@@ -149,7 +149,8 @@ TEST_F(LabLatencyTab, ApplyEmitsTheControllerLatencyByTheCliRule) {
     const auto pending = tab_.pending_application();
     ASSERT_TRUE(pending.has_value());
     EXPECT_EQ(pending->group, "Z-");
-    EXPECT_NE(pending->rule.find("longest delay"), std::string::npos) << pending->rule;
+    EXPECT_NE(render(pending->rule).find("longest delay"), std::string::npos)
+        << render(pending->rule);
     ASSERT_TRUE(tab_.apply_to_scenario()) << tab_.last_error().toStdString();
     ASSERT_EQ(spy.count(), 1);
     EXPECT_NEAR(spy.at(0).at(0).toDouble(), 0.005, 1e-9);

@@ -1,0 +1,25 @@
+#pragma once
+
+// Input that the lab's computations refuse, outside a file's lines (those are
+// CsvError): a gauge smaller than the touches, a length that is not positive,
+// a delay group the fit does not have. It is a std::invalid_argument whose
+// what() is the English text, and carries the message for the window.
+
+#include <stdexcept>
+#include <utility>
+
+#include "core/common/message.h"
+
+namespace probecycle {
+
+class LabError : public std::invalid_argument {
+  public:
+    explicit LabError(Message message)
+        : std::invalid_argument(render(message)), message_(std::move(message)) {}
+    const Message& to_message() const { return message_; }
+
+  private:
+    Message message_;
+};
+
+}  // namespace probecycle

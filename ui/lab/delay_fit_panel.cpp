@@ -1,0 +1,547 @@
+#include "ui/lab/delay_fit_panel.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/lab/compensation.h"  // lag_cycles_for_delay
+#include "ui/common/parameter_info.h"
+#include "ui/common/plot_view.h"
+#include "ui/common/text_format.h"
+#include "ui/lab/lab_widgets.h"
+
+namespace probecycle::ui {
+
+namespace {
+
+// One colour per (axis, direction) group, in the order of the file.
+const QColor kGroupColours[] = {{0x1f, 0x77, 0xb4}, {0xd6, 0x27, 0x28}, {0x2c, 0xa0, 0x2c},
+                                {0x94, 0x67, 0xbd}, {0xe6, 0x7e, 0x22}, {0x17, 0xbe, 0xcf}};
+
+constexpr double kMmToUm = 1000.0;
+
+enum TreeColumn { col_name, col_delay, col_lag, col_position, col_stability, col_n, col_count };
+
+QString number(double value, int decimals) {
+    return QLocale().toString(value, 'f', decimals);
+}
+
+}  // namespace
+
+DelayFitPanel::DelayFitPanel(QWidget* parent) : QGroupBox(parent) {
+    setObjectName(QStringLiteral("delay-fit"));
+    build_plot();
+    auto* top = new QHBoxLayout;
+    top->addWidget(build_input_column());
+    top->addWidget(delay_plot_, 1);
+    top->addWidget(build_results_column());
+    auto* column = new QVBoxLayout(this);
+    column->addLayout(top, 1);
+    column->addLayout(build_apply_row());
+
+    connect(fit_button_, &QPushButton::clicked, this, [this] { fit(); });
+    connect(import_button_, &QPushButton::clicked, this, &DelayFitPanel::import_dialog);
+    connect(period_, &QDoubleSpinBox::valueChanged, this, &DelayFitPanel::apply_period);
+    connect(apply_group_, &QComboBox::currentIndexChanged, this, [this] { update_apply(); });
+    connect(apply_button_, &QPushButton::clicked, this, [this] { apply_to_scenario(); });
+    retranslate();
+}
+
+DelayFitPanel::~DelayFitPanel() = default;
+
+// The paste box, the period and the buttons.
+QWidget* DelayFitPanel::build_input_column() {
+    format_hint_ = new QLabel(this);
+    format_hint_->setWordWrap(true);
+    touches_edit_ = make_csv_editor(this);
+    touches_edit_->setObjectName(QStringLiteral("delay-touches"));
+    period_ = new UnitSpinBox(0.0, 0.1, 3, 0.0, this, 1000.0);
+    period_->setObjectName(QStringLiteral("fit-interpolation-period"));
+    period_->set_unit(unit_ms);
+    period_label_ = new QLabel(this);
+    period_label_->setBuddy(period_);
+    import_button_ = new QPushButton(this);
+    fit_button_ = new QPushButton(this);
+    error_label_ = new QLabel(this);
+    error_label_->setObjectName(QStringLiteral("delay-error"));
+    error_label_->setWordWrap(true);
+    error_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    error_label_->hide();
+    auto* period_row = new QHBoxLayout;
+    period_row->addWidget(period_label_);
+    period_row->addWidget(period_, 1);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(import_button_);
+    buttons->addStretch(1);
+    buttons->addWidget(fit_button_);
+    auto* input = new QWidget(this);
+    auto* input_column = new QVBoxLayout(input);
+    input_column->setContentsMargins(0, 0, 0, 0);
+    input_column->addWidget(format_hint_);
+    input_column->addWidget(touches_edit_, 1);
+    input_column->addLayout(period_row);
+    input_column->addLayout(buttons);
+    input_column->addWidget(error_label_);
+    input->setFixedWidth(320);
+    return input;
+}
+
+// The deviation chart; its curves are made per group as fits need them.
+void DelayFitPanel::build_plot() {
+    delay_plot_ = new PlotView(this);
+    delay_plot_->setObjectName(QStringLiteral("delay-plot"));
+    delay_plot_->set_x_axis({PlotView::Scale::linear, {}, QStringLiteral("%g"), {}});
+    delay_plot_->set_y_axis(PlotView::Side::left,
+                            {PlotView::Scale::linear, {}, QStringLiteral("%g"), {}});
+    delay_plot_->set_x_range(0.0, 1000.0);
+    delay_plot_->set_y_range(PlotView::Side::left, 0.0, 100.0);
+}
+
+// The tree of groups and feeds, and the warnings under it.
+QWidget* DelayFitPanel::build_results_column() {
+    tree_ = new QTreeWidget(this);
+    tree_->setObjectName(QStringLiteral("delay-groups"));
+    tree_->setColumnCount(col_count);
+    tree_->setRootIsDecorated(true);
+    tree_->setUniformRowHeights(true);
+    tree_->setAlternatingRowColors(true);
+    tree_->header()->setStretchLastSection(false);
+    tree_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    warnings_title_ = new QLabel(this);
+    QFont bold = warnings_title_->font();
+    bold.setBold(true);
+    warnings_title_->setFont(bold);
+    warnings_ = new LabWarningList;
+    warnings_->setObjectName(QStringLiteral("delay-warnings"));
+    auto* warnings_scroll = new QScrollArea(this);
+    warnings_scroll->setWidget(warnings_);
+    warnings_scroll->setWidgetResizable(true);
+    warnings_scroll->setFrameShape(QFrame::NoFrame);
+    warnings_scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto* results = new QWidget(this);
+    auto* results_column = new QVBoxLayout(results);
+    results_column->setContentsMargins(0, 0, 0, 0);
+    results_column->addWidget(tree_, 3);
+    results_column->addWidget(warnings_title_);
+    results_column->addWidget(warnings_scroll, 2);
+    results->setFixedWidth(450);
+    return results;
+}
+
+// "Delay to apply: [group]  breakdown  [Apply to scenario]".
+QLayout* DelayFitPanel::build_apply_row() {
+    apply_label_ = new QLabel(this);
+    apply_group_ = new QComboBox(this);
+    apply_group_->setObjectName(QStringLiteral("apply-group"));
+    apply_group_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    apply_label_->setBuddy(apply_group_);
+    apply_breakdown_ = new QLabel(this);
+    apply_breakdown_->setObjectName(QStringLiteral("apply-breakdown"));
+    apply_breakdown_->setWordWrap(true);
+    apply_breakdown_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    apply_button_ = new QPushButton(this);
+    apply_button_->setObjectName(QStringLiteral("apply-to-scenario"));
+    apply_button_->setEnabled(false);
+    auto* apply_row = new QHBoxLayout;
+    apply_row->addWidget(apply_label_);
+    apply_row->addWidget(apply_group_);
+    apply_row->addSpacing(8);
+    apply_row->addWidget(apply_breakdown_, 1);
+    apply_row->addWidget(apply_button_);
+    return apply_row;
+}
+
+void DelayFitPanel::retranslate() {
+    setTitle(tr("Delay from touches at several feeds (delay-stability test)"));
+    format_hint_->setText(
+        tr("Touch the same surface several times at each of several feeds, per axis and "
+           "direction, starting far enough out to be at full speed. Paste or import the "
+           "positions: <code>axis,direction,feed_mm_min,measured_mm</code> (direction +1 or −1, "
+           "of travel)."));
+    touches_edit_->setPlaceholderText(
+        QStringLiteral("axis,direction,feed_mm_min,measured_mm\nX,+1,100,10.0142\n"
+                       "X,+1,1000,10.1417\nX,+1,3000,10.4250\n...") +
+        QLatin1Char('\n') + tr("(example)"));
+    period_label_->setText(tr("Interpolation period"));
+    period_->setToolTip(
+        tr("The control's interpolation cycle, to express the delay in cycles "
+           "(optional)."));
+    period_->setSpecialValueText(tr("none"));
+    import_button_->setText(tr("Import CSV…"));
+    fit_button_->setText(tr("Fit"));
+    delay_plot_->set_title(tr("Measured minus zero-speed position, against feed"));
+    delay_plot_->set_x_axis(
+        {PlotView::Scale::linear, tr("Feed [%1]").arg(unit_mm_min()), QStringLiteral("%g"), {}});
+    delay_plot_->set_y_axis(
+        PlotView::Side::left,
+        {PlotView::Scale::linear, tr("Deviation [%1]").arg(unit_um()), QStringLiteral("%g"), {}});
+    tree_->setHeaderLabels({tr("Group / feed"), tr("Delay τ"), tr("Cycles"), tr("p₀ / mean"),
+                            tr("2σ / range"), tr("n")});
+    QTreeWidgetItem* header = tree_->headerItem();
+    header->setToolTip(col_delay, tr("The total delay: the slope of the line over the feeds."));
+    header->setToolTip(col_lag, tr("The delay in interpolation cycles (with the period given)."));
+    header->setToolTip(col_position, tr("Group: the zero-speed position p₀. Feed: the mean "
+                                        "deviation from p₀."));
+    header->setToolTip(col_stability, tr("Group: twice the standard deviation of the residuals "
+                                         "of the line. Feed: the range (max − min) of its "
+                                         "touches, the delay's stability."));
+    header->setToolTip(col_n, tr("Touches"));
+    warnings_title_->setText(tr("Warnings"));
+    warnings_->set_empty_text(tr("No warnings."));
+    apply_label_->setText(tr("Delay to apply:"));
+    apply_button_->setText(tr("Apply to scenario"));
+    apply_button_->setToolTip(
+        tr("Sets machine.controller_latency_s to the fitted delay less the probe's interface "
+           "delay and half the scan period (none with a latched input)."));
+    period_->retranslate();
+    show_fit();
+}
+
+void DelayFitPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QGroupBox::changeEvent(event);
+}
+
+void DelayFitPanel::set_scenario(const probecycle::Scenario& scenario) {
+    scenario_ = scenario;
+    update_apply();
+}
+
+void DelayFitPanel::set_touches_text(const QString& csv) {
+    touches_edit_->setPlainText(csv);
+}
+
+QString DelayFitPanel::touches_text() const {
+    return touches_edit_->toPlainText();
+}
+
+void DelayFitPanel::set_interpolation_period_s(double period_s) {
+    {
+        const QSignalBlocker block(period_);
+        period_->set_internal_value(period_s);
+    }
+    apply_period();
+}
+
+void DelayFitPanel::apply_period() {
+    // As the box shows it (rounded to its decimals).
+    const double period_s = period_->internal_value();
+    DelayFitOptions options = fit_options_;
+    options.interpolation_period_s =
+        period_s > 0.0 ? std::optional<double>(period_s) : std::nullopt;
+    if (!fit_) {
+        fit_options_ = options;
+        return;
+    }
+    try {
+        DelayFit fit = fit_delay(touches_, options);
+        fit_options_ = options;
+        fit_ = std::move(fit);
+    } catch (const std::exception& e) {
+        set_error(lab_error_text(e));
+        return;
+    }
+    show_fit();
+}
+
+bool DelayFitPanel::fit() {
+    return fit_text(touches_edit_->toPlainText(), QString());
+}
+
+bool DelayFitPanel::import_file(const QString& path) {
+    QString error;
+    const std::optional<QString> text = import_csv_into(touches_edit_, path, error);
+    if (!text) {
+        set_error(error);
+        return false;
+    }
+    last_dir_ = QFileInfo(path).absolutePath();
+    return fit_text(*text, QFileInfo(path).fileName());
+}
+
+bool DelayFitPanel::fit_text(const QString& text, const QString& source) {
+    DelayFitOptions options = fit_options_;
+    const double period_s = period_->internal_value();
+    options.interpolation_period_s =
+        period_s > 0.0 ? std::optional<double>(period_s) : std::nullopt;
+    std::vector<DelayTouch> touches;
+    DelayFit fit;
+    try {
+        touches = parse_delay_csv(text.toStdString());
+        fit = fit_delay(touches, options);
+    } catch (const std::exception& e) {
+        const QString message = lab_error_text(e);
+        set_error(source.isEmpty() ? message : tr("%1: %2").arg(source, message));
+        return false;
+    }
+    touches_ = std::move(touches);
+    fit_options_ = options;
+    fit_ = std::move(fit);
+    set_error({});
+    show_fit();
+    return true;
+}
+
+void DelayFitPanel::set_error(const QString& text) {
+    last_error_ = text;
+    QString shown = text;
+    if (!text.isEmpty() && fit_) {
+        shown += QLatin1Char('\n') + tr("The result shown is still that of the previous fit.");
+    }
+    show_error(error_label_, shown);
+}
+
+void DelayFitPanel::show_fit() {
+    tree_->clear();
+    std::vector<LabWarningList::Item> items;
+    if (fit_) {
+        for (const DelayGroup& g : fit_->groups) {
+            const QString name = QString::fromStdString(g.name());
+            auto* top = new QTreeWidgetItem(tree_);
+            top->setText(col_name, name);
+            top->setText(col_delay, lab_ms(g.delay_s));
+            top->setText(col_lag, g.lag_cycles ? number(*g.lag_cycles, 2) : QStringLiteral("—"));
+            top->setText(col_position, lab_mm(g.zero_speed_position_mm));
+            top->setText(col_stability,
+                         g.residual_2sigma_mm
+                             ? lab_signed_um(*g.residual_2sigma_mm).remove(QLatin1Char('+'))
+                             : QStringLiteral("—"));
+            std::size_t n = 0;
+            for (const FeedScatter& f : g.feeds) n += f.n;
+            top->setText(col_n, QString::number(n));
+            QFont bold = top->font(col_name);
+            bold.setBold(true);
+            for (int c = 0; c < col_count; ++c) top->setFont(c, bold);
+            for (const FeedScatter& f : g.feeds) {
+                auto* child = new QTreeWidgetItem(top);
+                child->setText(col_name, format_feed(f.feed_mm_min));
+                child->setText(col_position, lab_signed_um(f.mean_mm - g.zero_speed_position_mm));
+                child->setText(col_stability, lab_signed_um(f.range_mm).remove(QLatin1Char('+')));
+                child->setText(col_n, QString::number(f.n));
+            }
+            for (int c = col_delay; c < col_count; ++c) {
+                top->setTextAlignment(c, Qt::AlignRight | Qt::AlignVCenter);
+                for (int i = 0; i < top->childCount(); ++i) {
+                    top->child(i)->setTextAlignment(c, Qt::AlignRight | Qt::AlignVCenter);
+                }
+            }
+            for (const LatencyWarning& w : g.warnings) items.push_back(warning_item(w, name));
+        }
+        tree_->expandAll();
+    }
+    warnings_->show_items(items);
+
+    // The group choice for "Apply": the CLI's rule first, then each group.
+    const QString chosen = apply_group_->currentData().toString();
+    {
+        const QSignalBlocker block(apply_group_);
+        apply_group_->clear();
+        apply_group_->addItem(tr("Longest delay (safe side)"), QString());
+        if (fit_) {
+            for (const DelayGroup& g : fit_->groups) {
+                const QString name = QString::fromStdString(g.name());
+                apply_group_->addItem(name, name);
+            }
+        }
+        apply_group_->setCurrentIndex(std::max(apply_group_->findData(chosen), 0));
+    }
+    draw_fit();
+    update_apply();
+}
+
+void DelayFitPanel::draw_fit() {
+    const std::size_t groups = fit_ ? fit_->groups.size() : 0;
+    // Curves are made once per group slot and reused; unused ones are hidden.
+    while (group_curves_.size() < groups) {
+        const QColor colour = kGroupColours[group_curves_.size() % std::size(kGroupColours)];
+        GroupCurves curves;
+        curves.line = delay_plot_->add_line({QStringLiteral(" "), colour, 2.0});
+        curves.touches = delay_plot_->add_markers({{}, colour}, 8.0);
+        group_curves_.push_back(curves);
+    }
+    double max_feed = 0.0;
+    double lo = 0.0;
+    double hi = 0.0;
+    for (std::size_t i = 0; i < group_curves_.size(); ++i) {
+        const GroupCurves& curves = group_curves_[i];
+        if (i >= groups) {
+            delay_plot_->set_points(curves.touches, {});
+            delay_plot_->set_points(curves.line, {});
+            delay_plot_->set_visible(curves.touches, false);
+            delay_plot_->set_visible(curves.line, false);
+            continue;
+        }
+        const DelayGroup& g = fit_->groups[i];
+        QList<QPointF> touches;
+        double group_max_feed = 0.0;
+        for (const DelayTouch& t : touches_) {
+            if (t.axis != g.axis || t.direction != g.direction) continue;
+            const double deviation_um = (t.measured_mm - g.zero_speed_position_mm) * kMmToUm;
+            touches.append({t.feed_mm_min, deviation_um});
+            group_max_feed = std::max(group_max_feed, t.feed_mm_min);
+            lo = std::min(lo, deviation_um);
+            hi = std::max(hi, deviation_um);
+        }
+        const double end_um = (g.predicted_mm(group_max_feed) - g.zero_speed_position_mm) * kMmToUm;
+        lo = std::min(lo, end_um);
+        hi = std::max(hi, end_um);
+        max_feed = std::max(max_feed, group_max_feed);
+        delay_plot_->set_points(curves.touches, touches);
+        delay_plot_->set_points(curves.line, {{0.0, 0.0}, {group_max_feed, end_um}});
+        delay_plot_->set_name(
+            curves.line, tr("%1: τ = %2").arg(QString::fromStdString(g.name()), lab_ms(g.delay_s)));
+        delay_plot_->set_visible(curves.touches, true);
+        delay_plot_->set_visible(curves.line, true);
+    }
+    if (groups > 0) {
+        const double pad = std::max(hi - lo, 1.0) * 0.06;
+        delay_plot_->set_x_range(0.0, max_feed * 1.04);
+        delay_plot_->set_y_range(PlotView::Side::left, lo - pad, hi + pad);
+    }
+}
+
+QStringList DelayFitPanel::warning_codes() const {
+    return warnings_->codes();
+}
+
+QStringList DelayFitPanel::results_text() const {
+    QStringList out;
+    for (int i = 0; i < tree_->topLevelItemCount(); ++i) {
+        const QTreeWidgetItem* item = tree_->topLevelItem(i);
+        QStringList cells;
+        for (int c = 0; c < col_count; ++c) cells << item->text(c);
+        out << cells.join(QStringLiteral(" | "));
+    }
+    return out;
+}
+
+QList<QPointF> DelayFitPanel::plotted_touches(int group) const {
+    if (group < 0 || static_cast<std::size_t>(group) >= group_curves_.size()) return {};
+    return delay_plot_->points(group_curves_[static_cast<std::size_t>(group)].touches);
+}
+
+QList<QPointF> DelayFitPanel::plotted_line(int group) const {
+    if (group < 0 || static_cast<std::size_t>(group) >= group_curves_.size()) return {};
+    return delay_plot_->points(group_curves_[static_cast<std::size_t>(group)].line);
+}
+
+void DelayFitPanel::import_dialog() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import touches"), last_dir_,
+                                                      tr("CSV files (*.csv);;All files (*)"));
+    if (!path.isEmpty()) import_file(path);
+}
+
+void DelayFitPanel::set_applied_group(const QString& name) {
+    const int index = name.isEmpty() ? 0 : apply_group_->findData(name.toUpper());
+    if (index >= 0) apply_group_->setCurrentIndex(index);
+}
+
+std::optional<std::string> DelayFitPanel::chosen_group() const {
+    const QString name = apply_group_->currentData().toString();
+    if (name.isEmpty()) return std::nullopt;
+    return name.toStdString();
+}
+
+DelayFitPanel::ApplyState DelayFitPanel::evaluate_apply() const {
+    ApplyState state;
+    if (!fit_ || fit_->groups.empty()) {
+        state.problem = tr("Fit the touches first.");
+        return state;
+    }
+    if (!scenario_) {
+        state.problem = tr("No scenario to apply the delay to.");
+        return state;
+    }
+    try {
+        // The CLI's --apply-to rule, from the core; it refuses a negative latency.
+        AppliedDelay applied = controller_latency_from_fit(*fit_, *scenario_, chosen_group());
+        // The result must be a valid scenario (the key's range).
+        apply_delay(*scenario_, applied);
+        state.applied = std::move(applied);
+    } catch (const std::exception& e) {
+        // LabError from the rule, ScenarioError from the key's range.
+        state.problem = lab_error_text(e);
+    }
+    return state;
+}
+
+std::optional<AppliedDelay> DelayFitPanel::pending_application() const {
+    return evaluate_apply().applied;
+}
+
+QString DelayFitPanel::apply_problem() const {
+    return evaluate_apply().problem;
+}
+
+void DelayFitPanel::update_apply() {
+    const ApplyState state = evaluate_apply();
+    if (state.applied) {
+        const AppliedDelay& a = *state.applied;
+        const QString half_scan =
+            scenario_->machine.latched_input ? tr("0 (latched input)") : lab_ms(a.half_scan_s);
+        //: %1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now
+        apply_breakdown_->setText(
+            tr("Controller latency = %1 delay %2 − interface %3 − half scan %4 = <b>%5</b> "
+               "(now %6)")
+                .arg(QString::fromStdString(a.group), lab_ms(a.total_delay_s),
+                     lab_ms(a.interface_delay_s), half_scan, lab_ms(a.controller_latency_s),
+                     lab_ms(a.previous_s)));
+        apply_breakdown_->setStyleSheet({});
+        apply_breakdown_->setToolTip(translate(a.rule));
+    } else if (fit_ && scenario_) {
+        show_error(apply_breakdown_, state.problem);
+        apply_breakdown_->setToolTip({});
+    } else {
+        apply_breakdown_->setStyleSheet({});
+        apply_breakdown_->setText(state.problem);
+        apply_breakdown_->setToolTip({});
+    }
+    apply_breakdown_->show();
+    apply_button_->setEnabled(state.applied.has_value());
+    emit fit_changed();
+}
+
+bool DelayFitPanel::apply_to_scenario() {
+    const ApplyState state = evaluate_apply();
+    if (!state.applied) {
+        last_error_ = state.problem;
+        return false;
+    }
+    last_error_.clear();
+    emit controller_latency_applied(state.applied->controller_latency_s);
+    return true;
+}
+
+QStringList DelayFitPanel::warning_texts() const {
+    return warnings_->texts();
+}
+
+std::optional<DelayFitPanel::LagFromFit> DelayFitPanel::lag_from_fit() const {
+    if (!fit_ || fit_->groups.empty() || !fit_options_.interpolation_period_s) return std::nullopt;
+    // The group "Apply" uses (core choose_group), and the lag rule the
+    // simulator assumes (core lag_cycles_for_delay).
+    const DelayGroup* chosen = nullptr;
+    try {
+        chosen = choose_group(*fit_, chosen_group()).group;
+    } catch (const std::invalid_argument&) {
+        return std::nullopt;  // a name no longer in the fit: nothing to take
+    }
+    const double period_s = *fit_options_.interpolation_period_s;
+    return LagFromFit{period_s, lag_cycles_for_delay(chosen->delay_s, period_s)};
+}
+
+}  // namespace probecycle::ui

@@ -1,0 +1,150 @@
+#pragma once
+
+// The delay-fit half of the Latency tab (issue 4, "Delay from touches at
+// several feeds"; domain.md, "Latency: measuring it and compensating it").
+//
+// Touches of one surface at several feeds (CSV `axis,direction,feed_mm_min,
+// measured_mm`, pasted or imported) give the total delay per axis and
+// direction; the chart shows the deviation from the zero-speed position
+// against the feed with the fitted line and every touch, the tree the delay
+// and its stability. "Apply to scenario" turns the delay into the scenario's
+// controller latency by the CLI's --apply-to rule (controller_latency_from_fit
+// in core/lab/delay_fit.h).
+
+#include <QGroupBox>
+#include <QList>
+#include <QPointF>
+#include <QString>
+#include <QStringList>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/cycle/scenario.h"
+#include "core/lab/delay_fit.h"
+
+class QComboBox;
+class QLabel;
+class QPlainTextEdit;
+class QPushButton;
+class QTreeWidget;
+
+namespace probecycle::ui {
+
+class LabWarningList;
+class PlotView;
+class UnitSpinBox;
+
+class DelayFitPanel : public QGroupBox {
+    Q_OBJECT
+
+  public:
+    explicit DelayFitPanel(QWidget* parent = nullptr);
+    ~DelayFitPanel() override;
+
+    // The scenario "Apply" works on; disabled until one is set.
+    void set_scenario(const probecycle::Scenario& scenario);
+
+    void set_touches_text(const QString& csv);
+    QString touches_text() const;
+    // The interpolation period that expresses the delay in cycles; 0 = none.
+    // Refits the touches of the current fit.
+    void set_interpolation_period_s(double period_s);
+    // Fits the pasted touches. On bad input: false, last_error() names the
+    // line, and the previous fit stays on screen.
+    bool fit();
+    // Reads a CSV file into the paste box and fits it.
+    bool import_file(const QString& path);
+
+    const std::optional<DelayFit>& delay_fit() const { return fit_; }
+    QString last_error() const { return last_error_; }
+    QStringList warning_codes() const;
+    QStringList warning_texts() const;  // "title: message", as shown
+    // The tree's group rows, "X+ | 8.500 ms | ...".
+    QStringList results_text() const;
+    // What the deviation chart draws for group `index` of delay_fit():
+    // (feed mm/min, deviation µm) of every touch, and the fitted line.
+    QList<QPointF> plotted_touches(int group) const;
+    QList<QPointF> plotted_line(int group) const;
+    PlotView* delay_plot() const { return delay_plot_; }
+
+    // The group "Apply" uses, "X+" (any case); empty = the CLI's rule (the
+    // only group, or the longest delay). A name the fit does not have is ignored.
+    void set_applied_group(const QString& name);
+    // What "Apply" would set; nullopt without a fit or a scenario, or when the
+    // rule refuses (a negative latency), with the reason in apply_problem().
+    std::optional<AppliedDelay> pending_application() const;
+    QString apply_problem() const;
+    // Emits controller_latency_applied(); false with last_error() when the
+    // controller latency would be negative or out of the key's range.
+    bool apply_to_scenario();
+
+    // For the compensation comparison: the fit's interpolation period and the
+    // lag in whole cycles of the group "Apply" uses (core lag_cycles_for_delay);
+    // nullopt without a fit or a period.
+    struct LagFromFit {
+        double interpolation_period_s{0.0};
+        int lag_cycles{0};
+    };
+    std::optional<LagFromFit> lag_from_fit() const;
+
+  signals:
+    // "Apply to scenario": the value for machine.controller_latency_s.
+    void controller_latency_applied(double controller_latency_s);
+    // The fit, its period or the group for "Apply" changed.
+    void fit_changed();
+
+  protected:
+    void changeEvent(QEvent* event) override;
+
+  private:
+    QWidget* build_input_column();
+    QWidget* build_results_column();
+    QLayout* build_apply_row();
+    void build_plot();
+    bool fit_text(const QString& text, const QString& source);
+    void apply_period();
+    void set_error(const QString& text);
+    void show_fit();
+    void draw_fit();
+    void update_apply();
+    void retranslate();
+    void import_dialog();
+    std::optional<std::string> chosen_group() const;
+    struct ApplyState {
+        std::optional<AppliedDelay> applied;
+        QString problem;
+    };
+    ApplyState evaluate_apply() const;
+
+    std::optional<Scenario> scenario_;
+
+    QLabel* format_hint_{nullptr};
+    QPlainTextEdit* touches_edit_{nullptr};
+    QLabel* period_label_{nullptr};
+    UnitSpinBox* period_{nullptr};
+    QPushButton* import_button_{nullptr};
+    QPushButton* fit_button_{nullptr};
+    QLabel* error_label_{nullptr};
+    PlotView* delay_plot_{nullptr};
+    struct GroupCurves {
+        int touches{-1};
+        int line{-1};
+    };
+    std::vector<GroupCurves> group_curves_;
+    QTreeWidget* tree_{nullptr};
+    QLabel* warnings_title_{nullptr};
+    LabWarningList* warnings_{nullptr};
+    QLabel* apply_label_{nullptr};
+    QComboBox* apply_group_{nullptr};
+    QLabel* apply_breakdown_{nullptr};
+    QPushButton* apply_button_{nullptr};
+
+    std::vector<DelayTouch> touches_;
+    DelayFitOptions fit_options_;
+    std::optional<DelayFit> fit_;
+    QString last_error_;
+    QString last_dir_;
+};
+
+}  // namespace probecycle::ui
