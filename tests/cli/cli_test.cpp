@@ -367,9 +367,11 @@ TEST_F(CycleCli, SweepPrintsOnlyTheCsvAndTheSummaryOnStderr) {
         }
         EXPECT_NEAR(std::stod(fields[0]), 100.0 * static_cast<double>(i), 1e-9);
     }
-    // The same bytes as the core's CSV.
-    const SweepResult sweep = sweep_feeds(Scenario{}, linear_feeds(100.0, 1000.0, 100.0));
-    EXPECT_EQ(r.out, sweep_to_csv(sweep));
+    // The same bytes as the golden sweep (100 to 3000 mm/min) up to 1000 mm/min.
+    const std::string golden = slurp(data_file("golden/sweep_default.csv"));
+    std::size_t end = 0;
+    for (int line = 0; line < 11; ++line) end = golden.find('\n', end) + 1;
+    EXPECT_EQ(r.out, golden.substr(0, end));
     // One summary line on stderr naming the knee.
     const std::vector<std::string> err_lines = lines_of(r.err);
     ASSERT_EQ(err_lines.size(), 1u) << r;
@@ -408,9 +410,7 @@ TEST_F(CycleCli, SweepCsvWritesTheFile) {
 TEST_F(CycleCli, ReportIsTheCoreCsvReportOnStdoutOrInAFile) {
     const CliRun printed = run({"report", "--set", "cycle.feature=bore"});
     ASSERT_EQ(printed.exit_code, 0) << printed;
-    Scenario s;
-    s.cycle.feature = Feature::bore;
-    EXPECT_EQ(printed.out, csv_report(s));
+    EXPECT_EQ(printed.out, slurp(data_file("golden/report_feature_bore.csv")));
     const fs::path file = dir_ / "report.csv";
     const CliRun written = run({"report", "--set", "cycle.feature=bore", "--csv", file.string()});
     ASSERT_EQ(written.exit_code, 0) << written;

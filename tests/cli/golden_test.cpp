@@ -1,0 +1,119 @@
+// Every output format of probecycle-cli, byte for byte against a golden file
+// in tests/data/golden/, so that a change of format shows in review.
+// To accept a deliberate change, regenerate them and read the diff:
+//   PROBECYCLE_UPDATE_GOLDEN=1 ctest --test-dir build -R Golden
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kData = PROBECYCLE_TEST_DATA_DIR;
+const fs::path kGolden = kData / "golden";
+
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// The first line where the two texts differ, for the failure message.
+std::string first_difference(const std::string& want, const std::string& got) {
+    std::istringstream a(want);
+    std::istringstream b(got);
+    std::string la;
+    std::string lb;
+    for (int line = 1;; ++line) {
+        const bool more_a = static_cast<bool>(std::getline(a, la));
+        const bool more_b = static_cast<bool>(std::getline(b, lb));
+        if (!more_a && !more_b) return "no line differs (line ends?)";
+        if (!more_a || !more_b || la != lb) {
+            return "line " + std::to_string(line) + ":\n- " + (more_a ? la : "<end>") + "\n+ " +
+                   (more_b ? lb : "<end>");
+        }
+    }
+}
+
+void expect_golden(const std::string& name, const std::string& got) {
+    const fs::path path = kGolden / name;
+    if (std::getenv("PROBECYCLE_UPDATE_GOLDEN") != nullptr) {
+        std::ofstream(path, std::ios::binary) << got;
+        return;
+    }
+    ASSERT_TRUE(fs::exists(path)) << path << " is missing";
+    const std::string want = slurp(path);
+    EXPECT_TRUE(want == got) << name << " differs from its golden file; first difference at "
+                             << first_difference(want, got);
+}
+
+struct Golden {
+    const char* name;  // golden file of stdout; stderr goes to <stem>.stderr.txt when kept
+    std::string arguments;
+    bool keep_stderr{false};
+};
+
+class GoldenOutput : public testing::TestWithParam<Golden> {};
+
+TEST_P(GoldenOutput, MatchesTheGoldenFileByteForByte) {
+    const Golden& g = GetParam();
+    const fs::path dir = fs::temp_directory_path() / ("probecycle-golden-" + std::string(g.name));
+    fs::create_directories(dir);
+    const fs::path out = dir / "stdout";
+    const fs::path err = dir / "stderr";
+    std::string arguments = g.arguments;
+    const std::string report_marker = "REPORT";
+    const std::size_t at = arguments.find(report_marker);
+    if (at != std::string::npos)
+        arguments.replace(at, report_marker.size(), (dir / "report.csv").string());
+    // Run from tests/data so that relative input paths are the same everywhere.
+    const std::string command = "cd '" + kData.string() + "' && '" PROBECYCLE_CLI_PATH "' " +
+                                arguments + " >'" + out.string() + "' 2>'" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0) << slurp(err);
+    expect_golden(g.name, slurp(out));
+    if (g.keep_stderr) {
+        const std::string stem = fs::path(g.name).stem().string();
+        expect_golden(stem + ".stderr.txt", slurp(err));
+    }
+    if (at != std::string::npos) {
+        const std::string stem = fs::path(g.name).stem().string();
+        expect_golden(stem + "_report.csv", slurp(dir / "report.csv"));
+    }
+    fs::remove_all(dir);
+}
+
+// clang-format off
+INSTANTIATE_TEST_SUITE_P(Cli, GoldenOutput, testing::Values(
+    Golden{"evaluate_default.json",   "evaluate"},
+    Golden{"evaluate_bore.json",      "evaluate ../../resources/examples/bore_two_touch.json"},
+    Golden{"evaluate_warnings.json",  "evaluate --set cycle.strategy=single_touch --set probe.calibration_feed_mm_min=500 --set cycle.approach_mm=0.5"},
+    Golden{"move_jerk.json",          "move --distance 10 --feed 6000 --set machine.accel_model=jerk_limited"},
+    Golden{"sweep_default.csv",       "sweep --from 100 --to 3000 --step 100", true},
+    Golden{"sweep_recommended.csv",   "sweep --from 100 --to 3000 --step 100 --recommended-backoff", true},
+    Golden{"report_default.csv",      "report"},
+    Golden{"report_bore.csv",         "report ../../resources/examples/bore_two_touch.json"},
+    Golden{"report_feature_bore.csv", "report --set cycle.feature=bore"},
+    Golden{"montecarlo.json",         "montecarlo --samples 2000 --seed 7 --bins 20"},
+    Golden{"calibrate_ring.json",     "calibrate ring lab_ring.csv --gauge-diameter 50 --report REPORT"},
+    Golden{"calibrate_length.json",   "calibrate length --surface-z 10 --trigger-z 112.3456 --trigger-z 112.3461 --active-length 0 --nominal-length 102.34"},
+    Golden{"latency_fit.json",        "latency fit lab_delay.csv --interpolation-period-s 0.001"},
+    Golden{"latency_compensate.json", "latency compensate --touch braking --speed-fraction 0.3 --sweep 4"}),
+    [](const testing::TestParamInfo<Golden>& case_info) {
+        std::string name = fs::path(case_info.param.name).stem().string();
+        for (char& c : name) if (c == '.' || c == '-') c = '_';
+        return name;
+    });
+// clang-format on
+
+}  // namespace
