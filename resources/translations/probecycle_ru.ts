@@ -1002,15 +1002,15 @@
     </message>
     <message>
         <source>Cycle lag (real increments)</source>
-        <translation>Запаздывание в периодах (реальные приращения)</translation>
+        <translation>Реальные приращения</translation>
     </message>
     <message>
         <source>Timestamp interpolation</source>
-        <translation>Интерполяция по метке времени</translation>
+        <translation>По метке времени</translation>
     </message>
     <message>
         <source>Real increments</source>
-        <translation>Реальные приращения</translation>
+        <translation>Приращения</translation>
     </message>
     <message>
         <source>Timestamp</source>
@@ -1082,11 +1082,11 @@
     </message>
     <message>
         <source>At constant speed</source>
-        <translation>На постоянной скорости</translation>
+        <translation>Постоянная скорость</translation>
     </message>
     <message>
         <source>While braking</source>
-        <translation>Во время торможения</translation>
+        <translation>При торможении</translation>
     </message>
     <message>
         <source>While braking: the speed at the trigger, in % of the feed.</source>
@@ -1094,7 +1094,7 @@
     </message>
     <message>
         <source>Take period and lag from the fit</source>
-        <translation>Взять период и запаздывание из подбора</translation>
+        <translation>Период и запаздывание из подбора</translation>
     </message>
     <message>
         <source>Machine dynamics from the scenario. While braking, v·τ assumes the feed through the whole delay and over-corrects; the real increments of the last cycles stay within one cycle&apos;s travel.</source>
@@ -1289,7 +1289,7 @@
     </message>
     <message>
         <source>Measured minus zero-speed position, against feed</source>
-        <translation>Измеренное минус положение при нулевой скорости, по подаче</translation>
+        <translation>Отклонение от положения при нулевой скорости</translation>
     </message>
     <message>
         <source>Feed [%1]</source>
@@ -1301,7 +1301,7 @@
     </message>
     <message>
         <source>Group / feed</source>
-        <translation>Группа / подача</translation>
+        <translation>Группа/подача</translation>
     </message>
     <message>
         <source>Delay τ</source>
@@ -1313,11 +1313,11 @@
     </message>
     <message>
         <source>p₀ / mean</source>
-        <translation>p₀ / среднее</translation>
+        <translation>p₀/среднее</translation>
     </message>
     <message>
         <source>2σ / range</source>
-        <translation>2σ / размах</translation>
+        <translation>2σ/размах</translation>
     </message>
     <message>
         <source>n</source>

@@ -168,6 +168,8 @@ TEST(LabCalibrateRing, OneOrientationSaysThereIsNoRunout) {
     EXPECT_NEAR(out.at("effective_radius_mm").get<double>(), 2.995, kFileRounding);
     EXPECT_TRUE(lab_has_warning(out, "single_orientation"));
     EXPECT_EQ(out.at("warnings")[0].at("severity"), "warning");
+    EXPECT_EQ(out.at("warnings")[0].at("values").at("orientation_deg"), 0.0);
+    EXPECT_EQ(out.at("warnings")[0].at("values").at("missing_orientation_deg"), 180.0);
 }
 
 TEST(LabCalibrateRing, WarningLimitsAreOptions) {
@@ -244,6 +246,10 @@ TEST(LabLatencyFit, FewFeedsWarnWithTheGroup) {
     const Json out = lab_json(run);
     ASSERT_TRUE(lab_has_warning(out, "few_feeds"));
     EXPECT_EQ(out.at("warnings")[0].at("group"), "Y-");
+    // The warning's numbers by name, beside its English text.
+    const Json& values = out.at("warnings")[0].at("values");
+    EXPECT_EQ(values.at("group"), "Y-");
+    EXPECT_EQ(values.at("feeds"), 2);
     EXPECT_TRUE(out.at("groups")[0].at("residual_2sigma_mm").is_null());
 }
 

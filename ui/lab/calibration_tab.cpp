@@ -503,6 +503,10 @@ QStringList CalibrationTab::warning_codes() const {
     return warnings_->codes() + length_warnings_->codes();
 }
 
+QStringList CalibrationTab::warning_texts() const {
+    return warnings_->texts() + length_warnings_->texts();
+}
+
 QStringList CalibrationTab::results_text() const {
     QStringList out;
     for (int i = 0; i < row_count; ++i) {

@@ -67,6 +67,8 @@ class CalibrationTab : public QWidget {
     QString last_error() const { return last_error_; }
     // Ring and length warnings shown, by core code ("large_runout", ...).
     QStringList warning_codes() const;
+    // The same warnings as shown, "title: message", in the interface language.
+    QStringList warning_texts() const;
     // Every result line shown, "label: value", for tests and the clipboard.
     QStringList results_text() const;
 

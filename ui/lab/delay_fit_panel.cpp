@@ -138,7 +138,7 @@ QWidget* DelayFitPanel::build_results_column() {
     results_column->addWidget(tree_, 3);
     results_column->addWidget(warnings_title_);
     results_column->addWidget(warnings_scroll, 2);
-    results->setFixedWidth(450);
+    results->setFixedWidth(480);
     return results;
 }
 
