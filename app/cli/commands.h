@@ -1,23 +1,19 @@
 #pragma once
 
-// Each subcommand takes the arguments after its name, writes its output to
-// stdout, and returns the exit code. Errors are thrown (UsageError,
-// ScenarioError, std::runtime_error) and reported by main() with exit code 2.
+// probecycle-cli's command groups. Each registers its subcommands on the
+// program's CLI::App; a subcommand's callback runs the command and writes
+// its output to stdout. Errors are thrown (UsageError, ScenarioError,
+// std::runtime_error) and reported by main() with exit code 2.
 
-#include <span>
-#include <string>
+#include <CLI/CLI.hpp>
 
 namespace probecycle::cli {
 
-int run_defaults(std::span<const std::string> args);
-int run_evaluate(std::span<const std::string> args);
-int run_move(std::span<const std::string> args);
-int run_sweep(std::span<const std::string> args);
-int run_report(std::span<const std::string> args);
-int run_montecarlo(std::span<const std::string> args);
-
-// The calibration and latency lab (issue 4), in commands_lab.cpp.
-int run_calibrate(std::span<const std::string> args);
-int run_latency(std::span<const std::string> args);
+// defaults, evaluate, move, sweep, report, montecarlo (commands_cycle.cpp)
+void add_cycle_commands(CLI::App& app);
+// calibrate ring, calibrate length (commands_calibrate.cpp)
+void add_calibrate_commands(CLI::App& app);
+// latency fit, latency compensate (commands_latency.cpp)
+void add_latency_commands(CLI::App& app);
 
 }  // namespace probecycle::cli

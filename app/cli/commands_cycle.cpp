@@ -1,128 +1,149 @@
-// The cycle-model subcommands: defaults, evaluate, move, sweep, montecarlo.
+// The cycle model's commands: defaults, evaluate, move, sweep, report, montecarlo.
 
 #include <cmath>
 #include <iostream>
-#include <nlohmann/json.hpp>
+#include <memory>
 
-#include "app/cli/cli_common.h"
+#include "app/cli/cli_options.h"
 #include "app/cli/commands.h"
-#include "core/common/file_io.h"
-#include "core/cycle/monte_carlo.h"
 #include "core/cycle/cycle_report.h"
+#include "core/cycle/monte_carlo.h"
 #include "core/cycle/sweep.h"
-#include "core/common/units.h"
 
 namespace probecycle::cli {
 
 namespace {
 
-using Json = nlohmann::ordered_json;
-
 const KeyInfo& feed_key() {
     return *find_key("cycle.probe_feed_mm_min");
 }
 
-void expect_no_positional(const Args& args, const char* command) {
-    if (!args.positional.empty()) {
-        throw UsageError(std::string(command) + " takes no file; got '" + args.positional[0] + "'");
-    }
+// Counted before any is made, so an absurd step is refused, not allocated.
+constexpr double kMaxSweepPoints = 1000000;
+
+void add_defaults(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand("defaults", "Print the default scenario (JSON)");
+    cmd->callback([] { std::cout << scenario_to_json(Scenario{}); });
+}
+
+void add_evaluate(CLI::App& app) {
+    auto args = std::make_shared<ScenarioArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "evaluate", "Cycle time, overtravel, uncertainty, phases and warnings (JSON)");
+    add_scenario_args(*cmd, *args);
+    cmd->callback([args] { std::cout << evaluation_to_json(analyse(load_scenario(*args))); });
+}
+
+void add_move(CLI::App& app) {
+    struct Args {
+        ScenarioArgs scenario;
+        NumberArg distance{0.0, 100000.0};
+        NumberArg feed{feed_key().min, 200000.0};
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand(
+        "move", "One rest-to-rest move with the scenario's acceleration model (JSON)");
+    add_scenario_args(*cmd, args->scenario);
+    add_number(*cmd, "--distance", args->distance, "Length of the move, mm", "MM")->required();
+    add_number(*cmd, "--feed", args->feed, "Programmed feed, mm/min", "MM_MIN")->required();
+    cmd->callback([args] {
+        const Scenario scenario = load_scenario(args->scenario);
+        std::cout << move_to_json(scenario.motion_limits(), args->distance.value(),
+                                  args->feed.value());
+    });
+}
+
+void add_sweep(CLI::App& app) {
+    struct Args {
+        ScenarioArgs scenario;
+        NumberArg from{feed_key().min, feed_key().max};
+        NumberArg to{feed_key().min, feed_key().max};
+        NumberArg step{1e-6, feed_key().max};
+        std::string csv;
+        bool recommended_backoff{false};
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand(
+        "sweep", "Cycle time against the probing feed (CSV on stdout or --csv; summary on stderr)");
+    add_scenario_args(*cmd, args->scenario);
+    add_number(*cmd, "--from", args->from, "First feed, mm/min", "F0")->required();
+    add_number(*cmd, "--to", args->to, "Last feed, mm/min (at least --from)", "F1")->required();
+    add_number(*cmd, "--step", args->step, "Feed step, mm/min", "DF")->required();
+    cmd->add_option("--csv", args->csv, "Write the CSV to FILE (atomically) instead of stdout")
+        ->type_name("FILE");
+    cmd->add_flag("--recommended-backoff", args->recommended_backoff,
+                  "Two-touch: back off the recommended distance (overtravel + reseat) at each "
+                  "feed, the curve of an optimised cycle");
+    cmd->callback([args] {
+        const Scenario scenario = load_scenario(args->scenario);
+        const double from = args->from.value();
+        const double to = args->to.value();
+        const double step = args->step.value();
+        if (to < from) {
+            throw UsageError("--to: got '" + args->to.text + "'; allowed: a number from " +
+                             args->from.text + " (--from) to " + std::to_string(feed_key().max));
+        }
+        const double points = linear_feed_count(from, to, step);
+        if (points > kMaxSweepPoints) {
+            throw UsageError("--step: " + std::to_string(static_cast<long long>(points)) +
+                             " points from --from to --to; at most 1000000 allowed");
+        }
+        const SweepOptions options{.recommended_backoff = args->recommended_backoff};
+        const SweepResult sweep = sweep_feeds(scenario, linear_feeds(from, to, step), options);
+        write_output(args->csv, sweep_to_csv(sweep));
+        std::cerr << sweep_summary(sweep, scenario, options) << '\n';
+    });
+}
+
+void add_report(CLI::App& app) {
+    struct Args {
+        ScenarioArgs scenario;
+        std::string csv;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand(
+        "report", "The CSV report the window exports: scenario, summary, phases, warnings, sweep");
+    add_scenario_args(*cmd, args->scenario);
+    cmd->add_option("--csv", args->csv, "Write the report to FILE (atomically) instead of stdout")
+        ->type_name("FILE");
+    cmd->callback([args] { write_output(args->csv, csv_report(load_scenario(args->scenario))); });
+}
+
+void add_montecarlo(CLI::App& app) {
+    struct Args {
+        ScenarioArgs scenario;
+        IntegerArg samples{1, 100000000};
+        IntegerArg seed{0, 9007199254740992};
+        IntegerArg bins{1, 10000};
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand(
+        "montecarlo", "Histogram of the trigger error at the measuring touch (JSON)");
+    add_scenario_args(*cmd, args->scenario);
+    add_integer(*cmd, "--samples", args->samples, "Number of samples (default 100000)");
+    add_integer(*cmd, "--seed", args->seed, "Random seed (default 42)");
+    add_integer(*cmd, "--bins", args->bins, "Histogram bins (default 50)");
+    cmd->callback([args] {
+        const Scenario scenario = load_scenario(args->scenario);
+        MonteCarloOptions options;
+        options.samples = static_cast<std::uint64_t>(
+            args->samples.value_or(static_cast<long long>(options.samples)));
+        options.seed =
+            static_cast<std::uint64_t>(args->seed.value_or(static_cast<long long>(options.seed)));
+        options.bins = static_cast<int>(args->bins.value_or(options.bins));
+        std::cout << monte_carlo_to_json(options, monte_carlo_trigger_error(scenario, options));
+    });
 }
 
 }  // namespace
 
-int run_defaults(std::span<const std::string> argv) {
-    const Args args = parse_args(argv, {});
-    expect_no_positional(args, "defaults");
-    std::cout << scenario_to_json(Scenario{});
-    return 0;
-}
-
-int run_evaluate(std::span<const std::string> argv) {
-    const Scenario scenario = load_scenario(parse_args(argv, {"--set"}));
-    std::cout << evaluation_to_json(analyse(scenario));
-    return 0;
-}
-
-int run_move(std::span<const std::string> argv) {
-    const Args args = parse_args(argv, {"--set", "--distance", "--feed"});
-    const Scenario scenario = load_scenario(args);
-    const double distance = number_option(args, "--distance", 0.0, 100000.0);
-    const double feed = number_option(args, "--feed", feed_key().min, 200000.0);
-    const MotionLimits limits = scenario.motion_limits();
-    const double v = mm_min_to_mm_s(feed);
-    Json out = Json::object();
-    out["time_s"] = move_time_s(limits, distance, v);
-    out["peak_speed_mm_min"] = mm_s_to_mm_min(move_peak_speed_mm_s(limits, distance, v));
-    out["accel_model"] = to_string(limits.model);
-    std::cout << out.dump(2) << '\n';
-    return 0;
-}
-
-int run_sweep(std::span<const std::string> argv) {
-    const Args args =
-        parse_args(argv, {"--set", "--from", "--to", "--step", "--csv"}, {"--recommended-backoff"});
-    const Scenario scenario = load_scenario(args);
-    const KeyInfo& key = feed_key();
-    const double from = number_option(args, "--from", key.min, key.max);
-    const double to = number_option(args, "--to", from, key.max);
-    const double step = number_option(args, "--step", 1e-6, key.max);
-    // Counted before any is made, so an absurd step is refused, not allocated.
-    constexpr double kMaxPoints = 1000000;
-    const double points = std::floor((to - from) / step + 1e-9) + 1.0;
-    if (points > kMaxPoints) {
-        throw UsageError("--step: " + std::to_string(static_cast<long long>(points)) +
-                         " points from --from to --to; at most 1000000 allowed");
-    }
-    const std::vector<double> feeds = linear_feeds(from, to, step);
-    const SweepOptions options{.recommended_backoff = args.has("--recommended-backoff")};
-    const SweepResult sweep = sweep_feeds(scenario, feeds, options);
-    const std::string csv = sweep_to_csv(sweep);
-    if (const std::optional<std::string> path = args.value("--csv")) {
-        write_file_atomically(*path, csv);
-    } else {
-        std::cout << csv;
-    }
-    std::cerr << sweep_summary(sweep, scenario, options) << '\n';
-    return 0;
-}
-
-int run_report(std::span<const std::string> argv) {
-    const Args args = parse_args(argv, {"--set", "--csv"});
-    const std::string csv = csv_report(load_scenario(args));
-    if (const std::optional<std::string> path = args.value("--csv")) {
-        write_file_atomically(*path, csv);
-    } else {
-        std::cout << csv;
-    }
-    return 0;
-}
-
-int run_montecarlo(std::span<const std::string> argv) {
-    const Args args = parse_args(argv, {"--set", "--samples", "--seed", "--bins"});
-    const Scenario scenario = load_scenario(args);
-    MonteCarloOptions options;
-    if (auto n = optional_number_option(args, "--samples", 1, 1e8)) {
-        options.samples = static_cast<std::uint64_t>(*n);
-    }
-    if (auto seed = optional_number_option(args, "--seed", 0, 9007199254740992.0)) {
-        options.seed = static_cast<std::uint64_t>(*seed);
-    }
-    if (auto bins = optional_number_option(args, "--bins", 1, 10000)) {
-        options.bins = static_cast<int>(*bins);
-    }
-    const Histogram h = monte_carlo_trigger_error(scenario, options);
-    Json out = Json::object();
-    out["samples"] = options.samples;
-    out["seed"] = options.seed;
-    out["mean_mm"] = h.mean_mm;
-    out["stddev_mm"] = h.stddev_mm;
-    out["min_mm"] = h.min_mm;
-    out["max_mm"] = h.max_mm;
-    out["bin_lo_mm"] = h.lo_mm;
-    out["bin_width_mm"] = h.bin_width_mm;
-    out["counts"] = h.counts;
-    std::cout << out.dump(2) << '\n';
-    return 0;
+void add_cycle_commands(CLI::App& app) {
+    add_defaults(app);
+    add_evaluate(app);
+    add_move(app);
+    add_sweep(app);
+    add_report(app);
+    add_montecarlo(app);
 }
 
 }  // namespace probecycle::cli

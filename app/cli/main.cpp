@@ -1,71 +1,116 @@
-// probecycle-cli: the probing-cycle model on the command line.
+// probecycle-cli: the probing-cycle model on the command line. The commands
+// are registered by their groups (commands_*.cpp); CLI11 parses, checks the
+// options and writes --help. Exit 0 on success, 2 with the message on stderr.
 
+#include <CLI/CLI.hpp>
+#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include "app/cli/cli_common.h"
+#include "app/cli/cli_options.h"
 #include "app/cli/commands.h"
 #include "core/cycle/scenario.h"
 
 namespace {
 
-constexpr const char* kUsage = R"(usage: probecycle-cli COMMAND [ARGS]
+using probecycle::cli::UsageError;
 
-Cycle model:
-  defaults                                   print the default scenario (JSON)
-  evaluate [SCENARIO.json] [--set K=V ...]   cycle time, overtravel, phases, warnings (JSON)
-  move [SCENARIO.json] [--set K=V ...] --distance MM --feed MM_MIN
-                                             one rest-to-rest move (JSON)
-  sweep [SCENARIO.json] [--set K=V ...] --from F0 --to F1 --step DF [--csv FILE]
-        [--recommended-backoff]              cycle time against probe feed (CSV); with
-                                             --recommended-backoff, two-touch backs off
-                                             overtravel + reseat at each feed
-  report [SCENARIO.json] [--set K=V ...] [--csv FILE]
-                                             the CSV report the window exports
-  montecarlo [SCENARIO.json] [--set K=V ...] [--samples N] [--seed S] [--bins B]
-                                             trigger-error histogram (JSON)
-Calibration and latency lab:
-  calibrate ring FILE.csv --gauge-diameter MM [--runout-limit MM] [--residual-limit MM]
-        [--report FILE.csv]                  ring-gauge calibration: centre, runout, radius
-  calibrate length --surface-z MM --trigger-z MM [--trigger-z MM ...] [--active-length MM]
-        [--nominal-length MM] [--wear-limit MM]
-                                             effective probe length, or wear
-  latency fit FILE.csv [--interpolation-period-s S] [--apply-to SCENARIO.json] [--group X+]
-                                             delay from touches at several feeds
-  latency compensate [SCENARIO.json] [--set K=V ...] [--touch constant|braking] ...
-                                             compare trigger-position compensations
-                                             ('latency help' lists every option)
+constexpr const char* kFooter =
+    "Exit status: 0 on success, 2 on bad input or usage (the message is on stderr).\n"
+    "'probecycle-cli COMMAND --help' describes a command and its options.";
 
---set section.key=value overrides one scenario key, e.g. --set cycle.probe_feed_mm_min=1500.
-Exit status: 0 on success, 2 on bad input or usage (the message is on stderr).
-)";
+// The words a command or command group allows after it, for a message that
+// says what is allowed (CLI11 says only what was not expected).
+std::vector<std::string> subcommand_names(const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+        names.push_back(sub->get_name());
+    }
+    return names;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+    std::string out;
+    for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
+    return out;
+}
+
+bool is_one_of(const std::string& word, const std::vector<std::string>& words) {
+    return std::find(words.begin(), words.end(), word) != words.end();
+}
+
+// CLI11's messages, in this program's words where they differ.
+std::string failure_text(const CLI::Error& e) {
+    std::string text = e.what();
+    const std::string required = " is required";
+    if (dynamic_cast<const CLI::RequiredError*>(&e) != nullptr && text.size() > required.size() &&
+        text.compare(text.size() - required.size(), required.size(), required) == 0) {
+        const std::string name = text.substr(0, text.size() - required.size());
+        return name.rfind("--", 0) == 0 ? "missing required option " + name
+                                        : "missing the input file (" + name + ")";
+    }
+    return text;
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
     using namespace probecycle;
-    const std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-        (args.empty() ? std::cerr : std::cout) << kUsage;
-        return args.empty() ? 2 : 0;
-    }
-    const std::string& command = args[0];
-    const std::span<const std::string> rest(args.data() + 1, args.size() - 1);
-    try {
-        if (command == "defaults") return cli::run_defaults(rest);
-        if (command == "evaluate") return cli::run_evaluate(rest);
-        if (command == "move") return cli::run_move(rest);
-        if (command == "sweep") return cli::run_sweep(rest);
-        if (command == "report") return cli::run_report(rest);
-        if (command == "montecarlo") return cli::run_montecarlo(rest);
-        if (command == "calibrate") return cli::run_calibrate(rest);
-        if (command == "latency") return cli::run_latency(rest);
-        std::cerr << "probecycle-cli: unknown command '" << command
-                  << "'; allowed: defaults, evaluate, move, sweep, report, montecarlo, calibrate, "
-                     "latency\n";
+    CLI::App app(
+        "probecycle-cli: cycle time, overtravel and uncertainty of touch-trigger probing "
+        "cycles on CNC machine tools, and the calibration and latency lab.",
+        "probecycle-cli");
+    app.get_formatter()->label("Usage", "usage");
+    app.get_formatter()->column_width(34);
+    app.footer(kFooter);
+    app.require_subcommand(1);
+    cli::add_cycle_commands(app);
+    cli::add_calibrate_commands(app);
+    cli::add_latency_commands(app);
+
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty()) {
+        std::cerr << app.help();
         return 2;
+    }
+    // "help" as a command word asks for the help of what stands before it.
+    for (std::size_t i = 0; i < args.size() && i < 2; ++i) {
+        if (args[i] == "help") args[i] = "--help";
+    }
+    // An unknown command or verb: say which are allowed.
+    const std::string command = args[0];  // a copy: CLI11 consumes args
+    const std::vector<std::string> commands = subcommand_names(app);
+    if (command.rfind("-", 0) != 0 && !is_one_of(command, commands)) {
+        std::cerr << "probecycle-cli: unknown command '" << command
+                  << "'; allowed: " << joined(commands) << '\n';
+        return 2;
+    }
+    if (command == "calibrate" || command == "latency") {
+        const std::vector<std::string> verbs = subcommand_names(*app.get_subcommand(command));
+        if (args.size() == 1) {
+            std::cerr << "probecycle-cli " << command
+                      << ": missing what to do; allowed: " << joined(verbs) << '\n';
+            return 2;
+        }
+        if (args[1].rfind("-", 0) != 0 && !is_one_of(args[1], verbs)) {
+            std::cerr << "probecycle-cli " << command << ": unknown "
+                      << (command == "calibrate" ? "calibration" : "latency command") << " '"
+                      << args[1] << "'; allowed: " << joined(verbs) << '\n';
+            return 2;
+        }
+    }
+    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+    try {
+        app.parse(args);
+        return 0;
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);  // the help on stdout, exit 0
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "probecycle-cli " << command << ": " << failure_text(e) << '\n';
     } catch (const ScenarioError& e) {
         std::cerr << "probecycle-cli: invalid scenario:\n" << e.what() << '\n';
     } catch (const std::exception& e) {

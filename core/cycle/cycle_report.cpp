@@ -59,6 +59,29 @@ std::string evaluation_to_json(const Analysis& analysis) {
     return out.dump(2) + "\n";
 }
 
+std::string move_to_json(const MotionLimits& limits, double distance_mm, double feed_mm_min) {
+    const double v = mm_min_to_mm_s(feed_mm_min);
+    Json out = Json::object();
+    out["time_s"] = move_time_s(limits, distance_mm, v);
+    out["peak_speed_mm_min"] = mm_s_to_mm_min(move_peak_speed_mm_s(limits, distance_mm, v));
+    out["accel_model"] = to_string(limits.model);
+    return out.dump(2) + "\n";
+}
+
+std::string monte_carlo_to_json(const MonteCarloOptions& options, const Histogram& h) {
+    Json out = Json::object();
+    out["samples"] = options.samples;
+    out["seed"] = options.seed;
+    out["mean_mm"] = h.mean_mm;
+    out["stddev_mm"] = h.stddev_mm;
+    out["min_mm"] = h.min_mm;
+    out["max_mm"] = h.max_mm;
+    out["bin_lo_mm"] = h.lo_mm;
+    out["bin_width_mm"] = h.bin_width_mm;
+    out["counts"] = h.counts;
+    return out.dump(2) + "\n";
+}
+
 std::string sweep_to_csv(const SweepResult& sweep) {
     std::string csv = "feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm";
     for (Phase phase : all_phases()) csv += std::string(",") + to_string(phase) + "_s";

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/cycle/cycle.h"
+#include "core/cycle/monte_carlo.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
 
@@ -16,6 +17,12 @@ namespace probecycle {
 
 // `probecycle-cli evaluate` output: cycle_time_s, overtravel_mm, ... phases, warnings.
 std::string evaluation_to_json(const Analysis& analysis);
+
+// `probecycle-cli move`: time_s, peak_speed_mm_min, accel_model of one
+// rest-to-rest move (distance in mm, feed in mm/min).
+std::string move_to_json(const MotionLimits& limits, double distance_mm, double feed_mm_min);
+// `probecycle-cli montecarlo`: the options and the histogram.
+std::string monte_carlo_to_json(const MonteCarloOptions& options, const Histogram& histogram);
 
 // Header: feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm,<one column per phase>.
 std::string sweep_to_csv(const SweepResult& sweep);
