@@ -187,13 +187,17 @@ void replace_text_undoably(QPlainTextEdit* editor, const QString& text) {
 
 std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& path,
                                        QString& error) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    // Core's reader, as the CLI's: the same size limit (a 1 GB file once ended
+    // in bad_alloc) and the same reasons, translated.
+    std::string bytes;
+    try {
+        bytes = read_text_file(QFile::encodeName(path).toStdString());
+    } catch (const FileError& e) {
         error = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "%1 could not be read: %2"))
-                    .arg(QFileInfo(path).fileName(), file.errorString());
+                    .arg(QFileInfo(path).fileName(), translate(e.reason()));
         return std::nullopt;
     }
-    const QString text = QString::fromUtf8(file.readAll());
+    const QString text = QString::fromStdString(bytes);
     replace_text_undoably(editor, text);
     return text;
 }

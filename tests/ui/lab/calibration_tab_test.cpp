@@ -165,6 +165,30 @@ TEST_F(LabCalibrationTab, BadImportKeepsThePastedPointsOneUndoAway) {
     EXPECT_EQ(tab_.points_text(), pasted);
 }
 
+// The import reads through core's bounded reader: a folder or a file over
+// the limit is refused with the reason, and what was pasted stays.
+TEST_F(LabCalibrationTab, AFolderOrAFileOverTheLimitIsRefusedAndThePastedPointsStay) {
+    const QString pasted = read_file(lab_data("lab_ring.csv"));
+    tab_.set_points_text(pasted);
+    QTemporaryDir dir;
+    EXPECT_FALSE(tab_.import_file(dir.path()));
+    EXPECT_TRUE(tab_.last_error().contains(QStringLiteral("directory")))
+        << tab_.last_error().toStdString();
+    const QString big = dir.filePath(QStringLiteral("big.csv"));
+    {
+        QFile file(big);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        const QByteArray line("0,10.0,0.0\n");
+        QByteArray chunk;
+        for (int i = 0; i < 100000; ++i) chunk += line;
+        while (file.size() <= 17 * 1024 * 1024) file.write(chunk);
+    }
+    EXPECT_FALSE(tab_.import_file(big));
+    EXPECT_TRUE(tab_.last_error().contains(QStringLiteral("MiB")))
+        << tab_.last_error().toStdString();
+    EXPECT_EQ(tab_.points_text(), pasted);
+}
+
 TEST_F(LabCalibrationTab, EveryBadFileIsAClearError) {
     struct Case {
         const char* file;
