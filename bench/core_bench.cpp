@@ -7,10 +7,10 @@
 #include <random>
 #include <vector>
 
+#include "core/common/units.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/motion.h"
 #include "core/cycle/sweep.h"
-#include "core/common/units.h"
 
 namespace {
 

@@ -167,8 +167,8 @@ void WarningsPanel::show_result(const Computed& c) {
     if (!c.valid()) {
         for (const FieldError& e : c.errors) {
             show_row(n++, QStringLiteral("invalid:") + QString::fromStdString(e.key),
-                     Severity::error, tr("Invalid scenario"), translate(e.to_message()),
-                     Fix::none, {});
+                     Severity::error, tr("Invalid scenario"), translate(e.to_message()), Fix::none,
+                     {});
         }
     } else {
         for (const Warning& w : c.cycle().warnings()) {

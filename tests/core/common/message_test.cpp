@@ -51,8 +51,7 @@ TEST(RenderArg, SignificantDigitsWithoutTrailingZeros) {
     EXPECT_EQ(render_arg(significant_arg("runout_mm", ArgKind::length_mm, 0.00360555, 4)),
               "0.003606 mm");
     EXPECT_EQ(render_arg(significant_arg("radius_mm", ArgKind::length_mm, 22.0, 4)), "22 mm");
-    EXPECT_EQ(render_arg(significant_arg("delay_s", ArgKind::delay_s, 0.0051234, 3)),
-              "5.12 ms");
+    EXPECT_EQ(render_arg(significant_arg("delay_s", ArgKind::delay_s, 0.0051234, 3)), "5.12 ms");
     EXPECT_EQ(render_arg(significant_arg("ratio", ArgKind::number, 3.0, 3)), "3");
 }
 

@@ -1,5 +1,5 @@
-#include "core/common/file_io.h"
 #include "core/cycle/cycle_report.h"
+#include "core/common/file_io.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
+#include "core/common/units.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
-#include "core/common/units.h"
 
 namespace probecycle {
 namespace {

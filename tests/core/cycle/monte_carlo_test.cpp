@@ -8,9 +8,9 @@
 #include <numeric>
 #include <string>
 
+#include "core/common/units.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/scenario.h"
-#include "core/common/units.h"
 
 namespace probecycle {
 namespace {

@@ -11,9 +11,9 @@
 #include <tuple>
 #include <vector>
 
+#include "core/common/units.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/scenario.h"
-#include "core/common/units.h"
 
 namespace probecycle {
 namespace {

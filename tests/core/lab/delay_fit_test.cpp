@@ -358,7 +358,6 @@ TEST_P(DelayFileErrors, NameTheLine) {
     }
 }
 
-
 constexpr const char* kHeader = "axis,direction,feed_mm_min,measured_mm\n";
 
 // clang-format off

@@ -6,24 +6,24 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileInfo>
 #include <QMenuBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSlider>
 #include <QTabWidget>
-#include <QDir>
-#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <map>
 #include <string>
 
-#include "ui/lab/latency_tab.h"
-#include "ui/common/language.h"
 #include "core/cycle/cycle_report.h"
 #include "core/cycle/scenario.h"
+#include "ui/common/language.h"
+#include "ui/lab/latency_tab.h"
 
 namespace probecycle::ui {
 namespace {
