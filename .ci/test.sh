@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# Sets up a fresh Debian 12 machine and passes every test: the full build with
-# warnings as errors under ctest (offscreen), then the core and CLI tests
-# again under AddressSanitizer and UndefinedBehaviorSanitizer.
+# Sets up a fresh Debian 12 machine and passes every test: formatting, the
+# full build with warnings as errors under ctest (offscreen), clang-tidy, the
+# core and CLI tests again under AddressSanitizer and UndefinedBehaviorSanitizer,
+# and each libFuzzer target for a bounded time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash .ci/install-deps.sh
 jobs=$(nproc)
 export QT_QPA_PLATFORM=offscreen
+
+tools/check_format.sh
 
 cmake -S . -B build-ci -DCMAKE_BUILD_TYPE=Release -DPROBECYCLE_WARNINGS_AS_ERRORS=ON
 cmake --build build-ci -j"$jobs"
@@ -14,8 +17,17 @@ ctest --test-dir build-ci --output-on-failure -j"$jobs"
 # The benchmarks must still run (figures are taken separately, see README).
 build-ci/bench/probecycle-bench --benchmark_min_time=0.01 >/dev/null
 
+tools/run_clang_tidy.sh build-ci
+
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPROBECYCLE_SANITIZE=ON \
   -DPROBECYCLE_BUILD_UI=OFF -DPROBECYCLE_BUILD_BENCH=OFF -DPROBECYCLE_WARNINGS_AS_ERRORS=ON
 cmake --build build-sanitize -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1:halt_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build-sanitize --output-on-failure -j"$jobs"
+
+# Fuzzing: clang with libFuzzer, ASan and UBSan; 20 s a target (README: longer runs).
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DPROBECYCLE_BUILD_FUZZ=ON -DPROBECYCLE_BUILD_UI=OFF -DPROBECYCLE_BUILD_TESTS=OFF \
+  -DPROBECYCLE_BUILD_BENCH=OFF -DPROBECYCLE_WARNINGS_AS_ERRORS=ON
+cmake --build build-fuzz -j"$jobs"
+tools/run_fuzzers.sh build-fuzz 20

@@ -54,9 +54,7 @@ std::string failure_text(const CLI::Error& e) {
     return text;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
     using namespace probecycle;
     CLI::App app(
         "probecycle-cli: cycle time, overtravel and uncertainty of touch-trigger probing "
@@ -82,7 +80,7 @@ int main(int argc, char** argv) {
     // An unknown command or verb: say which are allowed.
     const std::string command = args[0];  // a copy: CLI11 consumes args
     const std::vector<std::string> commands = subcommand_names(app);
-    if (command.rfind("-", 0) != 0 && !is_one_of(command, commands)) {
+    if (command.rfind('-', 0) != 0 && !is_one_of(command, commands)) {
         std::cerr << "probecycle-cli: unknown command '" << command
                   << "'; allowed: " << joined(commands) << '\n';
         return 2;
@@ -94,7 +92,7 @@ int main(int argc, char** argv) {
                       << ": missing what to do; allowed: " << joined(verbs) << '\n';
             return 2;
         }
-        if (args[1].rfind("-", 0) != 0 && !is_one_of(args[1], verbs)) {
+        if (args[1].rfind('-', 0) != 0 && !is_one_of(args[1], verbs)) {
             std::cerr << "probecycle-cli " << command << ": unknown "
                       << (command == "calibrate" ? "calibration" : "latency command") << " '"
                       << args[1] << "'; allowed: " << joined(verbs) << '\n';
@@ -115,6 +113,19 @@ int main(int argc, char** argv) {
         std::cerr << "probecycle-cli: invalid scenario:\n" << e.what() << '\n';
     } catch (const std::exception& e) {
         std::cerr << "probecycle-cli " << command << ": " << e.what() << '\n';
+    }
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {  // e.g. out of memory while setting up
+        std::cerr << "probecycle-cli: " << e.what() << '\n';
+    } catch (...) {
+        std::cerr << "probecycle-cli: an unexpected error\n";
     }
     return 2;
 }

@@ -25,6 +25,7 @@ constexpr std::array kFeatures = {Feature::surface, Feature::web, Feature::pocke
 template <typename Enum, std::size_t N>
 std::vector<std::string> enum_words(const std::array<Enum, N>& values) {
     std::vector<std::string> words;
+    words.reserve(N);
     for (const Enum v : values) words.emplace_back(to_string(v));
     return words;
 }
@@ -70,7 +71,7 @@ KeyEntry word(KeyInfo info, std::vector<std::string> words, std::string (*get)(c
     return e;
 }
 
-#define PC_NUMBER(section, field) [](Scenario& s) -> double& { return s.section.field; }
+#define PC_NUMBER(section, field) ([](Scenario& s) -> double& { return s.section.field; })
 
 // The one table of scenario keys, in file order. Ranges are what a real
 // machine or probe can plausibly have; zero is allowed where delays and
@@ -541,7 +542,9 @@ Scenario merge_json(const Scenario& base, std::string_view text) {
             continue;
         }
         for (const auto& [name, value] : body.items()) {
-            const std::string dotted = section + "." + name;
+            std::string dotted = section;
+            dotted += '.';
+            dotted += name;
             const KeyEntry* e = find_entry(dotted);
             if (e == nullptr) {
                 errors.push_back({dotted, "", unknown_key(section, join(keys))});

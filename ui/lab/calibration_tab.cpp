@@ -445,9 +445,7 @@ void CalibrationTab::set_error(const QString& text) {
 }
 
 void CalibrationTab::show_result() {
-    for (int i = 0; i < row_count; ++i) {
-        result_values_[i]->setText(result_ ? QString() : QStringLiteral("—"));
-    }
+    for (QLabel* value : result_values_) value->setText(result_ ? QString() : QStringLiteral("—"));
     std::vector<LabWarningList::Item> items;
     if (result_) {
         const RingCalibration& r = *result_;
