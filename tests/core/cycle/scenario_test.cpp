@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -745,6 +746,34 @@ TEST(ApplySetting, NegativeZeroIsWrittenAsZero) {
     Scenario direct;
     set_number(direct, "cycle.backoff_mm", -0.0);
     EXPECT_FALSE(std::signbit(direct.cycle.backoff_mm));
+}
+
+// The README's table of keys tells the same story as the key table: every
+// key, with its default, and no other.
+TEST(KeyTable, TheReadmeListsEveryKeyWithItsDefault) {
+    std::ifstream in(PROBECYCLE_README_PATH);
+    ASSERT_TRUE(in) << PROBECYCLE_README_PATH;
+    std::map<std::string, std::string> rows;  // key -> default column
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("| `", 0) != 0) continue;
+        const std::size_t key_end = line.find("` |", 3);
+        const std::size_t default_end = line.find(" |", key_end + 3);
+        if (key_end == std::string::npos || default_end == std::string::npos) continue;
+        const std::string key = line.substr(3, key_end - 3);
+        if (key.find('.') == std::string::npos) continue;
+        std::string value = line.substr(key_end + 4, default_end - key_end - 4);
+        value.erase(std::remove(value.begin(), value.end(), '`'), value.end());
+        rows[key] = value;
+    }
+    const Scenario defaults;
+    for (const KeyInfo& key : scenario_keys()) {
+        const auto it = rows.find(key.key);
+        ASSERT_NE(it, rows.end()) << key.key << " is not in the README's key table";
+        EXPECT_EQ(it->second, value_text(defaults, key)) << key.key;
+        rows.erase(it);
+    }
+    for (const auto& [key, value] : rows) ADD_FAILURE() << key << " is in the README but not a key";
 }
 
 }  // namespace
