@@ -465,11 +465,11 @@
     </message>
     <message>
         <source>Start distance in front of the nominal surface. Must cover the part&apos;s position uncertainty, and should cover the distance needed to reach the feed so the touch happens at full speed. Approached at the probing feed, returned at the return feed.</source>
-        <translation>Расстояние от начальной точки до номинальной поверхности. Должно перекрывать неопределённость положения детали и путь разгона до подачи, чтобы касание происходило на полной скорости. Подход — на подаче измерения, возврат — на подаче возврата.</translation>
+        <translation>Расстояние от начальной точки до номинальной поверхности. Должно перекрывать неопределённость положения детали и путь разгона до подачи, чтобы касание происходило на полной скорости. Подход — на подаче поиска, возврат — на подаче возврата.</translation>
     </message>
     <message>
         <source>Probing feedrate</source>
-        <translation>Скорость подачи измерения</translation>
+        <translation>Скорость подачи поиска</translation>
     </message>
     <message>
         <source>Feed of the (first) touch; single-touch measures at it. A higher feed shortens the approach but lengthens the braking, the overtravel and the return, and raises the single-touch uncertainty.</source>
@@ -477,7 +477,7 @@
     </message>
     <message>
         <source>Measuring feedrate</source>
-        <translation>Подача второго касания</translation>
+        <translation>Измерительная подача</translation>
     </message>
     <message>
         <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the second approach, backoff less the first overtravel, is travelled at it.</source>
@@ -589,7 +589,7 @@
     </message>
     <message>
         <source>Single-touch measures at the probing feed. Two-touch finds the surface fast, backs off, and measures with a slow second touch.</source>
-        <translation>Однократное касание измеряет на подаче измерения. Двукратное быстро находит поверхность, отводится и измеряет медленным вторым касанием.</translation>
+        <translation>Однократное касание измеряет на подаче поиска. Двукратное быстро находит поверхность, отводится и измеряет медленным вторым касанием.</translation>
     </message>
     <message>
         <source>Strategy</source>
@@ -715,11 +715,11 @@
     </message>
     <message>
         <source>Probing feed %1 is beyond the knee at %2 and no faster: the cycle takes %3 longer, with more overtravel and uncertainty</source>
-        <translation>Подача измерения %1 выше точки перегиба %2 и не быстрее: цикл длится на %3 дольше, с большим перебегом и неопределённостью</translation>
+        <translation>Подача поиска %1 выше точки перегиба %2 и не быстрее: цикл длится на %3 дольше, с большим перебегом и неопределённостью</translation>
     </message>
     <message>
         <source>Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 (under 1 %) while overtravel and uncertainty grow</source>
-        <translation>Подача измерения %1 выше точки перегиба %2: прибавка подачи экономит лишь %3 (менее 1 %), а перебег и неопределённость растут</translation>
+        <translation>Подача поиска %1 выше точки перегиба %2: прибавка подачи экономит лишь %3 (менее 1 %), а перебег и неопределённость растут</translation>
     </message>
     <message>
         <source>Uncertainty %1 exceeds the target %2</source>
@@ -1058,7 +1058,7 @@
     </message>
     <message>
         <source>The programmed probing feed.</source>
-        <translation>Запрограммированная подача измерения.</translation>
+        <translation>Запрограммированная подача поиска.</translation>
     </message>
     <message>
         <source>The control&apos;s interpolation cycle.</source>
@@ -1134,11 +1134,11 @@
     <name>probecycle::ui::CycleCharts</name>
     <message>
         <source>Probing feedrate [%1]</source>
-        <translation>Подача измерения [%1]</translation>
+        <translation>Подача поиска [%1]</translation>
     </message>
     <message>
         <source>Cycle time vs probing feedrate</source>
-        <translation>Время цикла в зависимости от подачи</translation>
+        <translation>Время цикла в зависимости от подачи поиска</translation>
     </message>
     <message>
         <source>Cycle time [%1]</source>
@@ -1222,7 +1222,7 @@
     </message>
     <message>
         <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest feed within 1 % of the best time.</source>
-        <translation>Время всего цикла в зависимости от подачи измерения для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая подача, время цикла на которой не более чем на 1 % хуже лучшего.</translation>
+        <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая подача, время цикла на которой не более чем на 1 % хуже лучшего.</translation>
     </message>
     <message>
         <source>The phases of the current cycle in time order, each row with its total time over all touches.</source>
@@ -1897,7 +1897,7 @@
     </message>
     <message>
         <source>The lowest probing feed whose cycle time is within 1 % of the best: faster buys almost no time.</source>
-        <translation>Наименьшая подача измерения, время цикла на которой не более чем на 1 % хуже лучшего: быстрее почти не выигрывает времени.</translation>
+        <translation>Наименьшая подача поиска, время цикла на которой не более чем на 1 % хуже лучшего: быстрее почти не выигрывает времени.</translation>
     </message>
     <message>
         <source>invalid scenario</source>

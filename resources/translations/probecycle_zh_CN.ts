@@ -465,11 +465,11 @@
     </message>
     <message>
         <source>Start distance in front of the nominal surface. Must cover the part&apos;s position uncertainty, and should cover the distance needed to reach the feed so the touch happens at full speed. Approached at the probing feed, returned at the return feed.</source>
-        <translation>起始点到名义表面的距离。必须覆盖工件位置的不确定性，并应覆盖达到进给率所需的距离，使触测以全速发生。以测量进给率接近，以返回进给率返回。</translation>
+        <translation>起始点到名义表面的距离。必须覆盖工件位置的不确定性，并应覆盖达到进给率所需的距离，使触测以全速发生。以探测进给率接近，以返回进给率返回。</translation>
     </message>
     <message>
         <source>Probing feedrate</source>
-        <translation>测量进给率</translation>
+        <translation>探测进给率</translation>
     </message>
     <message>
         <source>Feed of the (first) touch; single-touch measures at it. A higher feed shortens the approach but lengthens the braking, the overtravel and the return, and raises the single-touch uncertainty.</source>
@@ -477,7 +477,7 @@
     </message>
     <message>
         <source>Measuring feedrate</source>
-        <translation>第二次触测进给率</translation>
+        <translation>测量进给率</translation>
     </message>
     <message>
         <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the second approach, backoff less the first overtravel, is travelled at it.</source>
@@ -589,7 +589,7 @@
     </message>
     <message>
         <source>Single-touch measures at the probing feed. Two-touch finds the surface fast, backs off, and measures with a slow second touch.</source>
-        <translation>一次触发以测量进给率测量。二次触发先快速找到表面，回退，再以慢速的第二次触测进行测量。</translation>
+        <translation>一次触发以探测进给率测量。二次触发先快速找到表面，回退，再以慢速的第二次触测进行测量。</translation>
     </message>
     <message>
         <source>Strategy</source>
@@ -715,11 +715,11 @@
     </message>
     <message>
         <source>Probing feed %1 is beyond the knee at %2 and no faster: the cycle takes %3 longer, with more overtravel and uncertainty</source>
-        <translation>测量进给率 %1 超过拐点 %2 且并不更快：循环多用 %3，过行程和不确定度也更大</translation>
+        <translation>探测进给率 %1 超过拐点 %2 且并不更快：循环多用 %3，过行程和不确定度也更大</translation>
     </message>
     <message>
         <source>Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 (under 1 %) while overtravel and uncertainty grow</source>
-        <translation>测量进给率 %1 超过拐点 %2：额外的进给率只节省 %3（不到 1 %），而过行程和不确定度都在增大</translation>
+        <translation>探测进给率 %1 超过拐点 %2：额外的进给率只节省 %3（不到 1 %），而过行程和不确定度都在增大</translation>
     </message>
     <message>
         <source>Uncertainty %1 exceeds the target %2</source>
@@ -1058,7 +1058,7 @@
     </message>
     <message>
         <source>The programmed probing feed.</source>
-        <translation>编程的测量进给率。</translation>
+        <translation>编程的探测进给率。</translation>
     </message>
     <message>
         <source>The control&apos;s interpolation cycle.</source>
@@ -1134,11 +1134,11 @@
     <name>probecycle::ui::CycleCharts</name>
     <message>
         <source>Probing feedrate [%1]</source>
-        <translation>测量进给率 [%1]</translation>
+        <translation>探测进给率 [%1]</translation>
     </message>
     <message>
         <source>Cycle time vs probing feedrate</source>
-        <translation>循环时间与测量进给率</translation>
+        <translation>循环时间与探测进给率</translation>
     </message>
     <message>
         <source>Cycle time [%1]</source>
@@ -1222,7 +1222,7 @@
     </message>
     <message>
         <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest feed within 1 % of the best time.</source>
-        <translation>整个循环的循环时间与测量进给率的关系，一次触发和二次触发，其余参数不变。竖线：当前进给率。圆点：拐点，即循环时间在最佳值 1 % 以内的最低进给率。</translation>
+        <translation>整个循环的循环时间与探测进给率的关系，一次触发和二次触发，其余参数不变。竖线：当前进给率。圆点：拐点，即循环时间在最佳值 1 % 以内的最低进给率。</translation>
     </message>
     <message>
         <source>The phases of the current cycle in time order, each row with its total time over all touches.</source>
@@ -1897,7 +1897,7 @@
     </message>
     <message>
         <source>The lowest probing feed whose cycle time is within 1 % of the best: faster buys almost no time.</source>
-        <translation>循环时间在最佳值 1 % 以内的最低测量进给率：更快几乎不再节省时间。</translation>
+        <translation>循环时间在最佳值 1 % 以内的最低探测进给率：更快几乎不再节省时间。</translation>
     </message>
     <message>
         <source>invalid scenario</source>
