@@ -15,24 +15,10 @@ std::string range_text(double min, double max) {
     return "a number from " + format_number(min) + " to " + format_number(max);
 }
 
-// The whole text as a decimal number: no hex, no sign '+', no inf or nan.
-std::optional<double> decimal(const std::string& text) {
-    if (text.empty() || (text.size() > 1 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X'))) {
-        return std::nullopt;
-    }
-    double value = 0.0;
-    const auto [end, ec] =
-        std::from_chars(text.data(), text.data() + text.size(), value, std::chars_format::general);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
-        return std::nullopt;
-    }
-    return value;
-}
-
 }  // namespace
 
 std::optional<std::string> number_problem(const std::string& text, double min, double max) {
-    const std::optional<double> value = decimal(text);
+    const std::optional<double> value = parse_decimal(text);
     if (value && *value >= min && *value <= max) return std::nullopt;
     return "got '" + text + "'; allowed: " + range_text(min, max);
 }
@@ -51,11 +37,11 @@ std::optional<std::string> integer_problem(const std::string& text, long long mi
 double parse_number(const std::string& text, const std::string& name, double min, double max) {
     if (const auto problem = number_problem(text, min, max))
         throw UsageError(name + ": " + *problem);
-    return *decimal(text);
+    return *parse_decimal(text);
 }
 
 double NumberArg::value() const {
-    return *decimal(text);  // checked by the option's validator
+    return *parse_decimal(text);  // checked by the option's validator
 }
 
 std::optional<double> NumberArg::optional() const {

@@ -29,11 +29,7 @@ std::string FieldError::message() const {
 }
 
 Message allowed_text(const char* code, const char* text) {
-    Message m;
-    m.code = code;
-    m.context = "FieldError";
-    m.text = text;
-    return m;
+    return make_message(code, "FieldError", text);
 }
 
 }  // namespace probecycle

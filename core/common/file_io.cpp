@@ -30,11 +30,7 @@ Message file_message(FileError::Action action, const std::string& path, const Me
 }
 
 Message reason(const char* code, const char* text) {
-    Message m;
-    m.code = code;
-    m.context = "FileError";
-    m.text = text;
-    return m;
+    return make_message(code, "FileError", text);
 }
 
 // The system's own words for an errno value (not translated: they come from

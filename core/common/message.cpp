@@ -7,6 +7,14 @@
 
 namespace probecycle {
 
+Message make_message(std::string code, const char* context, const char* text) {
+    Message m;
+    m.code = std::move(code);
+    m.context = context;
+    m.text = text;
+    return m;
+}
+
 MessageArg arg(std::string name, ArgKind kind, double value, int decimals) {
     MessageArg a;
     a.name = std::move(name);

@@ -62,6 +62,9 @@ struct Message {
     std::vector<MessageArg> args;
 };
 
+// A message without arguments yet: its code, the template's context and text.
+Message make_message(std::string code, const char* context, const char* text);
+
 // Argument builders: number(name, kind, value[, decimals]) and text(name, value).
 MessageArg arg(std::string name, ArgKind kind, double value, int decimals = -1);
 // A number written in English to `significant` significant digits ("0.0036 mm").

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -345,24 +344,6 @@ Message with_detail(const char* code, const char* text, std::string detail) {
 // -0 and +0 are one value; the files and reports write 0.
 double without_negative_zero(double value) {
     return value == 0.0 ? 0.0 : value;
-}
-
-// A decimal number, the whole text (white space around it ignored): no hex,
-// no "inf" or "nan", nothing that does not fit a double.
-std::optional<double> parse_decimal(std::string_view text) {
-    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
-    while (!text.empty() && space(text.front())) text.remove_prefix(1);
-    while (!text.empty() && space(text.back())) text.remove_suffix(1);
-    if (text.empty() || (text.size() > 1 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X'))) {
-        return std::nullopt;
-    }
-    double value = 0.0;
-    const auto [end, ec] =
-        std::from_chars(text.data(), text.data() + text.size(), value, std::chars_format::general);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
-        return std::nullopt;
-    }
-    return value;
 }
 
 // Deeper than a scenario needs (root, section, value, and one more so that a
