@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "core/common/csv_reader.h"
-#include "core/lab/lab_error.h"
+#include "core/common/input_error.h"
 
 namespace probecycle {
 
@@ -407,7 +407,7 @@ RingCalibration calibrate_ring(std::span<const RingPoint> points,
     const double gauge_radius_mm = options.gauge_diameter_mm / 2.0;
     result.effective_radius_mm = gauge_radius_mm - centre.mean_radius_mm;
     if (!(result.effective_radius_mm > 0.0)) {
-        throw LabError(calibration_message(
+        throw InputError(calibration_message(
             "radius_outside_gauge",
             QT_TRANSLATE_NOOP("Calibration",
                               "the touches lie on a circle of radius %1, not inside the gauge of "
@@ -427,7 +427,7 @@ RingCalibration calibrate_ring(std::span<const RingPoint> points,
 
 LengthCalibration calibrate_length(const LengthCalibrationInput& input) {
     if (input.trigger_z_mm.empty()) {
-        throw LabError(calibration_message(
+        throw InputError(calibration_message(
             "no_trigger_z",
             QT_TRANSLATE_NOOP("Calibration", "no trigger Z given; touch the surface at least once"),
             {}));
@@ -445,7 +445,7 @@ LengthCalibration calibrate_length(const LengthCalibrationInput& input) {
     result.effective_length_mm =
         input.active_length_mm + result.trigger_z_mean_mm - input.surface_z_mm;
     if (!(result.effective_length_mm > 0.0)) {
-        throw LabError(calibration_message(
+        throw InputError(calibration_message(
             "length_not_positive",
             QT_TRANSLATE_NOOP("Calibration",
                               "effective length %1 is not positive: with Z up, the trigger Z plus "

@@ -101,7 +101,7 @@ std::vector<RingPoint> parse_ring_csv(std::string_view text);
 
 // Fits and evaluates, by the steps below. Throws CsvError (naming the lines)
 // when an orientation has fewer than 3 points, or its points lie on a line, and
-// LabError (a std::invalid_argument) when the fitted radius is not inside the
+// InputError (a std::invalid_argument) when the fitted radius is not inside the
 // gauge (effective radius not positive).
 RingCalibration calibrate_ring(std::span<const RingPoint> points,
                                const RingCalibrationOptions& options);
@@ -191,7 +191,7 @@ struct LengthCalibration {
     std::vector<CalibrationWarning> warnings;
 };
 
-// Throws LabError (a std::invalid_argument) with no touch, or when the length is
+// Throws InputError (a std::invalid_argument) with no touch, or when the length is
 // not positive.
 LengthCalibration calibrate_length(const LengthCalibrationInput& input);
 

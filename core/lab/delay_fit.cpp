@@ -10,7 +10,7 @@
 
 #include "core/common/csv_reader.h"
 #include "core/common/units.h"
-#include "core/lab/lab_error.h"
+#include "core/common/input_error.h"
 
 namespace probecycle {
 
@@ -365,7 +365,7 @@ DelayFit fit_delay(std::span<const DelayTouch> touches, const DelayFitOptions& o
 
 ChosenGroup choose_group(const DelayFit& fit, const std::optional<std::string>& name) {
     if (fit.groups.empty()) {
-        throw LabError(delay_message(
+        throw InputError(delay_message(
             "no_groups", QT_TRANSLATE_NOOP("DelayFit", "the fit has no groups of touches"), {}));
     }
     if (name) {
@@ -382,7 +382,7 @@ ChosenGroup choose_group(const DelayFit& fit, const std::optional<std::string>& 
             if (!available.empty()) available += ", ";
             available += g.name();
         }
-        throw LabError(delay_message(
+        throw InputError(delay_message(
             "unknown_group",
             QT_TRANSLATE_NOOP("DelayFit", "got '%1'; allowed: a group of the file (%2)"),
             {text_arg("group", *name), text_arg("groups", available)}));
@@ -420,7 +420,7 @@ AppliedDelay controller_latency_from_fit(const DelayFit& fit, const Scenario& sc
     applied.controller_latency_s =
         applied.total_delay_s - applied.interface_delay_s - applied.half_scan_s;
     if (applied.controller_latency_s < 0.0) {
-        throw LabError(delay_message(
+        throw InputError(delay_message(
             "negative_latency",
             QT_TRANSLATE_NOOP("DelayFit",
                               "the fitted delay of %1, %2, is shorter than the scenario's "

@@ -112,7 +112,7 @@ struct AppliedDelay {
 };
 // The group whose delay goes into the scenario: the named one
 // (case-insensitive), the only one, or else the one with the longest delay.
-// Throws LabError (a std::invalid_argument) for an unknown name or a fit with
+// Throws InputError (a std::invalid_argument) for an unknown name or a fit with
 // no groups.
 struct ChosenGroup {
     const DelayGroup* group{nullptr};
@@ -123,7 +123,7 @@ ChosenGroup choose_group(const DelayFit& fit, const std::optional<std::string>& 
 // Uses the named group (case-insensitive), the only group, or else the
 // longest delay: the scenario has one controller latency for every axis, and
 // the longest gives the longest overtravel (the safe side for the stylus).
-// Throws LabError (a std::invalid_argument) naming the problem: an unknown
+// Throws InputError (a std::invalid_argument) naming the problem: an unknown
 // group, a fit with no groups, or a delay shorter than t_i + t_s/2 (a negative
 // latency).
 AppliedDelay controller_latency_from_fit(const DelayFit& fit, const Scenario& scenario,

@@ -403,17 +403,17 @@ TEST(LabLatencyCompensate, SixteenBitCounterWrapsDuringTheLag) {
 // ---------------------------------------------------------------------------
 // Bad input: exit 2, nothing on stdout, a message naming the line or option.
 
-struct LabErrorCase {
+struct InputErrorCase {
     const char* name;
     std::string arguments;
     const char* says;
 };
 // Test names in ctest show the case name, not the bytes.
-void PrintTo(const LabErrorCase& c, std::ostream* os) {
+void PrintTo(const InputErrorCase& c, std::ostream* os) {
     *os << c.name;
 }
 
-class LabCliErrors : public testing::TestWithParam<LabErrorCase> {};
+class LabCliErrors : public testing::TestWithParam<InputErrorCase> {};
 
 TEST_P(LabCliErrors, ExitTwoAndNameTheProblem) {
     const auto& c = GetParam();
@@ -434,33 +434,33 @@ std::string lab_fit(const char* file) {
 INSTANTIATE_TEST_SUITE_P(
     Lab, LabCliErrors,
     testing::Values(
-        LabErrorCase{"RingTextInNumber",     lab_ring("lab_ring_text_in_number.csv"),                                          "lab_ring_text_in_number.csv: line 4, column y_mm: 'abc' is not a number"},
-        LabErrorCase{"RingMissingColumn",    lab_ring("lab_ring_missing_column.csv"),                                          "line 1: missing column 'y_mm'"},
-        LabErrorCase{"RingOnePoint",         lab_ring("lab_ring_one_point.csv"),                                               "line 2: orientation 0 deg has only 1 point"},
-        LabErrorCase{"RingEmpty",            lab_ring("lab_ring_empty.csv"),                                                   "the file is empty"},
-        LabErrorCase{"RingNoFile",           lab_ring("lab_no_such_file.csv"),                                                 "lab_no_such_file.csv"},
-        LabErrorCase{"RingNoGauge",          "calibrate ring " + lab_quote(lab_data("lab_ring.csv")),                          "missing required option --gauge-diameter"},
-        LabErrorCase{"RingGaugeText",        lab_ring("lab_ring.csv") + " --gauge-diameter abc",                               "--gauge-diameter: got 'abc'"},
-        LabErrorCase{"RingGaugeTooSmall",    "calibrate ring " + lab_quote(lab_data("lab_ring.csv")) + " --gauge-diameter 25", "check the gauge diameter"},
-        LabErrorCase{"RingNoInput",          "calibrate ring --gauge-diameter 50",                                             "missing the input file"},
-        LabErrorCase{"CalibrateWhat",        "calibrate sphere",                                                               "allowed: ring, length"},
-        LabErrorCase{"LengthBelowSurface",   "calibrate length --surface-z 25 --trigger-z 20",                                 "not positive"},
-        LabErrorCase{"LengthNoTouch",        "calibrate length --surface-z 25",                                                "--trigger-z"},
-        LabErrorCase{"FitOneFeed",           lab_fit("lab_delay_one_feed.csv"),                                                "line 2, column feed_mm_min: X+: all 4 touches are at one feed"},
-        LabErrorCase{"FitTextInNumber",      lab_fit("lab_delay_text_in_number.csv"),                                          "line 3, column feed_mm_min: 'fast' is not a number"},
-        LabErrorCase{"FitMissingColumn",     lab_fit("lab_delay_missing_column.csv"),                                          "line 1: missing column 'direction'"},
-        LabErrorCase{"FitEmpty",             lab_fit("lab_ring_empty.csv"),                                                    "the file is empty"},
-        LabErrorCase{"FitRingFile",          lab_fit("lab_ring.csv"),                                                          "missing column 'axis'"},
-        LabErrorCase{"FitBadPeriod",         lab_fit("lab_delay.csv") + " --interpolation-period-s 0",                         "--interpolation-period-s: got '0'"},
-        LabErrorCase{"FitGroupWithoutApply", lab_fit("lab_delay.csv") + " --group X+",                                         "--apply-to"},
-        LabErrorCase{"LatencyWhat",          "latency measure",                                                                "allowed: fit, compensate"},
-        LabErrorCase{"CompensateLag",        "latency compensate --lag-cycles 50",                                             "--lag-cycles: got '50'; allowed: a whole number from 0 to 49"},
-        LabErrorCase{"CompensateTouch",      "latency compensate --touch slow",                                                "allowed: constant, braking"},
-        LabErrorCase{"CompensateFraction",   "latency compensate --speed-fraction 0.5",                                        "--touch braking"},
-        LabErrorCase{"CompensatePhase",      "latency compensate --trigger-phase 1",                                           "--trigger-phase"},
-        LabErrorCase{"CompensateCounter",    "latency compensate --counter-bits 16 --counter-at-zero 70000",                     "from 0 to 65535"},
-        LabErrorCase{"CompensateNarrow",     "latency compensate --counter-bits 16 --counts-per-mm 1e7 --feed 100000",         "--counter-bits"},
-        LabErrorCase{"CompensateScenario",   "latency compensate --set machine.scan_period_s=5",                               "machine.scan_period_s"}),
+        InputErrorCase{"RingTextInNumber",     lab_ring("lab_ring_text_in_number.csv"),                                          "lab_ring_text_in_number.csv: line 4, column y_mm: 'abc' is not a number"},
+        InputErrorCase{"RingMissingColumn",    lab_ring("lab_ring_missing_column.csv"),                                          "line 1: missing column 'y_mm'"},
+        InputErrorCase{"RingOnePoint",         lab_ring("lab_ring_one_point.csv"),                                               "line 2: orientation 0 deg has only 1 point"},
+        InputErrorCase{"RingEmpty",            lab_ring("lab_ring_empty.csv"),                                                   "the file is empty"},
+        InputErrorCase{"RingNoFile",           lab_ring("lab_no_such_file.csv"),                                                 "lab_no_such_file.csv"},
+        InputErrorCase{"RingNoGauge",          "calibrate ring " + lab_quote(lab_data("lab_ring.csv")),                          "missing required option --gauge-diameter"},
+        InputErrorCase{"RingGaugeText",        lab_ring("lab_ring.csv") + " --gauge-diameter abc",                               "--gauge-diameter: got 'abc'"},
+        InputErrorCase{"RingGaugeTooSmall",    "calibrate ring " + lab_quote(lab_data("lab_ring.csv")) + " --gauge-diameter 25", "check the gauge diameter"},
+        InputErrorCase{"RingNoInput",          "calibrate ring --gauge-diameter 50",                                             "missing the input file"},
+        InputErrorCase{"CalibrateWhat",        "calibrate sphere",                                                               "allowed: ring, length"},
+        InputErrorCase{"LengthBelowSurface",   "calibrate length --surface-z 25 --trigger-z 20",                                 "not positive"},
+        InputErrorCase{"LengthNoTouch",        "calibrate length --surface-z 25",                                                "--trigger-z"},
+        InputErrorCase{"FitOneFeed",           lab_fit("lab_delay_one_feed.csv"),                                                "line 2, column feed_mm_min: X+: all 4 touches are at one feed"},
+        InputErrorCase{"FitTextInNumber",      lab_fit("lab_delay_text_in_number.csv"),                                          "line 3, column feed_mm_min: 'fast' is not a number"},
+        InputErrorCase{"FitMissingColumn",     lab_fit("lab_delay_missing_column.csv"),                                          "line 1: missing column 'direction'"},
+        InputErrorCase{"FitEmpty",             lab_fit("lab_ring_empty.csv"),                                                    "the file is empty"},
+        InputErrorCase{"FitRingFile",          lab_fit("lab_ring.csv"),                                                          "missing column 'axis'"},
+        InputErrorCase{"FitBadPeriod",         lab_fit("lab_delay.csv") + " --interpolation-period-s 0",                         "--interpolation-period-s: got '0'"},
+        InputErrorCase{"FitGroupWithoutApply", lab_fit("lab_delay.csv") + " --group X+",                                         "--apply-to"},
+        InputErrorCase{"LatencyWhat",          "latency measure",                                                                "allowed: fit, compensate"},
+        InputErrorCase{"CompensateLag",        "latency compensate --lag-cycles 50",                                             "--lag-cycles: got '50'; allowed: a whole number from 0 to 49"},
+        InputErrorCase{"CompensateTouch",      "latency compensate --touch slow",                                                "allowed: constant, braking"},
+        InputErrorCase{"CompensateFraction",   "latency compensate --speed-fraction 0.5",                                        "--touch braking"},
+        InputErrorCase{"CompensatePhase",      "latency compensate --trigger-phase 1",                                           "--trigger-phase"},
+        InputErrorCase{"CompensateCounter",    "latency compensate --counter-bits 16 --counter-at-zero 70000",                     "from 0 to 65535"},
+        InputErrorCase{"CompensateNarrow",     "latency compensate --counter-bits 16 --counts-per-mm 1e7 --feed 100000",         "--counter-bits"},
+        InputErrorCase{"CompensateScenario",   "latency compensate --set machine.scan_period_s=5",                               "machine.scan_period_s"}),
     LabCaseName{});
 // clang-format on
 

@@ -407,7 +407,7 @@ bool CalibrationTab::fit_text(const QString& text, const QString& source) {
         points = parse_ring_csv(text.toStdString());
         result = calibrate_ring(points, options);
     } catch (const std::exception& e) {
-        // CsvError names the line and column; LabError says what is wrong.
+        // CsvError names the line and column; InputError says what is wrong.
         const QString message = lab_error_text(e);
         set_error(source.isEmpty() ? message : tr("%1: %2").arg(source, message));
         return false;

@@ -473,7 +473,7 @@ DelayFitPanel::ApplyState DelayFitPanel::evaluate_apply() const {
         apply_delay(*scenario_, applied);
         state.applied = std::move(applied);
     } catch (const std::exception& e) {
-        // LabError from the rule, ScenarioError from the key's range.
+        // InputError from the rule, ScenarioError from the key's range.
         state.problem = lab_error_text(e);
     }
     return state;

@@ -14,7 +14,7 @@
 #include "core/common/csv_reader.h"
 #include "core/common/file_io.h"
 #include "core/cycle/scenario.h"
-#include "core/lab/lab_error.h"
+#include "core/common/input_error.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/text_format.h"
 
@@ -220,7 +220,7 @@ QString lab_error_text(const std::exception& error) {
     if (const auto* csv = dynamic_cast<const CsvError*>(&error)) {
         return translate(csv->to_message());
     }
-    if (const auto* lab = dynamic_cast<const LabError*>(&error)) {
+    if (const auto* lab = dynamic_cast<const InputError*>(&error)) {
         return translate(lab->to_message());
     }
     if (const auto* file = dynamic_cast<const FileError*>(&error)) {

@@ -82,7 +82,7 @@ std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& pa
 
 // A message in the error colour.
 void show_error(QLabel* label, const QString& text);
-// What the core threw, in the interface language: CsvError, LabError,
+// What the core threw, in the interface language: CsvError, InputError,
 // ScenarioError and FileError carry messages (translate()); anything else is
 // unexpected and shown as such.
 QString lab_error_text(const std::exception& error);

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/common/csv_reader.h"
-#include "core/lab/lab_error.h"
+#include "core/common/input_error.h"
 #include "tests/core/common/message_checks.h"
 
 namespace probecycle {
@@ -664,11 +664,11 @@ TEST(CalibrationMessages, EveryWarningNamesItsNumbers) {
     }
 }
 
-TEST(CalibrationMessages, RefusalsAreLabErrorsWithTheirNumbers) {
+TEST(CalibrationMessages, RefusalsAreInputErrorsWithTheirNumbers) {
     try {
         (void)calibrate_ring(SyntheticRing{}.points(), gauge(25.0));
         FAIL() << "a gauge smaller than the touches was accepted";
-    } catch (const LabError& e) {
+    } catch (const InputError& e) {
         EXPECT_EQ(e.to_message().code, "radius_outside_gauge");
         test::expect_translatable(e.to_message(),
                                   {"radius_mm", "gauge_radius_mm", "gauge_diameter_mm"});
@@ -684,14 +684,14 @@ TEST(CalibrationMessages, RefusalsAreLabErrorsWithTheirNumbers) {
     try {
         (void)calibrate_length(below);
         FAIL() << "a negative length was accepted";
-    } catch (const LabError& e) {
+    } catch (const InputError& e) {
         test::expect_translatable(e.to_message(), {"effective_length_mm"});
         EXPECT_EQ(std::string(e.what()).rfind("effective length -90 mm is not positive", 0), 0u);
     }
     try {
         (void)calibrate_length(LengthCalibrationInput{});
         FAIL() << "no touch was accepted";
-    } catch (const LabError& e) {
+    } catch (const InputError& e) {
         test::expect_translatable(e.to_message(), {});
     }
 }

@@ -11,7 +11,7 @@
 
 #include "core/common/csv_reader.h"
 #include "core/common/units.h"
-#include "core/lab/lab_error.h"
+#include "core/common/input_error.h"
 #include "tests/core/common/message_checks.h"
 
 namespace probecycle {
@@ -490,7 +490,7 @@ TEST(DelayFitMessages, TheRuleAndTheRefusalsAreMessages) {
     try {
         (void)choose_group(fit, std::string("q+"));
         FAIL() << "an unknown group was accepted";
-    } catch (const LabError& e) {
+    } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()), "got 'q+'; allowed: a group of the file (X+, Z-)");
         test::expect_translatable(e.to_message(), {"group", "groups"});
     }
@@ -500,7 +500,7 @@ TEST(DelayFitMessages, TheRuleAndTheRefusalsAreMessages) {
     try {
         (void)controller_latency_from_fit(fit, scenario, std::string("X+"));
         FAIL() << "a negative latency was accepted";
-    } catch (const LabError& e) {
+    } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()).rfind("the fitted delay of X+, 8.5 ms, is shorter than the "
                                               "scenario's probe.interface_delay_s + half of "
                                               "machine.scan_period_s (10 ms)",

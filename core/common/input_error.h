@@ -1,8 +1,9 @@
 #pragma once
 
-// Input that the lab's computations refuse, outside a file's lines (those are
+// Input that a computation refuses, outside a file's lines (those are
 // CsvError): a gauge smaller than the touches, a length that is not positive,
-// a delay group the fit does not have. It is a std::invalid_argument whose
+// a delay group the fit does not have, comparison files whose point counts
+// differ. It is a std::invalid_argument whose
 // what() is the English text, and carries the message for the window.
 
 #include <stdexcept>
@@ -12,9 +13,9 @@
 
 namespace probecycle {
 
-class LabError : public std::invalid_argument {
+class InputError : public std::invalid_argument {
   public:
-    explicit LabError(Message message)
+    explicit InputError(Message message)
         : std::invalid_argument(render(message)), message_(std::move(message)) {}
     const Message& to_message() const { return message_; }
 
