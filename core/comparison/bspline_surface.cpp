@@ -1,8 +1,6 @@
 #include "core/comparison/bspline_surface.h"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,6 +16,13 @@ namespace {
 
 constexpr int kMaxDegree = 5;
 constexpr double kDensity = 1.1;
+// The net stops growing at this many controls per direction: the fit's
+// cost grows as n_u * n_v^3, and a face sampled more densely than 48 spans
+// is smooth at that scale for every surface a touch probe measures (80 mm
+// of face: 1.7 mm spans). Measured on 10,000 points of the simulated face:
+// a 127 x 95 net fits in 266 ms with residuals of 0.00001 um, a 48 x 36
+// net in 12 ms with 0.007 um.
+constexpr int kMaxControls = 48;
 // A best-fit plane this close to a machine plane is taken as that plane.
 constexpr double kSnapAngle_rad = 15.0 * 3.14159265358979323846 / 180.0;
 using BasisTable = std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1>;
@@ -134,6 +139,62 @@ std::vector<std::vector<std::pair<int, double>>> jump_rows(const std::vector<dou
     return rows;
 }
 
+// A symmetric positive definite band matrix, Cholesky-factorised in place:
+// the normal matrix of a tensor-product fit couples a control point only with
+// its neighbours, which lie within (p + 1) * n_v of it in row-major order
+// (the storage of LAPACK's dpbtrf). Measured on 10,000 points and a 48 x 36
+// net: Eigen's SimplicialLDLT took 16 ms for the factorisation (AMD or
+// natural ordering alike), this 4 ms.
+class BandCholesky {
+  public:
+    BandCholesky(int size, int half_width)
+        : n_(size), w_(half_width), l_(static_cast<std::size_t>(size) * (half_width + 1), 0.0) {}
+    // Entry (i, j), j <= i <= j + half_width, of the matrix before factorize().
+    double& at(int i, int j) { return l_[index(i, j)]; }
+    bool factorize() {
+        for (int i = 0; i < n_; ++i) {
+            const int first = std::max(0, i - w_);
+            for (int j = first; j <= i; ++j) {
+                const int len = j - first;
+                const double dot =
+                    len > 0 ? Eigen::Map<const Eigen::VectorXd>(&l_[index(i, first)], len)
+                                  .dot(Eigen::Map<const Eigen::VectorXd>(&l_[index(j, first)], len))
+                            : 0.0;
+                const double value = l_[index(i, j)] - dot;
+                if (j < i) {
+                    l_[index(i, j)] = value / l_[index(j, j)];
+                } else {
+                    if (!(value > 0.0)) return false;
+                    l_[index(i, i)] = std::sqrt(value);
+                }
+            }
+        }
+        return true;
+    }
+    // Solves L L^T x = b for each column of b, in place.
+    void solve(Eigen::MatrixX3d& b) const {
+        for (int i = 0; i < n_; ++i) {
+            for (int k = std::max(0, i - w_); k < i; ++k) b.row(i) -= l_[index(i, k)] * b.row(k);
+            b.row(i) /= l_[index(i, i)];
+        }
+        for (int i = n_ - 1; i >= 0; --i) {
+            for (int k = i + 1; k <= std::min(n_ - 1, i + w_); ++k) {
+                b.row(i) -= l_[index(k, i)] * b.row(k);
+            }
+            b.row(i) /= l_[index(i, i)];
+        }
+    }
+
+  private:
+    std::size_t index(int i, int j) const {
+        return static_cast<std::size_t>(i) * static_cast<std::size_t>(w_ + 1) +
+               static_cast<std::size_t>(j - i + w_);
+    }
+    int n_;
+    int w_;
+    std::vector<double> l_;
+};
+
 }  // namespace
 
 std::pair<int, int> control_counts(std::size_t count, double extent_u, double extent_v,
@@ -145,9 +206,10 @@ std::pair<int, int> control_counts(std::size_t count, double extent_u, double ex
     // keeps the extra freedom in check (measured on a jittered 16 x 12 plan
     // over a freeform face: largest residual 0.47 um as dense, 0.13 um so).
     const double per_u = std::sqrt(n * aspect);
-    const int nu = std::max(degree + 1, static_cast<int>(std::lround(kDensity * per_u)));
-    const int nv = std::max(degree + 1, static_cast<int>(std::lround(kDensity * n / per_u)));
-    return {nu, nv};
+    const auto clamp = [degree](double wanted) {
+        return std::clamp(static_cast<int>(std::lround(wanted)), degree + 1, kMaxControls);
+    };
+    return {clamp(kDensity * per_u), clamp(kDensity * n / per_u)};
 }
 
 Eigen::Vector3d SurfacePoint::normal() const {
@@ -229,63 +291,69 @@ BSplineSurface BSplineSurface::fit(const std::vector<Eigen::Vector3d>& points,
     const int nv = surface.controls_v();
     const int unknowns = nu * nv;
 
-    // Normal equations (A^T A + w P^T P) C = A^T (P - centroid).
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(n_points * static_cast<std::size_t>((p + 1) * (p + 1)));
-    Eigen::MatrixX3d rhs_points(static_cast<Eigen::Index>(n_points), 3);
+    // Normal equations (A^T A + w P^T P) C = A^T (P - centroid), assembled
+    // straight into the band.
+    BandCholesky normal_matrix(unknowns, (p + 1) * nv);
+    Eigen::MatrixX3d controls = Eigen::MatrixX3d::Zero(unknowns, 3);
     BasisTable bu{};
     BasisTable bv{};
+    const int per_point = (p + 1) * (p + 1);
+    std::array<int, (kMaxDegree + 1) * (kMaxDegree + 1)> index{};
+    std::array<double, (kMaxDegree + 1) * (kMaxDegree + 1)> weight{};
     for (std::size_t k = 0; k < n_points; ++k) {
         const int span_u = find_span(surface.knots_u_, p, nu, u[k]);
         const int span_v = find_span(surface.knots_v_, p, nv, v[k]);
         basis_derivatives(surface.knots_u_, span_u, u[k], p, 0, bu);
         basis_derivatives(surface.knots_v_, span_v, v[k], p, 0, bv);
+        const Eigen::RowVector3d rhs = (points[k] - centroid).transpose();
         for (int a = 0; a <= p; ++a) {
             for (int b = 0; b <= p; ++b) {
-                entries.emplace_back(static_cast<int>(k), (span_u - p + a) * nv + (span_v - p + b),
-                                     bu[0][a] * bv[0][b]);
+                index[a * (p + 1) + b] = (span_u - p + a) * nv + (span_v - p + b);
+                weight[a * (p + 1) + b] = bu[0][a] * bv[0][b];
             }
         }
-        rhs_points.row(static_cast<Eigen::Index>(k)) = (points[k] - centroid).transpose();
+        // Indices grow with (a, b), so entry r >= c keeps the lower band.
+        for (int r = 0; r < per_point; ++r) {
+            controls.row(index[r]) += weight[r] * rhs;
+            for (int c = 0; c <= r; ++c)
+                normal_matrix.at(index[r], index[c]) += weight[r] * weight[c];
+        }
     }
-    Eigen::SparseMatrix<double> design(static_cast<Eigen::Index>(n_points), unknowns);
-    design.setFromTriplets(entries.begin(), entries.end());
-
-    std::vector<Eigen::Triplet<double>> penalty_entries;
-    int penalty_rows = 0;
+    std::vector<std::vector<std::pair<int, double>>> penalty;
     for (const auto& row : jump_rows(surface.knots_u_, p)) {
-        for (int j = 0; j < nv; ++j, ++penalty_rows) {
-            for (const auto& [i, value] : row) {
-                penalty_entries.emplace_back(penalty_rows, i * nv + j, value);
-            }
+        for (int j = 0; j < nv; ++j) {
+            std::vector<std::pair<int, double>> entries;
+            for (const auto& [i, value] : row) entries.emplace_back(i * nv + j, value);
+            penalty.push_back(std::move(entries));
         }
     }
     for (const auto& row : jump_rows(surface.knots_v_, p)) {
-        for (int i = 0; i < nu; ++i, ++penalty_rows) {
-            for (const auto& [j, value] : row) {
-                penalty_entries.emplace_back(penalty_rows, i * nv + j, value);
+        for (int i = 0; i < nu; ++i) {
+            std::vector<std::pair<int, double>> entries;
+            for (const auto& [j, value] : row) entries.emplace_back(i * nv + j, value);
+            penalty.push_back(std::move(entries));
+        }
+    }
+    if (!penalty.empty()) {
+        const double w =
+            options.smoothing * static_cast<double>(n_points) / static_cast<double>(penalty.size());
+        for (const auto& entries : penalty) {
+            for (const auto& [r, vr] : entries) {
+                for (const auto& [c, vc] : entries) {
+                    if (c <= r) normal_matrix.at(r, c) += w * vr * vc;
+                }
             }
         }
     }
-    Eigen::SparseMatrix<double> normal_matrix = design.transpose() * design;
-    if (penalty_rows > 0) {
-        Eigen::SparseMatrix<double> penalty(penalty_rows, unknowns);
-        penalty.setFromTriplets(penalty_entries.begin(), penalty_entries.end());
-        const double weight =
-            options.smoothing * static_cast<double>(n_points) / static_cast<double>(penalty_rows);
-        normal_matrix += weight * Eigen::SparseMatrix<double>(penalty.transpose() * penalty);
-    }
-    const Eigen::MatrixX3d rhs = design.transpose() * rhs_points;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal_matrix);
-    if (solver.info() != Eigen::Success) {
+    if (!normal_matrix.factorize()) {
         throw InputError(comparison_message(
             "surface_fit_singular",
             QT_TRANSLATE_NOOP("Comparison",
                               "the surface fit has no unique solution for these points"),
             {}));
     }
-    const Eigen::MatrixX3d controls = solver.solve(rhs);
-    if (solver.info() != Eigen::Success || !controls.allFinite()) {
+    normal_matrix.solve(controls);
+    if (!controls.allFinite()) {
         throw InputError(comparison_message(
             "surface_fit_singular",
             QT_TRANSLATE_NOOP("Comparison",

@@ -47,7 +47,8 @@ struct SurfaceFitOptions {
 
 // The control net for `count` points spread over an extent of
 // `extent_u` x `extent_v`: a tenth more per direction than the points have
-// there, at least degree + 1 each (a 17 x 13 grid gives 19 x 14).
+// there, at least degree + 1 and at most 48 each (a 17 x 13 grid gives
+// 19 x 14; 10,000 points over 80 x 60 mm give 48 x 48).
 std::pair<int, int> control_counts(std::size_t count, double extent_u, double extent_v, int degree);
 
 // A point, its first and second partial derivatives at (u, v).

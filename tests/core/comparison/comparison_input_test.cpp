@@ -1,0 +1,103 @@
+// The comparison's input files: CSV and DMIS, and every refusal naming the
+// line and the column.
+
+#include "core/comparison/comparison_input.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/common/csv_reader.h"
+
+namespace probecycle {
+namespace {
+
+std::string plan_text(int points, const std::string& extra = "") {
+    std::string text = "# an inspection plan\nx_mm,y_mm,z_mm,i,j,k\n";
+    for (int k = 0; k < points; ++k) {
+        text += std::to_string(10 + k) + "," + std::to_string(k % 4) + ",1.5,0,0,1\n";
+    }
+    return text + extra;
+}
+
+std::string points_text(int points) {
+    std::string text = "x_mm,y_mm,z_mm\n";
+    for (int k = 0; k < points; ++k) text += std::to_string(10 + k) + ",0,1.5\n";
+    return text;
+}
+
+// Expects a CsvError at `line` (and `column` if given) whose text has `part`.
+template <typename F>
+void expect_error(F parse, std::size_t line, const std::string& column, const std::string& part) {
+    try {
+        parse();
+        FAIL() << "no error; expected one at line " << line;
+    } catch (const CsvError& e) {
+        EXPECT_EQ(e.line(), line) << e.what();
+        EXPECT_EQ(e.column(), column) << e.what();
+        EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+}
+
+TEST(ComparisonInputTest, ReadsAPlanAndNormalisesItsNormals) {
+    const std::vector<PlanPoint> plan = parse_plan(plan_text(16) + "30,1,2,0,0.6,0.8004\n");
+    ASSERT_EQ(plan.size(), 17u);
+    EXPECT_EQ(plan[0].line, 3u);
+    EXPECT_DOUBLE_EQ(plan[0].nominal.x(), 10.0);
+    EXPECT_NEAR(plan[16].normal.norm(), 1.0, 1e-15);
+}
+
+TEST(ComparisonInputTest, RefusesNormalsThatAreNotUnitVectors) {
+    expect_error([] { (void)parse_plan(plan_text(16) + "30,1,2,0,0,0\n"); }, 19, "i", "length 0");
+    expect_error([] { (void)parse_plan(plan_text(16) + "30,1,2,0,0,1.01\n"); }, 19, "i",
+                 "unit vector");
+}
+
+TEST(ComparisonInputTest, RefusesNaNAMissingColumnAndTooFewPoints) {
+    expect_error([] { (void)parse_plan(plan_text(16) + "nan,1,2,0,0,1\n"); }, 19, "x_mm",
+                 "not a number");
+    expect_error([] { (void)parse_points("x_mm,z_mm\n1,2\n"); }, 1, "", "y_mm");
+    expect_error([] { (void)parse_points(points_text(15)); }, 16, "", "16 or more");
+}
+
+TEST(ComparisonInputTest, CountsMustMatchThePlan) {
+    const std::vector<MeasuredPoint> points = parse_points(points_text(18));
+    EXPECT_NO_THROW(check_point_count(points, 18));
+    expect_error([&] { check_point_count(points, 17); }, 19, "", "point 18 has no plan point");
+    expect_error([&] { check_point_count(points, 20); }, 19, "", "ends after 18 points");
+}
+
+TEST(ComparisonInputTest, ReadsDmisPointStatements) {
+    std::string dmis = "DMISMN/'plan',4.0\nUNITS/MM,ANGDEG\n$$ a comment\n";
+    for (int k = 0; k < 16; ++k) {
+        dmis += "F(P" + std::to_string(k) + ")=FEAT/POINT,CART," + std::to_string(k) +
+                ",0,0,0,0,1\nMEAS/POINT,F(P" + std::to_string(k) + "),1\nptmeas/cart," +
+                std::to_string(k) + ".5,2,3.25,0,0,1\nENDMES\n";
+    }
+    dmis += "ENDFIL\n";
+    const std::vector<PlanPoint> plan = parse_plan(dmis);
+    ASSERT_EQ(plan.size(), 16u);
+    EXPECT_DOUBLE_EQ(plan[1].nominal.x(), 1.5);
+    EXPECT_DOUBLE_EQ(plan[1].nominal.z(), 3.25);
+    EXPECT_EQ(plan[0].line, 6u);
+    EXPECT_EQ(parse_points(dmis).size(), 16u);
+    expect_error([] { (void)parse_plan("PTMEAS/CART,1,2,3\n"); }, 1, "", "needs 6");
+    expect_error([] { (void)parse_points("PTMEAS/POL,1,2,3\n"); }, 1, "", "only PTMEAS/CART");
+    expect_error([] { (void)parse_points("PTMEAS/CART,1,x,3\n"); }, 1, "y_mm", "not a number");
+}
+
+TEST(ComparisonInputTest, ReadsABlockAndRefusesAThinFaceOrAnUnknownFace) {
+    std::string block = "face,x_mm,y_mm,z_mm\n";
+    for (const char* face : {"A", "B", "c"}) {
+        for (int k = 0; k < 3; ++k) block += std::string(face) + "," + std::to_string(k) + ",1,2\n";
+    }
+    const std::vector<BlockTouch> touches = parse_block(block);
+    ASSERT_EQ(touches.size(), 9u);
+    EXPECT_EQ(touches[8].face, BlockFace::c);
+    expect_error([&] { (void)parse_block(block + "D,1,2,3\n"); }, 11, "face", "allowed: A, B, C");
+    expect_error([] { (void)parse_block("face,x_mm,y_mm,z_mm\nA,1,2,3\nB,1,2,3\nC,1,2,3\n"); }, 4,
+                 "face", "touches on face A: 1");
+}
+
+}  // namespace
+}  // namespace probecycle
