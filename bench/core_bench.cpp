@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "core/common/units.h"
+#include "core/comparison/comparison.h"
+#include "core/comparison/comparison_simulator.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/motion.h"
 #include "core/cycle/sweep.h"
@@ -86,6 +88,27 @@ void BM_Analyse(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(analyse(scenario));
 }
 
+// The whole comparison pipeline (C-axis identification with its
+// uncertainty, three surface fits, every projection) on the simulator's
+// data: 16 x 12 = 192 and 115 x 87 = 10,005 plan points, jittered.
+void compare(benchmark::State& state, int columns, int rows) {
+    ComparisonSimulationOptions options;
+    options.columns = columns;
+    options.rows = rows;
+    options.omm_noise_mm = 0.0005;
+    options.cmm_noise_mm = 0.0003;
+    const ComparisonDataSet data = simulate_comparison(options);
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(run_comparison(data.input));
+    }
+    state.counters["points"] = static_cast<double>(data.input.plan.size());
+}
+void BM_Compare200(benchmark::State& state) {
+    compare(state, 16, 12);
+}
+void BM_Compare10000(benchmark::State& state) {
+    compare(state, 115, 87);
+}
 }  // namespace
 
 BENCHMARK(BM_MoveTime_TimeConstant);
@@ -94,5 +117,8 @@ BENCHMARK(BM_MoveTime_JerkLimited);
 BENCHMARK(BM_Evaluate);
 BENCHMARK(BM_Sweep1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Analyse)->Unit(benchmark::kMicrosecond);
+
+BENCHMARK(BM_Compare200)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Compare10000)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

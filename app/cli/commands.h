@@ -15,5 +15,7 @@ void add_cycle_commands(CLI::App& app);
 void add_calibrate_commands(CLI::App& app);
 // latency fit, latency compensate (commands_latency.cpp)
 void add_latency_commands(CLI::App& app);
+// compare run, compare cerrors, compare simulate (commands_compare.cpp)
+void add_compare_commands(CLI::App& app);
 
 }  // namespace probecycle::cli

@@ -67,6 +67,7 @@ int run(int argc, char** argv) {
     cli::add_cycle_commands(app);
     cli::add_calibrate_commands(app);
     cli::add_latency_commands(app);
+    cli::add_compare_commands(app);
 
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
@@ -85,7 +86,7 @@ int run(int argc, char** argv) {
                   << "'; allowed: " << joined(commands) << '\n';
         return 2;
     }
-    if (command == "calibrate" || command == "latency") {
+    if (command == "calibrate" || command == "latency" || command == "compare") {
         const std::vector<std::string> verbs = subcommand_names(*app.get_subcommand(command));
         if (args.size() == 1) {
             std::cerr << "probecycle-cli " << command
@@ -94,8 +95,10 @@ int run(int argc, char** argv) {
         }
         if (args[1].rfind('-', 0) != 0 && !is_one_of(args[1], verbs)) {
             std::cerr << "probecycle-cli " << command << ": unknown "
-                      << (command == "calibrate" ? "calibration" : "latency command") << " '"
-                      << args[1] << "'; allowed: " << joined(verbs) << '\n';
+                      << (command == "calibrate" ? "calibration"
+                          : command == "latency" ? "latency command"
+                                                 : "comparison command")
+                      << " '" << args[1] << "'; allowed: " << joined(verbs) << '\n';
             return 2;
         }
     }

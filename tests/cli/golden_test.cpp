@@ -108,7 +108,9 @@ INSTANTIATE_TEST_SUITE_P(Cli, GoldenOutput, testing::Values(
     Golden{"calibrate_ring.json",     "calibrate ring lab_ring.csv --gauge-diameter 50 --report REPORT"},
     Golden{"calibrate_length.json",   "calibrate length --surface-z 10 --trigger-z 112.3456 --trigger-z 112.3461 --active-length 0 --nominal-length 102.34"},
     Golden{"latency_fit.json",        "latency fit lab_delay.csv --interpolation-period-s 0.001"},
-    Golden{"latency_compensate.json", "latency compensate --touch braking --speed-fraction 0.3 --sweep 4"}),
+    Golden{"latency_compensate.json", "latency compensate --touch braking --speed-fraction 0.3 --sweep 4"},
+    Golden{"compare_run.json",        "compare run --plan comparison/plan.csv --reference-cmm comparison/reference_cmm.csv --test-omm comparison/test_omm.csv --reference-omm comparison/reference_omm.csv --c-axis 200,100 --block-c0 comparison/block_c0.csv --block-c180 comparison/block_c180.csv --tolerance 0.01 --report REPORT"},
+    Golden{"compare_cerrors.json",    "compare cerrors --block-c0 comparison/block_c0.csv --block-c180 comparison/block_c180.csv --c-axis 200,100"}),
     [](const testing::TestParamInfo<Golden>& case_info) {
         std::string name = fs::path(case_info.param.name).stem().string();
         for (char& c : name) if (c == '.' || c == '-') c = '_';
