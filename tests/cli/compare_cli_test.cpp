@@ -88,7 +88,8 @@ TEST(CompareCli, SimulatedDataAgreeWithTheirTruth) {
 }
 
 TEST(CompareCli, CerrorsPrintsTheErrorsCornersAndPlanes) {
-    const CliRun r = run("compare cerrors" + block_args(kSet) + " --c-axis 200,100 --angle-deg 180");
+    const CliRun r =
+        run("compare cerrors" + block_args(kSet) + " --c-axis 200,100 --angle-deg 180");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const Json j = Json::parse(r.out);
     EXPECT_TRUE(j.at("c_axis").at("uncertainty").at("ex_rad").is_number());
@@ -155,7 +156,8 @@ TEST(CompareCli, BadOptionsSayWhatIsAllowed) {
     const CliRun axis = run("compare cerrors" + block_args(kSet) + " --c-axis 200");
     EXPECT_EQ(axis.exit_code, 2);
     EXPECT_NE(axis.err.find("expected two coordinates X,Y"), std::string::npos) << axis.err;
-    const CliRun angle = run("compare cerrors" + block_args(kSet) + " --c-axis 200,100 --angle-deg 0");
+    const CliRun angle =
+        run("compare cerrors" + block_args(kSet) + " --c-axis 200,100 --angle-deg 0");
     EXPECT_EQ(angle.exit_code, 2);
     EXPECT_NE(angle.err.find("--angle-deg"), std::string::npos) << angle.err;
     const CliRun verb = run("compare frobnicate");
