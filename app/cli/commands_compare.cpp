@@ -12,6 +12,7 @@
 #include "core/common/csv_reader.h"
 #include "core/common/number_format.h"
 #include "core/comparison/comparison.h"
+#include "core/comparison/comparison_project.h"
 #include "core/comparison/comparison_report.h"
 #include "core/comparison/comparison_simulator.h"
 
@@ -22,7 +23,7 @@ namespace {
 // --c-axis X,Y: two coordinates.
 struct AxisArgs {
     std::string position;
-    NumberArg angle{1.0, 359.0};
+    NumberArg angle{kMinComparisonAngle_deg, kMaxComparisonAngle_deg};
 };
 
 void add_axis_args(CLI::App& cmd, AxisArgs& args) {
@@ -84,7 +85,7 @@ void add_run(CLI::App& compare) {
         AxisArgs axis;
         std::string block_c0;
         std::string block_c180;
-        NumberArg tolerance{1e-6, 100.0};
+        NumberArg tolerance{kMinTolerance_mm, kMaxTolerance_mm};
         std::string report;
     };
     auto args = std::make_shared<Args>();
