@@ -13,9 +13,10 @@ declare -A seeds=(
   [scenario_json]="tests/data/*.json resources/presets/*.json resources/examples/*.json"
   [ring_csv]="tests/data/lab_ring*.csv"
   [delay_csv]="tests/data/lab_delay*.csv"
+  [comparison_points]="tests/data/comparison/*.csv"
 )
 status=0
-for target in scenario_json ring_csv delay_csv; do
+for target in scenario_json ring_csv delay_csv comparison_points; do
   work=$(mktemp -d)
   # shellcheck disable=SC2086
   cp ${seeds[$target]} "$work"/

@@ -65,6 +65,129 @@
     </message>
 </context>
 <context>
+    <name>Comparison</name>
+    <message>
+        <source>a surface needs %1 points or more; got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the points lie on a line: they span no surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the surface fit has no unique solution for these points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>face %1 at C = %2: the touches lie on a line and define no plane; touch the face at points spread over it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>block at C = %1: the three faces&apos; planes do not meet in one point (two of them are parallel); touch three faces of a corner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>face %1 at C = %2: the touches nearly lie on a line (spread ratio %3); the face&apos;s tilt about that line is poorly known</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>face %1 at C = %2: a touch lies %3 off the face&apos;s plane (above %4); a chip, a burr or a bad touch?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>faces %1 and %2 at C = %3 meet at %4 (below %5): the corner is poorly defined</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a face has only 3 touches: its plane passes through them, so the C-axis errors&apos; uncertainty is unknown; touch each face 6 times</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>plan points: %1; a comparison needs %2 or more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 measured points for %2 plan points; one measured point per plan point is needed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the block is needed at C = 0 and after the turn; only one is given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the surface through the %1 leaves residuals up to %2 (RMS %3, above %4): the plan may be too sparse for the part&apos;s form, or a point is wrong</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no block touched: the C axis is taken as exact, and its errors (at %1 from the axis, tens of micrometres per 0.1 mrad) stay in the result</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reference&apos;s CMM points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>plan&apos;s nominal points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>calibrated reference points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 points project onto the edge of a fitted surface, not square onto it (points %2): their results are less sure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 measured points lie more than %2 from their plan points (points %3): are the files in the plan&apos;s order, and the C axis&apos;s position and angle right?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at %1 points the result differs from its first-order estimate by more than %2 (points %3): the surfaces do not follow the points there</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the C-axis errors&apos; uncertainty reaches %1 on the part (above %2): touch the block more often or on larger faces, or judge whether the correction helps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only PTMEAS/CART,x,y,z,i,j,k is read; got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PTMEAS/CART has %1 numbers; the plan needs 6 (x, y, z, i, j, k)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PTMEAS/CART has %1 numbers; allowed: 3 (x, y, z) or 6 (x, y, z, i, j, k)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>points in the file: %1; a comparison needs %2 or more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the normal (i, j, k) has length %1; allowed: a unit vector, length 1 within %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>point %1 has no plan point: the file has %2 points, the plan %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file ends after %1 points; the plan has %2 (one measured point per plan point, in the plan&apos;s order)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a face; allowed: A, B, C</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>touches on face %1: %2; each face needs %3 or more (typically 6)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>CsvError</name>
     <message>
         <source>line %1: %2</source>
@@ -296,6 +419,26 @@
     <message>
         <source>unknown section; allowed: %1</source>
         <translation>неизвестный раздел; допустимые: %1</translation>
+    </message>
+    <message>
+        <source>a JSON object with the comparison&apos;s files and settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;probecycle-comparison&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a file path as text (empty: none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an unknown key; allowed: %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -988,6 +1131,329 @@
     <message>
         <source>Touches: %1, spread %2</source>
         <translation>Касаний: %1, разброс %2</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::ComparisonTab</name>
+    <message>
+        <source>Files and setup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files with a header row, in the plan&apos;s order: the plan &lt;code&gt;x_mm,y_mm,z_mm,i,j,k&lt;/code&gt; (outward unit normal), points &lt;code&gt;x_mm,y_mm,z_mm&lt;/code&gt; (or DMIS &lt;code&gt;PTMEAS/CART&lt;/code&gt;), the block &lt;code&gt;face,x_mm,y_mm,z_mm&lt;/code&gt; with faces A, B, C.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inspection plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference part, CMM points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test part, on-machine points at C = 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference part, on-machine points after the turn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block at C = 0 (optional)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block after the turn (optional)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nominal points and outward unit normals (the side the probe comes from), in machine coordinates at the measuring position (C = 0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The reference part as the CMM measured it, one point per plan point, in the plan&apos;s coordinates.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The test part probed on the machine along the plan, C at 0.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The reference part probed along the same plan after C turned by the angle: at the same place of the machine as the test part.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Three faces of a block&apos;s corner, touched at C = 0: they give the C axis&apos;s six errors. Without the block the C axis is taken as exact.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The same three faces touched after the turn.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a file…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C axis X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the C axis is, in machine X.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C axis Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the C axis is, in machine Y.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comparison angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far C turns between the two measurements (180° for parts clamped opposite each other).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tolerance (±)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Half-width of the tolerance band about the nominal surface.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulate example data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write a simulated data set with a known truth (truth.csv) to a folder and run it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open project…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save project…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deviation of the test part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X [%1]</source>
+        <translation type="unfinished">X [%1]</translation>
+    </message>
+    <message>
+        <source>Y [%1]</source>
+        <translation type="unfinished">Y [%1]</translation>
+    </message>
+    <message>
+        <source>Deviations: direct OMM and comparison</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deviation [%1]</source>
+        <translation type="unfinished">Отклонение [%1]</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation type="unfinished">Точки</translation>
+    </message>
+    <message>
+        <source>Direct OMM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comparison</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation type="unfinished">Результат</translation>
+    </message>
+    <message>
+        <source>C-axis errors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Uncertainty</source>
+        <translation type="unfinished">Неопределённость</translation>
+    </message>
+    <message>
+        <source>Direct OMM against the comparison</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RMS</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Out of tol.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation type="unfinished">Предупреждения</translation>
+    </message>
+    <message>
+        <source>No warnings.</source>
+        <translation type="unfinished">Предупреждений нет.</translation>
+    </message>
+    <message>
+        <source>Points, worst first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deviation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>System error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export report…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the %1 file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The block is needed at both angles: choose both block files, or neither.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot make the folder %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing to export: run the comparison first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation type="unfinished">Сохранено: %1</translation>
+    </message>
+    <message>
+        <source>εx (EAC)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>εy (EBC)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>εz (ECC)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>δx (EXC)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>δy (EYC)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>δz (EZC)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>µrad</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not identified</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>below %1 %2 (out)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>above +%1 %2 (out)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 to %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point files (*.csv *.dmi *.dmis *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open comparison project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comparison projects (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save comparison project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export comparison report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished">Файлы CSV (*.csv)</translation>
     </message>
 </context>
 <context>
@@ -1829,6 +2295,10 @@
     <message>
         <source>the image could not be encoded as PNG</source>
         <translation>не удалось закодировать изображение в PNG</translation>
+    </message>
+    <message>
+        <source>Comparison</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -201,6 +201,10 @@ void PlotView::set_legend_visible(bool visible) {
     impl_->chart->legend()->setVisible(visible);
 }
 
+void PlotView::set_legend_beside(bool beside) {
+    impl_->chart->legend()->setAlignment(beside ? Qt::AlignRight : Qt::AlignBottom);
+}
+
 void PlotView::set_x_axis(const AxisSpec& spec) {
     if (impl_->x_axis == nullptr) {
         impl_->x_axis = Impl::make_axis(spec);

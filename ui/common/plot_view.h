@@ -49,6 +49,9 @@ class PlotView : public QWidget {
 
     void set_title(const QString& title);
     void set_legend_visible(bool visible);
+    // Below the plot (the default) or beside it on the right, one entry per
+    // line: the right suits a legend that is a colour scale.
+    void set_legend_beside(bool beside);
 
     // Axes are created on the first call and only retitled/re-ranged later.
     void set_x_axis(const AxisSpec& spec);

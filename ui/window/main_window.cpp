@@ -36,6 +36,7 @@
 #include "ui/common/text_format.h"
 #include "ui/cycle/cycle_charts.h"
 #include "ui/cycle/parameter_panel.h"
+#include "ui/comparison/comparison_tab.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
 #include "ui/window/scenario_command.h"
@@ -191,6 +192,8 @@ void MainWindow::build_ui() {
     tabs_->addTab(main_splitter_, QString());
     tabs_->addTab(calibration_tab_, QString());
     tabs_->addTab(latency_tab_, QString());
+    comparison_tab_ = new ComparisonTab;
+    tabs_->addTab(comparison_tab_, QString());
     setCentralWidget(tabs_);
 
     statusBar();  // file and preset messages
@@ -349,6 +352,7 @@ void MainWindow::retranslate() {
     tabs_->setTabText(0, tr("Cycle"));
     tabs_->setTabText(1, tr("Calibration"));
     tabs_->setTabText(2, tr("Latency"));
+    tabs_->setTabText(3, tr("Comparison"));
     new_->setText(tr("&New"));
     new_->setToolTip(tr("Start from the default scenario (typical values)"));
     open_->setText(tr("&Open…"));

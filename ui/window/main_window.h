@@ -34,6 +34,7 @@ namespace probecycle::ui {
 class CalibrationTab;
 class CycleCharts;
 class LatencyTab;
+class ComparisonTab;
 class ParameterPanel;
 
 struct MainWindowOptions {
@@ -151,6 +152,7 @@ class MainWindow : public QMainWindow {
     QTabWidget* tabs_{nullptr};
     CalibrationTab* calibration_tab_{nullptr};
     LatencyTab* latency_tab_{nullptr};
+    ComparisonTab* comparison_tab_{nullptr};
     QSplitter* right_splitter_{nullptr};
 
     QMenu* file_menu_{nullptr};

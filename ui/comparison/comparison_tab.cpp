@@ -1,0 +1,886 @@
+#include "ui/comparison/comparison_tab.h"
+
+#include <QDir>
+#include <QEvent>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "core/common/csv_reader.h"
+#include "core/common/file_io.h"
+#include "core/comparison/comparison_input.h"
+#include "core/comparison/comparison_project.h"
+#include "core/comparison/comparison_report.h"
+#include "core/comparison/comparison_simulator.h"
+#include "ui/common/parameter_info.h"
+#include "ui/common/plot_view.h"
+#include "ui/common/text_format.h"
+#include "ui/lab/lab_widgets.h"
+
+namespace probecycle::ui {
+
+namespace {
+
+// The colour classes of the map, from far below the band to far above it:
+// out of tolerance (dark), within the band in three steps each side of a
+// centre class. Edges in units of the tolerance.
+constexpr std::array<double, 6> kClassEdges = {-1.0, -0.6, -0.2, 0.2, 0.6, 1.0};
+const std::array<QColor, 7> kClassColours = {QColor(0x08, 0x30, 0x6b), QColor(0x21, 0x71, 0xb5),
+                                             QColor(0x6b, 0xae, 0xd6), QColor(0x31, 0xa3, 0x54),
+                                             QColor(0xfd, 0xae, 0x6b), QColor(0xe6, 0x55, 0x0d),
+                                             QColor(0xa5, 0x0f, 0x15)};
+const QColor kDirectColour{0x7f, 0x7f, 0x7f};
+const QColor kDeviationColour{0x1f, 0x77, 0xb4};
+const QColor kBandColour{0xc0, 0x39, 0x2b};
+constexpr int kHistogramBins = 24;
+constexpr double kArcsecPerRad = 180.0 * 3600.0 / std::numbers::pi;
+
+int class_of(double deviation_mm, double tolerance_mm) {
+    const double t = deviation_mm / tolerance_mm;
+    int c = 0;
+    while (c < static_cast<int>(kClassEdges.size()) &&
+           t > kClassEdges[static_cast<std::size_t>(c)]) {
+        ++c;
+    }
+    return c;
+}
+
+QString number(double value, int decimals) {
+    const double shown = std::abs(value) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : value;
+    return QLocale().toString(shown, 'f', decimals);
+}
+
+QString um(double mm, int decimals = 1) {
+    return number(mm * 1000.0, decimals) + QChar(0x00A0) + unit_um();
+}
+
+// Reads one input file whole (FileError names it) and parses it.
+template <typename Parse>
+auto read_input(const QString& path, Parse parse) {
+    const std::string name = QFile::encodeName(path).toStdString();
+    const std::string text = read_text_file(name);
+    return parse(text);
+}
+
+}  // namespace
+
+ComparisonTab::ComparisonTab(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("comparison"));
+    auto* input_widget = new QWidget(this);
+    auto* input_column = new QVBoxLayout(input_widget);
+    input_column->setContentsMargins(0, 0, 0, 0);
+    input_column->addWidget(build_input_group());
+    input_column->addStretch(1);
+    input_widget->setFixedWidth(380);
+
+    auto* root = new QHBoxLayout(this);
+    root->addWidget(input_widget);
+    root->addWidget(build_charts(), 1);
+    root->addWidget(build_result_column());
+
+    connect(run_button_, &QPushButton::clicked, this, [this] { run(); });
+    connect(simulate_button_, &QPushButton::clicked, this, &ComparisonTab::simulate_dialog);
+    connect(open_button_, &QPushButton::clicked, this, &ComparisonTab::open_project_dialog);
+    connect(save_button_, &QPushButton::clicked, this, &ComparisonTab::save_project_dialog);
+    connect(export_button_, &QPushButton::clicked, this, &ComparisonTab::export_dialog);
+    for (int i = 0; i < kInputFiles; ++i) {
+        connect(file_buttons_[static_cast<std::size_t>(i)], &QToolButton::clicked, this,
+                [this, i] { choose_file(static_cast<InputFile>(i)); });
+    }
+    for (UnitSpinBox* box : {axis_x_, axis_y_, angle_}) {
+        connect(box, &QDoubleSpinBox::valueChanged, this, &ComparisonTab::rerun_if_shown);
+    }
+    connect(tolerance_, &QDoubleSpinBox::valueChanged, this, &ComparisonTab::rerun_if_shown);
+    retranslate();
+}
+
+ComparisonTab::~ComparisonTab() = default;
+
+QGroupBox* ComparisonTab::build_input_group() {
+    input_group_ = new QGroupBox(this);
+    format_hint_ = new QLabel(input_group_);
+    format_hint_->setWordWrap(true);
+    auto* files = new QGridLayout;
+    for (int i = 0; i < kInputFiles; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        file_labels_[k] = new QLabel(input_group_);
+        file_edits_[k] = new QLineEdit(input_group_);
+        file_edits_[k]->setObjectName(QStringLiteral("comparison-file-%1").arg(i));
+        file_edits_[k]->setClearButtonEnabled(true);
+        file_labels_[k]->setBuddy(file_edits_[k]);
+        file_buttons_[k] = new QToolButton(input_group_);
+        file_buttons_[k]->setText(QStringLiteral("…"));
+        files->addWidget(file_labels_[k], 2 * i, 0, 1, 2);
+        files->addWidget(file_edits_[k], 2 * i + 1, 0);
+        files->addWidget(file_buttons_[k], 2 * i + 1, 1);
+    }
+    axis_x_ = new UnitSpinBox(-kMaxCoordinate_mm, kMaxCoordinate_mm, 4, 0.0, input_group_);
+    axis_x_->set_unit(unit_mm);
+    axis_y_ = new UnitSpinBox(-kMaxCoordinate_mm, kMaxCoordinate_mm, 4, 0.0, input_group_);
+    axis_y_->set_unit(unit_mm);
+    angle_ =
+        new UnitSpinBox(kMinComparisonAngle_deg, kMaxComparisonAngle_deg, 3, 180.0, input_group_);
+    angle_->set_unit([] { return QStringLiteral("°"); });
+    // The tolerance in µm: a few micrometres to a few tenths.
+    tolerance_ = new UnitSpinBox(kMinTolerance_mm, kMaxTolerance_mm, 1, 0.01, input_group_, 1000.0);
+    tolerance_->set_unit(unit_um);
+    tolerance_->setObjectName(QStringLiteral("comparison-tolerance"));
+    axis_x_label_ = new QLabel(input_group_);
+    axis_x_label_->setBuddy(axis_x_);
+    axis_y_label_ = new QLabel(input_group_);
+    axis_y_label_->setBuddy(axis_y_);
+    angle_label_ = new QLabel(input_group_);
+    angle_label_->setBuddy(angle_);
+    tolerance_label_ = new QLabel(input_group_);
+    tolerance_label_->setBuddy(tolerance_);
+    auto* form = new QFormLayout;
+    form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
+    form->addRow(axis_x_label_, axis_x_);
+    form->addRow(axis_y_label_, axis_y_);
+    form->addRow(angle_label_, angle_);
+    form->addRow(tolerance_label_, tolerance_);
+
+    run_button_ = new QPushButton(input_group_);
+    run_button_->setDefault(true);
+    simulate_button_ = new QPushButton(input_group_);
+    open_button_ = new QPushButton(input_group_);
+    save_button_ = new QPushButton(input_group_);
+    error_label_ = new QLabel(input_group_);
+    error_label_->setObjectName(QStringLiteral("comparison-error"));
+    error_label_->setWordWrap(true);
+    error_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    error_label_->hide();
+    auto* project_row = new QHBoxLayout;
+    project_row->addWidget(open_button_);
+    project_row->addWidget(save_button_);
+    auto* run_row = new QHBoxLayout;
+    run_row->addWidget(simulate_button_);
+    run_row->addStretch(1);
+    run_row->addWidget(run_button_);
+
+    auto* column = new QVBoxLayout(input_group_);
+    column->addWidget(format_hint_);
+    column->addLayout(files);
+    column->addLayout(form);
+    column->addLayout(project_row);
+    column->addLayout(run_row);
+    column->addWidget(error_label_);
+    return input_group_;
+}
+
+QWidget* ComparisonTab::build_charts() {
+    map_ = new PlotView(this);
+    map_->setObjectName(QStringLiteral("comparison-map"));
+    map_->set_x_axis({PlotView::Scale::linear, {}, QStringLiteral("%.4g"), {}});
+    map_->set_y_axis(PlotView::Side::left,
+                     {PlotView::Scale::linear, {}, QStringLiteral("%.4g"), {}});
+    // One marker series per colour class: the legend, beside the map, is
+    // the colour scale with the tolerance band.
+    map_->set_legend_beside(true);
+    for (std::size_t c = 0; c < class_curves_.size(); ++c) {
+        class_curves_[c] = map_->add_markers({QStringLiteral(" "), kClassColours[c]}, 11.0);
+    }
+    histogram_ = new PlotView(this);
+    histogram_->setObjectName(QStringLiteral("comparison-histogram"));
+    histogram_->set_x_axis({PlotView::Scale::linear, {}, QStringLiteral("%.3g"), {}});
+    histogram_->set_y_axis(PlotView::Side::left,
+                           {PlotView::Scale::linear, {}, QStringLiteral("%.0f"), {}});
+    QColor direct_fill = kDirectColour;
+    direct_fill.setAlpha(90);
+    QColor deviation_fill = kDeviationColour;
+    deviation_fill.setAlpha(140);
+    direct_area_ = histogram_->add_area({QStringLiteral(" "), kDirectColour, 1.0}, direct_fill);
+    deviation_area_ =
+        histogram_->add_area({QStringLiteral(" "), kDeviationColour, 1.5}, deviation_fill);
+    band_low_ =
+        histogram_->add_line({QStringLiteral(" "), kBandColour, 1.5, PlotView::Dash::dashed});
+    band_high_ = histogram_->add_line({{}, kBandColour, 1.5, PlotView::Dash::dashed});
+    auto* splitter = new QSplitter(Qt::Vertical, this);
+    splitter->setChildrenCollapsible(false);
+    splitter->addWidget(map_);
+    splitter->addWidget(histogram_);
+    splitter->setStretchFactor(0, 3);
+    splitter->setStretchFactor(1, 2);
+    return splitter;
+}
+
+QWidget* ComparisonTab::build_result_column() {
+    result_group_ = new QGroupBox(this);
+    QFont bold = result_group_->font();
+    bold.setBold(true);
+    const auto title = [this, &bold] {
+        auto* label = new QLabel(result_group_);
+        label->setFont(bold);
+        return label;
+    };
+    const auto table = [this](int rows, int columns, const char* name) {
+        auto* t = new QTableWidget(rows, columns, result_group_);
+        t->setObjectName(QString::fromLatin1(name));
+        t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+        t->verticalHeader()->setVisible(false);
+        t->horizontalHeader()->setStretchLastSection(true);
+        t->setSelectionBehavior(QAbstractItemView::SelectRows);
+        t->verticalHeader()->setDefaultSectionSize(t->fontMetrics().height() + 6);
+        t->setFixedHeight(rows > 0 ? t->horizontalHeader()->sizeHint().height() +
+                                         rows * t->verticalHeader()->defaultSectionSize() + 4
+                                   : QWIDGETSIZE_MAX);
+        if (rows == 0) t->setMinimumHeight(120);
+        return t;
+    };
+    c_axis_title_ = title();
+    c_axis_table_ = table(6, 3, "comparison-c-axis");
+    summary_title_ = title();
+    summary_table_ = table(3, 5, "comparison-summary");
+    warnings_title_ = title();
+    warnings_ = new LabWarningList(result_group_);
+    warnings_->setObjectName(QStringLiteral("comparison-warnings"));
+    points_title_ = title();
+    point_table_ = table(0, 7, "comparison-points");
+    export_button_ = new QPushButton(result_group_);
+    export_button_->setEnabled(false);
+    export_status_ = new QLabel(result_group_);
+    export_status_->setWordWrap(true);
+    export_status_->hide();
+    auto* export_row = new QHBoxLayout;
+    export_row->addStretch(1);
+    export_row->addWidget(export_button_);
+    auto* column = new QVBoxLayout(result_group_);
+    column->addWidget(c_axis_title_);
+    column->addWidget(c_axis_table_);
+    column->addWidget(summary_title_);
+    column->addWidget(summary_table_);
+    column->addWidget(warnings_title_);
+    column->addWidget(warnings_);
+    column->addWidget(points_title_);
+    column->addWidget(point_table_, 1);
+    column->addWidget(export_status_);
+    column->addLayout(export_row);
+    result_group_->setFixedWidth(500);
+    return result_group_;
+}
+
+void ComparisonTab::retranslate() {
+    input_group_->setTitle(tr("Files and setup"));
+    format_hint_->setText(
+        tr("CSV files with a header row, in the plan's order: the plan "
+           "<code>x_mm,y_mm,z_mm,i,j,k</code> (outward unit normal), points "
+           "<code>x_mm,y_mm,z_mm</code> (or DMIS <code>PTMEAS/CART</code>), the block "
+           "<code>face,x_mm,y_mm,z_mm</code> with faces A, B, C."));
+    const std::array<QString, kInputFiles> labels = {
+        tr("Inspection plan"),
+        tr("Reference part, CMM points"),
+        tr("Test part, on-machine points at C = 0"),
+        tr("Reference part, on-machine points after the turn"),
+        tr("Block at C = 0 (optional)"),
+        tr("Block after the turn (optional)")};
+    const std::array<QString, kInputFiles> tips = {
+        tr("Nominal points and outward unit normals (the side the probe comes from), in "
+           "machine coordinates at the measuring position (C = 0)."),
+        tr("The reference part as the CMM measured it, one point per plan point, in the "
+           "plan's coordinates."),
+        tr("The test part probed on the machine along the plan, C at 0."),
+        tr("The reference part probed along the same plan after C turned by the angle: at "
+           "the same place of the machine as the test part."),
+        tr("Three faces of a block's corner, touched at C = 0: they give the C axis's six "
+           "errors. Without the block the C axis is taken as exact."),
+        tr("The same three faces touched after the turn.")};
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+        file_labels_[k]->setText(labels[k]);
+        file_edits_[k]->setToolTip(tips[k]);
+        file_buttons_[k]->setToolTip(tr("Choose a file…"));
+    }
+    axis_x_label_->setText(tr("C axis X"));
+    axis_x_->setToolTip(tr("Where the C axis is, in machine X."));
+    axis_y_label_->setText(tr("C axis Y"));
+    axis_y_->setToolTip(tr("Where the C axis is, in machine Y."));
+    angle_label_->setText(tr("Comparison angle"));
+    angle_->setToolTip(
+        tr("How far C turns between the two measurements (180° for parts "
+           "clamped opposite each other)."));
+    tolerance_label_->setText(tr("Tolerance (±)"));
+    tolerance_->setToolTip(tr("Half-width of the tolerance band about the nominal surface."));
+    for (UnitSpinBox* box : {axis_x_, axis_y_, angle_, tolerance_}) box->retranslate();
+    run_button_->setText(tr("Run"));
+    simulate_button_->setText(tr("Simulate example data"));
+    simulate_button_->setToolTip(
+        tr("Write a simulated data set with a known truth (truth.csv) to a folder and run it."));
+    open_button_->setText(tr("Open project…"));
+    save_button_->setText(tr("Save project…"));
+
+    map_->set_title(tr("Deviation of the test part"));
+    map_->set_x_axis(
+        {PlotView::Scale::linear, tr("X [%1]").arg(unit_mm()), QStringLiteral("%.4g"), {}});
+    map_->set_y_axis(
+        PlotView::Side::left,
+        {PlotView::Scale::linear, tr("Y [%1]").arg(unit_mm()), QStringLiteral("%.4g"), {}});
+    histogram_->set_title(tr("Deviations: direct OMM and comparison"));
+    histogram_->set_x_axis(
+        {PlotView::Scale::linear, tr("Deviation [%1]").arg(unit_um()), QStringLiteral("%.3g"), {}});
+    histogram_->set_y_axis(PlotView::Side::left,
+                           {PlotView::Scale::linear, tr("Points"), QStringLiteral("%.0f"), {}});
+    histogram_->set_name(direct_area_, tr("Direct OMM"));
+    histogram_->set_name(deviation_area_, tr("Comparison"));
+    histogram_->set_name(band_low_, tr("Tolerance"));
+
+    result_group_->setTitle(tr("Result"));
+    c_axis_title_->setText(tr("C-axis errors"));
+    c_axis_table_->setHorizontalHeaderLabels({tr("Error"), tr("Value"), tr("Uncertainty")});
+    summary_title_->setText(tr("Direct OMM against the comparison"));
+    summary_table_->setHorizontalHeaderLabels(
+        {QString(), tr("Min"), tr("Max"), tr("RMS"), tr("Out of tol.")});
+    warnings_title_->setText(tr("Warnings"));
+    warnings_->set_empty_text(tr("No warnings."));
+    points_title_->setText(tr("Points, worst first"));
+    point_table_->setHorizontalHeaderLabels({tr("Point"), tr("X"), tr("Y"), tr("Z"),
+                                             tr("Deviation"), tr("System error"),
+                                             tr("Direct OMM")});
+    export_button_->setText(tr("Export report…"));
+    if (!last_error_.isEmpty() && error_label_->isVisible()) {
+        // The error was translated when it was made; a rerun would make it again.
+        rerun_if_shown();
+    }
+    show_result();
+}
+
+void ComparisonTab::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ComparisonTab::set_file(InputFile which, const QString& path) {
+    file_edits_[static_cast<std::size_t>(which)]->setText(path);
+}
+
+QString ComparisonTab::file(InputFile which) const {
+    return file_edits_[static_cast<std::size_t>(which)]->text().trimmed();
+}
+
+void ComparisonTab::set_c_axis(double x_mm, double y_mm) {
+    const QSignalBlocker block_x(axis_x_);
+    const QSignalBlocker block_y(axis_y_);
+    axis_x_->set_internal_value(x_mm);
+    axis_y_->set_internal_value(y_mm);
+}
+
+void ComparisonTab::set_angle_deg(double angle_deg) {
+    const QSignalBlocker block(angle_);
+    angle_->set_internal_value(angle_deg);
+}
+
+void ComparisonTab::set_tolerance_mm(double tolerance_mm) {
+    tolerance_->set_internal_value(tolerance_mm);
+}
+
+double ComparisonTab::tolerance_mm() const {
+    return tolerance_->internal_value();
+}
+
+void ComparisonTab::set_error(const QString& text) {
+    last_error_ = text;
+    if (text.isEmpty()) {
+        error_label_->hide();
+    } else {
+        show_error(error_label_, text);
+    }
+}
+
+bool ComparisonTab::run() {
+    ComparisonInput input;
+    input.c_axis = {axis_x_->internal_value(), axis_y_->internal_value(), angle_->internal_value()};
+    input.tolerance_mm = tolerance_->internal_value();
+    QString current;  // the file being read, for the message
+    try {
+        for (InputFile which : {InputFile::plan, InputFile::reference_cmm, InputFile::test_omm,
+                                InputFile::reference_omm}) {
+            if (file(which).isEmpty()) {
+                set_error(tr("Choose the %1 file.")
+                              .arg(file_labels_[static_cast<std::size_t>(which)]->text()));
+                return false;
+            }
+        }
+        const bool c0 = !file(InputFile::block_c0).isEmpty();
+        const bool c180 = !file(InputFile::block_c180).isEmpty();
+        if (c0 != c180) {
+            set_error(
+                tr("The block is needed at both angles: choose both block files, or "
+                   "neither."));
+            return false;
+        }
+        current = file(InputFile::plan);
+        input.plan = read_input(current, [](const std::string& t) { return parse_plan(t); });
+        const std::size_t n = input.plan.size();
+        const auto points = [&](InputFile which) {
+            current = file(which);
+            return read_input(current, [n](const std::string& t) {
+                const std::vector<MeasuredPoint> read = parse_points(t);
+                check_point_count(read, n);
+                std::vector<Eigen::Vector3d> out;
+                out.reserve(read.size());
+                for (const MeasuredPoint& p : read) out.push_back(p.point);
+                return out;
+            });
+        };
+        input.reference_cmm = points(InputFile::reference_cmm);
+        input.test_omm = points(InputFile::test_omm);
+        input.reference_omm = points(InputFile::reference_omm);
+        if (c0) {
+            current = file(InputFile::block_c0);
+            input.block_at_zero =
+                read_input(current, [](const std::string& t) { return parse_block(t); });
+            current = file(InputFile::block_c180);
+            input.block_turned =
+                read_input(current, [](const std::string& t) { return parse_block(t); });
+        }
+        current.clear();
+        ComparisonResult result = run_comparison(input);
+        input_ = std::move(input);
+        result_ = std::move(result);
+    } catch (const FileError& e) {
+        set_error(lab_error_text(e));  // names the file already
+        return false;
+    } catch (const std::exception& e) {
+        const QString text = lab_error_text(e);
+        set_error(current.isEmpty() ? text
+                                    : QFileInfo(current).fileName() + QStringLiteral(": ") + text);
+        return false;
+    }
+    set_error({});
+    export_status_->hide();
+    show_result();
+    return true;
+}
+
+void ComparisonTab::rerun_if_shown() {
+    if (result_ || !last_error_.isEmpty()) run();
+}
+
+bool ComparisonTab::simulate_example(const QString& folder) {
+    QString dir = folder;
+    if (dir.isEmpty()) {
+        dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+              QStringLiteral("/comparison_example");
+    }
+    if (!QDir().mkpath(dir)) {
+        set_error(tr("Cannot make the folder %1.").arg(QDir::toNativeSeparators(dir)));
+        return false;
+    }
+    const ComparisonDataSet example = simulate_comparison({});
+    const ComparisonInput& in = example.input;
+    const std::array<std::pair<QString, std::string>, 7> files = {{
+        {QStringLiteral("plan.csv"), plan_csv(in.plan)},
+        {QStringLiteral("reference_cmm.csv"), points_csv(in.reference_cmm)},
+        {QStringLiteral("test_omm.csv"), points_csv(in.test_omm)},
+        {QStringLiteral("reference_omm.csv"), points_csv(in.reference_omm)},
+        {QStringLiteral("block_c0.csv"), block_csv(in.block_at_zero)},
+        {QStringLiteral("block_c180.csv"), block_csv(in.block_turned)},
+        {QStringLiteral("truth.csv"), truth_csv(in.plan, example.truth_mm)},
+    }};
+    try {
+        for (const auto& [name, text] : files) {
+            write_file_atomically(QFile::encodeName(dir + QLatin1Char('/') + name).toStdString(),
+                                  text);
+        }
+    } catch (const std::exception& e) {
+        set_error(lab_error_text(e));
+        return false;
+    }
+    for (int i = 0; i < kInputFiles; ++i) {
+        set_file(static_cast<InputFile>(i),
+                 dir + QLatin1Char('/') + files[static_cast<std::size_t>(i)].first);
+    }
+    set_c_axis(in.c_axis.x_mm, in.c_axis.y_mm);
+    set_angle_deg(in.c_axis.angle_deg);
+    last_dir_ = dir;
+    return run();
+}
+
+bool ComparisonTab::export_report(const QString& path) {
+    if (!result_) {
+        last_error_ = tr("Nothing to export: run the comparison first.");
+        show_error(export_status_, last_error_);
+        return false;
+    }
+    try {
+        write_file_atomically(QFile::encodeName(path).toStdString(),
+                              comparison_report_csv(input_, *result_));
+    } catch (const std::exception& e) {
+        last_error_ = lab_error_text(e);
+        show_error(export_status_, last_error_);
+        return false;
+    }
+    last_dir_ = QFileInfo(path).absolutePath();
+    export_status_->setStyleSheet({});
+    export_status_->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
+    export_status_->show();
+    return true;
+}
+
+bool ComparisonTab::save_project(const QString& path) {
+    const QDir base = QFileInfo(path).absoluteDir();
+    const auto relative = [&base](const QString& file) {
+        return file.isEmpty() ? std::string()
+                              : QFile::encodeName(base.relativeFilePath(file)).toStdString();
+    };
+    ComparisonProject project;
+    project.plan = relative(file(InputFile::plan));
+    project.reference_cmm = relative(file(InputFile::reference_cmm));
+    project.test_omm = relative(file(InputFile::test_omm));
+    project.reference_omm = relative(file(InputFile::reference_omm));
+    project.block_c0 = relative(file(InputFile::block_c0));
+    project.block_c180 = relative(file(InputFile::block_c180));
+    project.c_axis_x_mm = axis_x_->internal_value();
+    project.c_axis_y_mm = axis_y_->internal_value();
+    project.angle_deg = angle_->internal_value();
+    project.tolerance_mm = tolerance_->internal_value();
+    try {
+        write_file_atomically(QFile::encodeName(path).toStdString(),
+                              comparison_project_json(project));
+    } catch (const std::exception& e) {
+        set_error(lab_error_text(e));
+        return false;
+    }
+    last_dir_ = base.absolutePath();
+    return true;
+}
+
+bool ComparisonTab::open_project(const QString& path) {
+    ComparisonProject project;
+    try {
+        project = parse_comparison_project(read_text_file(QFile::encodeName(path).toStdString()));
+    } catch (const FileError& e) {
+        set_error(lab_error_text(e));
+        return false;
+    } catch (const std::exception& e) {
+        set_error(QFileInfo(path).fileName() + QStringLiteral(": ") + lab_error_text(e));
+        return false;
+    }
+    const QDir base = QFileInfo(path).absoluteDir();
+    const auto absolute = [&base](const std::string& file) {
+        return file.empty()
+                   ? QString()
+                   : QDir::cleanPath(base.absoluteFilePath(QFile::decodeName(file.c_str())));
+    };
+    set_file(InputFile::plan, absolute(project.plan));
+    set_file(InputFile::reference_cmm, absolute(project.reference_cmm));
+    set_file(InputFile::test_omm, absolute(project.test_omm));
+    set_file(InputFile::reference_omm, absolute(project.reference_omm));
+    set_file(InputFile::block_c0, absolute(project.block_c0));
+    set_file(InputFile::block_c180, absolute(project.block_c180));
+    set_c_axis(project.c_axis_x_mm, project.c_axis_y_mm);
+    set_angle_deg(project.angle_deg);
+    {
+        const QSignalBlocker block(tolerance_);
+        tolerance_->set_internal_value(project.tolerance_mm);
+    }
+    last_dir_ = base.absolutePath();
+    set_error({});
+    const bool complete = !project.plan.empty() && !project.reference_cmm.empty() &&
+                          !project.test_omm.empty() && !project.reference_omm.empty();
+    return complete ? run() : true;
+}
+
+QStringList ComparisonTab::warning_codes() const {
+    return warnings_->codes();
+}
+
+QStringList ComparisonTab::summary_text() const {
+    QStringList lines;
+    for (int r = 0; r < summary_table_->rowCount(); ++r) {
+        QStringList cells;
+        for (int c = 0; c < summary_table_->columnCount(); ++c) {
+            const QTableWidgetItem* item = summary_table_->item(r, c);
+            cells << (item ? item->text() : QString());
+        }
+        lines << cells.first() + QStringLiteral(": ") + cells.mid(1).join(QStringLiteral(", "));
+    }
+    return lines;
+}
+
+QStringList ComparisonTab::c_axis_text() const {
+    QStringList lines;
+    for (int r = 0; r < c_axis_table_->rowCount(); ++r) {
+        const auto text = [this, r](int c) {
+            const QTableWidgetItem* item = c_axis_table_->item(r, c);
+            return item ? item->text() : QString();
+        };
+        lines << text(0) + QStringLiteral(": ") + text(1) + QStringLiteral(" (") + text(2) +
+                     QLatin1Char(')');
+    }
+    return lines;
+}
+
+QList<int> ComparisonTab::point_order() const {
+    QList<int> order;
+    for (int r = 0; r < point_table_->rowCount(); ++r) {
+        order << point_table_->item(r, 0)->data(Qt::UserRole).toInt();
+    }
+    return order;
+}
+
+int ComparisonTab::map_point_count() const {
+    int count = 0;
+    for (int curve : class_curves_) count += static_cast<int>(map_->point_count(curve));
+    return count;
+}
+
+void ComparisonTab::show_result() {
+    export_button_->setEnabled(result_.has_value());
+    std::vector<LabWarningList::Item> items;
+    if (result_) {
+        for (const ComparisonWarning& w : result_->warnings) {
+            LabWarningList::Item item;
+            item.code = QString::fromStdString(w.code);
+            item.severity = w.severity;
+            item.message = translate(w.message);
+            items.push_back(item);
+        }
+    }
+    warnings_->show_items(items);
+    fill_tables();
+    draw_map();
+    draw_histogram();
+}
+
+void ComparisonTab::fill_tables() {
+    const auto set = [](QTableWidget* table, int row, int column, const QString& text,
+                        bool right = true) {
+        auto* item = new QTableWidgetItem(text);
+        if (right) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        table->setItem(row, column, item);
+    };
+    // The C axis: angles in µrad and arcsec, offsets in µm.
+    const std::array<QString, 6> names = {tr("εx (EAC)"), tr("εy (EBC)"), tr("εz (ECC)"),
+                                          tr("δx (EXC)"), tr("δy (EYC)"), tr("δz (EZC)")};
+    const QString urad = tr("µrad");
+    for (int r = 0; r < 6; ++r) {
+        set(c_axis_table_, r, 0, names[static_cast<std::size_t>(r)], false);
+        if (!result_ || !result_->c_axis_identified) {
+            set(c_axis_table_, r, 1, result_ ? tr("not identified") : QString());
+            set(c_axis_table_, r, 2, QString());
+            continue;
+        }
+        const double value = result_->c_axis.errors.vector()(r);
+        const std::optional<CAxisErrors>& u = result_->c_axis.uncertainty;
+        if (r < 3) {
+            set(c_axis_table_, r, 1,
+                number(value * 1e6, 2) + QChar(0x00A0) + urad + QStringLiteral(" (") +
+                    number(value * kArcsecPerRad, 2) + QStringLiteral("″)"));
+            set(c_axis_table_, r, 2,
+                u ? QStringLiteral("± ") + number(u->vector()(r) * 1e6, 2) + QChar(0x00A0) + urad
+                  : tr("unknown"));
+        } else {
+            set(c_axis_table_, r, 1, um(value, 2));
+            set(c_axis_table_, r, 2,
+                u ? QStringLiteral("± ") + um(u->vector()(r), 2) : tr("unknown"));
+        }
+    }
+    c_axis_table_->resizeColumnsToContents();
+
+    const std::array<QString, 3> rows = {tr("Direct OMM"), tr("Comparison"), tr("System error")};
+    for (int r = 0; r < 3; ++r) {
+        set(summary_table_, r, 0, rows[static_cast<std::size_t>(r)], false);
+        if (!result_) {
+            for (int c = 1; c < 5; ++c) set(summary_table_, r, c, QString());
+            continue;
+        }
+        const DeviationSummary& s = r == 0   ? result_->direct
+                                    : r == 1 ? result_->deviation
+                                             : result_->system_error;
+        set(summary_table_, r, 1, um(s.min_mm));
+        set(summary_table_, r, 2, um(s.max_mm));
+        set(summary_table_, r, 3, um(s.rms_mm));
+        const std::optional<std::size_t>& out =
+            r == 0 ? result_->direct_out_of_tolerance : result_->out_of_tolerance;
+        set(summary_table_, r, 4,
+            r < 2 && out ? QStringLiteral("%1 / %2").arg(
+                               QLocale().toString(static_cast<qulonglong>(*out)),
+                               QLocale().toString(static_cast<qulonglong>(result_->points.size())))
+                         : QString());
+    }
+    summary_table_->resizeColumnsToContents();
+
+    point_table_->setSortingEnabled(false);
+    point_table_->setRowCount(0);
+    if (!result_) return;
+    const std::vector<ComparisonPoint>& points = result_->points;
+    std::vector<std::size_t> order(points.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&points](std::size_t a, std::size_t b) {
+        return std::abs(points[a].deviation_mm) > std::abs(points[b].deviation_mm);
+    });
+    point_table_->setRowCount(static_cast<int>(points.size()));
+    const double tolerance = input_.tolerance_mm.value_or(0.0);
+    for (int row = 0; row < static_cast<int>(order.size()); ++row) {
+        const std::size_t i = order[static_cast<std::size_t>(row)];
+        const ComparisonPoint& p = points[i];
+        auto* index = new QTableWidgetItem(QLocale().toString(static_cast<qulonglong>(i + 1)));
+        index->setData(Qt::UserRole, static_cast<int>(i + 1));
+        index->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        point_table_->setItem(row, 0, index);
+        set(point_table_, row, 1, number(p.nominal.x(), 2));
+        set(point_table_, row, 2, number(p.nominal.y(), 2));
+        set(point_table_, row, 3, number(p.nominal.z(), 2));
+        set(point_table_, row, 4, um(p.deviation_mm));
+        set(point_table_, row, 5, um(p.system_error_mm));
+        set(point_table_, row, 6, um(p.direct_deviation_mm));
+        if (tolerance > 0.0 && std::abs(p.deviation_mm) > tolerance) {
+            point_table_->item(row, 4)->setForeground(kBandColour);
+        }
+    }
+    point_table_->resizeColumnsToContents();
+}
+
+void ComparisonTab::draw_map() {
+    std::array<QList<QPointF>, 7> classes;
+    double tolerance = input_.tolerance_mm.value_or(0.0);
+    if (result_) {
+        // Without a tolerance the classes span the largest deviation.
+        if (!(tolerance > 0.0)) {
+            tolerance =
+                std::max(std::abs(result_->deviation.min_mm), std::abs(result_->deviation.max_mm));
+            if (!(tolerance > 0.0)) tolerance = 0.001;
+        }
+        for (const ComparisonPoint& p : result_->points) {
+            classes[static_cast<std::size_t>(class_of(p.deviation_mm, tolerance))].append(
+                {p.nominal.x(), p.nominal.y()});
+        }
+    }
+    // Legend: each class's range in µm, out of tolerance at the ends.
+    const auto edge = [tolerance](std::size_t k) {
+        return number(kClassEdges[k] * tolerance * 1000.0, 1);
+    };
+    for (std::size_t c = 0; c < classes.size(); ++c) {
+        map_->set_points(class_curves_[c], classes[c]);
+        QString name;
+        if (c == 0) {
+            name = tr("below %1 %2 (out)").arg(edge(0), unit_um());
+        } else if (c == classes.size() - 1) {
+            name = tr("above +%1 %2 (out)").arg(edge(kClassEdges.size() - 1), unit_um());
+        } else {
+            name = tr("%1 to %2 %3").arg(edge(c - 1), edge(c), unit_um());
+        }
+        map_->set_name(class_curves_[c], name);
+    }
+    if (result_ && !result_->points.empty()) {
+        double x0 = result_->points.front().nominal.x();
+        double x1 = x0;
+        double y0 = result_->points.front().nominal.y();
+        double y1 = y0;
+        for (const ComparisonPoint& p : result_->points) {
+            x0 = std::min(x0, p.nominal.x());
+            x1 = std::max(x1, p.nominal.x());
+            y0 = std::min(y0, p.nominal.y());
+            y1 = std::max(y1, p.nominal.y());
+        }
+        const double pad = 0.05 * std::max({x1 - x0, y1 - y0, 1.0});
+        map_->set_x_range(x0 - pad, x1 + pad);
+        map_->set_y_range(PlotView::Side::left, y0 - pad, y1 + pad);
+    }
+}
+
+void ComparisonTab::draw_histogram() {
+    if (!result_ || result_->points.empty()) {
+        histogram_->set_area(direct_area_, {}, {});
+        histogram_->set_area(deviation_area_, {}, {});
+        histogram_->set_points(band_low_, {});
+        histogram_->set_points(band_high_, {});
+        return;
+    }
+    // In µm, one range for both so that the two shapes compare.
+    double lo = std::min(result_->direct.min_mm, result_->deviation.min_mm) * 1000.0;
+    double hi = std::max(result_->direct.max_mm, result_->deviation.max_mm) * 1000.0;
+    const double tolerance_um = input_.tolerance_mm.value_or(0.0) * 1000.0;
+    if (tolerance_um > 0.0) {
+        lo = std::min(lo, -tolerance_um);
+        hi = std::max(hi, tolerance_um);
+    }
+    if (!(hi > lo)) hi = lo + 1.0;
+    const double width = (hi - lo) / kHistogramBins;
+    const auto steps = [&](double ComparisonPoint::*member, QList<QPointF>& upper,
+                           QList<QPointF>& lower) {
+        std::array<int, kHistogramBins> counts{};
+        for (const ComparisonPoint& p : result_->points) {
+            const int bin = std::clamp(static_cast<int>((p.*member * 1000.0 - lo) / width), 0,
+                                       kHistogramBins - 1);
+            ++counts[static_cast<std::size_t>(bin)];
+        }
+        int most = 0;
+        for (int b = 0; b < kHistogramBins; ++b) {
+            const double x0 = lo + b * width;
+            const double c = counts[static_cast<std::size_t>(b)];
+            upper << QPointF(x0, c) << QPointF(x0 + width, c);
+            lower << QPointF(x0, 0.0) << QPointF(x0 + width, 0.0);
+            most = std::max(most, counts[static_cast<std::size_t>(b)]);
+        }
+        return most;
+    };
+    QList<QPointF> direct_upper, direct_lower, deviation_upper, deviation_lower;
+    const int most =
+        std::max(steps(&ComparisonPoint::direct_deviation_mm, direct_upper, direct_lower),
+                 steps(&ComparisonPoint::deviation_mm, deviation_upper, deviation_lower));
+    histogram_->set_area(direct_area_, direct_upper, direct_lower);
+    histogram_->set_area(deviation_area_, deviation_upper, deviation_lower);
+    const double top = std::max(1.0, most * 1.1);
+    if (tolerance_um > 0.0) {
+        histogram_->set_points(band_low_, {{-tolerance_um, 0.0}, {-tolerance_um, top}});
+        histogram_->set_points(band_high_, {{tolerance_um, 0.0}, {tolerance_um, top}});
+    } else {
+        histogram_->set_points(band_low_, {});
+        histogram_->set_points(band_high_, {});
+    }
+    const double pad = 0.03 * (hi - lo);
+    histogram_->set_x_range(lo - pad, hi + pad);
+    histogram_->set_y_range(PlotView::Side::left, 0.0, top);
+}
+
+void ComparisonTab::choose_file(InputFile which) {
+    const QString path = QFileDialog::getOpenFileName(
+        this, file_labels_[static_cast<std::size_t>(which)]->text(), last_dir_,
+        tr("Point files (*.csv *.dmi *.dmis *.txt);;All files (*)"));
+    if (path.isEmpty()) return;
+    set_file(which, path);
+    last_dir_ = QFileInfo(path).absolutePath();
+}
+
+void ComparisonTab::open_project_dialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open comparison project"), last_dir_, tr("Comparison projects (*.json)"));
+    if (!path.isEmpty()) open_project(path);
+}
+
+void ComparisonTab::save_project_dialog() {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save comparison project"), last_dir_, tr("Comparison projects (*.json)"));
+    if (!path.isEmpty()) save_project(path);
+}
+
+void ComparisonTab::export_dialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export comparison report"),
+                                                      last_dir_, tr("CSV files (*.csv)"));
+    if (!path.isEmpty()) export_report(path);
+}
+
+void ComparisonTab::simulate_dialog() {
+    simulate_example();
+}
+
+}  // namespace probecycle::ui
