@@ -52,12 +52,7 @@ CAxisSetup axis_setup(const AxisArgs& args) {
 
 std::vector<Eigen::Vector3d> read_points(const std::string& path, std::size_t plan_count) {
     return read_lab_csv(path, [plan_count](const std::string& text) {
-        const std::vector<MeasuredPoint> points = parse_points(text);
-        check_point_count(points, plan_count);
-        std::vector<Eigen::Vector3d> out;
-        out.reserve(points.size());
-        for (const MeasuredPoint& p : points) out.push_back(p.point);
-        return out;
+        return parse_points_for_plan(text, plan_count);
     });
 }
 

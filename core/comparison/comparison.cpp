@@ -17,13 +17,7 @@ constexpr std::size_t kNamedPoints = 5;
 
 void check_counts(const ComparisonInput& input) {
     const std::size_t n = input.plan.size();
-    if (n < kMinComparisonPoints) {
-        throw InputError(comparison_message(
-            "too_few_points",
-            QT_TRANSLATE_NOOP("Comparison", "plan points: %1; a comparison needs %2 or more"),
-            {arg("points", ArgKind::integer, static_cast<double>(n)),
-             arg("required", ArgKind::integer, static_cast<double>(kMinComparisonPoints))}));
-    }
+    if (n < kMinComparisonPoints) throw InputError(too_few_points(n));
     for (const auto* points : {&input.reference_cmm, &input.test_omm, &input.reference_omm}) {
         if (points->size() != n) {
             throw InputError(comparison_message(
@@ -62,21 +56,24 @@ std::string point_list(const std::vector<std::size_t>& indices) {
     return out;
 }
 
+void warn(std::vector<ComparisonWarning>& warnings, ComparisonWarningCode code, Severity severity,
+          const char* text, std::vector<MessageArg> args) {
+    warnings.push_back(
+        {to_string(code), severity, comparison_message(to_string(code), text, std::move(args))});
+}
+
 void fit_warning(const Message& which, const SurfaceFitResiduals& fit,
                  std::vector<ComparisonWarning>& warnings) {
     if (fit.max_mm <= kFitResidualWarning_mm) return;
-    warnings.push_back(
-        {to_string(ComparisonWarningCode::surface_fit_residual), Severity::warning,
-         comparison_message(
-             to_string(ComparisonWarningCode::surface_fit_residual),
-             QT_TRANSLATE_NOOP("Comparison",
-                               "the surface through the %1 leaves residuals up to %2 (RMS %3, "
-                               "above %4): the plan may be too sparse for the part's form, or "
-                               "a point is wrong"),
-             {message_arg("surface", which),
-              significant_arg("max_mm", ArgKind::length_mm, fit.max_mm, 3),
-              significant_arg("rms_mm", ArgKind::length_mm, fit.rms_mm, 3),
-              arg("limit_mm", ArgKind::length_mm, kFitResidualWarning_mm)})});
+    warn(warnings, ComparisonWarningCode::surface_fit_residual, Severity::warning,
+         QT_TRANSLATE_NOOP("Comparison",
+                           "the surface through the %1 leaves residuals up to %2 (RMS %3, "
+                           "above %4): the plan may be too sparse for the part's form, or "
+                           "a point is wrong"),
+         {message_arg("surface", which),
+          significant_arg("max_mm", ArgKind::length_mm, fit.max_mm, 3),
+          significant_arg("rms_mm", ArgKind::length_mm, fit.rms_mm, 3),
+          arg("limit_mm", ArgKind::length_mm, kFitResidualWarning_mm)});
 }
 
 std::optional<std::size_t> count_beyond(const std::vector<double>& values,
@@ -137,19 +134,20 @@ ComparisonResult run_comparison(const ComparisonInput& input) {
         }
     } else {
         result.c_axis.uncertainty = CAxisErrors{};
-        result.warnings.push_back(
-            {to_string(ComparisonWarningCode::c_axis_not_identified), Severity::info,
-             comparison_message(
-                 to_string(ComparisonWarningCode::c_axis_not_identified),
-                 QT_TRANSLATE_NOOP("Comparison",
-                                   "no block touched: the C axis is taken as exact, and its "
-                                   "errors (at %1 from the axis, tens of micrometres per 0.1 "
-                                   "mrad) stay in the result"),
-                 {significant_arg("radius_mm", ArgKind::length_mm,
-                                  (input.plan.front().nominal.head<2>() -
-                                   Eigen::Vector2d(input.c_axis.x_mm, input.c_axis.y_mm))
-                                      .norm(),
-                                  3)})});
+        double radius_mm = 0.0;
+        for (const PlanPoint& p : input.plan) {
+            radius_mm +=
+                (p.nominal.head<2>() - Eigen::Vector2d(input.c_axis.x_mm, input.c_axis.y_mm))
+                    .norm();
+        }
+        radius_mm /= static_cast<double>(input.plan.size());
+        warn(result.warnings, ComparisonWarningCode::c_axis_not_identified, Severity::info,
+             QT_TRANSLATE_NOOP("Comparison",
+                               "no block touched: the C axis is taken as exact and its errors "
+                               "stay in the result; %1 from the axis, every 10 µrad of tilt "
+                               "or turn moves a point by %2"),
+             {significant_arg("radius_mm", ArgKind::length_mm, radius_mm, 3),
+              significant_arg("per_10_urad_mm", ArgKind::length_mm, radius_mm * 1e-5, 2)});
     }
     const CAxisErrors& errors = result.c_axis.errors;
 
@@ -249,53 +247,41 @@ ComparisonResult run_comparison(const ComparisonInput& input) {
     std::sort(off_surface.begin(), off_surface.end());
     off_surface.erase(std::unique(off_surface.begin(), off_surface.end()), off_surface.end());
     if (!off_surface.empty()) {
-        result.warnings.push_back(
-            {to_string(ComparisonWarningCode::point_off_surface), Severity::warning,
-             comparison_message(
-                 to_string(ComparisonWarningCode::point_off_surface),
-                 QT_TRANSLATE_NOOP("Comparison",
-                                   "%1 points project onto the edge of a fitted surface, not "
-                                   "square onto it (points %2): their results are less sure"),
-                 {arg("points", ArgKind::integer, static_cast<double>(off_surface.size())),
-                  text_arg("point_numbers", point_list(off_surface))})});
+        warn(result.warnings, ComparisonWarningCode::point_off_surface, Severity::warning,
+             QT_TRANSLATE_NOOP("Comparison",
+                               "%1 points project onto the edge of a fitted surface, not "
+                               "square onto it (points %2): their results are less sure"),
+             {arg("points", ArgKind::integer, static_cast<double>(off_surface.size())),
+              text_arg("point_numbers", point_list(off_surface))});
     }
     if (!far.empty()) {
-        result.warnings.push_back(
-            {to_string(ComparisonWarningCode::point_far_from_plan), Severity::warning,
-             comparison_message(
-                 to_string(ComparisonWarningCode::point_far_from_plan),
-                 QT_TRANSLATE_NOOP("Comparison",
-                                   "%1 measured points lie more than %2 from their plan points "
-                                   "(points %3): are the files in the plan's order, and the C "
-                                   "axis's position and angle right?"),
-                 {arg("points", ArgKind::integer, static_cast<double>(far.size())),
-                  arg("limit_mm", ArgKind::length_mm, kFarFromPlanWarning_mm),
-                  text_arg("point_numbers", point_list(far))})});
+        warn(result.warnings, ComparisonWarningCode::point_far_from_plan, Severity::warning,
+             QT_TRANSLATE_NOOP("Comparison",
+                               "%1 measured points lie more than %2 from their plan points "
+                               "(points %3): are the files in the plan's order, and the C "
+                               "axis's position and angle right?"),
+             {arg("points", ArgKind::integer, static_cast<double>(far.size())),
+              arg("limit_mm", ArgKind::length_mm, kFarFromPlanWarning_mm),
+              text_arg("point_numbers", point_list(far))});
     }
     if (!disagree.empty()) {
-        result.warnings.push_back(
-            {to_string(ComparisonWarningCode::first_order_disagreement), Severity::warning,
-             comparison_message(
-                 to_string(ComparisonWarningCode::first_order_disagreement),
-                 QT_TRANSLATE_NOOP("Comparison",
-                                   "at %1 points the result differs from its first-order "
-                                   "estimate by more than %2 (points %3): the surfaces do not "
-                                   "follow the points there"),
-                 {arg("points", ArgKind::integer, static_cast<double>(disagree.size())),
-                  arg("limit_mm", ArgKind::length_mm, kFirstOrderWarning_mm),
-                  text_arg("point_numbers", point_list(disagree))})});
+        warn(result.warnings, ComparisonWarningCode::first_order_disagreement, Severity::warning,
+             QT_TRANSLATE_NOOP("Comparison",
+                               "at %1 points the result differs from its first-order "
+                               "estimate by more than %2 (points %3): the surfaces do not "
+                               "follow the points there"),
+             {arg("points", ArgKind::integer, static_cast<double>(disagree.size())),
+              arg("limit_mm", ArgKind::length_mm, kFirstOrderWarning_mm),
+              text_arg("point_numbers", point_list(disagree))});
     }
     if (largest_uncertainty > kCAxisUncertaintyWarning_mm) {
-        result.warnings.push_back(
-            {to_string(ComparisonWarningCode::c_axis_uncertainty_large), Severity::warning,
-             comparison_message(
-                 to_string(ComparisonWarningCode::c_axis_uncertainty_large),
-                 QT_TRANSLATE_NOOP("Comparison",
-                                   "the C-axis errors' uncertainty reaches %1 on the part "
-                                   "(above %2): touch the block more often or on larger faces, "
-                                   "or judge whether the correction helps"),
-                 {significant_arg("uncertainty_mm", ArgKind::length_mm, largest_uncertainty, 2),
-                  arg("limit_mm", ArgKind::length_mm, kCAxisUncertaintyWarning_mm)})});
+        warn(result.warnings, ComparisonWarningCode::c_axis_uncertainty_large, Severity::warning,
+             QT_TRANSLATE_NOOP("Comparison",
+                               "the C-axis errors' uncertainty reaches %1 on the part "
+                               "(above %2): touch the block more often or on larger faces, "
+                               "or judge whether the correction helps"),
+             {significant_arg("uncertainty_mm", ArgKind::length_mm, largest_uncertainty, 2),
+              arg("limit_mm", ArgKind::length_mm, kCAxisUncertaintyWarning_mm)});
     }
     return result;
 }

@@ -109,18 +109,28 @@ Eigen::Vector3d coordinates(const CsvRow& row) {
 
 void check_enough(const std::vector<CsvRow>& rows) {
     if (rows.size() < kMinComparisonPoints) {
-        throw CsvError(
-            rows.empty() ? 0 : rows.back().line, "",
-            comparison_message(
-                "too_few_points",
-                QT_TRANSLATE_NOOP("Comparison",
-                                  "points in the file: %1; a comparison needs %2 or more"),
-                {arg("points", ArgKind::integer, static_cast<double>(rows.size())),
-                 arg("required", ArgKind::integer, static_cast<double>(kMinComparisonPoints))}));
+        throw CsvError(rows.empty() ? 0 : rows.back().line, "", too_few_points(rows.size()));
     }
 }
 
 }  // namespace
+
+Message too_few_points(std::size_t points) {
+    return comparison_message(
+        "too_few_points",
+        QT_TRANSLATE_NOOP("Comparison", "a comparison needs %2 points or more; got %1"),
+        {arg("points", ArgKind::integer, static_cast<double>(points)),
+         arg("required", ArgKind::integer, static_cast<double>(kMinComparisonPoints))});
+}
+
+std::vector<Eigen::Vector3d> parse_points_for_plan(std::string_view text, std::size_t plan_count) {
+    const std::vector<MeasuredPoint> points = parse_points(text);
+    check_point_count(points, plan_count);
+    std::vector<Eigen::Vector3d> out;
+    out.reserve(points.size());
+    for (const MeasuredPoint& p : points) out.push_back(p.point);
+    return out;
+}
 
 const char* to_string(BlockFace face) {
     switch (face) {

@@ -17,6 +17,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/common/message.h"
+
 namespace probecycle {
 
 struct PlanPoint {
@@ -56,6 +58,10 @@ std::vector<MeasuredPoint> parse_points(std::string_view text);
 // CsvError unless there is one point per plan point: naming the first line
 // beyond the plan's count, or the count the file is short of.
 void check_point_count(const std::vector<MeasuredPoint>& points, std::size_t plan_count);
+// parse_points() then check_point_count(): the coordinates, one per plan point.
+std::vector<Eigen::Vector3d> parse_points_for_plan(std::string_view text, std::size_t plan_count);
+// "a comparison needs %2 points or more; got %1".
+Message too_few_points(std::size_t points);
 // A block's touches; CsvError for an unknown face or a face with fewer than
 // kMinFaceTouches touches.
 std::vector<BlockTouch> parse_block(std::string_view text);

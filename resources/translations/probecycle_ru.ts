@@ -119,10 +119,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>no block touched: the C axis is taken as exact, and its errors (at %1 from the axis, tens of micrometres per 0.1 mrad) stay in the result</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>reference&apos;s CMM points</source>
         <translation type="unfinished"></translation>
     </message>
@@ -184,6 +180,10 @@
     </message>
     <message>
         <source>touches on face %1: %2; each face needs %3 or more (typically 6)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no block touched: the C axis is taken as exact and its errors stay in the result; %1 from the axis, every 10 µrad of tilt or turn moves a point by %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1364,10 +1364,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Choose the %1 file.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>The block is needed at both angles: choose both block files, or neither.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1454,6 +1450,10 @@
     <message>
         <source>CSV files (*.csv)</source>
         <translation type="unfinished">Файлы CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Choose a file for “%1”.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

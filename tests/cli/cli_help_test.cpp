@@ -45,11 +45,23 @@ std::set<std::string> options_in(const std::string& text) {
     return found;
 }
 
-const std::vector<std::string> kCommands = {
-    "",        "defaults",    "evaluate",          "move",           "sweep",
-    "report",  "montecarlo",  "calibrate",         "calibrate ring", "calibrate length",
-    "latency", "latency fit", "latency compensate", "compare", "compare run",
-    "compare cerrors", "compare simulate"};
+const std::vector<std::string> kCommands = {"",
+                                            "defaults",
+                                            "evaluate",
+                                            "move",
+                                            "sweep",
+                                            "report",
+                                            "montecarlo",
+                                            "calibrate",
+                                            "calibrate ring",
+                                            "calibrate length",
+                                            "latency",
+                                            "latency fit",
+                                            "latency compensate",
+                                            "compare",
+                                            "compare run",
+                                            "compare cerrors",
+                                            "compare simulate"};
 
 TEST(CliHelp, EveryCommandHasHelpOnStdoutAndExitsZero) {
     for (const std::string& command : kCommands) {

@@ -129,7 +129,7 @@ TEST(CompareCli, BadInputNamesTheFileLineAndColumnAndWritesNothing) {
          "reference_cmm.csv: line 2, column x_mm: 'nan' is not a number"},
         {"column", "reference_omm.csv", "x_mm,y_mm\n1,2\n", "reference_omm.csv"},
         {"few", "plan.csv", "x_mm,y_mm,z_mm,i,j,k\n1,2,3,0,0,1\n",
-         "plan.csv: line 2: points in the file: 1; a comparison needs 16 or more"},
+         "plan.csv: line 2: a comparison needs 16 points or more; got 1"},
         {"face", "block_c0.csv",
          "face,x_mm,y_mm,z_mm\nA,1,2,3\nA,2,2,3\nA,1,5,3\nB,1,2,3\nB,2,2,3\n",
          "block_c0.csv: line 6, column face: touches on face B: 2"},

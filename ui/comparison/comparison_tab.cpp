@@ -90,7 +90,7 @@ ComparisonTab::ComparisonTab(QWidget* parent) : QWidget(parent) {
     input_column->setContentsMargins(0, 0, 0, 0);
     input_column->addWidget(build_input_group());
     input_column->addStretch(1);
-    input_widget->setFixedWidth(380);
+    input_widget->setFixedWidth(350);
 
     auto* root = new QHBoxLayout(this);
     root->addWidget(input_widget);
@@ -141,7 +141,7 @@ QGroupBox* ComparisonTab::build_input_group() {
         new UnitSpinBox(kMinComparisonAngle_deg, kMaxComparisonAngle_deg, 3, 180.0, input_group_);
     angle_->set_unit([] { return QStringLiteral("°"); });
     // The tolerance in µm: a few micrometres to a few tenths.
-    tolerance_ = new UnitSpinBox(kMinTolerance_mm, kMaxTolerance_mm, 1, 0.01, input_group_, 1000.0);
+    tolerance_ = new UnitSpinBox(1e-4, kMaxTolerance_mm, 1, 0.01, input_group_, 1000.0);
     tolerance_->set_unit(unit_um);
     tolerance_->setObjectName(QStringLiteral("comparison-tolerance"));
     axis_x_label_ = new QLabel(input_group_);
@@ -274,7 +274,8 @@ QWidget* ComparisonTab::build_result_column() {
     column->addWidget(point_table_, 1);
     column->addWidget(export_status_);
     column->addLayout(export_row);
-    result_group_->setFixedWidth(500);
+    result_group_->setMinimumWidth(370);
+    result_group_->setMaximumWidth(500);
     return result_group_;
 }
 
@@ -412,7 +413,7 @@ bool ComparisonTab::run() {
         for (InputFile which : {InputFile::plan, InputFile::reference_cmm, InputFile::test_omm,
                                 InputFile::reference_omm}) {
             if (file(which).isEmpty()) {
-                set_error(tr("Choose the %1 file.")
+                set_error(tr("Choose a file for “%1”.")
                               .arg(file_labels_[static_cast<std::size_t>(which)]->text()));
                 return false;
             }
@@ -430,14 +431,8 @@ bool ComparisonTab::run() {
         const std::size_t n = input.plan.size();
         const auto points = [&](InputFile which) {
             current = file(which);
-            return read_input(current, [n](const std::string& t) {
-                const std::vector<MeasuredPoint> read = parse_points(t);
-                check_point_count(read, n);
-                std::vector<Eigen::Vector3d> out;
-                out.reserve(read.size());
-                for (const MeasuredPoint& p : read) out.push_back(p.point);
-                return out;
-            });
+            return read_input(current,
+                              [n](const std::string& t) { return parse_points_for_plan(t, n); });
         };
         input.reference_cmm = points(InputFile::reference_cmm);
         input.test_omm = points(InputFile::test_omm);

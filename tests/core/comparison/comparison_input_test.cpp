@@ -57,7 +57,7 @@ TEST(ComparisonInputTest, RefusesNaNAMissingColumnAndTooFewPoints) {
     expect_error([] { (void)parse_plan(plan_text(16) + "nan,1,2,0,0,1\n"); }, 19, "x_mm",
                  "not a number");
     expect_error([] { (void)parse_points("x_mm,z_mm\n1,2\n"); }, 1, "", "y_mm");
-    expect_error([] { (void)parse_points(points_text(15)); }, 16, "", "16 or more");
+    expect_error([] { (void)parse_points(points_text(15)); }, 16, "", "16 points or more; got 15");
 }
 
 TEST(ComparisonInputTest, CountsMustMatchThePlan) {
