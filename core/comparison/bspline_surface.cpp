@@ -100,10 +100,10 @@ void basis_derivatives(const std::vector<double>& knots, int span, double u, int
 // interpolating surface swings 0.6 mm between the columns; even knots keep
 // it within 2 um of the sampled freeform face.
 std::vector<double> uniform_knots(int count, int degree) {
-    std::vector<double> knots(static_cast<std::size_t>(degree + 1), 0.0);
+    std::vector<double> knots(static_cast<std::size_t>(degree) + 1, 0.0);
     const int spans = count - degree;
     for (int j = 1; j < spans; ++j) knots.push_back(static_cast<double>(j) / spans);
-    knots.insert(knots.end(), static_cast<std::size_t>(degree + 1), 1.0);
+    knots.insert(knots.end(), static_cast<std::size_t>(degree) + 1, 1.0);
     return knots;
 }
 
@@ -225,7 +225,8 @@ BSplineSurface BSplineSurface::fit(const std::vector<Eigen::Vector3d>& points,
         throw std::invalid_argument("surface degree out of range; allowed: 1 to 5");
     }
     const std::size_t n_points = points.size();
-    if (n_points < static_cast<std::size_t>((p + 1) * (p + 1))) {
+    const auto needed = static_cast<std::size_t>(p + 1) * static_cast<std::size_t>(p + 1);
+    if (n_points < needed) {
         throw InputError(comparison_message(
             "surface_too_few_points",
             QT_TRANSLATE_NOOP("Comparison", "a surface needs %1 points or more; got %2"),
@@ -242,7 +243,7 @@ BSplineSurface BSplineSurface::fit(const std::vector<Eigen::Vector3d>& points,
     Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
     for (const Eigen::Vector3d& q : points) scatter += (q - centroid) * (q - centroid).transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
-    const Eigen::Vector3d values = eigen.eigenvalues();  // ascending
+    const Eigen::Vector3d& values = eigen.eigenvalues();  // ascending
     if (!(values(2) > 0.0) || values(1) <= 1e-12 * values(2)) {
         throw InputError(comparison_message(
             "surface_points_on_a_line",
@@ -298,8 +299,9 @@ BSplineSurface BSplineSurface::fit(const std::vector<Eigen::Vector3d>& points,
     BasisTable bu{};
     BasisTable bv{};
     const int per_point = (p + 1) * (p + 1);
-    std::array<int, (kMaxDegree + 1) * (kMaxDegree + 1)> index{};
-    std::array<double, (kMaxDegree + 1) * (kMaxDegree + 1)> weight{};
+    constexpr std::size_t kMaxPerPoint = std::size_t{kMaxDegree + 1} * (kMaxDegree + 1);
+    std::array<int, kMaxPerPoint> index{};
+    std::array<double, kMaxPerPoint> weight{};
     for (std::size_t k = 0; k < n_points; ++k) {
         const int span_u = find_span(surface.knots_u_, p, nu, u[k]);
         const int span_v = find_span(surface.knots_v_, p, nv, v[k]);
@@ -323,6 +325,7 @@ BSplineSurface BSplineSurface::fit(const std::vector<Eigen::Vector3d>& points,
     for (const auto& row : jump_rows(surface.knots_u_, p)) {
         for (int j = 0; j < nv; ++j) {
             std::vector<std::pair<int, double>> entries;
+            entries.reserve(row.size());
             for (const auto& [i, value] : row) entries.emplace_back(i * nv + j, value);
             penalty.push_back(std::move(entries));
         }
@@ -330,6 +333,7 @@ BSplineSurface BSplineSurface::fit(const std::vector<Eigen::Vector3d>& points,
     for (const auto& row : jump_rows(surface.knots_v_, p)) {
         for (int i = 0; i < nu; ++i) {
             std::vector<std::pair<int, double>> entries;
+            entries.reserve(row.size());
             for (const auto& [j, value] : row) entries.emplace_back(i * nv + j, value);
             penalty.push_back(std::move(entries));
         }
@@ -393,7 +397,9 @@ SurfacePoint BSplineSurface::evaluate(double u, double v) const {
         Eigen::Vector3d row0 = Eigen::Vector3d::Zero();
         Eigen::Vector3d row1 = Eigen::Vector3d::Zero();
         Eigen::Vector3d row2 = Eigen::Vector3d::Zero();
-        const std::size_t base = static_cast<std::size_t>((span_u - p + a) * nv + (span_v - p));
+        const std::size_t base =
+            static_cast<std::size_t>(span_u - p + a) * static_cast<std::size_t>(nv) +
+            static_cast<std::size_t>(span_v - p);
         for (int b = 0; b <= p; ++b) {
             const Eigen::Vector3d& c = controls_[base + static_cast<std::size_t>(b)];
             row0 += bv[0][b] * c;

@@ -727,7 +727,7 @@ void ComparisonTab::fill_tables() {
     for (int row = 0; row < static_cast<int>(order.size()); ++row) {
         const std::size_t i = order[static_cast<std::size_t>(row)];
         const ComparisonPoint& p = points[i];
-        auto* index = new QTableWidgetItem(QLocale().toString(static_cast<qulonglong>(i + 1)));
+        auto* index = new QTableWidgetItem(QLocale().toString(static_cast<qulonglong>(i) + 1));
         index->setData(Qt::UserRole, static_cast<int>(i + 1));
         index->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         point_table_->setItem(row, 0, index);
