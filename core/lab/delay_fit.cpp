@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "core/common/csv_reader.h"
-#include "core/common/units.h"
 #include "core/common/input_error.h"
+#include "core/common/units.h"
 
 namespace probecycle {
 

@@ -68,123 +68,119 @@
     <name>Comparison</name>
     <message>
         <source>a surface needs %1 points or more; got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>для поверхности нужно точек не менее %1; получено: %2</translation>
     </message>
     <message>
         <source>the points lie on a line: they span no surface</source>
-        <translation type="unfinished"></translation>
+        <translation>точки лежат на одной прямой и не задают поверхность</translation>
     </message>
     <message>
         <source>the surface fit has no unique solution for these points</source>
-        <translation type="unfinished"></translation>
+        <translation>подбор поверхности по этим точкам не имеет единственного решения</translation>
     </message>
     <message>
         <source>face %1 at C = %2: the touches lie on a line and define no plane; touch the face at points spread over it</source>
-        <translation type="unfinished"></translation>
+        <translation>грань %1 при C = %2: касания лежат на одной прямой и не задают плоскость; касайтесь грани в точках, распределённых по всей её поверхности</translation>
     </message>
     <message>
         <source>block at C = %1: the three faces&apos; planes do not meet in one point (two of them are parallel); touch three faces of a corner</source>
-        <translation type="unfinished"></translation>
+        <translation>блок при C = %1: плоскости трёх граней не пересекаются в одной точке (две из них параллельны); касайтесь трёх граней, образующих угол</translation>
     </message>
     <message>
         <source>face %1 at C = %2: the touches nearly lie on a line (spread ratio %3); the face&apos;s tilt about that line is poorly known</source>
-        <translation type="unfinished"></translation>
+        <translation>грань %1 при C = %2: касания почти лежат на одной прямой (отношение разброса %3); наклон грани вокруг этой прямой определён плохо</translation>
     </message>
     <message>
         <source>face %1 at C = %2: a touch lies %3 off the face&apos;s plane (above %4); a chip, a burr or a bad touch?</source>
-        <translation type="unfinished"></translation>
+        <translation>грань %1 при C = %2: одна из точек касания отстоит от плоскости грани на %3 (больше %4); стружка, заусенец или плохое касание?</translation>
     </message>
     <message>
         <source>faces %1 and %2 at C = %3 meet at %4 (below %5): the corner is poorly defined</source>
-        <translation type="unfinished"></translation>
+        <translation>грани %1 и %2 при C = %3 сходятся под углом %4 (меньше %5): вершина угла определена плохо</translation>
     </message>
     <message>
         <source>a face has only 3 touches: its plane passes through them, so the C-axis errors&apos; uncertainty is unknown; touch each face 6 times</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>plan points: %1; a comparison needs %2 or more</source>
-        <translation type="unfinished"></translation>
+        <translation>на одной из граней только 3 касания: плоскость проходит точно через них, поэтому неопределённость погрешностей оси C неизвестна; касайтесь каждой грани 6 раз</translation>
     </message>
     <message>
         <source>%1 measured points for %2 plan points; one measured point per plan point is needed</source>
-        <translation type="unfinished"></translation>
+        <translation>измеренных точек: %1, точек плана: %2; нужна одна измеренная точка на каждую точку плана</translation>
     </message>
     <message>
         <source>the block is needed at C = 0 and after the turn; only one is given</source>
-        <translation type="unfinished"></translation>
+        <translation>блок нужен при C = 0 и после поворота; задан только один из них</translation>
     </message>
     <message>
         <source>the surface through the %1 leaves residuals up to %2 (RMS %3, above %4): the plan may be too sparse for the part&apos;s form, or a point is wrong</source>
-        <translation type="unfinished"></translation>
+        <translation>поверхность через %1 оставляет остатки до %2 (СКЗ %3, больше %4): план может быть слишком редким для формы детали, или одна из точек ошибочна</translation>
     </message>
     <message>
         <source>reference&apos;s CMM points</source>
-        <translation type="unfinished"></translation>
+        <translation>точки КИМ эталонной детали</translation>
     </message>
     <message>
         <source>plan&apos;s nominal points</source>
-        <translation type="unfinished"></translation>
+        <translation>номинальные точки плана</translation>
     </message>
     <message>
         <source>calibrated reference points</source>
-        <translation type="unfinished"></translation>
+        <translation>калиброванные точки эталонной детали</translation>
     </message>
     <message>
         <source>%1 points project onto the edge of a fitted surface, not square onto it (points %2): their results are less sure</source>
-        <translation type="unfinished"></translation>
+        <translation>точек, проецирующихся на край подобранной поверхности, а не по нормали к ней: %1 (точки %2); их результаты менее надёжны</translation>
     </message>
     <message>
         <source>%1 measured points lie more than %2 from their plan points (points %3): are the files in the plan&apos;s order, and the C axis&apos;s position and angle right?</source>
-        <translation type="unfinished"></translation>
+        <translation>измеренных точек, удалённых от своих точек плана более чем на %2: %1 (точки %3); идут ли файлы в порядке плана и верны ли положение и угол оси C?</translation>
     </message>
     <message>
         <source>at %1 points the result differs from its first-order estimate by more than %2 (points %3): the surfaces do not follow the points there</source>
-        <translation type="unfinished"></translation>
+        <translation>точек, где результат отличается от оценки первого порядка более чем на %2: %1 (точки %3); там поверхности не следуют за точками</translation>
     </message>
     <message>
         <source>the C-axis errors&apos; uncertainty reaches %1 on the part (above %2): touch the block more often or on larger faces, or judge whether the correction helps</source>
-        <translation type="unfinished"></translation>
+        <translation>неопределённость погрешностей оси C достигает на детали %1 (больше %2): касайтесь блока чаще или на больших гранях либо оцените, помогает ли коррекция</translation>
     </message>
     <message>
         <source>only PTMEAS/CART,x,y,z,i,j,k is read; got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>читается только PTMEAS/CART,x,y,z,i,j,k; получено «%1»</translation>
     </message>
     <message>
         <source>PTMEAS/CART has %1 numbers; the plan needs 6 (x, y, z, i, j, k)</source>
-        <translation type="unfinished"></translation>
+        <translation>чисел в PTMEAS/CART: %1; для плана нужно 6 (x, y, z, i, j, k)</translation>
     </message>
     <message>
         <source>PTMEAS/CART has %1 numbers; allowed: 3 (x, y, z) or 6 (x, y, z, i, j, k)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>points in the file: %1; a comparison needs %2 or more</source>
-        <translation type="unfinished"></translation>
+        <translation>чисел в PTMEAS/CART: %1; допустимо: 3 (x, y, z) или 6 (x, y, z, i, j, k)</translation>
     </message>
     <message>
         <source>the normal (i, j, k) has length %1; allowed: a unit vector, length 1 within %2</source>
-        <translation type="unfinished"></translation>
+        <translation>длина нормали (i, j, k) равна %1; допустимо: единичный вектор, длина 1 с точностью до %2</translation>
     </message>
     <message>
         <source>point %1 has no plan point: the file has %2 points, the plan %3</source>
-        <translation type="unfinished"></translation>
+        <translation>для точки %1 нет точки плана: точек в файле: %2, в плане: %3</translation>
     </message>
     <message>
         <source>the file ends after %1 points; the plan has %2 (one measured point per plan point, in the plan&apos;s order)</source>
-        <translation type="unfinished"></translation>
+        <translation>файл заканчивается, точек в нём: %1; в плане: %2 (нужна одна измеренная точка на каждую точку плана, в порядке плана)</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a face; allowed: A, B, C</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» — не грань; допустимо: A, B, C</translation>
     </message>
     <message>
         <source>touches on face %1: %2; each face needs %3 or more (typically 6)</source>
-        <translation type="unfinished"></translation>
+        <translation>касаний на грани %1: %2; для каждой грани нужно не менее %3 (обычно 6)</translation>
     </message>
     <message>
         <source>no block touched: the C axis is taken as exact and its errors stay in the result; %1 from the axis, every 10 µrad of tilt or turn moves a point by %2</source>
-        <translation type="unfinished"></translation>
+        <translation>блок не измерялся: ось C считается точной, и её погрешности остаются в результате; на расстоянии %1 от оси каждые 10 мкрад наклона или поворота смещают точку на %2</translation>
+    </message>
+    <message>
+        <source>a comparison needs %2 points or more; got %1</source>
+        <translation>для сравнения нужно точек не менее %2; получено: %1</translation>
     </message>
 </context>
 <context>
@@ -422,23 +418,23 @@
     </message>
     <message>
         <source>a JSON object with the comparison&apos;s files and settings</source>
-        <translation type="unfinished"></translation>
+        <translation>объект JSON с файлами и настройками сравнения</translation>
     </message>
     <message>
         <source>&quot;probecycle-comparison&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;probecycle-comparison&quot;</translation>
     </message>
     <message>
         <source>1</source>
-        <translation type="unfinished"></translation>
+        <translation>1</translation>
     </message>
     <message>
         <source>a file path as text (empty: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>путь к файлу в виде текста (пусто — нет файла)</translation>
     </message>
     <message>
         <source>an unknown key; allowed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>неизвестный ключ; допустимые: %1</translation>
     </message>
 </context>
 <context>
@@ -1137,323 +1133,323 @@
     <name>probecycle::ui::ComparisonTab</name>
     <message>
         <source>Files and setup</source>
-        <translation type="unfinished"></translation>
+        <translation>Файлы и настройка</translation>
     </message>
     <message>
         <source>CSV files with a header row, in the plan&apos;s order: the plan &lt;code&gt;x_mm,y_mm,z_mm,i,j,k&lt;/code&gt; (outward unit normal), points &lt;code&gt;x_mm,y_mm,z_mm&lt;/code&gt; (or DMIS &lt;code&gt;PTMEAS/CART&lt;/code&gt;), the block &lt;code&gt;face,x_mm,y_mm,z_mm&lt;/code&gt; with faces A, B, C.</source>
-        <translation type="unfinished"></translation>
+        <translation>Файлы CSV со строкой заголовка, в порядке плана: план — &lt;code&gt;x_mm,y_mm,z_mm,i,j,k&lt;/code&gt; (внешняя единичная нормаль), точки — &lt;code&gt;x_mm,y_mm,z_mm&lt;/code&gt; (или DMIS &lt;code&gt;PTMEAS/CART&lt;/code&gt;), блок — &lt;code&gt;face,x_mm,y_mm,z_mm&lt;/code&gt; с гранями A, B, C.</translation>
     </message>
     <message>
         <source>Inspection plan</source>
-        <translation type="unfinished"></translation>
+        <translation>План контроля</translation>
     </message>
     <message>
         <source>Reference part, CMM points</source>
-        <translation type="unfinished"></translation>
+        <translation>Эталонная деталь, точки КИМ</translation>
     </message>
     <message>
         <source>Test part, on-machine points at C = 0</source>
-        <translation type="unfinished"></translation>
+        <translation>Контролируемая деталь, точки измерения на станке при C = 0</translation>
     </message>
     <message>
         <source>Reference part, on-machine points after the turn</source>
-        <translation type="unfinished"></translation>
+        <translation>Эталонная деталь, точки измерения на станке после поворота</translation>
     </message>
     <message>
         <source>Block at C = 0 (optional)</source>
-        <translation type="unfinished"></translation>
+        <translation>Блок при C = 0 (необязательно)</translation>
     </message>
     <message>
         <source>Block after the turn (optional)</source>
-        <translation type="unfinished"></translation>
+        <translation>Блок после поворота (необязательно)</translation>
     </message>
     <message>
         <source>Nominal points and outward unit normals (the side the probe comes from), in machine coordinates at the measuring position (C = 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>Номинальные точки и внешние единичные нормали (со стороны подвода датчика) в координатах станка в положении измерения (C = 0).</translation>
     </message>
     <message>
         <source>The reference part as the CMM measured it, one point per plan point, in the plan&apos;s coordinates.</source>
-        <translation type="unfinished"></translation>
+        <translation>Эталонная деталь, как её измерила КИМ: по одной точке на каждую точку плана, в координатах плана.</translation>
     </message>
     <message>
         <source>The test part probed on the machine along the plan, C at 0.</source>
-        <translation type="unfinished"></translation>
+        <translation>Контролируемая деталь, измеренная на станке по плану, ось C в положении 0.</translation>
     </message>
     <message>
         <source>The reference part probed along the same plan after C turned by the angle: at the same place of the machine as the test part.</source>
-        <translation type="unfinished"></translation>
+        <translation>Эталонная деталь, измеренная по тому же плану после поворота оси C на угол сравнения: в том же месте станка, где была контролируемая деталь.</translation>
     </message>
     <message>
         <source>Three faces of a block&apos;s corner, touched at C = 0: they give the C axis&apos;s six errors. Without the block the C axis is taken as exact.</source>
-        <translation type="unfinished"></translation>
+        <translation>Три грани угла блока, измеренные касаниями при C = 0: по ним определяются шесть погрешностей оси C. Без блока ось C считается точной.</translation>
     </message>
     <message>
         <source>The same three faces touched after the turn.</source>
-        <translation type="unfinished"></translation>
+        <translation>Те же три грани, измеренные касаниями после поворота.</translation>
     </message>
     <message>
         <source>Choose a file…</source>
-        <translation type="unfinished"></translation>
+        <translation>Выбрать файл…</translation>
     </message>
     <message>
         <source>C axis X</source>
-        <translation type="unfinished"></translation>
+        <translation>Ось C, X</translation>
     </message>
     <message>
         <source>Where the C axis is, in machine X.</source>
-        <translation type="unfinished"></translation>
+        <translation>Положение оси C по координате X станка.</translation>
     </message>
     <message>
         <source>C axis Y</source>
-        <translation type="unfinished"></translation>
+        <translation>Ось C, Y</translation>
     </message>
     <message>
         <source>Where the C axis is, in machine Y.</source>
-        <translation type="unfinished"></translation>
+        <translation>Положение оси C по координате Y станка.</translation>
     </message>
     <message>
         <source>Comparison angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Угол сравнения</translation>
     </message>
     <message>
         <source>How far C turns between the two measurements (180° for parts clamped opposite each other).</source>
-        <translation type="unfinished"></translation>
+        <translation>Угол поворота оси C между двумя измерениями (180° для деталей, закреплённых друг напротив друга).</translation>
     </message>
     <message>
         <source>Tolerance (±)</source>
-        <translation type="unfinished"></translation>
+        <translation>Допуск (±)</translation>
     </message>
     <message>
         <source>Half-width of the tolerance band about the nominal surface.</source>
-        <translation type="unfinished"></translation>
+        <translation>Половина ширины поля допуска относительно номинальной поверхности.</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Выполнить</translation>
     </message>
     <message>
         <source>Simulate example data</source>
-        <translation type="unfinished"></translation>
+        <translation>Смоделировать пример данных</translation>
     </message>
     <message>
         <source>Write a simulated data set with a known truth (truth.csv) to a folder and run it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Записать в папку смоделированный набор данных с известными истинными значениями (truth.csv) и выполнить по нему расчёт.</translation>
     </message>
     <message>
         <source>Open project…</source>
-        <translation type="unfinished"></translation>
+        <translation>Открыть проект…</translation>
     </message>
     <message>
         <source>Save project…</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранить проект…</translation>
     </message>
     <message>
         <source>Deviation of the test part</source>
-        <translation type="unfinished"></translation>
+        <translation>Отклонение контролируемой детали</translation>
     </message>
     <message>
         <source>X [%1]</source>
-        <translation type="unfinished">X [%1]</translation>
+        <translation>X [%1]</translation>
     </message>
     <message>
         <source>Y [%1]</source>
-        <translation type="unfinished">Y [%1]</translation>
+        <translation>Y [%1]</translation>
     </message>
     <message>
         <source>Deviations: direct OMM and comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>Отклонения: прямое измерение на станке и сравнение</translation>
     </message>
     <message>
         <source>Deviation [%1]</source>
-        <translation type="unfinished">Отклонение [%1]</translation>
+        <translation>Отклонение [%1]</translation>
     </message>
     <message>
         <source>Points</source>
-        <translation type="unfinished">Точки</translation>
+        <translation>Точки</translation>
     </message>
     <message>
         <source>Direct OMM</source>
-        <translation type="unfinished"></translation>
+        <translation>Прямое изм. на станке</translation>
     </message>
     <message>
         <source>Comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>Сравнение</translation>
     </message>
     <message>
         <source>Tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Допуск</translation>
     </message>
     <message>
         <source>Result</source>
-        <translation type="unfinished">Результат</translation>
+        <translation>Результат</translation>
     </message>
     <message>
         <source>C-axis errors</source>
-        <translation type="unfinished"></translation>
+        <translation>Погрешности оси C</translation>
     </message>
     <message>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>Погрешность</translation>
     </message>
     <message>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>Значение</translation>
     </message>
     <message>
         <source>Uncertainty</source>
-        <translation type="unfinished">Неопределённость</translation>
+        <translation>Неопределённость</translation>
     </message>
     <message>
         <source>Direct OMM against the comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>Прямое измерение на станке в сопоставлении со сравнением</translation>
     </message>
     <message>
         <source>Min</source>
-        <translation type="unfinished"></translation>
+        <translation>Мин.</translation>
     </message>
     <message>
         <source>Max</source>
-        <translation type="unfinished"></translation>
+        <translation>Макс.</translation>
     </message>
     <message>
         <source>RMS</source>
-        <translation type="unfinished"></translation>
+        <translation>СКЗ</translation>
     </message>
     <message>
         <source>Out of tol.</source>
-        <translation type="unfinished"></translation>
+        <translation>Вне допуска</translation>
     </message>
     <message>
         <source>Warnings</source>
-        <translation type="unfinished">Предупреждения</translation>
+        <translation>Предупреждения</translation>
     </message>
     <message>
         <source>No warnings.</source>
-        <translation type="unfinished">Предупреждений нет.</translation>
+        <translation>Предупреждений нет.</translation>
     </message>
     <message>
         <source>Points, worst first</source>
-        <translation type="unfinished"></translation>
+        <translation>Точки, худшие первыми</translation>
     </message>
     <message>
         <source>Point</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка</translation>
     </message>
     <message>
         <source>X</source>
-        <translation type="unfinished"></translation>
+        <translation>X</translation>
     </message>
     <message>
         <source>Y</source>
-        <translation type="unfinished"></translation>
+        <translation>Y</translation>
     </message>
     <message>
         <source>Z</source>
-        <translation type="unfinished"></translation>
+        <translation>Z</translation>
     </message>
     <message>
         <source>Deviation</source>
-        <translation type="unfinished"></translation>
+        <translation>Отклонение</translation>
     </message>
     <message>
         <source>System error</source>
-        <translation type="unfinished"></translation>
+        <translation>Систематическая погрешность</translation>
     </message>
     <message>
         <source>Export report…</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспорт отчёта…</translation>
     </message>
     <message>
         <source>The block is needed at both angles: choose both block files, or neither.</source>
-        <translation type="unfinished"></translation>
+        <translation>Блок нужен при обоих углах: выберите оба файла блока или ни одного.</translation>
     </message>
     <message>
         <source>Cannot make the folder %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удалось создать папку %1.</translation>
     </message>
     <message>
         <source>Nothing to export: run the comparison first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Нечего экспортировать: сначала выполните сравнение.</translation>
     </message>
     <message>
         <source>Saved %1</source>
-        <translation type="unfinished">Сохранено: %1</translation>
+        <translation>Сохранено: %1</translation>
     </message>
     <message>
         <source>εx (EAC)</source>
-        <translation type="unfinished"></translation>
+        <translation>εx (EAC)</translation>
     </message>
     <message>
         <source>εy (EBC)</source>
-        <translation type="unfinished"></translation>
+        <translation>εy (EBC)</translation>
     </message>
     <message>
         <source>εz (ECC)</source>
-        <translation type="unfinished"></translation>
+        <translation>εz (ECC)</translation>
     </message>
     <message>
         <source>δx (EXC)</source>
-        <translation type="unfinished"></translation>
+        <translation>δx (EXC)</translation>
     </message>
     <message>
         <source>δy (EYC)</source>
-        <translation type="unfinished"></translation>
+        <translation>δy (EYC)</translation>
     </message>
     <message>
         <source>δz (EZC)</source>
-        <translation type="unfinished"></translation>
+        <translation>δz (EZC)</translation>
     </message>
     <message>
         <source>µrad</source>
-        <translation type="unfinished"></translation>
+        <translation>мкрад</translation>
     </message>
     <message>
         <source>not identified</source>
-        <translation type="unfinished"></translation>
+        <translation>не определено</translation>
     </message>
     <message>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>неизвестно</translation>
     </message>
     <message>
         <source>below %1 %2 (out)</source>
-        <translation type="unfinished"></translation>
+        <translation>ниже %1 %2 (вне доп.)</translation>
     </message>
     <message>
         <source>above +%1 %2 (out)</source>
-        <translation type="unfinished"></translation>
+        <translation>выше +%1 %2 (вне доп.)</translation>
     </message>
     <message>
         <source>%1 to %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>от %1 до %2 %3</translation>
     </message>
     <message>
         <source>Point files (*.csv *.dmi *.dmis *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Файлы точек (*.csv *.dmi *.dmis *.txt);;Все файлы (*)</translation>
     </message>
     <message>
         <source>Open comparison project</source>
-        <translation type="unfinished"></translation>
+        <translation>Открыть проект сравнения</translation>
     </message>
     <message>
         <source>Comparison projects (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Проекты сравнения (*.json)</translation>
     </message>
     <message>
         <source>Save comparison project</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранить проект сравнения</translation>
     </message>
     <message>
         <source>Export comparison report</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспорт отчёта о сравнении</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished">Файлы CSV (*.csv)</translation>
+        <translation>Файлы CSV (*.csv)</translation>
     </message>
     <message>
         <source>Choose a file for “%1”.</source>
-        <translation type="unfinished"></translation>
+        <translation>Выберите файл для «%1».</translation>
     </message>
 </context>
 <context>
@@ -2298,7 +2294,7 @@
     </message>
     <message>
         <source>Comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>Сравнение</translation>
     </message>
 </context>
 <context>

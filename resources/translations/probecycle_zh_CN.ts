@@ -68,123 +68,119 @@
     <name>Comparison</name>
     <message>
         <source>a surface needs %1 points or more; got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>拟合曲面需要 %1 个或更多测点；实际为 %2 个</translation>
     </message>
     <message>
         <source>the points lie on a line: they span no surface</source>
-        <translation type="unfinished"></translation>
+        <translation>测点共线：无法构成曲面</translation>
     </message>
     <message>
         <source>the surface fit has no unique solution for these points</source>
-        <translation type="unfinished"></translation>
+        <translation>对这些测点的曲面拟合没有唯一解</translation>
     </message>
     <message>
         <source>face %1 at C = %2: the touches lie on a line and define no plane; touch the face at points spread over it</source>
-        <translation type="unfinished"></translation>
+        <translation>C = %2 时的面 %1：触测点共线，无法确定平面；请在整个面上分散触测</translation>
     </message>
     <message>
         <source>block at C = %1: the three faces&apos; planes do not meet in one point (two of them are parallel); touch three faces of a corner</source>
-        <translation type="unfinished"></translation>
+        <translation>C = %1 时的试块：三个面的平面不交于一点（其中两个平行）；请触测构成同一个角的三个面</translation>
     </message>
     <message>
         <source>face %1 at C = %2: the touches nearly lie on a line (spread ratio %3); the face&apos;s tilt about that line is poorly known</source>
-        <translation type="unfinished"></translation>
+        <translation>C = %2 时的面 %1：触测点近乎共线（分布比 %3）；该面绕这条直线的倾斜确定不准</translation>
     </message>
     <message>
         <source>face %1 at C = %2: a touch lies %3 off the face&apos;s plane (above %4); a chip, a burr or a bad touch?</source>
-        <translation type="unfinished"></translation>
+        <translation>C = %2 时的面 %1：有一个触测点偏离该面的平面 %3（超过 %4）；是切屑、毛刺还是触测不良？</translation>
     </message>
     <message>
         <source>faces %1 and %2 at C = %3 meet at %4 (below %5): the corner is poorly defined</source>
-        <translation type="unfinished"></translation>
+        <translation>C = %3 时面 %1 与面 %2 的夹角为 %4（小于 %5）：角点确定不准</translation>
     </message>
     <message>
         <source>a face has only 3 touches: its plane passes through them, so the C-axis errors&apos; uncertainty is unknown; touch each face 6 times</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>plan points: %1; a comparison needs %2 or more</source>
-        <translation type="unfinished"></translation>
+        <translation>有一个面只有 3 个触测点：平面恰好通过这些点，因此 C轴误差的不确定度未知；请在每个面上触测 6 次</translation>
     </message>
     <message>
         <source>%1 measured points for %2 plan points; one measured point per plan point is needed</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 个计划点对应 %1 个测得点；每个计划点需要一个测得点</translation>
     </message>
     <message>
         <source>the block is needed at C = 0 and after the turn; only one is given</source>
-        <translation type="unfinished"></translation>
+        <translation>需要 C = 0 时和旋转后的试块数据；只给出了其中一组</translation>
     </message>
     <message>
         <source>the surface through the %1 leaves residuals up to %2 (RMS %3, above %4): the plan may be too sparse for the part&apos;s form, or a point is wrong</source>
-        <translation type="unfinished"></translation>
+        <translation>通过%1的曲面残差最大达 %2（RMS %3，超过 %4）：检测计划的测点相对零件形状可能过于稀疏，或有测点错误</translation>
     </message>
     <message>
         <source>reference&apos;s CMM points</source>
-        <translation type="unfinished"></translation>
+        <translation>参考件的三坐标测量机测点</translation>
     </message>
     <message>
         <source>plan&apos;s nominal points</source>
-        <translation type="unfinished"></translation>
+        <translation>检测计划的名义点</translation>
     </message>
     <message>
         <source>calibrated reference points</source>
-        <translation type="unfinished"></translation>
+        <translation>标定后的参考件测点</translation>
     </message>
     <message>
         <source>%1 points project onto the edge of a fitted surface, not square onto it (points %2): their results are less sure</source>
-        <translation type="unfinished"></translation>
+        <translation>有 %1 个测点投影到拟合曲面的边缘，而非垂直投影到曲面上（测点 %2）：其结果可靠性较低</translation>
     </message>
     <message>
         <source>%1 measured points lie more than %2 from their plan points (points %3): are the files in the plan&apos;s order, and the C axis&apos;s position and angle right?</source>
-        <translation type="unfinished"></translation>
+        <translation>有 %1 个测得点距其计划点超过 %2（测点 %3）：文件是否按检测计划的顺序排列？C轴的位置和角度是否正确？</translation>
     </message>
     <message>
         <source>at %1 points the result differs from its first-order estimate by more than %2 (points %3): the surfaces do not follow the points there</source>
-        <translation type="unfinished"></translation>
+        <translation>有 %1 个测点的结果与其一阶估计相差超过 %2（测点 %3）：曲面在这些位置未能贴合测点</translation>
     </message>
     <message>
         <source>the C-axis errors&apos; uncertainty reaches %1 on the part (above %2): touch the block more often or on larger faces, or judge whether the correction helps</source>
-        <translation type="unfinished"></translation>
+        <translation>C轴误差的不确定度在零件上达到 %1（超过 %2）：请增加试块的触测次数或在更大的面上触测，或判断该修正是否有益</translation>
     </message>
     <message>
         <source>only PTMEAS/CART,x,y,z,i,j,k is read; got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>只读取 PTMEAS/CART,x,y,z,i,j,k；实际为“%1”</translation>
     </message>
     <message>
         <source>PTMEAS/CART has %1 numbers; the plan needs 6 (x, y, z, i, j, k)</source>
-        <translation type="unfinished"></translation>
+        <translation>PTMEAS/CART 含 %1 个数值；检测计划需要 6 个（x, y, z, i, j, k）</translation>
     </message>
     <message>
         <source>PTMEAS/CART has %1 numbers; allowed: 3 (x, y, z) or 6 (x, y, z, i, j, k)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>points in the file: %1; a comparison needs %2 or more</source>
-        <translation type="unfinished"></translation>
+        <translation>PTMEAS/CART 含 %1 个数值；允许：3 个（x, y, z）或 6 个（x, y, z, i, j, k）</translation>
     </message>
     <message>
         <source>the normal (i, j, k) has length %1; allowed: a unit vector, length 1 within %2</source>
-        <translation type="unfinished"></translation>
+        <translation>法向 (i, j, k) 的长度为 %1；允许：单位矢量，长度为 1，偏差不超过 %2</translation>
     </message>
     <message>
         <source>point %1 has no plan point: the file has %2 points, the plan %3</source>
-        <translation type="unfinished"></translation>
+        <translation>测点 %1 没有对应的计划点：文件有 %2 个测点，检测计划有 %3 个</translation>
     </message>
     <message>
         <source>the file ends after %1 points; the plan has %2 (one measured point per plan point, in the plan&apos;s order)</source>
-        <translation type="unfinished"></translation>
+        <translation>文件在 %1 个测点后结束；检测计划有 %2 个点（每个计划点一个测得点，按检测计划的顺序）</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a face; allowed: A, B, C</source>
-        <translation type="unfinished"></translation>
+        <translation>“%1”不是面；允许：A、B、C</translation>
     </message>
     <message>
         <source>touches on face %1: %2; each face needs %3 or more (typically 6)</source>
-        <translation type="unfinished"></translation>
+        <translation>面 %1 上的触测点数：%2；每个面需要 %3 个或更多（通常为 6 个）</translation>
     </message>
     <message>
         <source>no block touched: the C axis is taken as exact and its errors stay in the result; %1 from the axis, every 10 µrad of tilt or turn moves a point by %2</source>
-        <translation type="unfinished"></translation>
+        <translation>未触测试块：C轴视为无误差，其误差保留在结果中；在距轴线 %1 处，每 10 µrad 的倾斜或转角误差使测点偏移 %2</translation>
+    </message>
+    <message>
+        <source>a comparison needs %2 points or more; got %1</source>
+        <translation>比对测量需要 %2 个或更多测点；实际为 %1 个</translation>
     </message>
 </context>
 <context>
@@ -422,23 +418,23 @@
     </message>
     <message>
         <source>a JSON object with the comparison&apos;s files and settings</source>
-        <translation type="unfinished"></translation>
+        <translation>含比较测量文件和设置的 JSON 对象</translation>
     </message>
     <message>
         <source>&quot;probecycle-comparison&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;probecycle-comparison&quot;</translation>
     </message>
     <message>
         <source>1</source>
-        <translation type="unfinished"></translation>
+        <translation>1</translation>
     </message>
     <message>
         <source>a file path as text (empty: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>文本形式的文件路径（为空表示无）</translation>
     </message>
     <message>
         <source>an unknown key; allowed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未知的键；允许：%1</translation>
     </message>
 </context>
 <context>
@@ -1137,323 +1133,323 @@
     <name>probecycle::ui::ComparisonTab</name>
     <message>
         <source>Files and setup</source>
-        <translation type="unfinished"></translation>
+        <translation>文件与设置</translation>
     </message>
     <message>
         <source>CSV files with a header row, in the plan&apos;s order: the plan &lt;code&gt;x_mm,y_mm,z_mm,i,j,k&lt;/code&gt; (outward unit normal), points &lt;code&gt;x_mm,y_mm,z_mm&lt;/code&gt; (or DMIS &lt;code&gt;PTMEAS/CART&lt;/code&gt;), the block &lt;code&gt;face,x_mm,y_mm,z_mm&lt;/code&gt; with faces A, B, C.</source>
-        <translation type="unfinished"></translation>
+        <translation>带表头行的 CSV 文件，按检测计划的顺序：检测计划为 &lt;code&gt;x_mm,y_mm,z_mm,i,j,k&lt;/code&gt;（外法向单位矢量），测点为 &lt;code&gt;x_mm,y_mm,z_mm&lt;/code&gt;（或 DMIS &lt;code&gt;PTMEAS/CART&lt;/code&gt;），试块为 &lt;code&gt;face,x_mm,y_mm,z_mm&lt;/code&gt;，面为 A、B、C。</translation>
     </message>
     <message>
         <source>Inspection plan</source>
-        <translation type="unfinished"></translation>
+        <translation>检测计划</translation>
     </message>
     <message>
         <source>Reference part, CMM points</source>
-        <translation type="unfinished"></translation>
+        <translation>参考件，三坐标测量机测点</translation>
     </message>
     <message>
         <source>Test part, on-machine points at C = 0</source>
-        <translation type="unfinished"></translation>
+        <translation>被测件，C = 0 时的在机测量点</translation>
     </message>
     <message>
         <source>Reference part, on-machine points after the turn</source>
-        <translation type="unfinished"></translation>
+        <translation>参考件，旋转后的在机测量点</translation>
     </message>
     <message>
         <source>Block at C = 0 (optional)</source>
-        <translation type="unfinished"></translation>
+        <translation>C = 0 时的试块（可选）</translation>
     </message>
     <message>
         <source>Block after the turn (optional)</source>
-        <translation type="unfinished"></translation>
+        <translation>旋转后的试块（可选）</translation>
     </message>
     <message>
         <source>Nominal points and outward unit normals (the side the probe comes from), in machine coordinates at the measuring position (C = 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>名义点及外法向单位矢量（测头接近的一侧），为测量位置（C = 0）下的机床坐标。</translation>
     </message>
     <message>
         <source>The reference part as the CMM measured it, one point per plan point, in the plan&apos;s coordinates.</source>
-        <translation type="unfinished"></translation>
+        <translation>三坐标测量机测得的参考件，每个计划点对应一个测点，采用检测计划的坐标。</translation>
     </message>
     <message>
         <source>The test part probed on the machine along the plan, C at 0.</source>
-        <translation type="unfinished"></translation>
+        <translation>按检测计划在机床上测量的被测件，C轴位于 0。</translation>
     </message>
     <message>
         <source>The reference part probed along the same plan after C turned by the angle: at the same place of the machine as the test part.</source>
-        <translation type="unfinished"></translation>
+        <translation>C轴转过比较角度后，按同一检测计划测量的参考件：位于机床上与被测件相同的位置。</translation>
     </message>
     <message>
         <source>Three faces of a block&apos;s corner, touched at C = 0: they give the C axis&apos;s six errors. Without the block the C axis is taken as exact.</source>
-        <translation type="unfinished"></translation>
+        <translation>在 C = 0 时触测的试块某一角的三个面：由此得到 C轴的六项误差。不使用试块时，C轴视为无误差。</translation>
     </message>
     <message>
         <source>The same three faces touched after the turn.</source>
-        <translation type="unfinished"></translation>
+        <translation>旋转后触测的同样三个面。</translation>
     </message>
     <message>
         <source>Choose a file…</source>
-        <translation type="unfinished"></translation>
+        <translation>选择文件…</translation>
     </message>
     <message>
         <source>C axis X</source>
-        <translation type="unfinished"></translation>
+        <translation>C轴 X</translation>
     </message>
     <message>
         <source>Where the C axis is, in machine X.</source>
-        <translation type="unfinished"></translation>
+        <translation>C轴在机床 X 方向上的位置。</translation>
     </message>
     <message>
         <source>C axis Y</source>
-        <translation type="unfinished"></translation>
+        <translation>C轴 Y</translation>
     </message>
     <message>
         <source>Where the C axis is, in machine Y.</source>
-        <translation type="unfinished"></translation>
+        <translation>C轴在机床 Y 方向上的位置。</translation>
     </message>
     <message>
         <source>Comparison angle</source>
-        <translation type="unfinished"></translation>
+        <translation>比较角度</translation>
     </message>
     <message>
         <source>How far C turns between the two measurements (180° for parts clamped opposite each other).</source>
-        <translation type="unfinished"></translation>
+        <translation>两次测量之间 C轴的转角（两件相对装夹时为 180°）。</translation>
     </message>
     <message>
         <source>Tolerance (±)</source>
-        <translation type="unfinished"></translation>
+        <translation>公差 (±)</translation>
     </message>
     <message>
         <source>Half-width of the tolerance band about the nominal surface.</source>
-        <translation type="unfinished"></translation>
+        <translation>名义曲面两侧公差带的半宽。</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行</translation>
     </message>
     <message>
         <source>Simulate example data</source>
-        <translation type="unfinished"></translation>
+        <translation>模拟示例数据</translation>
     </message>
     <message>
         <source>Write a simulated data set with a known truth (truth.csv) to a folder and run it.</source>
-        <translation type="unfinished"></translation>
+        <translation>将真值已知（truth.csv）的模拟数据集写入文件夹并运行。</translation>
     </message>
     <message>
         <source>Open project…</source>
-        <translation type="unfinished"></translation>
+        <translation>打开项目…</translation>
     </message>
     <message>
         <source>Save project…</source>
-        <translation type="unfinished"></translation>
+        <translation>保存项目…</translation>
     </message>
     <message>
         <source>Deviation of the test part</source>
-        <translation type="unfinished"></translation>
+        <translation>被测件偏差</translation>
     </message>
     <message>
         <source>X [%1]</source>
-        <translation type="unfinished">X [%1]</translation>
+        <translation>X [%1]</translation>
     </message>
     <message>
         <source>Y [%1]</source>
-        <translation type="unfinished">Y [%1]</translation>
+        <translation>Y [%1]</translation>
     </message>
     <message>
         <source>Deviations: direct OMM and comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>偏差：直接在机测量与比较测量</translation>
     </message>
     <message>
         <source>Deviation [%1]</source>
-        <translation type="unfinished">偏差 [%1]</translation>
+        <translation>偏差 [%1]</translation>
     </message>
     <message>
         <source>Points</source>
-        <translation type="unfinished">点数</translation>
+        <translation>点数</translation>
     </message>
     <message>
         <source>Direct OMM</source>
-        <translation type="unfinished"></translation>
+        <translation>直接在机测量</translation>
     </message>
     <message>
         <source>Comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>比较测量</translation>
     </message>
     <message>
         <source>Tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>公差</translation>
     </message>
     <message>
         <source>Result</source>
-        <translation type="unfinished">结果</translation>
+        <translation>结果</translation>
     </message>
     <message>
         <source>C-axis errors</source>
-        <translation type="unfinished"></translation>
+        <translation>C轴误差</translation>
     </message>
     <message>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>误差</translation>
     </message>
     <message>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>值</translation>
     </message>
     <message>
         <source>Uncertainty</source>
-        <translation type="unfinished">不确定度</translation>
+        <translation>不确定度</translation>
     </message>
     <message>
         <source>Direct OMM against the comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>直接在机测量与比较测量对比</translation>
     </message>
     <message>
         <source>Min</source>
-        <translation type="unfinished"></translation>
+        <translation>最小</translation>
     </message>
     <message>
         <source>Max</source>
-        <translation type="unfinished"></translation>
+        <translation>最大</translation>
     </message>
     <message>
         <source>RMS</source>
-        <translation type="unfinished"></translation>
+        <translation>RMS</translation>
     </message>
     <message>
         <source>Out of tol.</source>
-        <translation type="unfinished"></translation>
+        <translation>超差</translation>
     </message>
     <message>
         <source>Warnings</source>
-        <translation type="unfinished">警告</translation>
+        <translation>警告</translation>
     </message>
     <message>
         <source>No warnings.</source>
-        <translation type="unfinished">无警告。</translation>
+        <translation>无警告。</translation>
     </message>
     <message>
         <source>Points, worst first</source>
-        <translation type="unfinished"></translation>
+        <translation>测点（最差的在前）</translation>
     </message>
     <message>
         <source>Point</source>
-        <translation type="unfinished"></translation>
+        <translation>点号</translation>
     </message>
     <message>
         <source>X</source>
-        <translation type="unfinished"></translation>
+        <translation>X</translation>
     </message>
     <message>
         <source>Y</source>
-        <translation type="unfinished"></translation>
+        <translation>Y</translation>
     </message>
     <message>
         <source>Z</source>
-        <translation type="unfinished"></translation>
+        <translation>Z</translation>
     </message>
     <message>
         <source>Deviation</source>
-        <translation type="unfinished"></translation>
+        <translation>偏差</translation>
     </message>
     <message>
         <source>System error</source>
-        <translation type="unfinished"></translation>
+        <translation>系统误差</translation>
     </message>
     <message>
         <source>Export report…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出报告…</translation>
     </message>
     <message>
         <source>The block is needed at both angles: choose both block files, or neither.</source>
-        <translation type="unfinished"></translation>
+        <translation>两个角度下都需要试块数据：请选择两个试块文件，或都不选。</translation>
     </message>
     <message>
         <source>Cannot make the folder %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法创建文件夹 %1。</translation>
     </message>
     <message>
         <source>Nothing to export: run the comparison first.</source>
-        <translation type="unfinished"></translation>
+        <translation>没有可导出的内容：请先运行比较测量。</translation>
     </message>
     <message>
         <source>Saved %1</source>
-        <translation type="unfinished">已保存 %1</translation>
+        <translation>已保存 %1</translation>
     </message>
     <message>
         <source>εx (EAC)</source>
-        <translation type="unfinished"></translation>
+        <translation>εx (EAC)</translation>
     </message>
     <message>
         <source>εy (EBC)</source>
-        <translation type="unfinished"></translation>
+        <translation>εy (EBC)</translation>
     </message>
     <message>
         <source>εz (ECC)</source>
-        <translation type="unfinished"></translation>
+        <translation>εz (ECC)</translation>
     </message>
     <message>
         <source>δx (EXC)</source>
-        <translation type="unfinished"></translation>
+        <translation>δx (EXC)</translation>
     </message>
     <message>
         <source>δy (EYC)</source>
-        <translation type="unfinished"></translation>
+        <translation>δy (EYC)</translation>
     </message>
     <message>
         <source>δz (EZC)</source>
-        <translation type="unfinished"></translation>
+        <translation>δz (EZC)</translation>
     </message>
     <message>
         <source>µrad</source>
-        <translation type="unfinished"></translation>
+        <translation>µrad</translation>
     </message>
     <message>
         <source>not identified</source>
-        <translation type="unfinished"></translation>
+        <translation>未辨识</translation>
     </message>
     <message>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>未知</translation>
     </message>
     <message>
         <source>below %1 %2 (out)</source>
-        <translation type="unfinished"></translation>
+        <translation>低于 %1 %2（超差）</translation>
     </message>
     <message>
         <source>above +%1 %2 (out)</source>
-        <translation type="unfinished"></translation>
+        <translation>高于 +%1 %2（超差）</translation>
     </message>
     <message>
         <source>%1 to %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 至 %2 %3</translation>
     </message>
     <message>
         <source>Point files (*.csv *.dmi *.dmis *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>测点文件 (*.csv *.dmi *.dmis *.txt);;所有文件 (*)</translation>
     </message>
     <message>
         <source>Open comparison project</source>
-        <translation type="unfinished"></translation>
+        <translation>打开比较测量项目</translation>
     </message>
     <message>
         <source>Comparison projects (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>比较测量项目 (*.json)</translation>
     </message>
     <message>
         <source>Save comparison project</source>
-        <translation type="unfinished"></translation>
+        <translation>保存比较测量项目</translation>
     </message>
     <message>
         <source>Export comparison report</source>
-        <translation type="unfinished"></translation>
+        <translation>导出比较测量报告</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished">CSV 文件 (*.csv)</translation>
+        <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
         <source>Choose a file for “%1”.</source>
-        <translation type="unfinished"></translation>
+        <translation>请为“%1”选择文件。</translation>
     </message>
 </context>
 <context>
@@ -2298,7 +2294,7 @@
     </message>
     <message>
         <source>Comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>比较测量</translation>
     </message>
 </context>
 <context>

@@ -14,6 +14,7 @@
 #include <QLineEdit>
 #include <QLocale>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -240,10 +241,16 @@ QWidget* ComparisonTab::build_result_column() {
         t->horizontalHeader()->setStretchLastSection(true);
         t->setSelectionBehavior(QAbstractItemView::SelectRows);
         t->verticalHeader()->setDefaultSectionSize(t->fontMetrics().height() + 6);
-        t->setFixedHeight(rows > 0 ? t->horizontalHeader()->sizeHint().height() +
-                                         rows * t->verticalHeader()->defaultSectionSize() + 4
-                                   : QWIDGETSIZE_MAX);
-        if (rows == 0) t->setMinimumHeight(120);
+        if (rows > 0) {
+            // Every row shows; room is kept for a horizontal scroll bar, which the longer
+            // Russian labels need, so that it never hides the last row.
+            t->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+            t->setFixedHeight(t->horizontalHeader()->sizeHint().height() +
+                              rows * t->verticalHeader()->defaultSectionSize() +
+                              2 * t->frameWidth() + t->horizontalScrollBar()->sizeHint().height());
+        } else {
+            t->setMinimumHeight(120);
+        }
         return t;
     };
     c_axis_title_ = title();

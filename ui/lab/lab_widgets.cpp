@@ -13,8 +13,8 @@
 
 #include "core/common/csv_reader.h"
 #include "core/common/file_io.h"
-#include "core/cycle/scenario.h"
 #include "core/common/input_error.h"
+#include "core/cycle/scenario.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/text_format.h"
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/common/csv_reader.h"
-#include "core/common/units.h"
 #include "core/common/input_error.h"
+#include "core/common/units.h"
 #include "tests/core/common/message_checks.h"
 
 namespace probecycle {
