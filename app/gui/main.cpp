@@ -41,15 +41,29 @@ bool has_flag(int argc, char** argv, const char* flag) {
     return false;
 }
 
-// Offscreen rendering needs no display; pick it before QApplication exists.
-void choose_platform(int argc, char** argv) {
+// Offscreen rendering (and --help, --version) needs no display; pick it before
+// QApplication exists. The window without a display would only get Qt's
+// "could not load the Qt platform plugin": say instead how to run it. False
+// when the program should stop.
+bool choose_platform(int argc, char** argv) {
     const bool headless_mode =
-        has_flag(argc, argv, "--screenshot") || has_flag(argc, argv, "--time-startup");
+        has_flag(argc, argv, "--screenshot") || has_flag(argc, argv, "--time-startup") ||
+        has_flag(argc, argv, "--help") || has_flag(argc, argv, "-h") ||
+        has_flag(argc, argv, "--version") || has_flag(argc, argv, "-v");
     const bool has_display =
         std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr;
-    if (headless_mode && !has_display && std::getenv("QT_QPA_PLATFORM") == nullptr) {
+    if (has_display || std::getenv("QT_QPA_PLATFORM") != nullptr) return true;
+    if (headless_mode) {
         qputenv("QT_QPA_PLATFORM", "offscreen");
+        return true;
     }
+    std::fprintf(stderr,
+                 "probecycle: no display (DISPLAY and WAYLAND_DISPLAY are not set).\n"
+                 "  Render the window to a PNG:  probecycle --screenshot probecycle.png "
+                 "[--scenario FILE.json]\n"
+                 "  Run it on a virtual display: xvfb-run probecycle\n"
+                 "  The same computations on the command line: probecycle-cli --help\n");
+    return false;
 }
 
 std::optional<QSize> parse_size(const QString& text) {
@@ -95,7 +109,7 @@ class FirstPaintProbe : public QObject {
 
 int main(int argc, char** argv) {
     const Clock::time_point start = Clock::now();
-    choose_platform(argc, argv);
+    if (!choose_platform(argc, argv)) return 2;
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("ProbeCycle"));
     QCoreApplication::setApplicationName(QStringLiteral("ProbeCycle"));

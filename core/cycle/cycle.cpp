@@ -72,6 +72,8 @@ const char* to_string(WarningCode code) {
             return "touch_while_accelerating";
         case WarningCode::feed_beyond_knee:
             return "feed_beyond_knee";
+        case WarningCode::knee_at_range_end:
+            return "knee_at_range_end";
         case WarningCode::uncertainty_over_target:
             return "uncertainty_over_target";
         case WarningCode::calibration_feed_mismatch:
@@ -145,11 +147,25 @@ Message Warning::to_message() const {
                 m.text = QT_TRANSLATE_NOOP(
                     "Warning",
                     "Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 "
-                    "(under 1 %) while overtravel and uncertainty grow");
+                    "(under %4) while overtravel and uncertainty grow");
                 m.args = {arg("feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 0),
                           arg("knee_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 0),
-                          arg("time_saved_s", ArgKind::time_s, c, 3)};
+                          arg("time_saved_s", ArgKind::time_s, c, 3),
+                          arg("knee_tolerance_percent", ArgKind::percent, 100.0 * d)};
             }
+            break;
+        case WarningCode::knee_at_range_end:
+            m.text = d > 0.5 ? QT_TRANSLATE_NOOP("Warning",
+                                                 "The fastest cycle lies at the highest feed "
+                                                 "searched, %1: the knee at %2 depends on that "
+                                                 "range; search faster feeds too")
+                             : QT_TRANSLATE_NOOP("Warning",
+                                                 "The fastest cycle lies at the lowest feed "
+                                                 "searched, %1: the knee at %2 depends on that "
+                                                 "range; search slower feeds too");
+            m.args = {arg("range_end_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 0),
+                      arg("knee_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 0),
+                      text_arg("range_end", d > 0.5 ? "highest" : "lowest")};
             break;
         case WarningCode::uncertainty_over_target:
             m.text = QT_TRANSLATE_NOOP("Warning", "Uncertainty %1 exceeds the target %2");

@@ -50,6 +50,7 @@ enum class WarningCode {
     backoff_excess,
     touch_while_accelerating,
     feed_beyond_knee,
+    knee_at_range_end,
     uncertainty_over_target,
     calibration_feed_mismatch,
 };
@@ -65,7 +66,10 @@ struct Warning {
     // backoff_too_small:        a = backoff, b = recommended backoff
     // backoff_excess:           a = backoff, b = recommended, c = time wasted
     // touch_while_accelerating: a = speed reached, b = programmed feed, c = error, d = touch (0/1)
-    // feed_beyond_knee:         a = feed, b = knee feed, c = time saved beyond the knee
+    // feed_beyond_knee:         a = feed, b = knee feed, c = time saved beyond the knee,
+    //                           d = the knee tolerance (fraction)
+    // knee_at_range_end:        a = the end feed where the fastest cycle lies, b = knee feed,
+    //                           d = which end (0 the lowest feed, 1 the highest)
     // uncertainty_over_target:  a = uncertainty, b = target
     // calibration_feed_mismatch:a = measuring speed, b = calibration speed, c = error
     double a{0.0}, b{0.0}, c{0.0}, d{0.0};

@@ -104,7 +104,12 @@ std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario,
                     : " (backoff as set, " + number(scenario.cycle.backoff_mm) + " mm)";
     }
     line += ": ";
-    line += sweep.knee_feed_mm_min ? number(*sweep.knee_feed_mm_min) + " mm/min" : "none";
+    if (sweep.knee_feed_mm_min) {
+        line += number(*sweep.knee_feed_mm_min) + " mm/min";
+    } else {
+        line +=
+            sweep.points.empty() ? "none" : "none (no feed within the probe's overtravel limit)";
+    }
     line += "; fastest feed meeting the target uncertainty";
     if (scenario.cycle.target_uncertainty_mm <= 0.0) {
         line += ": no target set";
@@ -113,6 +118,9 @@ std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario,
         line += sweep.max_feed_meeting_target_mm_min
                     ? number(*sweep.max_feed_meeting_target_mm_min) + " mm/min"
                     : "none in the range";
+    }
+    for (const Warning& warning : sweep.warnings) {
+        line += std::string("; ") + to_string(warning.code) + ": " + warning.message();
     }
     return line;
 }

@@ -275,6 +275,15 @@ const std::vector<KeyEntry>& key_table() {
                     "appears above it. 0 means no target."),
                 QT_TRANSLATE_NOOP("Parameter", "Target uncertainty")},
                PC_NUMBER(cycle, target_uncertainty_mm)),
+        number({"cycle.knee_tolerance", "", 0.0, 0.5,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "The knee is the lowest probing feed whose cycle time is within this fraction "
+                    "of the fastest cycle, among the feeds whose overtravel stays within the "
+                    "probe's limit. Faster than the knee buys little time for more overtravel and "
+                    "uncertainty."),
+                QT_TRANSLATE_NOOP("Parameter", "Knee tolerance")},
+               PC_NUMBER(cycle, knee_tolerance)),
     };
     return table;
 }
@@ -294,6 +303,12 @@ std::string number_text(double value) {
 }
 
 Message range_text(const KeyInfo& info) {
+    if (*info.unit == '\0') {  // a fraction or a count: no unit to name
+        Message m =
+            allowed_text("out_of_range", QT_TRANSLATE_NOOP("FieldError", "a number from %1 to %2"));
+        m.args = {arg("min", ArgKind::number, info.min), arg("max", ArgKind::number, info.max)};
+        return m;
+    }
     Message m =
         allowed_text("out_of_range", QT_TRANSLATE_NOOP("FieldError", "a number from %1 to %2 %3"));
     m.args = {arg("min", ArgKind::number, info.min), arg("max", ArgKind::number, info.max),

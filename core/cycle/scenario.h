@@ -53,6 +53,9 @@ struct Cycle {
     double backoff_mm{2.0};
     double return_feed_mm_min{10000.0};
     double target_uncertainty_mm{0.0};  // 0 = no target
+    // The knee is the lowest feed whose cycle time is within this fraction of
+    // the best (domain.md, "Cycle time versus feed").
+    double knee_tolerance{0.01};
 };
 
 struct Scenario {

@@ -8,7 +8,10 @@
 #include "core/common/units.h"
 
 // domain.md, "Cycle time versus feed": the knee is the lowest feed whose cycle
-// time is within a small tolerance (issue 2: 1 %) of the best over the range.
+// time is within a small tolerance (cycle.knee_tolerance, 1 % by default) of
+// the best over the range. Issue 11: among the valid feeds only (overtravel
+// within the probe's limit), and a fastest cycle at an end of the range is
+// said (knee_at_range_end), since the knee then depends on the range.
 
 namespace probecycle {
 
@@ -35,13 +38,27 @@ double cycle_time_at(const Scenario& base, double feed_mm_min, const SweepOption
     return scratch.total();
 }
 
+Warning range_end_warning(double end_feed_mm_min, double knee_feed_mm_min, bool highest) {
+    return {WarningCode::knee_at_range_end,
+            Severity::info,
+            mm_min_to_mm_s(end_feed_mm_min),
+            mm_min_to_mm_s(knee_feed_mm_min),
+            0.0,
+            highest ? 1.0 : 0.0};
+}
+
 }  // namespace
+
+bool within_overtravel_limit(const Scenario& scenario, double overtravel_mm) {
+    return overtravel_mm <= scenario.probe.overtravel_limit_mm;
+}
 
 void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm_min,
                       SweepResult& out, const SweepOptions& options) {
     CycleResult& scratch = scratch_result();
     out.points.resize(feeds_mm_min.size());
     double best_time = std::numeric_limits<double>::infinity();
+    std::optional<std::size_t> best;
     for (std::size_t i = 0; i < feeds_mm_min.size(); ++i) {
         SweepPoint& point = out.points[i];
         point.feed_mm_min = feeds_mm_min[i];
@@ -55,14 +72,25 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
         for (Phase phase : all_phases()) {
             point.phase_time_s[static_cast<std::size_t>(phase)] = scratch.phase_time(phase);
         }
-        best_time = std::min(best_time, point.cycle_time_s);
+        if (within_overtravel_limit(scenario, point.overtravel_mm) &&
+            point.cycle_time_s < best_time) {
+            best_time = point.cycle_time_s;
+            best = i;
+        }
     }
 
     out.knee_feed_mm_min.reset();
     out.max_feed_meeting_target_mm_min.reset();
+    out.warnings.clear();
     const double target = scenario.cycle.target_uncertainty_mm;
+    const double knee_limit = best_time * (1.0 + scenario.cycle.knee_tolerance);
+    double lowest = std::numeric_limits<double>::infinity();
+    double highest = -std::numeric_limits<double>::infinity();
     for (const SweepPoint& point : out.points) {
-        if (point.cycle_time_s <= best_time * (1.0 + kKneeTolerance) &&
+        lowest = std::min(lowest, point.feed_mm_min);
+        highest = std::max(highest, point.feed_mm_min);
+        if (point.cycle_time_s <= knee_limit &&
+            within_overtravel_limit(scenario, point.overtravel_mm) &&
             (!out.knee_feed_mm_min || point.feed_mm_min < *out.knee_feed_mm_min)) {
             out.knee_feed_mm_min = point.feed_mm_min;
         }
@@ -70,6 +98,13 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
             (!out.max_feed_meeting_target_mm_min ||
              point.feed_mm_min > *out.max_feed_meeting_target_mm_min)) {
             out.max_feed_meeting_target_mm_min = point.feed_mm_min;
+        }
+    }
+    if (best && out.knee_feed_mm_min && highest > lowest) {
+        const double best_feed = out.points[*best].feed_mm_min;
+        if (best_feed == highest || best_feed == lowest) {
+            out.warnings.push_back(
+                range_end_warning(best_feed, *out.knee_feed_mm_min, best_feed == highest));
         }
     }
 }
@@ -110,16 +145,47 @@ std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t 
     return feeds;
 }
 
-std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_min,
-                                       double to_mm_min, const SweepOptions& options) {
-    if (!(from_mm_min > 0.0) || !(to_mm_min > from_mm_min)) return std::nullopt;
+KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_min,
+                     const SweepOptions& options) {
+    KneeSearch out;
+    if (!(from_mm_min > 0.0) || !(to_mm_min > from_mm_min)) return out;
     CycleResult& scratch = scratch_result();
     constexpr std::size_t kGrid = 48;
-    const std::vector<double> grid = log_feeds(from_mm_min, to_mm_min, kGrid);
+    std::vector<double> grid = log_feeds(from_mm_min, to_mm_min, kGrid);
     std::array<double, kGrid> times{};
-    std::size_t best = 0;
+    const auto valid_at = [&](double feed) {
+        cycle_time_at(scenario, feed, options, scratch);
+        return within_overtravel_limit(scenario, scratch.overtravel_mm());
+    };
+    std::size_t first_invalid = kGrid;
     for (std::size_t i = 0; i < kGrid; ++i) {
         times[i] = cycle_time_at(scenario, grid[i], options, scratch);
+        if (!within_overtravel_limit(scenario, scratch.overtravel_mm())) {
+            first_invalid = i;
+            break;
+        }
+    }
+    if (first_invalid == 0) return out;
+    double top = to_mm_min;
+    if (first_invalid < kGrid) {
+        // The overtravel limit cuts the range: find where (bisection), and search
+        // below it on a grid of its own.
+        double lo = grid[first_invalid - 1];
+        double hi = grid[first_invalid];
+        for (int iter = 0; iter < 60 && hi - lo > 1e-9 * hi; ++iter) {
+            const double mid = 0.5 * (lo + hi);
+            (valid_at(mid) ? lo : hi) = mid;
+        }
+        top = lo;
+        grid = top > from_mm_min ? log_feeds(from_mm_min, top, kGrid)
+                                 : std::vector<double>(kGrid, from_mm_min);
+        for (std::size_t i = 0; i < kGrid; ++i) {
+            times[i] = cycle_time_at(scenario, grid[i], options, scratch);
+        }
+    }
+    out.valid_to_mm_min = top;
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < kGrid; ++i) {
         if (times[i] < times[best]) best = i;
     }
     // Refine the minimum between the grid neighbours (golden section).
@@ -145,23 +211,34 @@ std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_
             lo = x1;
         }
     }
-    const double limit = best_time * (1.0 + kKneeTolerance);
+    out.best_feed_mm_min = best_feed;
+    out.best_cycle_time_s = best_time;
+    const double limit = best_time * (1.0 + scenario.cycle.knee_tolerance);
     std::size_t first = 0;
     while (first < kGrid && times[first] > limit) ++first;
-    if (first == 0) return grid[0];
-    if (first == kGrid) return best_feed;  // only the refined minimum itself qualifies
-    // Bisection for the crossing between the last grid feed above the limit and the first within.
-    lo = grid[first - 1];
-    hi = grid[first];
-    for (int iter = 0; iter < 50 && hi - lo > 1e-6; ++iter) {
-        const double mid = 0.5 * (lo + hi);
-        if (cycle_time_at(scenario, mid, options, scratch) <= limit) {
-            hi = mid;
-        } else {
-            lo = mid;
+    if (first == 0) {
+        out.knee_feed_mm_min = grid[0];
+    } else if (first == kGrid) {
+        out.knee_feed_mm_min = best_feed;  // only the refined minimum itself qualifies
+    } else {
+        // Bisection for the crossing between the last grid feed above the limit
+        // and the first within.
+        lo = grid[first - 1];
+        hi = grid[first];
+        for (int iter = 0; iter < 50 && hi - lo > 1e-6; ++iter) {
+            const double mid = 0.5 * (lo + hi);
+            (cycle_time_at(scenario, mid, options, scratch) <= limit ? hi : lo) = mid;
         }
+        out.knee_feed_mm_min = hi;
     }
-    return hi;
+    // At an end of the searched range the fastest cycle may lie beyond it. Not
+    // when the overtravel limit ends the range: that end does not move.
+    const bool at_low = best_feed == from_mm_min;
+    const bool at_high = best_feed == to_mm_min && top == to_mm_min;
+    if (at_low || at_high) {
+        out.range_end_warning = range_end_warning(best_feed, *out.knee_feed_mm_min, at_high);
+    }
+    return out;
 }
 
 Analysis analyse(const Scenario& scenario) {
@@ -170,9 +247,11 @@ Analysis analyse(const Scenario& scenario) {
     // Up to the scenario's own feed at least, so a feed beyond 10000 mm/min is
     // judged against a curve that reaches it.
     const double search_to = std::max(kKneeSearchTo_mm_min, scenario.cycle.probe_feed_mm_min);
-    analysis.knee_feed_mm_min =
-        find_knee_mm_min(scenario, kKneeSearchFrom_mm_min, search_to, optimised);
+    const KneeSearch knee = find_knee(scenario, kKneeSearchFrom_mm_min, search_to, optimised);
+    analysis.knee_feed_mm_min = knee.knee_feed_mm_min;
     if (!analysis.knee_feed_mm_min) return analysis;
+    if (knee.range_end_warning)
+        analysis.cycle.mutable_warnings().push_back(*knee.range_end_warning);
     CycleResult& scratch = scratch_result();
     const double knee_feed = *analysis.knee_feed_mm_min;
     analysis.knee_cycle_time_s = cycle_time_at(scenario, knee_feed, optimised, scratch);
@@ -182,7 +261,8 @@ Analysis analyse(const Scenario& scenario) {
         const double feed_time = cycle_time_at(scenario, feed, optimised, scratch);
         analysis.cycle.mutable_warnings().push_back(
             {WarningCode::feed_beyond_knee, Severity::info, mm_min_to_mm_s(feed),
-             mm_min_to_mm_s(knee_feed), *analysis.knee_cycle_time_s - feed_time});
+             mm_min_to_mm_s(knee_feed), *analysis.knee_cycle_time_s - feed_time,
+             scenario.cycle.knee_tolerance});
     }
     return analysis;
 }

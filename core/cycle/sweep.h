@@ -26,14 +26,20 @@ struct SweepPoint {
 
 struct SweepResult {
     std::vector<SweepPoint> points;
-    // Lowest feed whose cycle time is within `knee_tolerance` of the minimum.
+    // Lowest feed whose cycle time is within cycle.knee_tolerance of the
+    // fastest, both among the valid feeds (overtravel within the probe's
+    // limit); none when no feed is valid.
     std::optional<double> knee_feed_mm_min;
     // Highest feed whose uncertainty meets the target (none without a target
     // or when no feed meets it).
     std::optional<double> max_feed_meeting_target_mm_min;
+    // knee_at_range_end when the fastest valid cycle lies at the lowest or
+    // the highest feed of the sweep: the knee then depends on the range.
+    std::vector<Warning> warnings;
 };
 
-constexpr double kKneeTolerance = 0.01;  // issue 2: "within 1 % of the minimum"
+// A feed is valid for the knee when its overtravel stays within the probe's limit.
+bool within_overtravel_limit(const Scenario& scenario, double overtravel_mm);
 
 struct SweepOptions {
     // Two-touch: at each feed set the backoff to the recommended one (first
@@ -56,16 +62,30 @@ double linear_feed_count(double from_mm_min, double to_mm_min, double step_mm_mi
 // n feeds spaced evenly on a log scale from..to inclusive (n >= 2).
 std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t n);
 
-// The knee searched continuously between from and to (bisection after a grid).
-std::optional<double> find_knee_mm_min(const Scenario& scenario, double from_mm_min,
-                                       double to_mm_min, const SweepOptions& options = {});
+// The knee searched continuously between from and to: a log grid, golden
+// section around the fastest cycle, bisection for the knee. Valid feeds only:
+// the search stops at the feed whose overtravel reaches the probe's limit
+// (overtravel grows with feed; feeds beyond the first invalid one are not
+// looked at).
+struct KneeSearch {
+    std::optional<double> knee_feed_mm_min;  // none when even `from` overtravels
+    std::optional<double> best_feed_mm_min;  // where the fastest valid cycle lies
+    double best_cycle_time_s{0.0};
+    // Highest valid feed searched: `to`, or where the overtravel limit cuts in.
+    double valid_to_mm_min{0.0};
+    // knee_at_range_end when the fastest cycle lies at `from` or at `to`.
+    std::optional<Warning> range_end_warning;
+};
+KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_min,
+                     const SweepOptions& options = {});
 
 // Feed range in which analyse() looks for the knee: 10 to 10000 mm/min, or
 // up to the scenario's probe feed when that is higher.
 constexpr double kKneeSearchFrom_mm_min = 10.0;
 constexpr double kKneeSearchTo_mm_min = 10000.0;
 
-// evaluate() plus the warnings that need a sweep (feed_beyond_knee). The knee
+// evaluate() plus the warnings that need a sweep (feed_beyond_knee,
+// knee_at_range_end). The knee
 // of a two-touch cycle is that of the optimised cycle (recommended backoff at
 // every feed): with a fixed backoff, fast first touches overtravel into it.
 struct Analysis {

@@ -436,6 +436,10 @@
         <source>an unknown key; allowed: %1</source>
         <translation>неизвестный ключ; допустимые: %1</translation>
     </message>
+    <message>
+        <source>a number from %1 to %2</source>
+        <translation>число от %1 до %2</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -742,6 +746,18 @@
         <source>Feature</source>
         <translation>Элемент</translation>
     </message>
+    <message>
+        <source>The knee is the lowest probing feed whose cycle time is within this fraction of the fastest cycle, among the feeds whose overtravel stays within the probe&apos;s limit. Faster than the knee buys little time for more overtravel and uncertainty.</source>
+        <translation>Точка перегиба — наименьшая подача поиска, при которой время цикла отличается от самого быстрого цикла не больше чем на эту долю; учитываются только подачи, при которых перебег не выходит за предел щупа. Подача выше перегиба почти не экономит время, но увеличивает перебег и неопределённость.</translation>
+    </message>
+    <message>
+        <source>Knee tolerance</source>
+        <translation>Допуск точки перегиба</translation>
+    </message>
+    <message>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
 </context>
 <context>
     <name>Phase</name>
@@ -857,16 +873,28 @@
         <translation>Подача поиска %1 выше точки перегиба %2 и не быстрее: цикл длится на %3 дольше, с большим перебегом и неопределённостью</translation>
     </message>
     <message>
-        <source>Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 (under 1 %) while overtravel and uncertainty grow</source>
-        <translation>Подача поиска %1 выше точки перегиба %2: прибавка подачи экономит лишь %3 (менее 1 %), а перебег и неопределённость растут</translation>
-    </message>
-    <message>
         <source>Uncertainty %1 exceeds the target %2</source>
         <translation>Неопределённость %1 превышает цель %2</translation>
     </message>
     <message>
         <source>Measuring at %1 but calibrated at %2: the delay travel shifts the measured value by %3; calibrate at the measuring feed</source>
         <translation>Измерение на %1, а калибровка на %2: путь за время задержки смещает измеренное значение на %3; откалибруйте на измерительной подаче</translation>
+    </message>
+    <message>
+        <source>Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 (under %4) while overtravel and uncertainty grow</source>
+        <translation>Подача поиска %1 выше точки перегиба %2: прибавка подачи экономит лишь %3 (менее %4), а перебег и неопределённость растут</translation>
+    </message>
+    <message>
+        <source>The fastest cycle lies at the highest feed searched, %1: the knee at %2 depends on that range; search faster feeds too</source>
+        <translation>Самый быстрый цикл — на наибольшей из просмотренных подач, %1: точка перегиба %2 зависит от этого диапазона; проверьте и более высокие подачи</translation>
+    </message>
+    <message>
+        <source>The fastest cycle lies at the lowest feed searched, %1: the knee at %2 depends on that range; search slower feeds too</source>
+        <translation>Самый быстрый цикл — на наименьшей из просмотренных подач, %1: точка перегиба %2 зависит от этого диапазона; проверьте и более низкие подачи</translation>
+    </message>
+    <message>
+        <source>Fastest cycle at the end of the range</source>
+        <translation>Самый быстрый цикл на краю диапазона</translation>
     </message>
 </context>
 <context>

@@ -436,6 +436,10 @@
         <source>an unknown key; allowed: %1</source>
         <translation>未知的键；允许：%1</translation>
     </message>
+    <message>
+        <source>a number from %1 to %2</source>
+        <translation>%1 到 %2 之间的数值</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -742,6 +746,18 @@
         <source>Feature</source>
         <translation>特征</translation>
     </message>
+    <message>
+        <source>The knee is the lowest probing feed whose cycle time is within this fraction of the fastest cycle, among the feeds whose overtravel stays within the probe&apos;s limit. Faster than the knee buys little time for more overtravel and uncertainty.</source>
+        <translation>拐点是循环时间与最快循环相差不超过此比例的最低探测进给率，只在过行程不超过测头极限的进给率中查找。高于拐点的进给率节省的时间很少，却增大过行程和不确定度。</translation>
+    </message>
+    <message>
+        <source>Knee tolerance</source>
+        <translation>拐点容差</translation>
+    </message>
+    <message>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
 </context>
 <context>
     <name>Phase</name>
@@ -857,16 +873,28 @@
         <translation>探测进给率 %1 超过拐点 %2 且并不更快：循环多用 %3，过行程和不确定度也更大</translation>
     </message>
     <message>
-        <source>Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 (under 1 %) while overtravel and uncertainty grow</source>
-        <translation>探测进给率 %1 超过拐点 %2：额外的进给率只节省 %3（不到 1 %），而过行程和不确定度都在增大</translation>
-    </message>
-    <message>
         <source>Uncertainty %1 exceeds the target %2</source>
         <translation>不确定度 %1 超过目标 %2</translation>
     </message>
     <message>
         <source>Measuring at %1 but calibrated at %2: the delay travel shifts the measured value by %3; calibrate at the measuring feed</source>
         <translation>以 %1 测量但在 %2 下标定：延迟行程使测量值偏移 %3；请在测量进给率下标定</translation>
+    </message>
+    <message>
+        <source>Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 (under %4) while overtravel and uncertainty grow</source>
+        <translation>探测进给率 %1 超过拐点 %2：额外的进给率只节省 %3（不到 %4），而过行程和不确定度都在增大</translation>
+    </message>
+    <message>
+        <source>The fastest cycle lies at the highest feed searched, %1: the knee at %2 depends on that range; search faster feeds too</source>
+        <translation>最快的循环位于所查找的最高进给率 %1：拐点 %2 取决于该范围；请同时查找更高的进给率</translation>
+    </message>
+    <message>
+        <source>The fastest cycle lies at the lowest feed searched, %1: the knee at %2 depends on that range; search slower feeds too</source>
+        <translation>最快的循环位于所查找的最低进给率 %1：拐点 %2 取决于该范围；请同时查找更低的进给率</translation>
+    </message>
+    <message>
+        <source>Fastest cycle at the end of the range</source>
+        <translation>最快循环位于范围端点</translation>
     </message>
 </context>
 <context>

@@ -388,6 +388,39 @@ TEST_F(CycleCli, SweepWithAFileAndSettings) {
     EXPECT_NE(r.err.find("1200"), std::string::npos) << r;
 }
 
+// Issue 11: the knee among valid feeds with the scenario's tolerance; a fastest
+// cycle at the end of the sweep is said on the summary line.
+TEST_F(CycleCli, SweepSummarySaysWhenTheFastestCycleIsAtTheEndOfTheRange) {
+    const CliRun at_end =
+        run({"sweep", "--set", "cycle.strategy=single_touch", "--set", "cycle.approach_mm=50",
+             "--from", "100", "--to", "5000", "--step", "100"});
+    ASSERT_EQ(at_end.exit_code, 0) << at_end;
+    EXPECT_NE(at_end.err.find("; knee_at_range_end: The fastest cycle lies at the highest feed "
+                              "searched, 5000 mm/min"),
+              std::string::npos)
+        << at_end;
+    EXPECT_NE(at_end.err.find("search faster feeds too"), std::string::npos) << at_end;
+    EXPECT_EQ(lines_of(at_end.err).size(), 1u) << at_end;
+
+    const CliRun inside = run({"sweep", "--set", "cycle.strategy=single_touch", "--from", "100",
+                               "--to", "12000", "--step", "100"});
+    ASSERT_EQ(inside.exit_code, 0) << inside;
+    EXPECT_EQ(inside.err.find("knee_at_range_end"), std::string::npos) << inside;
+
+    // A looser tolerance, a slower knee; a limit that no feed meets, no knee.
+    const CliRun loose =
+        run({"sweep", "--set", "cycle.strategy=single_touch", "--set", "cycle.knee_tolerance=0.2",
+             "--from", "100", "--to", "12000", "--step", "100"});
+    ASSERT_EQ(loose.exit_code, 0) << loose;
+    EXPECT_NE(loose.err, inside.err);
+    const CliRun none = run({"sweep", "--set", "probe.overtravel_limit_mm=0.01", "--from", "100",
+                             "--to", "1000", "--step", "100"});
+    ASSERT_EQ(none.exit_code, 0) << none;
+    EXPECT_NE(none.err.find("none (no feed within the probe's overtravel limit)"),
+              std::string::npos)
+        << none;
+}
+
 TEST_F(CycleCli, SweepCsvWritesTheFile) {
     const fs::path file = dir_ / "sweep.csv";
     const CliRun to_stdout = run({"sweep", "--from", "100", "--to", "2000", "--step", "50"});
@@ -476,6 +509,7 @@ const std::vector<BadCase>& bad_cases() {
         {"set_nan",                 {"evaluate", "--set", "machine.scan_period_s=nan"},                    {"machine.scan_period_s", "nan"}},
         {"set_negative",            {"evaluate", "--set", "probe.pretravel_mm=-1"},                        {"probe.pretravel_mm", "-1"}},
         {"set_out_of_range",        {"evaluate", "--set", "machine.scan_period_s=5"},                      {"machine.scan_period_s", "5"}},
+        {"set_knee_tolerance_high", {"evaluate", "--set", "cycle.knee_tolerance=0.6"},                    {"cycle.knee_tolerance", "0.6", "from 0 to 0.5"}},
         {"set_unknown_word",        {"evaluate", "--set", "cycle.strategy=three_touch"},                   {"cycle.strategy", "three_touch", "two_touch"}},
         {"set_wrong_type",          {"evaluate", "--set", "machine.latched_input=maybe"},                  {"machine.latched_input", "maybe"}},
         {"set_without_value",       {"evaluate", "--set"},                                                 {"--set"}},

@@ -50,6 +50,7 @@ const KeyText kKeyTexts[] = {
     {"cycle.return_feed_mm_min", QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
     {"cycle.target_uncertainty_mm", QT_TRANSLATE_NOOP("Parameter", "µm"), 1000.0, 1, SliderScale::none, 0.0, 0.0,
      QT_TRANSLATE_NOOP("Parameter", "none")},
+    {"cycle.knee_tolerance", QT_TRANSLATE_NOOP("Parameter", "%"), 100.0, 1, SliderScale::none, 0.0, 0.0, nullptr},
 };
 // clang-format on
 

@@ -84,6 +84,9 @@ QString warning_title(WarningCode code) {
             return tr_warning(QT_TRANSLATE_NOOP("Warning", "Touch while accelerating"));
         case WarningCode::feed_beyond_knee:
             return tr_warning(QT_TRANSLATE_NOOP("Warning", "Feedrate beyond the knee"));
+        case WarningCode::knee_at_range_end:
+            return tr_warning(
+                QT_TRANSLATE_NOOP("Warning", "Fastest cycle at the end of the range"));
         case WarningCode::uncertainty_over_target:
             return tr_warning(QT_TRANSLATE_NOOP("Warning", "Uncertainty over the target"));
         case WarningCode::calibration_feed_mismatch:

@@ -19,6 +19,8 @@
 namespace probecycle {
 namespace {
 
+constexpr double kDefaultKneeTolerance = 0.01;  // cycle.knee_tolerance's default
+
 constexpr double kUnchecked = -1.0;
 
 double rel_tol(double expected, double rel = 1e-12) {
@@ -780,7 +782,7 @@ TEST(Warnings, FeedBeyondKneeOnlyFromAnalyse) {
     EXPECT_EQ(w->severity, Severity::info);
     EXPECT_NEAR(w->a, 150.0, 1e-9);
     EXPECT_NEAR(w->b, mm_min_to_mm_s(*fast.knee_feed_mm_min), 1e-9);
-    EXPECT_LT(w->c, kKneeTolerance * fast.cycle.total());
+    EXPECT_LT(w->c, kDefaultKneeTolerance * fast.cycle.total());
     EXPECT_FALSE(w->message().empty());
     // evaluate() alone never gives it.
     EXPECT_EQ(find_warning(evaluate(s), WarningCode::feed_beyond_knee), nullptr);

@@ -108,7 +108,7 @@ const std::vector<std::string> kNumericKeys = {
     "probe.overtravel_limit_mm",   "probe.reseat_mm",         "probe.calibration_feed_mm_min",
     "cycle.feature_size_mm",       "cycle.approach_mm",       "cycle.probe_feed_mm_min",
     "cycle.measure_feed_mm_min",   "cycle.backoff_mm",        "cycle.return_feed_mm_min",
-    "cycle.target_uncertainty_mm",
+    "cycle.target_uncertainty_mm", "cycle.knee_tolerance",
 };
 
 // ---------------------------------------------------------------------------
@@ -266,7 +266,8 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
           "reseat_mm", "calibration_feed_mm_min"}},
         {"cycle",
          {"strategy", "feature", "feature_size_mm", "approach_mm", "probe_feed_mm_min",
-          "measure_feed_mm_min", "backoff_mm", "return_feed_mm_min", "target_uncertainty_mm"}},
+          "measure_feed_mm_min", "backoff_mm", "return_feed_mm_min", "target_uncertainty_mm",
+          "knee_tolerance"}},
     };
     EXPECT_EQ(j.size(), expected.size());
     for (const auto& [section, keys] : expected) {
@@ -497,6 +498,7 @@ const GoodSettingCase kGoodSettings[] = {
     {"probe.pretravel_mm=0",                        "probe.pretravel_mm",             0.0},
     {"probe.calibration_feed_mm_min=60",            "probe.calibration_feed_mm_min",  60.0},
     {"cycle.target_uncertainty_mm=0.01",            "cycle.target_uncertainty_mm",    0.01},
+    {"cycle.knee_tolerance=0.05",                   "cycle.knee_tolerance",           0.05},
 };
 // clang-format on
 
@@ -605,7 +607,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 23u);
+    ASSERT_EQ(scenario_keys().size(), 24u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);
@@ -615,7 +617,10 @@ TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
         const std::string value = value_text(defaults, key);
         EXPECT_FALSE(value.empty());
         if (key.kind == KeyKind::number) {
-            EXPECT_GT(std::string(key.unit).size(), 0u);
+            // A number without a unit is a fraction (cycle.knee_tolerance).
+            if (std::string(key.unit).empty()) {
+                EXPECT_LE(key.max, 1.0) << "no unit";
+            }
             EXPECT_LE(key.min, key.max);
             const double v = *get_number(defaults, key.key);
             EXPECT_LE(key.min, v);

@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -18,6 +19,8 @@
 namespace probecycle {
 namespace {
 
+constexpr double kDefaultKneeTolerance = 0.01;  // cycle.knee_tolerance's default
+
 Scenario single_touch_surface() {
     Scenario s;
     s.cycle.strategy = Strategy::single_touch;
@@ -27,15 +30,18 @@ Scenario single_touch_surface() {
     return s;
 }
 
-// The knee by its definition: the lowest feed whose cycle time is within 1 % of
-// the minimum over the points.
-std::optional<double> knee_of(const std::vector<SweepPoint>& points) {
-    if (points.empty()) return std::nullopt;
+// The knee by its definition: among the points whose overtravel is within the
+// limit, the lowest feed whose cycle time is within the tolerance of the fastest.
+std::optional<double> knee_of(const std::vector<SweepPoint>& points,
+                              double overtravel_limit_mm = 50.0,
+                              double tolerance = kDefaultKneeTolerance) {
     double best = std::numeric_limits<double>::infinity();
-    for (const SweepPoint& p : points) best = std::min(best, p.cycle_time_s);
+    for (const SweepPoint& p : points) {
+        if (p.overtravel_mm <= overtravel_limit_mm) best = std::min(best, p.cycle_time_s);
+    }
     std::optional<double> knee;
     for (const SweepPoint& p : points) {
-        if (p.cycle_time_s <= best * (1.0 + kKneeTolerance)) {
+        if (p.overtravel_mm <= overtravel_limit_mm && p.cycle_time_s <= best * (1.0 + tolerance)) {
             if (!knee || p.feed_mm_min < *knee) knee = p.feed_mm_min;
         }
     }
@@ -192,7 +198,8 @@ TEST(Sweep, RandomScenariosKneeAndTargetByDefinition) {
         const std::vector<double> feeds = linear_feeds(100.0, 8000.0, 100.0);
         const SweepResult sweep = sweep_feeds(s, feeds);
         ASSERT_EQ(sweep.points.size(), feeds.size());
-        EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points)) << "case " << i;
+        EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points, s.probe.overtravel_limit_mm))
+            << "case " << i;
         EXPECT_EQ(sweep.max_feed_meeting_target_mm_min,
                   max_feed_meeting(sweep.points, s.cycle.target_uncertainty_mm))
             << "case " << i;
@@ -214,7 +221,7 @@ TEST(Sweep, RecommendedBackoffOptionSweepsTheOptimisedTwoTouchCycle) {
         EXPECT_NEAR(sweep.points[i].cycle_time_s, r.total(), 1e-12 * r.total()) << feeds[i];
         EXPECT_NEAR(sweep.points[i].overtravel_mm, r.overtravel_mm(), 1e-12) << feeds[i];
     }
-    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points));
+    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points, s.probe.overtravel_limit_mm));
 }
 
 TEST(Sweep, IntoReusesTheBufferAndMatchesSweepFeeds) {
@@ -251,17 +258,17 @@ TEST(FindKnee, ContinuousKneeMatchesTheDefinition) {
         Scenario s = single_touch_surface();
         s.machine.accel_model = model;
         SCOPED_TRACE(to_string(model));
-        const std::optional<double> knee = find_knee_mm_min(s, 10.0, 10000.0);
+        const std::optional<double> knee = find_knee(s, 10.0, 10000.0).knee_feed_mm_min;
         ASSERT_TRUE(knee.has_value());
         EXPECT_GE(*knee, 10.0);
         EXPECT_LE(*knee, 10000.0);
         // The minimum over a fine grid stands in for the continuous minimum.
         double best = std::numeric_limits<double>::infinity();
         for (double f : log_feeds(10.0, 10000.0, 2000)) best = std::min(best, cycle_time_at(s, f));
-        EXPECT_LE(cycle_time_at(s, *knee), best * (1.0 + kKneeTolerance) * (1.0 + 1e-6));
+        EXPECT_LE(cycle_time_at(s, *knee), best * (1.0 + kDefaultKneeTolerance) * (1.0 + 1e-6));
         // Every lower feed is outside the tolerance.
         for (double f : log_feeds(10.0, *knee * (1.0 - 1e-3), 500)) {
-            ASSERT_GT(cycle_time_at(s, f), best * (1.0 + kKneeTolerance) * (1.0 - 1e-6))
+            ASSERT_GT(cycle_time_at(s, f), best * (1.0 + kDefaultKneeTolerance) * (1.0 - 1e-6))
                 << "feed " << f << " knee " << *knee;
         }
     }
@@ -269,7 +276,7 @@ TEST(FindKnee, ContinuousKneeMatchesTheDefinition) {
 
 TEST(FindKnee, AgreesWithAFineSweep) {
     const Scenario s = single_touch_surface();
-    const std::optional<double> knee = find_knee_mm_min(s, 100.0, 8000.0);
+    const std::optional<double> knee = find_knee(s, 100.0, 8000.0).knee_feed_mm_min;
     const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 8000.0, 1.0));
     ASSERT_TRUE(knee.has_value());
     ASSERT_TRUE(sweep.knee_feed_mm_min.has_value());
@@ -285,14 +292,16 @@ TEST(Analyse, IsEvaluatePlusTheKneeOverTheSearchRange) {
     EXPECT_EQ(a.cycle.phases().size(), r.phases().size());
     ASSERT_TRUE(a.knee_feed_mm_min.has_value());
     const std::optional<double> knee =
-        find_knee_mm_min(s, kKneeSearchFrom_mm_min, kKneeSearchTo_mm_min);
+        find_knee(s, kKneeSearchFrom_mm_min, kKneeSearchTo_mm_min).knee_feed_mm_min;
     ASSERT_TRUE(knee.has_value());
     EXPECT_NEAR(*a.knee_feed_mm_min, *knee, 1e-6 * *knee);
-    // The same warnings as evaluate(), plus at most feed_beyond_knee.
+    // The same warnings as evaluate(), plus at most feed_beyond_knee and knee_at_range_end.
     std::size_t extra = 0;
     for (const Warning& w : a.cycle.warnings()) {
-        if (w.code == WarningCode::feed_beyond_knee) ++extra;
+        if (w.code == WarningCode::feed_beyond_knee || w.code == WarningCode::knee_at_range_end)
+            ++extra;
     }
+    EXPECT_LE(extra, 2u);
     EXPECT_EQ(a.cycle.warnings().size(), r.warnings().size() + extra);
 }
 
@@ -315,7 +324,7 @@ TEST(Analyse, FeedBeyondKneeReportsTheTimeSaved) {
     } else {
         EXPECT_TRUE(std::abs(w->c - saved) < 1e-9 || w->c == 0.0) << w->c << " vs " << saved;
     }
-    EXPECT_LT(w->c, kKneeTolerance * a.cycle.total() * 1.01);
+    EXPECT_LT(w->c, kDefaultKneeTolerance * a.cycle.total() * 1.01);
 }
 
 // A feed above 10000 mm/min is judged on a curve that reaches it: with a
@@ -333,12 +342,176 @@ TEST(Analyse, KneeSearchReachesAFeedBeyond10000) {
     double best = fine.points.front().cycle_time_s;
     for (const SweepPoint& p : fine.points) best = std::min(best, p.cycle_time_s);
     ASSERT_TRUE(a.knee_cycle_time_s.has_value());
-    EXPECT_LE(*a.knee_cycle_time_s, best * (1.0 + kKneeTolerance) + 1e-12);
+    EXPECT_LE(*a.knee_cycle_time_s, best * (1.0 + kDefaultKneeTolerance) + 1e-12);
     for (const Warning& w : a.cycle.warnings()) {
         if (w.code == WarningCode::feed_beyond_knee) {
-            EXPECT_LT(w.c, kKneeTolerance * a.cycle.total() * 1.01);
+            EXPECT_LT(w.c, kDefaultKneeTolerance * a.cycle.total() * 1.01);
         }
     }
+}
+
+// --- Issue 11, loose end 4: the knee among valid feeds, its tolerance, the range's ends ---
+
+const Warning* find_warning(const std::vector<Warning>& warnings, WarningCode code) {
+    for (const Warning& w : warnings) {
+        if (w.code == code) return &w;
+    }
+    return nullptr;
+}
+
+// Single touch, T = 0.06 s: overtravel = 0.005 + v (0.002 + 0.002 + 0.004 + 0.03),
+// 2 mm at v = 52.5 mm/s = 3151 mm/min, well below the unlimited knee (about 6800).
+TEST(Sweep, KneeIsSearchedAmongValidFeedsOnly) {
+    Scenario s = single_touch_surface();
+    s.probe.overtravel_limit_mm = 2.0;
+    const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 10000.0, 50.0));
+    ASSERT_TRUE(sweep.knee_feed_mm_min.has_value());
+    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points, 2.0));
+    const std::optional<double> unlimited = knee_of(sweep.points, 1e9);
+    ASSERT_TRUE(unlimited.has_value());
+    EXPECT_GT(*unlimited, 5000.0);
+    EXPECT_LE(*sweep.knee_feed_mm_min, 3150.0);
+    // The limit, not the range, ends the valid feeds: nothing to say about the range.
+    EXPECT_TRUE(sweep.warnings.empty());
+}
+
+TEST(Sweep, NoValidFeedGivesNoKnee) {
+    Scenario s = single_touch_surface();
+    s.probe.overtravel_limit_mm = 0.01;  // 0.0113 mm already at 10 mm/min
+    const SweepResult sweep = sweep_feeds(s, linear_feeds(10.0, 1000.0, 10.0));
+    EXPECT_FALSE(sweep.knee_feed_mm_min.has_value());
+    EXPECT_TRUE(sweep.warnings.empty());
+    EXPECT_FALSE(find_knee(s, 10.0, 1000.0).knee_feed_mm_min.has_value());
+}
+
+TEST(FindKnee, StopsWhereTheOvertravelReachesTheLimit) {
+    Scenario s = single_touch_surface();
+    s.probe.overtravel_limit_mm = 2.0;
+    const KneeSearch knee = find_knee(s, 10.0, 10000.0);
+    ASSERT_TRUE(knee.knee_feed_mm_min.has_value());
+    ASSERT_TRUE(knee.best_feed_mm_min.has_value());
+    // (2 - 0.005) / 0.038 mm/s = 52.5 mm/s.
+    EXPECT_NEAR(knee.valid_to_mm_min, mm_s_to_mm_min((2.0 - 0.005) / 0.038), 1e-6);
+    Scenario at = s;
+    at.cycle.probe_feed_mm_min = knee.valid_to_mm_min;
+    EXPECT_NEAR(evaluate(at).overtravel_mm(), 2.0, 1e-9);
+    EXPECT_LE(*knee.best_feed_mm_min, knee.valid_to_mm_min);
+    EXPECT_LE(*knee.knee_feed_mm_min, *knee.best_feed_mm_min);
+    EXPECT_FALSE(knee.range_end_warning.has_value());
+    // The same knee as a fine sweep of the valid feeds.
+    const SweepResult fine = sweep_feeds(s, linear_feeds(10.0, 10000.0, 1.0));
+    ASSERT_TRUE(fine.knee_feed_mm_min.has_value());
+    EXPECT_NEAR(*knee.knee_feed_mm_min, *fine.knee_feed_mm_min, 2.0);
+    // Beyond the limit the cycle is faster still: the unlimited knee is elsewhere.
+    Scenario unlimited = s;
+    unlimited.probe.overtravel_limit_mm = 100.0;
+    EXPECT_GT(*find_knee(unlimited, 10.0, 10000.0).knee_feed_mm_min, 5000.0);
+}
+
+TEST(FindKnee, TheToleranceMovesTheKnee) {
+    Scenario s = single_touch_surface();
+    std::vector<double> knees;
+    for (double tolerance : {0.0, 0.01, 0.05, 0.2}) {
+        SCOPED_TRACE(tolerance);
+        s.cycle.knee_tolerance = tolerance;
+        const KneeSearch knee = find_knee(s, 10.0, 10000.0);
+        ASSERT_TRUE(knee.knee_feed_mm_min.has_value());
+        EXPECT_LE(cycle_time_at(s, *knee.knee_feed_mm_min),
+                  knee.best_cycle_time_s * (1.0 + tolerance) * (1.0 + 1e-9));
+        knees.push_back(*knee.knee_feed_mm_min);
+        if (tolerance == 0.0) {
+            EXPECT_NEAR(*knee.knee_feed_mm_min, *knee.best_feed_mm_min, 1e-6);
+        }
+    }
+    // A looser tolerance lets a slower feed count: strictly lower knees.
+    for (std::size_t i = 1; i < knees.size(); ++i) EXPECT_LT(knees[i], knees[i - 1]);
+    // The sweep uses the same key.
+    s.cycle.knee_tolerance = 0.05;
+    const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 10000.0, 50.0));
+    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points, 50.0, 0.05));
+}
+
+// A 50 mm approach: every faster feed up to 10000 mm/min still saves time.
+TEST(FindKnee, FastestAtTheHighestFeedSearchedIsSaid) {
+    Scenario s = single_touch_surface();
+    s.cycle.approach_mm = 50.0;
+    const KneeSearch knee = find_knee(s, 10.0, 10000.0);
+    ASSERT_TRUE(knee.knee_feed_mm_min.has_value());
+    EXPECT_EQ(knee.best_feed_mm_min, 10000.0);
+    ASSERT_TRUE(knee.range_end_warning.has_value());
+    const Warning& w = *knee.range_end_warning;
+    EXPECT_EQ(w.code, WarningCode::knee_at_range_end);
+    EXPECT_EQ(w.severity, Severity::info);
+    EXPECT_DOUBLE_EQ(w.a, mm_min_to_mm_s(10000.0));
+    EXPECT_DOUBLE_EQ(w.b, mm_min_to_mm_s(*knee.knee_feed_mm_min));
+    EXPECT_EQ(w.d, 1.0);
+    EXPECT_EQ(w.message(),
+              "The fastest cycle lies at the highest feed searched, 10000 mm/min: the "
+              "knee at " +
+                  std::to_string(static_cast<long>(std::lround(*knee.knee_feed_mm_min))) +
+                  " mm/min depends on that range; search faster feeds too");
+}
+
+// The defaults' single-touch minimum lies near 8900 mm/min: from 9500 up, slower is faster.
+TEST(FindKnee, FastestAtTheLowestFeedSearchedIsSaid) {
+    const Scenario s = single_touch_surface();
+    const KneeSearch knee = find_knee(s, 9500.0, 12000.0);
+    ASSERT_TRUE(knee.knee_feed_mm_min.has_value());
+    EXPECT_EQ(knee.knee_feed_mm_min, 9500.0);
+    EXPECT_EQ(knee.best_feed_mm_min, 9500.0);
+    ASSERT_TRUE(knee.range_end_warning.has_value());
+    EXPECT_EQ(knee.range_end_warning->d, 0.0);
+    EXPECT_NE(knee.range_end_warning->message().find("lowest feed searched, 9500 mm/min"),
+              std::string::npos);
+    EXPECT_NE(knee.range_end_warning->message().find("search slower feeds too"), std::string::npos);
+    // A range around the minimum says nothing.
+    EXPECT_FALSE(find_knee(s, 10.0, 12000.0).range_end_warning.has_value());
+}
+
+TEST(Sweep, FastestAtAnEndOfTheSweepIsSaid) {
+    Scenario s = single_touch_surface();
+    EXPECT_TRUE(sweep_feeds(s, linear_feeds(100.0, 12000.0, 100.0)).warnings.empty());
+
+    const SweepResult low = sweep_feeds(s, linear_feeds(9500.0, 12000.0, 100.0));
+    ASSERT_EQ(low.warnings.size(), 1u);
+    EXPECT_EQ(low.warnings[0].code, WarningCode::knee_at_range_end);
+    EXPECT_EQ(low.warnings[0].d, 0.0);
+    EXPECT_DOUBLE_EQ(low.warnings[0].a, mm_min_to_mm_s(9500.0));
+
+    s.cycle.approach_mm = 50.0;
+    const SweepResult high = sweep_feeds(s, linear_feeds(100.0, 5000.0, 100.0));
+    ASSERT_EQ(high.warnings.size(), 1u);
+    EXPECT_EQ(high.warnings[0].d, 1.0);
+    EXPECT_DOUBLE_EQ(high.warnings[0].a, mm_min_to_mm_s(5000.0));
+    ASSERT_TRUE(high.knee_feed_mm_min.has_value());
+    EXPECT_DOUBLE_EQ(high.warnings[0].b, mm_min_to_mm_s(*high.knee_feed_mm_min));
+
+    // One feed is no range.
+    EXPECT_TRUE(sweep_feeds(s, std::vector<double>{2000.0}).warnings.empty());
+}
+
+TEST(Analyse, KneeAtTheEndOfTheSearchRangeIsAWarning) {
+    Scenario s = single_touch_surface();
+    s.cycle.approach_mm = 50.0;
+    s.cycle.probe_feed_mm_min = 2000.0;
+    const Analysis a = analyse(s);
+    const Warning* w = find_warning(a.cycle.warnings(), WarningCode::knee_at_range_end);
+    ASSERT_NE(w, nullptr);
+    EXPECT_DOUBLE_EQ(w->a, mm_min_to_mm_s(kKneeSearchTo_mm_min));
+    EXPECT_EQ(find_warning(analyse(single_touch_surface()).cycle.warnings(),
+                           WarningCode::knee_at_range_end),
+              nullptr);
+}
+
+TEST(Analyse, FeedBeyondKneeNamesTheTolerance) {
+    Scenario s = single_touch_surface();
+    s.cycle.probe_feed_mm_min = 9000.0;
+    s.cycle.knee_tolerance = 0.05;
+    const Analysis a = analyse(s);
+    const Warning* w = find_warning(a.cycle.warnings(), WarningCode::feed_beyond_knee);
+    ASSERT_NE(w, nullptr);
+    EXPECT_EQ(w->d, 0.05);
+    EXPECT_NE(w->message().find("(under 5 %)"), std::string::npos) << w->message();
 }
 
 }  // namespace

@@ -216,6 +216,36 @@ TEST_F(MainWindowTest, OneClickFixDropsTheFeedToTheKnee) {
     EXPECT_FALSE(window_->warning_codes().contains(QStringLiteral("feed_beyond_knee")));
 }
 
+// Issue 11: with a 50 mm approach every faster feed still saves time up to the
+// end of the knee search; the window says the knee depends on that range, with
+// no fix to offer. A looser knee tolerance moves the knee down.
+TEST_F(MainWindowTest, FastestCycleAtTheEndOfTheSearchRangeIsSaid) {
+    Scenario s = window_->scenario();
+    s.cycle.strategy = Strategy::single_touch;
+    window_->edit_scenario(s, QStringLiteral("single touch"));
+    settle();
+    EXPECT_FALSE(window_->warning_codes().contains(QStringLiteral("knee_at_range_end")));
+    ASSERT_TRUE(window_->computed().analysis.knee_feed_mm_min.has_value());
+    const double knee = *window_->computed().analysis.knee_feed_mm_min;
+
+    s.cycle.knee_tolerance = 0.1;
+    window_->edit_scenario(s, QStringLiteral("looser knee"));
+    settle();
+    ASSERT_TRUE(window_->computed().analysis.knee_feed_mm_min.has_value());
+    EXPECT_LT(*window_->computed().analysis.knee_feed_mm_min, knee);
+
+    s.cycle.approach_mm = 50.0;
+    s.probe.overtravel_limit_mm = 20.0;  // 5 mm would end the valid feeds first, at 7880 mm/min
+    window_->edit_scenario(s, QStringLiteral("long approach"));
+    settle();
+    ASSERT_TRUE(window_->warning_codes().contains(QStringLiteral("knee_at_range_end")));
+    const QStringList texts = window_->warning_texts();
+    EXPECT_TRUE(texts.join(QLatin1Char('\n')).contains(QStringLiteral("search faster feeds too")))
+        << texts.join(QLatin1Char('\n')).toStdString();
+    QPushButton* button = fix_button("knee_at_range_end");
+    EXPECT_TRUE(button == nullptr || !button->isVisible());
+}
+
 TEST_F(MainWindowTest, OneClickFixStartsFarEnoughOutToTouchAtFullFeed) {
     Scenario s = window_->scenario();
     s.cycle.approach_mm = 0.2;  // 2000 mm/min needs 1 mm to reach the feed at T = 60 ms
