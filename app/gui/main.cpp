@@ -46,10 +46,10 @@ bool has_flag(int argc, char** argv, const char* flag) {
 // "could not load the Qt platform plugin": say instead how to run it. False
 // when the program should stop.
 bool choose_platform(int argc, char** argv) {
-    const bool headless_mode =
-        has_flag(argc, argv, "--screenshot") || has_flag(argc, argv, "--time-startup") ||
-        has_flag(argc, argv, "--help") || has_flag(argc, argv, "-h") ||
-        has_flag(argc, argv, "--version") || has_flag(argc, argv, "-v");
+    const bool headless_mode = has_flag(argc, argv, "--screenshot") ||
+                               has_flag(argc, argv, "--time-startup") ||
+                               has_flag(argc, argv, "--help") || has_flag(argc, argv, "-h") ||
+                               has_flag(argc, argv, "--version") || has_flag(argc, argv, "-v");
     const bool has_display =
         std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr;
     if (has_display || std::getenv("QT_QPA_PLATFORM") != nullptr) return true;
