@@ -84,6 +84,24 @@ const char* to_string(WarningCode code) {
 
 // The texts are the window's too (ui::translate); each exists here only.
 // Arguments in the units their names say.
+unsigned CycleResult::invalid_codes() const {
+    unsigned codes = 0;
+    for (const Warning& w : warnings_) {
+        if (w.severity == Severity::error) codes |= invalid_code_bit(w.code);
+    }
+    return codes;
+}
+
+std::string invalid_codes_text(unsigned codes, const char* separator) {
+    std::string text;
+    for (unsigned k = 0; k < 32; ++k) {
+        if ((codes & (1u << k)) == 0) continue;
+        if (!text.empty()) text += separator;
+        text += to_string(static_cast<WarningCode>(k));
+    }
+    return text;
+}
+
 Message Warning::to_message() const {
     Message m;
     m.code = to_string(code);

@@ -78,6 +78,13 @@ struct Warning {
     std::string message() const;  // in English: render(to_message())
 };
 
+constexpr unsigned invalid_code_bit(WarningCode code) {
+    return 1u << static_cast<unsigned>(code);
+}
+// The codes of invalid_codes() by name, in WarningCode order, joined by
+// `separator` ("backoff_too_small;overtravel_limit"); "" for none.
+std::string invalid_codes_text(unsigned codes, const char* separator);
+
 // Where the probe is at a time in the cycle.
 struct CycleState {
     std::size_t phase_index{0};  // into CycleResult::phases()
@@ -132,6 +139,14 @@ class CycleResult {
     const TouchResult& measuring_touch() const { return measuring_; }
     const std::vector<Warning>& warnings() const { return warnings_; }
     const std::vector<TimedSegment>& segments() const { return segments_; }
+    // Issue 11: false when the cycle as set cannot run as modelled, which an
+    // error says: backoff_too_small (the second touch would start with the
+    // stylus still deflected) or overtravel_limit at or over the limit (the
+    // stylus is overrun). Its time is then no cycle time to compare or to
+    // optimise for; invalid_codes() names why.
+    bool valid() const { return invalid_codes() == 0; }
+    // The error codes as bits, 1 << WarningCode (0 when valid).
+    unsigned invalid_codes() const;
 
     std::vector<Warning>& mutable_warnings() { return warnings_; }
 

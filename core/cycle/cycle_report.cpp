@@ -36,6 +36,13 @@ std::string evaluation_to_json(const Analysis& analysis) {
     const CycleResult& r = analysis.cycle;
     Json out = Json::object();
     out["cycle_time_s"] = r.total();
+    // Issue 11: an invalid cycle's time is no cycle time; the errors say why.
+    out["valid"] = r.valid();
+    Json reasons = Json::array();
+    for (const Warning& w : r.warnings()) {
+        if (w.severity == Severity::error) reasons.push_back(to_string(w.code));
+    }
+    out["invalid_reasons"] = std::move(reasons);
     out["overtravel_mm"] = r.overtravel_mm();
     out["overtravel_touch"] = r.overtravel_touch() == 2 ? "second" : "first";
     out["trigger_speed_mm_min"] = mm_s_to_mm_min(r.trigger_speed_mm_s());
@@ -85,11 +92,12 @@ std::string monte_carlo_to_json(const MonteCarloOptions& options, const Histogra
 std::string sweep_to_csv(const SweepResult& sweep) {
     std::string csv = "feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm";
     for (Phase phase : all_phases()) csv += std::string(",") + to_string(phase) + "_s";
-    csv += '\n';
+    csv += ",valid,invalid_reasons\n";
     for (const SweepPoint& p : sweep.points) {
         csv += number(p.feed_mm_min) + ',' + number(p.cycle_time_s) + ',' +
                number(p.overtravel_mm) + ',' + number(p.uncertainty_mm);
         for (double t : p.phase_time_s) csv += ',' + number(t);
+        csv += p.valid() ? ",true," : ",false," + invalid_codes_text(p.invalid_codes, ";");
         csv += '\n';
     }
     return csv;
@@ -140,6 +148,8 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
     }
     csv += "\n# summary\nquantity,value,unit\n";
     csv += "cycle_time," + number(r.total()) + ",s\n";
+    csv += std::string("valid,") + (r.valid() ? "true" : "false") + ",\n";
+    if (!r.valid()) csv += "invalid_reasons," + invalid_codes_text(r.invalid_codes(), ";") + ",\n";
     csv += "overtravel," + number(r.overtravel_mm()) + ",mm\n";
     csv += "overtravel_limit," + number(scenario.probe.overtravel_limit_mm) + ",mm\n";
     csv += "trigger_speed," + number(mm_s_to_mm_min(r.trigger_speed_mm_s())) + ",mm/min\n";

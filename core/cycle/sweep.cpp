@@ -9,9 +9,10 @@
 
 // domain.md, "Cycle time versus feed": the knee is the lowest feed whose cycle
 // time is within a small tolerance (cycle.knee_tolerance, 1 % by default) of
-// the best over the range. Issue 11: among the valid feeds only (overtravel
-// within the probe's limit), and a fastest cycle at an end of the range is
-// said (knee_at_range_end), since the knee then depends on the range.
+// the best over the range. Issue 11: among the valid feeds only
+// (CycleResult::valid(): overtravel under the probe's limit, backoff enough),
+// and a fastest cycle at an end of the range is said (knee_at_range_end),
+// since the knee then depends on the range.
 
 namespace probecycle {
 
@@ -49,10 +50,6 @@ Warning range_end_warning(double end_feed_mm_min, double knee_feed_mm_min, bool 
 
 }  // namespace
 
-bool within_overtravel_limit(const Scenario& scenario, double overtravel_mm) {
-    return overtravel_mm <= scenario.probe.overtravel_limit_mm;
-}
-
 void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm_min,
                       SweepResult& out, const SweepOptions& options) {
     CycleResult& scratch = scratch_result();
@@ -72,8 +69,8 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
         for (Phase phase : all_phases()) {
             point.phase_time_s[static_cast<std::size_t>(phase)] = scratch.phase_time(phase);
         }
-        if (within_overtravel_limit(scenario, point.overtravel_mm) &&
-            point.cycle_time_s < best_time) {
+        point.invalid_codes = scratch.invalid_codes();
+        if (point.valid() && point.cycle_time_s < best_time) {
             best_time = point.cycle_time_s;
             best = i;
         }
@@ -89,8 +86,7 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
     for (const SweepPoint& point : out.points) {
         lowest = std::min(lowest, point.feed_mm_min);
         highest = std::max(highest, point.feed_mm_min);
-        if (point.cycle_time_s <= knee_limit &&
-            within_overtravel_limit(scenario, point.overtravel_mm) &&
+        if (point.valid() && point.cycle_time_s <= knee_limit &&
             (!out.knee_feed_mm_min || point.feed_mm_min < *out.knee_feed_mm_min)) {
             out.knee_feed_mm_min = point.feed_mm_min;
         }
@@ -155,12 +151,12 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
     std::array<double, kGrid> times{};
     const auto valid_at = [&](double feed) {
         cycle_time_at(scenario, feed, options, scratch);
-        return within_overtravel_limit(scenario, scratch.overtravel_mm());
+        return scratch.valid();
     };
     std::size_t first_invalid = kGrid;
     for (std::size_t i = 0; i < kGrid; ++i) {
         times[i] = cycle_time_at(scenario, grid[i], options, scratch);
-        if (!within_overtravel_limit(scenario, scratch.overtravel_mm())) {
+        if (!scratch.valid()) {
             first_invalid = i;
             break;
         }
@@ -168,8 +164,8 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
     if (first_invalid == 0) return out;
     double top = to_mm_min;
     if (first_invalid < kGrid) {
-        // The overtravel limit cuts the range: find where (bisection), and search
-        // below it on a grid of its own.
+        // The cycle turns invalid inside the range: find where (bisection), and
+        // search below it on a grid of its own.
         double lo = grid[first_invalid - 1];
         double hi = grid[first_invalid];
         for (int iter = 0; iter < 60 && hi - lo > 1e-9 * hi; ++iter) {
@@ -232,7 +228,7 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
         out.knee_feed_mm_min = hi;
     }
     // At an end of the searched range the fastest cycle may lie beyond it. Not
-    // when the overtravel limit ends the range: that end does not move.
+    // when invalid cycles end the range: that end does not move.
     const bool at_low = best_feed == from_mm_min;
     const bool at_high = best_feed == to_mm_min && top == to_mm_min;
     if (at_low || at_high) {

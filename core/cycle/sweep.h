@@ -22,13 +22,16 @@ struct SweepPoint {
     double second_overtravel_mm{0.0};
     double uncertainty_mm{0.0};
     std::array<double, kPhaseCount> phase_time_s{};  // by Phase, summed over touches
+    // CycleResult::invalid_codes() at this feed (0: a valid cycle).
+    unsigned invalid_codes{0};
+    bool valid() const { return invalid_codes == 0; }
 };
 
 struct SweepResult {
     std::vector<SweepPoint> points;
     // Lowest feed whose cycle time is within cycle.knee_tolerance of the
-    // fastest, both among the valid feeds (overtravel within the probe's
-    // limit); none when no feed is valid.
+    // fastest, both among the valid feeds (CycleResult::valid(): overtravel
+    // under the probe's limit, backoff enough); none when no feed is valid.
     std::optional<double> knee_feed_mm_min;
     // Highest feed whose uncertainty meets the target (none without a target
     // or when no feed meets it).
@@ -37,9 +40,6 @@ struct SweepResult {
     // the highest feed of the sweep: the knee then depends on the range.
     std::vector<Warning> warnings;
 };
-
-// A feed is valid for the knee when its overtravel stays within the probe's limit.
-bool within_overtravel_limit(const Scenario& scenario, double overtravel_mm);
 
 struct SweepOptions {
     // Two-touch: at each feed set the backoff to the recommended one (first
@@ -64,14 +64,14 @@ std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t 
 
 // The knee searched continuously between from and to: a log grid, golden
 // section around the fastest cycle, bisection for the knee. Valid feeds only:
-// the search stops at the feed whose overtravel reaches the probe's limit
-// (overtravel grows with feed; feeds beyond the first invalid one are not
-// looked at).
+// the search stops at the feed where the cycle turns invalid (overtravel
+// reaches the probe's limit, or a fixed backoff becomes too small; both grow
+// with feed, so feeds beyond the first invalid one are not looked at).
 struct KneeSearch {
-    std::optional<double> knee_feed_mm_min;  // none when even `from` overtravels
+    std::optional<double> knee_feed_mm_min;  // none when even `from` is invalid
     std::optional<double> best_feed_mm_min;  // where the fastest valid cycle lies
     double best_cycle_time_s{0.0};
-    // Highest valid feed searched: `to`, or where the overtravel limit cuts in.
+    // Highest valid feed searched: `to`, or where the cycle turns invalid.
     double valid_to_mm_min{0.0};
     // knee_at_range_end when the fastest cycle lies at `from` or at `to`.
     std::optional<Warning> range_end_warning;

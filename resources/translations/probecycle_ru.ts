@@ -1711,10 +1711,6 @@
         <translation>Неопределённость</translation>
     </message>
     <message>
-        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest feed within 1 % of the best time.</source>
-        <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая подача, время цикла на которой не более чем на 1 % хуже лучшего.</translation>
-    </message>
-    <message>
         <source>The phases of the current cycle in time order, each row with its total time over all touches.</source>
         <translation>Фазы текущего цикла в порядке времени; в каждой строке — суммарное время фазы по всем касаниям.</translation>
     </message>
@@ -1741,6 +1737,18 @@
     <message>
         <source>2nd touch</source>
         <translation>2-е касание</translation>
+    </message>
+    <message>
+        <source>This cycle (invalid)</source>
+        <translation>Этот цикл (недоп.)</translation>
+    </message>
+    <message>
+        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. A red dot: this cycle is invalid (see the warnings).</source>
+        <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая допустимая подача, время цикла на которой хуже лучшего не более чем на допуск точки перегиба. Красная точка: этот цикл недопустим (см. предупреждения).</translation>
+    </message>
+    <message>
+        <source>Phases of an invalid cycle</source>
+        <translation>Фазы недопустимого цикла</translation>
     </message>
 </context>
 <context>
@@ -2370,10 +2378,6 @@
         <translation>Точка перегиба</translation>
     </message>
     <message>
-        <source>Total time of the probing cycle, all touches and moves.</source>
-        <translation>Полное время цикла измерения со всеми касаниями и перемещениями.</translation>
-    </message>
-    <message>
         <source>Worst distance beyond the surface where the axis stops: pretravel + trigger speed × (interface + controller + full scan period) + braking distance.</source>
         <translation>Наибольшее расстояние за поверхностью, где останавливается ось: предход + скорость срабатывания × (интерфейс + ЧПУ + полный период опроса) + тормозной путь.</translation>
     </message>
@@ -2388,10 +2392,6 @@
     <message>
         <source>Two-touch: the first touch&apos;s overtravel plus the reseat distance. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
         <translation>Двукратное касание: перебег первого касания плюс путь возврата в исходное. Меньше — датчик может не вернуться; больше — лишний путь проходится на медленной подаче.</translation>
-    </message>
-    <message>
-        <source>The lowest probing feed whose cycle time is within 1 % of the best: faster buys almost no time.</source>
-        <translation>Наименьшая подача поиска, время цикла на которой не более чем на 1 % хуже лучшего: быстрее почти не выигрывает времени.</translation>
     </message>
     <message>
         <source>invalid scenario</source>
@@ -2436,6 +2436,18 @@
     <message>
         <source>%1 % of %2, 2nd touch</source>
         <translation>%1 % от %2, второе касание</translation>
+    </message>
+    <message>
+        <source>Total time of the probing cycle, all touches and moves. &quot;Invalid&quot; when the cycle cannot run as set (backoff too small, overtravel over the probe&apos;s limit): then it has no cycle time to compare.</source>
+        <translation>Полное время цикла измерения со всеми касаниями и перемещениями. «Недопустим», когда цикл не может выполняться так, как задан (отвод слишком мал, перебег выше предела датчика): тогда сравнивать нечего.</translation>
+    </message>
+    <message>
+        <source>The lowest probing feed whose cycle time is within the knee tolerance (1 % by default) of the best, among the valid cycles (overtravel under the probe&apos;s limit): faster buys almost no time.</source>
+        <translation>Наименьшая подача поиска, время цикла на которой хуже лучшего не более чем на допуск точки перегиба (по умолчанию 1 %), среди допустимых циклов (перебег ниже предела датчика): быстрее почти не выигрывает времени.</translation>
+    </message>
+    <message>
+        <source>Invalid</source>
+        <translation>Недопустим</translation>
     </message>
 </context>
 <context>

@@ -1711,10 +1711,6 @@
         <translation>不确定度</translation>
     </message>
     <message>
-        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest feed within 1 % of the best time.</source>
-        <translation>整个循环的循环时间与探测进给率的关系，一次触发和二次触发，其余参数不变。竖线：当前进给率。圆点：拐点，即循环时间在最佳值 1 % 以内的最低进给率。</translation>
-    </message>
-    <message>
         <source>The phases of the current cycle in time order, each row with its total time over all touches.</source>
         <translation>当前循环按时间顺序排列的各阶段，每行给出其在所有触测中的总时间。</translation>
     </message>
@@ -1741,6 +1737,18 @@
     <message>
         <source>2nd touch</source>
         <translation>第二次触测</translation>
+    </message>
+    <message>
+        <source>This cycle (invalid)</source>
+        <translation>当前循环（无效）</translation>
+    </message>
+    <message>
+        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. A red dot: this cycle is invalid (see the warnings).</source>
+        <translation>整个循环的循环时间与探测进给率的关系，一次触发和二次触发，其余参数不变。竖线：当前进给率。圆点：拐点，即循环时间在最佳值的拐点容差以内的最低有效进给率。红点：当前循环无效（见警告）。</translation>
+    </message>
+    <message>
+        <source>Phases of an invalid cycle</source>
+        <translation>无效循环的各阶段</translation>
     </message>
 </context>
 <context>
@@ -2370,10 +2378,6 @@
         <translation>曲线拐点</translation>
     </message>
     <message>
-        <source>Total time of the probing cycle, all touches and moves.</source>
-        <translation>测量循环的总时间，包括所有触测和移动。</translation>
-    </message>
-    <message>
         <source>Worst distance beyond the surface where the axis stops: pretravel + trigger speed × (interface + controller + full scan period) + braking distance.</source>
         <translation>轴停止处超出表面的最大距离：预行程 + 触发速度 × (接口 + 控制器 + 完整扫描周期) + 制动距离。</translation>
     </message>
@@ -2388,10 +2392,6 @@
     <message>
         <source>Two-touch: the first touch&apos;s overtravel plus the reseat distance. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
         <translation>二次触发：第一次触测的过行程加上复位距离。小于此值测头可能未复位；大于此值的部分要以慢速测量进给率重新接近。</translation>
-    </message>
-    <message>
-        <source>The lowest probing feed whose cycle time is within 1 % of the best: faster buys almost no time.</source>
-        <translation>循环时间在最佳值 1 % 以内的最低探测进给率：更快几乎不再节省时间。</translation>
     </message>
     <message>
         <source>invalid scenario</source>
@@ -2436,6 +2436,18 @@
     <message>
         <source>%1 % of %2, 2nd touch</source>
         <translation>为 %2 的 %1 %，第二次触测</translation>
+    </message>
+    <message>
+        <source>Total time of the probing cycle, all touches and moves. &quot;Invalid&quot; when the cycle cannot run as set (backoff too small, overtravel over the probe&apos;s limit): then it has no cycle time to compare.</source>
+        <translation>测量循环的总时间，包括所有触测和移动。循环无法按设定运行时（回退距离太小、过行程超过测头极限）显示“无效”：此时没有可比较的循环时间。</translation>
+    </message>
+    <message>
+        <source>The lowest probing feed whose cycle time is within the knee tolerance (1 % by default) of the best, among the valid cycles (overtravel under the probe&apos;s limit): faster buys almost no time.</source>
+        <translation>在有效循环（过行程低于测头极限）中，循环时间在最佳值的拐点容差（默认 1 %）以内的最低探测进给率：更快几乎不再节省时间。</translation>
+    </message>
+    <message>
+        <source>Invalid</source>
+        <translation>无效</translation>
     </message>
 </context>
 <context>

@@ -65,11 +65,16 @@ std::vector<std::string> lines_of(const std::string& text) {
     return out;
 }
 
-std::vector<std::string> split(const std::string& text, char sep) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    std::string item;
-    while (std::getline(in, item, sep)) out.push_back(item);
+// The fields of one CSV row, an empty last field included ("a,true," has three).
+std::vector<std::string> fields_of(const std::string& row) {
+    std::vector<std::string> out(1);
+    for (char ch : row) {
+        if (ch == ',') {
+            out.emplace_back();
+        } else {
+            out.back() += ch;
+        }
+    }
     return out;
 }
 
@@ -287,6 +292,15 @@ TEST_F(CycleCli, SetWorksWithoutAFile) {
     EXPECT_EQ(phase_names(j).size(), 6u);
 }
 
+// Issue 11: a cycle the model cannot run is flagged, with the errors that say why.
+TEST_F(CycleCli, EvaluateFlagsAnInvalidCycle) {
+    EXPECT_EQ(run_json({"evaluate"})["valid"], true);
+    const json j = run_json({"evaluate", "--set", "cycle.backoff_mm=0.5"});
+    EXPECT_EQ(j["valid"], false) << j.dump(2);
+    EXPECT_EQ(j["invalid_reasons"], json::array({"backoff_too_small"})) << j.dump(2);
+    EXPECT_TRUE(has_warning(j, "backoff_too_small"));
+}
+
 // ---------------------------------------------------------------------------
 // move
 
@@ -354,17 +368,23 @@ TEST_F(CycleCli, SweepPrintsOnlyTheCsvAndTheSummaryOnStderr) {
     ASSERT_EQ(r.exit_code, 0) << r;
     const std::vector<std::string> lines = lines_of(r.out);
     ASSERT_EQ(lines.size(), 11u) << r;
-    const std::vector<std::string> header = split(lines[0], ',');
-    ASSERT_EQ(header.size(), 4u + kPhaseCount) << lines[0];
+    const std::vector<std::string> header = fields_of(lines[0]);
+    ASSERT_EQ(header.size(), 6u + kPhaseCount) << lines[0];
     EXPECT_EQ(lines[0].rfind("feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm,", 0), 0u);
+    EXPECT_EQ(header[4 + kPhaseCount], "valid");
+    EXPECT_EQ(header[5 + kPhaseCount], "invalid_reasons");
     for (std::size_t i = 1; i < lines.size(); ++i) {
-        const std::vector<std::string> fields = split(lines[i], ',');
+        const std::vector<std::string> fields = fields_of(lines[i]);
         ASSERT_EQ(fields.size(), header.size()) << lines[i];
-        for (const std::string& f : fields) {
+        for (std::size_t k = 0; k < 4 + kPhaseCount; ++k) {
+            const std::string& f = fields[k];
             std::size_t used = 0;
             EXPECT_NO_THROW(std::stod(f, &used)) << lines[i];
             EXPECT_EQ(used, f.size()) << lines[i];
         }
+        // Up to 1000 mm/min the default cycle is valid.
+        EXPECT_EQ(fields[4 + kPhaseCount], "true") << lines[i];
+        EXPECT_EQ(fields[5 + kPhaseCount], "") << lines[i];
         EXPECT_NEAR(std::stod(fields[0]), 100.0 * static_cast<double>(i), 1e-9);
     }
     // The same bytes as the golden sweep (100 to 3000 mm/min) up to 1000 mm/min.

@@ -197,6 +197,10 @@ void PlotView::set_title(const QString& title) {
     if (impl_->chart->title() != title) impl_->chart->setTitle(title);
 }
 
+QString PlotView::title() const {
+    return impl_->chart->title();
+}
+
 void PlotView::set_legend_visible(bool visible) {
     impl_->chart->legend()->setVisible(visible);
 }

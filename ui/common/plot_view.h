@@ -48,6 +48,7 @@ class PlotView : public QWidget {
     ~PlotView() override;
 
     void set_title(const QString& title);
+    QString title() const;
     void set_legend_visible(bool visible);
     // Below the plot (the default) or beside it on the right, one entry per
     // line: the right suits a legend that is a colour scale.

@@ -25,6 +25,7 @@ constexpr double kUncertaintyFloor_um = 1e-3;
 const QColor kSingleColour{0x1f, 0x77, 0xb4};
 const QColor kTwoColour{0x2c, 0xa0, 0x2c};
 const QColor kMarkerColour{0x44, 0x44, 0x44};
+const QColor kInvalidColour{0xc0, 0x39, 0x2b};  // the red of the overtravel limit
 const QColor kKneeColour{0xff, 0x7f, 0x0e};
 const QColor kOvertravelColour{0xc0, 0x39, 0x2b};
 const QColor kUncertaintyColour{0x1f, 0x5f, 0xb4};
@@ -210,6 +211,11 @@ void CycleCharts::build() {
     // The scenario's own cycle: above the two-touch curve by what its backoff wastes.
     ct_cycle_ = add(QStringLiteral("cycle_time.current"), cycle_time_,
                     cycle_time_->add_markers({QStringLiteral("c"), kMarkerColour}, 9.0));
+    // An invalid cycle (issue 11) is no point of the curve: a red dot of its own,
+    // named as invalid in the legend, only while the cycle is invalid.
+    ct_cycle_invalid_ = add(QStringLiteral("cycle_time.current_invalid"), cycle_time_,
+                            cycle_time_->add_markers({QStringLiteral("ci"), kInvalidColour}, 9.0));
+    cycle_time_->set_visible(ct_cycle_invalid_.curve, false);
 
     phases_ = new PlotView(this);
     phases_->setObjectName(QStringLiteral("chart:phases"));
@@ -298,6 +304,7 @@ void CycleCharts::retranslate() {
     cycle_time_->set_name(ct_single_.curve, tr("Single-touch"));
     cycle_time_->set_name(ct_two_.curve, tr("Two-touch, best backoff"));
     cycle_time_->set_name(ct_cycle_.curve, tr("This cycle"));
+    cycle_time_->set_name(ct_cycle_invalid_.curve, tr("This cycle (invalid)"));
     cycle_time_->set_name(ct_knee_.curve, tr("Knee"));
 
     phases_->set_x_axis({Scale::linear, tr("Time [%1]").arg(unit_s()), QStringLiteral("%.3g"), {}});
@@ -326,7 +333,8 @@ void CycleCharts::retranslate() {
     cycle_time_->setToolTip(tr(
         "Cycle time of the whole cycle against the probing feed, for single-touch and two-touch "
         "with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest "
-        "feed within 1 % of the best time."));
+        "valid feed within the knee tolerance of the best time. A red dot: this cycle is "
+        "invalid (see the warnings)."));
     phases_->setToolTip(
         tr("The phases of the current cycle in time order, each row with its total "
            "time over all touches."));
@@ -345,10 +353,16 @@ void CycleCharts::retranslate() {
     cycle_time_->set_name(ct_base_two_.curve, baseline);
     overtravel_->set_name(ot_base_overtravel_.curve, baseline);
     motion_->set_name(mo_base_position_.curve, baseline);
-    if (has_result_) {
-        phases_->set_title(tr("Phases: total %1").arg(format_seconds(total_s_)));
-    } else {
+    set_phases_title();
+}
+
+void CycleCharts::set_phases_title() {
+    if (!has_result_) {
         phases_->set_title(tr("Phases"));
+    } else if (!cycle_valid_) {
+        phases_->set_title(tr("Phases of an invalid cycle"));
+    } else {
+        phases_->set_title(tr("Phases: total %1").arg(format_seconds(total_s_)));
     }
 }
 
@@ -397,13 +411,18 @@ void CycleCharts::draw_cycle_time(const Computed& c) {
     set(ct_knee_, knee_);
     current_cycle_.clear();
     current_cycle_.append({feed, c.cycle().total()});
-    set(ct_cycle_, current_cycle_);
+    const bool valid = c.cycle().valid();
+    set(valid ? ct_cycle_ : ct_cycle_invalid_, current_cycle_);
+    set(valid ? ct_cycle_invalid_ : ct_cycle_, {});
+    cycle_time_->set_visible(ct_cycle_.curve, valid);
+    cycle_time_->set_visible(ct_cycle_invalid_.curve, !valid);
 }
 
 void CycleCharts::draw_phases(const Computed& c) {
     const CycleResult& cycle = c.cycle();
     total_s_ = cycle.total();
-    phases_->set_title(tr("Phases: total %1").arg(format_seconds(total_s_)));
+    cycle_valid_ = cycle.valid();
+    set_phases_title();
 
     // Rows in the order the phases first happen, the first at the top.
     std::array<int, kPhaseCount> order{};

@@ -75,6 +75,7 @@ class CycleCharts : public QWidget {
     };
 
     void build();
+    void set_phases_title();
     void retranslate();
     Ref add(const QString& id, PlotView* plot, PlotView::CurveId curve);
     void set(const Ref& ref, const Buffer& points) { ref.plot->set_points(ref.curve, points); }
@@ -95,6 +96,7 @@ class CycleCharts : public QWidget {
 
     // Curves, by chart.
     Ref ct_single_, ct_two_, ct_feed_, ct_knee_, ct_cycle_, ct_base_single_, ct_base_two_;
+    Ref ct_cycle_invalid_;  // the scenario's own cycle when the model marks it invalid
     std::array<Ref, kPhaseCount> phase_areas_{};
     Ref ot_overtravel_, ot_overtravel2_, ot_limit_, ot_beyond_, ot_uncertainty_, ot_target_,
         ot_feed_, ot_measure_feed_, ot_base_overtravel_, ot_base_uncertainty_;
@@ -118,6 +120,7 @@ class CycleCharts : public QWidget {
     std::optional<Baseline> baseline_;
     bool has_result_{false};
     double total_s_{0.0};
+    bool cycle_valid_{true};  // an invalid cycle's phases are titled as such, without a total
     std::array<bool, kPhaseCount> phase_present_{};
     StableRange phases_x_, motion_x_, motion_y_;
 };

@@ -100,7 +100,10 @@ void Readouts::retranslate() {
     cards_[3].title->setText(tr("Uncertainty (k = 2)"));
     cards_[4].title->setText(tr("Recommended backoff"));
     cards_[5].title->setText(tr("Knee of the curve"));
-    cards_[0].title->setToolTip(tr("Total time of the probing cycle, all touches and moves."));
+    cards_[0].title->setToolTip(
+        tr("Total time of the probing cycle, all touches and moves. \"Invalid\" when the cycle "
+           "cannot run as set (backoff too small, overtravel over the probe's limit): then it "
+           "has no cycle time to compare."));
     cards_[1].title->setToolTip(
         tr("Worst distance beyond the surface where the axis stops: pretravel + trigger speed × "
            "(interface + controller + full scan period) + braking distance."));
@@ -114,8 +117,9 @@ void Readouts::retranslate() {
         tr("Two-touch: the first touch's overtravel plus the reseat distance. Less risks a "
            "probe that has not reseated; more is approached again at the slow measuring feed."));
     cards_[5].title->setToolTip(
-        tr("The lowest probing feed whose cycle time is within 1 % of the "
-           "best: faster buys almost no time."));
+        tr("The lowest probing feed whose cycle time is within the knee tolerance (1 % by "
+           "default) of the best, among the valid cycles (overtravel under the probe's limit): "
+           "faster buys almost no time."));
     for (Card& card : cards_) card.value->setToolTip(card.title->toolTip());
 }
 
@@ -168,11 +172,21 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
     std::array<double, kReadoutCount> base{};
     std::array<bool, kReadoutCount> has_delta{};
 
-    // Cycle time
+    // Cycle time; an invalid cycle (issue 11) shows no time, but what makes it invalid.
     now[0] = r.total();
-    cards_[0].value->setText(format_seconds(r.total()));
-    detail[0] = strategy_label(s.cycle.strategy);
-    set_alert(cards_[0], Alert::none);
+    if (r.valid()) {
+        cards_[0].value->setText(format_seconds(r.total()));
+        detail[0] = strategy_label(s.cycle.strategy);
+        set_alert(cards_[0], Alert::none);
+    } else {
+        cards_[0].value->setText(tr("Invalid"));
+        QStringList why;
+        for (const Warning& w : r.warnings()) {
+            if (w.severity == Severity::error) why << warning_title(w.code);
+        }
+        detail[0] = why.join(QStringLiteral("; "));
+        set_alert(cards_[0], Alert::alarm);
+    }
 
     // Overtravel against the limit
     const double limit = s.probe.overtravel_limit_mm;
@@ -231,6 +245,8 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
                 b.recommended_backoff_mm(),
                 baseline->analysis.knee_feed_mm_min.value_or(0.0)};
         has_delta.fill(true);
+        // An invalid cycle's time is no time to compare.
+        has_delta[0] = r.valid() && b.valid();
         has_delta[5] = knee.has_value() && baseline->analysis.knee_feed_mm_min.has_value();
     }
 

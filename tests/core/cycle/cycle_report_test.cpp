@@ -35,6 +35,19 @@ std::vector<std::string> split(const std::string& text, char sep) {
     return out;
 }
 
+// The fields of one CSV row, an empty last field included ("a,true," has three).
+std::vector<std::string> fields_of(const std::string& row) {
+    std::vector<std::string> out(1);
+    for (char ch : row) {
+        if (ch == ',') {
+            out.emplace_back();
+        } else {
+            out.back() += ch;
+        }
+    }
+    return out;
+}
+
 std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> out = split(text, '\n');
     for (std::string& line : out) {
@@ -117,6 +130,22 @@ TEST(EvaluationJson, NoWarningsIsAnEmptyArray) {
     EXPECT_TRUE(j["warnings"].empty());
 }
 
+TEST(EvaluationJson, ValidAndTheReasonsWhenNot) {
+    Scenario s;  // two-touch, 2 mm backoff: enough at 2000 mm/min
+    nlohmann::json j = nlohmann::json::parse(evaluation_to_json(analyse(s)));
+    EXPECT_EQ(j["valid"], true);
+    EXPECT_EQ(j["invalid_reasons"], nlohmann::json::array());
+    s.cycle.backoff_mm = 0.5;
+    j = nlohmann::json::parse(evaluation_to_json(analyse(s)));
+    EXPECT_EQ(j["valid"], false);
+    EXPECT_EQ(j["invalid_reasons"], nlohmann::json::array({"backoff_too_small"}));
+    // The time is still given (what the model computes), but flagged.
+    EXPECT_TRUE(j["cycle_time_s"].is_number());
+    const std::string report = csv_report(s);
+    EXPECT_NE(report.find("\nvalid,false,\ninvalid_reasons,backoff_too_small,\n"),
+              std::string::npos);
+}
+
 // ---------------------------------------------------------------------------
 // Sweep CSV
 
@@ -128,8 +157,10 @@ TEST(SweepCsv, HeaderThenOneRowPerFeed) {
     while (!lines.empty() && lines.back().empty()) lines.pop_back();
     ASSERT_EQ(lines.size(), feeds.size() + 1);
 
-    const std::vector<std::string> header = split(lines[0], ',');
-    ASSERT_EQ(header.size(), 4 + kPhaseCount);
+    const std::vector<std::string> header = fields_of(lines[0]);
+    ASSERT_EQ(header.size(), 6 + kPhaseCount);
+    EXPECT_EQ(header[4 + kPhaseCount], "valid");
+    EXPECT_EQ(header[5 + kPhaseCount], "invalid_reasons");
     EXPECT_EQ(header[0], "feed_mm_min");
     EXPECT_EQ(header[1], "cycle_time_s");
     EXPECT_EQ(header[2], "overtravel_mm");
@@ -141,7 +172,7 @@ TEST(SweepCsv, HeaderThenOneRowPerFeed) {
     }
 
     for (std::size_t i = 0; i < feeds.size(); ++i) {
-        const std::vector<std::string> fields = split(lines[i + 1], ',');
+        const std::vector<std::string> fields = fields_of(lines[i + 1]);
         ASSERT_EQ(fields.size(), header.size()) << lines[i + 1];
         const SweepPoint& p = sweep.points[i];
         EXPECT_NEAR(to_number(fields[0]), p.feed_mm_min, 1e-9 * p.feed_mm_min);
@@ -152,7 +183,13 @@ TEST(SweepCsv, HeaderThenOneRowPerFeed) {
             EXPECT_NEAR(to_number(fields[4 + k]), p.phase_time_s[k],
                         1e-6 * p.phase_time_s[k] + 1e-9);
         }
+        EXPECT_EQ(fields[4 + kPhaseCount], p.valid() ? "true" : "false");
+        EXPECT_EQ(fields[5 + kPhaseCount], invalid_codes_text(p.invalid_codes, ";"));
     }
+    // The 2 mm backoff is too small from about 2850 mm/min on: those rows say so.
+    EXPECT_EQ(fields_of(lines.back())[4 + kPhaseCount], "false");
+    EXPECT_EQ(fields_of(lines.back())[5 + kPhaseCount], "backoff_too_small");
+    EXPECT_EQ(fields_of(lines[1])[4 + kPhaseCount], "true");
 }
 
 TEST(SweepCsv, EmptySweepIsTheHeaderAlone) {

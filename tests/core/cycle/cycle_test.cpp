@@ -670,6 +670,36 @@ TEST(Warnings, BackoffTooSmall) {
     EXPECT_FALSE(w->message().empty());
 }
 
+// Issue 11, loose end 8: an error makes the cycle invalid; warnings and notes do not.
+TEST(Validity, AnErrorMakesTheCycleInvalidAndNamesWhy) {
+    Scenario s = clean_two_touch();
+    EXPECT_TRUE(evaluate(s).valid());
+    EXPECT_EQ(evaluate(s).invalid_codes(), 0u);
+
+    const double recommended = s.cycle.backoff_mm;
+    s.cycle.backoff_mm = recommended - 0.05;  // second touch starts deflected
+    CycleResult r = evaluate(s);
+    EXPECT_FALSE(r.valid());
+    EXPECT_EQ(r.invalid_codes(), invalid_code_bit(WarningCode::backoff_too_small));
+    EXPECT_EQ(invalid_codes_text(r.invalid_codes(), ";"), "backoff_too_small");
+
+    s.probe.overtravel_limit_mm = 0.5 * r.overtravel_mm();  // and the stylus is overrun
+    r = evaluate(s);
+    EXPECT_FALSE(r.valid());
+    EXPECT_EQ(r.invalid_codes(), invalid_code_bit(WarningCode::backoff_too_small) |
+                                     invalid_code_bit(WarningCode::overtravel_limit));
+    EXPECT_EQ(invalid_codes_text(r.invalid_codes(), ";"), "overtravel_limit;backoff_too_small");
+
+    // A warning (90 % of the limit) or a note (backoff longer than needed) leaves it valid.
+    s = clean_two_touch();
+    s.probe.overtravel_limit_mm = evaluate(s).overtravel_mm() / 0.9;
+    s.cycle.backoff_mm += 1.0;
+    r = evaluate(s);
+    EXPECT_NE(find_warning(r, WarningCode::overtravel_limit), nullptr);
+    EXPECT_NE(find_warning(r, WarningCode::backoff_excess), nullptr);
+    EXPECT_TRUE(r.valid());
+}
+
 TEST(Warnings, BackoffExcessWithTheTimeItWastes) {
     const Scenario clean = clean_two_touch();
     Scenario s = clean;

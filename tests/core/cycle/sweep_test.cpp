@@ -30,18 +30,17 @@ Scenario single_touch_surface() {
     return s;
 }
 
-// The knee by its definition: among the points whose overtravel is within the
-// limit, the lowest feed whose cycle time is within the tolerance of the fastest.
+// The knee by its definition: among the valid points (CycleResult::valid()),
+// the lowest feed whose cycle time is within the tolerance of the fastest.
 std::optional<double> knee_of(const std::vector<SweepPoint>& points,
-                              double overtravel_limit_mm = 50.0,
                               double tolerance = kDefaultKneeTolerance) {
     double best = std::numeric_limits<double>::infinity();
     for (const SweepPoint& p : points) {
-        if (p.overtravel_mm <= overtravel_limit_mm) best = std::min(best, p.cycle_time_s);
+        if (p.valid()) best = std::min(best, p.cycle_time_s);
     }
     std::optional<double> knee;
     for (const SweepPoint& p : points) {
-        if (p.overtravel_mm <= overtravel_limit_mm && p.cycle_time_s <= best * (1.0 + tolerance)) {
+        if (p.valid() && p.cycle_time_s <= best * (1.0 + tolerance)) {
             if (!knee || p.feed_mm_min < *knee) knee = p.feed_mm_min;
         }
     }
@@ -198,8 +197,7 @@ TEST(Sweep, RandomScenariosKneeAndTargetByDefinition) {
         const std::vector<double> feeds = linear_feeds(100.0, 8000.0, 100.0);
         const SweepResult sweep = sweep_feeds(s, feeds);
         ASSERT_EQ(sweep.points.size(), feeds.size());
-        EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points, s.probe.overtravel_limit_mm))
-            << "case " << i;
+        EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points)) << "case " << i;
         EXPECT_EQ(sweep.max_feed_meeting_target_mm_min,
                   max_feed_meeting(sweep.points, s.cycle.target_uncertainty_mm))
             << "case " << i;
@@ -221,7 +219,7 @@ TEST(Sweep, RecommendedBackoffOptionSweepsTheOptimisedTwoTouchCycle) {
         EXPECT_NEAR(sweep.points[i].cycle_time_s, r.total(), 1e-12 * r.total()) << feeds[i];
         EXPECT_NEAR(sweep.points[i].overtravel_mm, r.overtravel_mm(), 1e-12) << feeds[i];
     }
-    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points, s.probe.overtravel_limit_mm));
+    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points));
 }
 
 TEST(Sweep, IntoReusesTheBufferAndMatchesSweepFeeds) {
@@ -366,10 +364,17 @@ TEST(Sweep, KneeIsSearchedAmongValidFeedsOnly) {
     s.probe.overtravel_limit_mm = 2.0;
     const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 10000.0, 50.0));
     ASSERT_TRUE(sweep.knee_feed_mm_min.has_value());
-    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points, 2.0));
-    const std::optional<double> unlimited = knee_of(sweep.points, 1e9);
-    ASSERT_TRUE(unlimited.has_value());
-    EXPECT_GT(*unlimited, 5000.0);
+    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points));
+    for (const SweepPoint& p : sweep.points) {
+        EXPECT_EQ(p.valid(), p.overtravel_mm < 2.0) << p.feed_mm_min;
+        EXPECT_EQ(p.invalid_codes,
+                  p.valid() ? 0u : invalid_code_bit(WarningCode::overtravel_limit));
+    }
+    Scenario unlimited = s;
+    unlimited.probe.overtravel_limit_mm = 100.0;
+    const SweepResult all = sweep_feeds(unlimited, linear_feeds(100.0, 10000.0, 50.0));
+    ASSERT_TRUE(all.knee_feed_mm_min.has_value());
+    EXPECT_GT(*all.knee_feed_mm_min, 5000.0);
     EXPECT_LE(*sweep.knee_feed_mm_min, 3150.0);
     // The limit, not the range, ends the valid feeds: nothing to say about the range.
     EXPECT_TRUE(sweep.warnings.empty());
@@ -428,7 +433,7 @@ TEST(FindKnee, TheToleranceMovesTheKnee) {
     // The sweep uses the same key.
     s.cycle.knee_tolerance = 0.05;
     const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 10000.0, 50.0));
-    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points, 50.0, 0.05));
+    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points, 0.05));
 }
 
 // A 50 mm approach: every faster feed up to 10000 mm/min still saves time.

@@ -23,6 +23,7 @@
 #include "core/cycle/cycle_report.h"
 #include "core/cycle/scenario.h"
 #include "ui/common/language.h"
+#include "ui/common/plot_view.h"
 #include "ui/lab/latency_tab.h"
 
 namespace probecycle::ui {
@@ -488,7 +489,9 @@ TEST_F(MainWindowTest, PinnedBaselineStaysDrawnAndReadoutsShowTheDifference) {
         window_->series_points(QStringLiteral("cycle_time.baseline_two_touch"));
     EXPECT_EQ(baseline.size(), 500);
     EXPECT_TRUE(window_->series_visible(QStringLiteral("cycle_time.baseline_two_touch")));
-    drag_to_fraction(slider("machine.time_constant_s"), 0.9);
+    // 20 ms: a shorter stop, still a valid cycle with the 2 mm backoff.
+    drag_to_fraction(slider("machine.time_constant_s"), 0.3);
+    ASSERT_TRUE(window_->computed().cycle().valid());
     EXPECT_EQ(window_->series_points(QStringLiteral("cycle_time.baseline_two_touch")), baseline);
     EXPECT_NE(window_->series_points(QStringLiteral("cycle_time.two_touch")), baseline);
     EXPECT_TRUE(window_->readout_detail(Readout::cycle_time).contains(QStringLiteral("baseline")));
@@ -496,6 +499,42 @@ TEST_F(MainWindowTest, PinnedBaselineStaysDrawnAndReadoutsShowTheDifference) {
     settle();
     EXPECT_FALSE(window_->series_visible(QStringLiteral("cycle_time.baseline_two_touch")));
     EXPECT_FALSE(window_->readout_detail(Readout::cycle_time).contains(QStringLiteral("baseline")));
+}
+
+// Issue 11, loose end 8: a backoff too small makes the cycle invalid. The
+// readout shows no time but why, the chart's dot is the invalid one, and
+// against a pinned baseline no time difference is offered.
+TEST_F(MainWindowTest, AnInvalidCycleShowsNoTimeButWhy) {
+    window_->pin_baseline();
+    settle();
+    EXPECT_FALSE(window_->series_points(QStringLiteral("cycle_time.current")).isEmpty());
+    EXPECT_TRUE(window_->series_points(QStringLiteral("cycle_time.current_invalid")).isEmpty());
+    Scenario s = window_->scenario();
+    s.cycle.backoff_mm = 0.5;
+    window_->edit_scenario(s, QStringLiteral("short backoff"));
+    settle();
+    ASSERT_FALSE(window_->computed().cycle().valid());
+    EXPECT_EQ(window_->readout_text(Readout::cycle_time), QStringLiteral("Invalid"));
+    EXPECT_TRUE(
+        window_->readout_detail(Readout::cycle_time).contains(QStringLiteral("Backoff too small")))
+        << window_->readout_detail(Readout::cycle_time).toStdString();
+    EXPECT_FALSE(window_->readout_detail(Readout::cycle_time).contains(QStringLiteral("baseline")));
+    EXPECT_EQ(window_->readout_alert(Readout::cycle_time), Alert::alarm);
+    EXPECT_TRUE(window_->series_points(QStringLiteral("cycle_time.current")).isEmpty());
+    ASSERT_EQ(window_->series_points(QStringLiteral("cycle_time.current_invalid")).size(), 1);
+    EXPECT_TRUE(window_->series_visible(QStringLiteral("cycle_time.current_invalid")));
+    EXPECT_FALSE(window_->series_visible(QStringLiteral("cycle_time.current")));
+    const auto* phases = window_->findChild<PlotView*>(QStringLiteral("chart:phases"));
+    ASSERT_NE(phases, nullptr);
+    EXPECT_EQ(phases->title(), QStringLiteral("Phases of an invalid cycle"));
+
+    ASSERT_TRUE(window_->apply_fix_for(QStringLiteral("backoff_too_small")));
+    settle();
+    EXPECT_TRUE(window_->computed().cycle().valid());
+    EXPECT_NE(window_->readout_text(Readout::cycle_time), QStringLiteral("Invalid"));
+    EXPECT_FALSE(window_->series_visible(QStringLiteral("cycle_time.current_invalid")));
+    EXPECT_TRUE(phases->title().startsWith(QStringLiteral("Phases: total")))
+        << phases->title().toStdString();
 }
 
 TEST_F(MainWindowTest, LanguagesSwitchTheInterface) {
