@@ -122,10 +122,19 @@ Message Warning::to_message() const {
                       arg("touch", ArgKind::integer, d > 1.5 ? 2.0 : 1.0)};
             break;
         case WarningCode::backoff_too_small:
-            m.text = QT_TRANSLATE_NOOP(
-                "Warning",
-                "Backoff %1 is less than the first touch's overtravel plus reseat, %2: the probe "
-                "may not reseat before the second touch");
+            // d: the backoff's reference (0 where the probe stopped, 1 the recorded trigger).
+            m.text = d > 0.5 ? QT_TRANSLATE_NOOP(
+                                   "Warning",
+                                   "Backoff %1 from the recorded trigger position is less than "
+                                   "the recommended %2 (that position's distance past the "
+                                   "surface plus room to reseat and to reach the measuring feed): "
+                                   "the probe may not reseat before the second touch")
+                             : QT_TRANSLATE_NOOP(
+                                   "Warning",
+                                   "Backoff %1 from where the probe stopped is less than the "
+                                   "recommended %2 (the first touch's overtravel plus room to "
+                                   "reseat and to reach the measuring feed): the probe may not "
+                                   "reseat before the second touch");
             m.args = {arg("backoff_mm", ArgKind::length_mm, a, 3),
                       arg("recommended_backoff_mm", ArgKind::length_mm, b, 3)};
             break;
@@ -383,6 +392,7 @@ class CycleBuilder {
         const double t_trigger = time_at_distance_s(plan, distance_mm + p.pretravel_mm);
         const double t_interface = t_trigger + p.interface_delay_s;
         const double t_react = t_trigger + reaction_time_s(m, p);
+        const double t_record = t_interface + (m.latched_input ? 0.0 : m.scan_period_s);
 
         const KinematicState at_touch = plan.state_at(t_touch);
         const KinematicState at_trigger = plan.state_at(t_trigger);
@@ -411,6 +421,7 @@ class CycleBuilder {
         touch.react_speed_mm_s = at_react.speed_mm_s;
         // Overtravel: pretravel + delay travel + stopping distance, past the surface.
         touch.overtravel_mm = at_react.position_mm + stop_distance - at_touch.position_mm;
+        touch.recorded_mm = plan.state_at(t_record).position_mm - at_touch.position_mm;
         return touch;
     }
 
@@ -424,15 +435,25 @@ class CycleBuilder {
     int touch_{0};
 };
 
+// Where the backoff is measured from, beyond the surface (issue 11): where the
+// first touch stopped, or where the control recorded it.
+double backoff_reference_mm(const Cycle& cycle, const TouchResult& first) {
+    return cycle.backoff_from == BackoffFrom::stop ? first.overtravel_mm : first.recorded_mm;
+}
+
 // Time for the backoff move and the second approach, the part of a two-touch
-// cycle that the backoff changes (domain.md, "Strategies").
+// cycle that the backoff changes (domain.md, "Strategies"). The move runs from
+// the stop to `backoff_mm` in front of the reference; the second touch starts
+// `backoff_mm - reference` in front of the surface.
 double backoff_cost_s(const Scenario& scenario, const MotionLimits& limits, double backoff_mm,
-                      double first_overtravel_mm) {
+                      const TouchResult& first) {
     const Cycle& c = scenario.cycle;
+    const double reference = backoff_reference_mm(c, first);
     const double measure_v = mm_min_to_mm_s(c.measure_feed_mm_min);
     const SegmentPlan approach = plan_accelerate(limits, measure_v, kOpenCruise_s);
-    return move_time_s(limits, backoff_mm, mm_min_to_mm_s(c.return_feed_mm_min)) +
-           time_at_distance_s(approach, std::max(0.0, backoff_mm - first_overtravel_mm));
+    return move_time_s(limits, backoff_mm + first.overtravel_mm - reference,
+                       mm_min_to_mm_s(c.return_feed_mm_min)) +
+           time_at_distance_s(approach, std::max(0.0, backoff_mm - reference));
 }
 
 void add_touch_warnings(const Scenario& scenario, const MotionLimits& limits,
@@ -506,10 +527,14 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     const TouchResult first = b.add_touch(scenario, limits, probe_v, s, kFirstTouch);
     TouchResult measuring = first;
     if (two_touch) {
-        b.add_move(Phase::backoff, limits, c.backoff_mm, return_v, -1.0);
         // domain.md, "Strategies": the second touch starts b - overtravel_1 in
-        // front of the surface (none left if the backoff is too short).
-        const double second_distance = std::max(0.0, c.backoff_mm - first.overtravel_mm);
+        // front of the surface (none left if the backoff is too short). From the
+        // recorded trigger position (issue 11), b - recorded_1, and the backoff
+        // move also covers the travel from there to the stop.
+        const double reference = backoff_reference_mm(c, first);
+        b.add_move(Phase::backoff, limits, c.backoff_mm + first.overtravel_mm - reference, return_v,
+                   -1.0);
+        const double second_distance = std::max(0.0, c.backoff_mm - reference);
         measuring = b.add_touch(scenario, limits, measure_v, second_distance, kSecondTouch);
         add_touch_warnings(scenario, limits, measuring, second_distance, 1, r.warnings_);
     }
@@ -541,7 +566,10 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     r.scan_range_mm_ = scan_range_mm(m, r.trigger_speed_mm_s_);
     r.uncertainty_mm_ = expanded_uncertainty_mm(r.scan_range_mm_, p.repeatability_2sigma_mm);
     // domain.md, "Strategies": recommended backoff = overtravel at the fast feed + reseat.
-    r.recommended_backoff_mm_ = r.first_.overtravel_mm + p.reseat_mm;
+    // Issue 11: measured from the backoff's reference, and the second touch
+    // also needs room to reach the measuring feed before it touches.
+    r.recommended_backoff_mm_ = backoff_reference_mm(c, r.first_) +
+                                std::max(p.reseat_mm, reach_distance_mm(limits, measure_v));
 
     // Touches of one cycle differ only in direction, so touch 0 speaks for all.
     std::vector<Warning>& w = r.warnings_;
@@ -554,14 +582,17 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     }
     if (two_touch) {
         const double recommended = r.recommended_backoff_mm_;
-        if (c.backoff_mm < recommended) {
-            w.push_back(
-                {WarningCode::backoff_too_small, Severity::error, c.backoff_mm, recommended});
+        // Within 1 nm of the recommendation counts as following it: a value
+        // written back rounded to the editors' digits must not be refused.
+        constexpr double kBackoffTolerance_mm = 1e-6;
+        if (c.backoff_mm < recommended - kBackoffTolerance_mm) {
+            w.push_back({WarningCode::backoff_too_small, Severity::error, c.backoff_mm, recommended,
+                         0.0, c.backoff_from == BackoffFrom::trigger ? 1.0 : 0.0});
         } else if (c.backoff_mm - recommended > std::max(0.1 * recommended, 0.05)) {
             // Excess beyond 10 % (at least 0.05 mm) of the recommendation is reported.
             const double wasted =
-                touches * (backoff_cost_s(scenario, limits, c.backoff_mm, r.first_.overtravel_mm) -
-                           backoff_cost_s(scenario, limits, recommended, r.first_.overtravel_mm));
+                touches * (backoff_cost_s(scenario, limits, c.backoff_mm, r.first_) -
+                           backoff_cost_s(scenario, limits, recommended, r.first_));
             w.push_back(
                 {WarningCode::backoff_excess, Severity::info, c.backoff_mm, recommended, wasted});
         }

@@ -63,7 +63,8 @@ struct Warning {
     Severity severity{};
     // Meaning by code (all in internal units: mm, s, mm/s):
     // overtravel_limit:         a = overtravel, b = limit, d = the touch (1 first, 2 second)
-    // backoff_too_small:        a = backoff, b = recommended backoff
+    // backoff_too_small:        a = backoff, b = recommended backoff, d = its reference
+    //                           (0 where the probe stopped, 1 the recorded trigger)
     // backoff_excess:           a = backoff, b = recommended, c = time wasted
     // touch_while_accelerating: a = speed reached, b = programmed feed, c = error, d = touch (0/1)
     // feed_beyond_knee:         a = feed, b = knee feed, c = time saved beyond the knee,
@@ -114,6 +115,10 @@ struct TouchResult {
     double trigger_speed_mm_s{0.0};  // when the probe triggers (after pretravel)
     double react_speed_mm_s{0.0};    // when the controller reacts and braking starts
     double overtravel_mm{0.0};       // beyond the surface, where the axis stops
+    // Beyond the surface, where the control records the touch (the skip
+    // position): the trigger plus the interface delay's travel plus, with a
+    // scanned input, a full scan period's (worst case, as the overtravel).
+    double recorded_mm{0.0};
 };
 
 class CycleResult {

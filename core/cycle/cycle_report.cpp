@@ -142,6 +142,7 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
            (scenario.machine.latched_input ? "true" : "false") + ",\n";
     csv += std::string("cycle.strategy,") + to_string(scenario.cycle.strategy) + ",\n";
     csv += std::string("cycle.feature,") + to_string(scenario.cycle.feature) + ",\n";
+    csv += std::string("cycle.backoff_from,") + to_string(scenario.cycle.backoff_from) + ",\n";
     for (const KeyInfo& key : numeric_keys()) {
         csv += std::string(key.key) + ',' + number(*get_number(scenario, key.key)) + ',' +
                key.unit + '\n';

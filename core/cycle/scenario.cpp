@@ -17,6 +17,7 @@ using Json = nlohmann::ordered_json;
 constexpr std::array kAccelModels = {AccelModel::time_constant, AccelModel::constant_accel,
                                      AccelModel::jerk_limited};
 constexpr std::array kStrategies = {Strategy::single_touch, Strategy::two_touch};
+constexpr std::array kBackoffFroms = {BackoffFrom::stop, BackoffFrom::trigger};
 constexpr std::array kFeatures = {Feature::surface, Feature::web, Feature::pocket, Feature::bore,
                                   Feature::boss};
 
@@ -256,11 +257,26 @@ const std::vector<KeyEntry>& key_table() {
         number({"cycle.backoff_mm", "mm", 0.0, 1000.0,
                 QT_TRANSLATE_NOOP(
                     "Parameter",
-                    "Two-touch: distance the probe backs off from where the first touch stopped. "
-                    "Must be at least the first touch's overtravel plus the reseat distance; any "
-                    "more is approached again at the slow measuring feed and wasted."),
+                    "Two-touch: distance the probe backs off after the first touch, from where "
+                    "it stopped or from the recorded trigger position (Backoff from). It must "
+                    "leave the second touch room to reseat the probe and to reach the measuring "
+                    "feed; any more is approached again at the slow measuring feed and wasted."),
                 QT_TRANSLATE_NOOP("Parameter", "Backoff")},
                PC_NUMBER(cycle, backoff_mm)),
+        word(
+            {"cycle.backoff_from", "", 0.0, 0.0,
+             QT_TRANSLATE_NOOP(
+                 "Parameter",
+                 "Two-touch: where the backoff is measured from. stop: from where the probe "
+                 "stopped after the first touch (Renishaw's cycles). trigger: from the trigger "
+                 "position the control recorded (the skip position a macro reads); the axis "
+                 "then moves back its overtravel beyond that position as well."),
+             QT_TRANSLATE_NOOP("Parameter", "Backoff from"), KeyKind::word},
+            enum_words<BackoffFrom>(kBackoffFroms),
+            [](const Scenario& s) { return std::string(to_string(s.cycle.backoff_from)); },
+            [](Scenario& s, std::string_view w) {
+                return set_from(s.cycle.backoff_from, backoff_from_from_string(w));
+            }),
         number({"cycle.return_feed_mm_min", "mm/min", 1.0, 200000.0,
                 QT_TRANSLATE_NOOP(
                     "Parameter",
@@ -627,6 +643,10 @@ const char* to_string(Strategy strategy) {
     return strategy == Strategy::single_touch ? "single_touch" : "two_touch";
 }
 
+const char* to_string(BackoffFrom from) {
+    return from == BackoffFrom::stop ? "stop" : "trigger";
+}
+
 const char* to_string(Feature feature) {
     switch (feature) {
         case Feature::surface:
@@ -646,6 +666,13 @@ const char* to_string(Feature feature) {
 std::optional<Strategy> strategy_from_string(std::string_view word) {
     for (Strategy s : kStrategies) {
         if (word == to_string(s)) return s;
+    }
+    return std::nullopt;
+}
+
+std::optional<BackoffFrom> backoff_from_from_string(std::string_view word) {
+    for (BackoffFrom f : kBackoffFroms) {
+        if (word == to_string(f)) return f;
     }
     return std::nullopt;
 }

@@ -17,6 +17,10 @@ namespace probecycle {
 
 enum class Strategy { single_touch, two_touch };
 enum class Feature { surface, web, pocket, bore, boss };
+// Where a two-touch backoff is measured from (issue 11): where the probe
+// stopped (Renishaw's cycles) or the trigger position the control recorded
+// (the skip position many macros back off from).
+enum class BackoffFrom { stop, trigger };
 
 struct Machine {
     AccelModel accel_model{AccelModel::time_constant};
@@ -51,6 +55,7 @@ struct Cycle {
     // Feed of the second, measuring touch of two-touch.
     double measure_feed_mm_min{30.0};
     double backoff_mm{2.0};
+    BackoffFrom backoff_from{BackoffFrom::stop};
     double return_feed_mm_min{10000.0};
     double target_uncertainty_mm{0.0};  // 0 = no target
     // The knee is the lowest feed whose cycle time is within this fraction of
@@ -128,8 +133,10 @@ std::string scenario_to_json(const Scenario& scenario);
 void apply_setting(Scenario& scenario, std::string_view assignment);
 
 const char* to_string(Strategy strategy);
+const char* to_string(BackoffFrom from);
 const char* to_string(Feature feature);
 std::optional<Strategy> strategy_from_string(std::string_view word);
+std::optional<BackoffFrom> backoff_from_from_string(std::string_view word);
 std::optional<Feature> feature_from_string(std::string_view word);
 std::optional<AccelModel> accel_model_from_string(std::string_view word);
 

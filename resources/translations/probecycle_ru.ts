@@ -631,10 +631,6 @@
         <translation>Отвод</translation>
     </message>
     <message>
-        <source>Two-touch: distance the probe backs off from where the first touch stopped. Must be at least the first touch&apos;s overtravel plus the reseat distance; any more is approached again at the slow measuring feed and wasted.</source>
-        <translation>Двукратное касание: расстояние отвода датчика от точки остановки после первого касания. Не меньше перебега первого касания плюс путь возврата в исходное; всё сверх этого снова проходится на медленной измерительной подаче и теряется.</translation>
-    </message>
-    <message>
         <source>Return feedrate</source>
         <translation>Подача возврата</translation>
     </message>
@@ -758,6 +754,26 @@
         <source>%</source>
         <translation>%</translation>
     </message>
+    <message>
+        <source>Two-touch: distance the probe backs off after the first touch, from where it stopped or from the recorded trigger position (Backoff from). It must leave the second touch room to reseat the probe and to reach the measuring feed; any more is approached again at the slow measuring feed and wasted.</source>
+        <translation>Двукратное касание: расстояние отвода датчика после первого касания — от точки остановки или от записанной точки срабатывания («Отвод от»). Оно должно оставить второму касанию место для возврата датчика в исходное и для разгона до измерительной подачи; всё сверх этого снова проходится на медленной измерительной подаче и теряется.</translation>
+    </message>
+    <message>
+        <source>Two-touch: where the backoff is measured from. stop: from where the probe stopped after the first touch (Renishaw&apos;s cycles). trigger: from the trigger position the control recorded (the skip position a macro reads); the axis then moves back its overtravel beyond that position as well.</source>
+        <translation>Двукратное касание: от какой точки отсчитывается отвод. stop: от точки, где датчик остановился после первого касания (циклы Renishaw). trigger: от точки срабатывания, записанной ЧПУ (позиция пропуска, которую читает макрос); тогда ось дополнительно отходит на перебег за этой точкой.</translation>
+    </message>
+    <message>
+        <source>Backoff from</source>
+        <translation>Отвод от</translation>
+    </message>
+    <message>
+        <source>Where it stopped</source>
+        <translation>Точки остановки</translation>
+    </message>
+    <message>
+        <source>Trigger position</source>
+        <translation>Точки срабатывания</translation>
+    </message>
 </context>
 <context>
     <name>Phase</name>
@@ -853,10 +869,6 @@
         <translation>Перебег %1 составляет %2 % от предела датчика %3: запас для наконечника мал</translation>
     </message>
     <message>
-        <source>Backoff %1 is less than the first touch&apos;s overtravel plus reseat, %2: the probe may not reseat before the second touch</source>
-        <translation>Отвод %1 меньше перебега первого касания плюс путь возврата, %2: датчик может не вернуться в исходное до второго касания</translation>
-    </message>
-    <message>
         <source>Backoff %1 is more than the recommended %2 and wastes %3 per cycle</source>
         <translation>Отвод %1 больше рекомендуемого %2 и теряет %3 за цикл</translation>
     </message>
@@ -895,6 +907,14 @@
     <message>
         <source>Fastest cycle at the end of the range</source>
         <translation>Самый быстрый цикл на краю диапазона</translation>
+    </message>
+    <message>
+        <source>Backoff %1 from the recorded trigger position is less than the recommended %2 (that position&apos;s distance past the surface plus room to reseat and to reach the measuring feed): the probe may not reseat before the second touch</source>
+        <translation>Отвод %1 от записанной точки срабатывания меньше рекомендуемого %2 (расстояние этой точки за поверхностью плюс место для возврата в исходное и разгона до измерительной подачи): датчик может не вернуться в исходное до второго касания</translation>
+    </message>
+    <message>
+        <source>Backoff %1 from where the probe stopped is less than the recommended %2 (the first touch&apos;s overtravel plus room to reseat and to reach the measuring feed): the probe may not reseat before the second touch</source>
+        <translation>Отвод %1 от точки остановки меньше рекомендуемого %2 (перебег первого касания плюс место для возврата в исходное и разгона до измерительной подачи): датчик может не вернуться в исходное до второго касания</translation>
     </message>
 </context>
 <context>
@@ -2390,10 +2410,6 @@
         <translation>Расширенная неопределённость измерительного касания: диапазон периода опроса вместе с повторяемостью датчика.</translation>
     </message>
     <message>
-        <source>Two-touch: the first touch&apos;s overtravel plus the reseat distance. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
-        <translation>Двукратное касание: перебег первого касания плюс путь возврата в исходное. Меньше — датчик может не вернуться; больше — лишний путь проходится на медленной подаче.</translation>
-    </message>
-    <message>
         <source>invalid scenario</source>
         <translation>сценарий недопустим</translation>
     </message>
@@ -2448,6 +2464,10 @@
     <message>
         <source>Invalid</source>
         <translation>Недопустим</translation>
+    </message>
+    <message>
+        <source>Two-touch: from the backoff&apos;s reference (where the probe stopped, or the recorded trigger position) the larger of the reseat distance and the distance to reach the measuring feed. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
+        <translation>Двукратное касание: от точки отсчёта отвода (точки остановки или записанной точки срабатывания) — большее из пути возврата в исходное и пути разгона до измерительной подачи. Меньше — датчик может не вернуться; больше — лишний путь проходится на медленной подаче.</translation>
     </message>
 </context>
 <context>

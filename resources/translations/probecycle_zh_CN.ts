@@ -631,10 +631,6 @@
         <translation>回退距离</translation>
     </message>
     <message>
-        <source>Two-touch: distance the probe backs off from where the first touch stopped. Must be at least the first touch&apos;s overtravel plus the reseat distance; any more is approached again at the slow measuring feed and wasted.</source>
-        <translation>二次触发：测头从第一次触测停止处回退的距离。至少应为第一次触测的过行程加上复位距离；多出的部分要以慢速测量进给率重新接近，白白浪费时间。</translation>
-    </message>
-    <message>
         <source>Return feedrate</source>
         <translation>返回进给率</translation>
     </message>
@@ -758,6 +754,26 @@
         <source>%</source>
         <translation>%</translation>
     </message>
+    <message>
+        <source>Two-touch: distance the probe backs off after the first touch, from where it stopped or from the recorded trigger position (Backoff from). It must leave the second touch room to reseat the probe and to reach the measuring feed; any more is approached again at the slow measuring feed and wasted.</source>
+        <translation>二次触发：第一次触测后测头的回退距离，从停止处或从记录的触发位置算起（“回退起点”）。它必须给第二次触测留出测头复位和加速到测量进给率的距离；多出的部分要以慢速测量进给率重新接近，白白浪费时间。</translation>
+    </message>
+    <message>
+        <source>Two-touch: where the backoff is measured from. stop: from where the probe stopped after the first touch (Renishaw&apos;s cycles). trigger: from the trigger position the control recorded (the skip position a macro reads); the axis then moves back its overtravel beyond that position as well.</source>
+        <translation>二次触发：回退距离的起点。stop：从第一次触测后测头停止处算起（雷尼绍循环）。trigger：从数控系统记录的触发位置算起（宏程序读取的跳转位置）；此时轴还要额外退回越过该位置的过行程。</translation>
+    </message>
+    <message>
+        <source>Backoff from</source>
+        <translation>回退起点</translation>
+    </message>
+    <message>
+        <source>Where it stopped</source>
+        <translation>停止处</translation>
+    </message>
+    <message>
+        <source>Trigger position</source>
+        <translation>触发位置</translation>
+    </message>
 </context>
 <context>
     <name>Phase</name>
@@ -853,10 +869,6 @@
         <translation>过行程 %1 为测头极限 %3 的 %2 %：测针余量很小</translation>
     </message>
     <message>
-        <source>Backoff %1 is less than the first touch&apos;s overtravel plus reseat, %2: the probe may not reseat before the second touch</source>
-        <translation>回退距离 %1 小于第一次触测的过行程加复位距离 %2：第二次触测前测头可能尚未复位</translation>
-    </message>
-    <message>
         <source>Backoff %1 is more than the recommended %2 and wastes %3 per cycle</source>
         <translation>回退距离 %1 大于推荐值 %2，每个循环浪费 %3</translation>
     </message>
@@ -895,6 +907,14 @@
     <message>
         <source>Fastest cycle at the end of the range</source>
         <translation>最快循环位于范围端点</translation>
+    </message>
+    <message>
+        <source>Backoff %1 from the recorded trigger position is less than the recommended %2 (that position&apos;s distance past the surface plus room to reseat and to reach the measuring feed): the probe may not reseat before the second touch</source>
+        <translation>从记录的触发位置起的回退距离 %1 小于推荐值 %2（该位置越过表面的距离加上复位和加速到测量进给率所需的距离）：第二次触测前测头可能尚未复位</translation>
+    </message>
+    <message>
+        <source>Backoff %1 from where the probe stopped is less than the recommended %2 (the first touch&apos;s overtravel plus room to reseat and to reach the measuring feed): the probe may not reseat before the second touch</source>
+        <translation>从停止处起的回退距离 %1 小于推荐值 %2（第一次触测的过行程加上复位和加速到测量进给率所需的距离）：第二次触测前测头可能尚未复位</translation>
     </message>
 </context>
 <context>
@@ -2390,10 +2410,6 @@
         <translation>测量触测的扩展不确定度：扫描周期范围与测头重复性的合成。</translation>
     </message>
     <message>
-        <source>Two-touch: the first touch&apos;s overtravel plus the reseat distance. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
-        <translation>二次触发：第一次触测的过行程加上复位距离。小于此值测头可能未复位；大于此值的部分要以慢速测量进给率重新接近。</translation>
-    </message>
-    <message>
         <source>invalid scenario</source>
         <translation>场景无效</translation>
     </message>
@@ -2448,6 +2464,10 @@
     <message>
         <source>Invalid</source>
         <translation>无效</translation>
+    </message>
+    <message>
+        <source>Two-touch: from the backoff&apos;s reference (where the probe stopped, or the recorded trigger position) the larger of the reseat distance and the distance to reach the measuring feed. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
+        <translation>二次触发：从回退起点（停止处或记录的触发位置）算起，取复位距离与加速到测量进给率所需距离中的较大者。小于此值测头可能未复位；大于此值的部分要以慢速测量进给率重新接近。</translation>
     </message>
 </context>
 <context>

@@ -530,6 +530,7 @@ const std::vector<BadCase>& bad_cases() {
         {"set_negative",            {"evaluate", "--set", "probe.pretravel_mm=-1"},                        {"probe.pretravel_mm", "-1"}},
         {"set_out_of_range",        {"evaluate", "--set", "machine.scan_period_s=5"},                      {"machine.scan_period_s", "5"}},
         {"set_knee_tolerance_high", {"evaluate", "--set", "cycle.knee_tolerance=0.6"},                    {"cycle.knee_tolerance", "0.6", "from 0 to 0.5"}},
+        {"set_unknown_backoff_from", {"evaluate", "--set", "cycle.backoff_from=touch"},                   {"cycle.backoff_from", "touch", "stop", "trigger"}},
         {"set_unknown_word",        {"evaluate", "--set", "cycle.strategy=three_touch"},                   {"cycle.strategy", "three_touch", "two_touch"}},
         {"set_wrong_type",          {"evaluate", "--set", "machine.latched_input=maybe"},                  {"machine.latched_input", "maybe"}},
         {"set_without_value",       {"evaluate", "--set"},                                                 {"--set"}},

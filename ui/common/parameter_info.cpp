@@ -111,6 +111,16 @@ QString strategy_label(Strategy strategy) {
     return {};
 }
 
+QString backoff_from_label(BackoffFrom from) {
+    switch (from) {
+        case BackoffFrom::stop:
+            return tr_param(QT_TRANSLATE_NOOP("Parameter", "Where it stopped"));
+        case BackoffFrom::trigger:
+            return tr_param(QT_TRANSLATE_NOOP("Parameter", "Trigger position"));
+    }
+    return {};
+}
+
 QString feature_label(Feature feature) {
     switch (feature) {
         case Feature::surface:

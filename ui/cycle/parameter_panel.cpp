@@ -9,6 +9,7 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
+#include <string_view>
 
 #include "core/cycle/cycle.h"
 #include "ui/common/parameter_info.h"
@@ -81,6 +82,15 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
         auto* edit = new QuantityEdit(info, box);
         qobject_cast<QVBoxLayout*>(box->layout())->addWidget(edit);
         edits_.push_back(edit);
+        if (info.key == std::string_view("cycle.backoff_mm")) {
+            // Where the backoff is measured from, right under it.
+            backoff_from_row_ = new QWidget(box);
+            backoff_from_label_ = new QLabel(backoff_from_row_);
+            backoff_from_ =
+                make_combo(QStringLiteral("combo:cycle.backoff_from"), backoff_from_row_);
+            backoff_from_row_->setLayout(labelled_row(backoff_from_label_, backoff_from_));
+            qobject_cast<QVBoxLayout*>(box->layout())->addWidget(backoff_from_row_);
+        }
         connect(edit, &QuantityEdit::edited, this, [this, edit](double value) {
             set_number(scenario_, edit->key().toStdString(), value);
             emit_edit(edit->key());
@@ -107,6 +117,11 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     connect(feature_, &QComboBox::activated, this, [this](int index) {
         scenario_.cycle.feature = static_cast<Feature>(feature_->itemData(index).toInt());
         emit_edit(QStringLiteral("cycle.feature"));
+    });
+    connect(backoff_from_, &QComboBox::activated, this, [this](int index) {
+        scenario_.cycle.backoff_from =
+            static_cast<BackoffFrom>(backoff_from_->itemData(index).toInt());
+        emit_edit(QStringLiteral("cycle.backoff_from"));
     });
     connect(latched_, &QCheckBox::clicked, this, [this](bool checked) {
         scenario_.machine.latched_input = checked;
@@ -135,6 +150,11 @@ void ParameterPanel::retranslate() {
     accel_label_->setText(label_of("machine.accel_model"));
     strategy_label_->setText(label_of("cycle.strategy"));
     feature_label_->setText(label_of("cycle.feature"));
+    backoff_from_label_->setText(label_of("cycle.backoff_from"));
+    for (QWidget* w :
+         {static_cast<QWidget*>(backoff_from_label_), static_cast<QWidget*>(backoff_from_)}) {
+        w->setToolTip(help_of("cycle.backoff_from"));
+    }
     latched_->setText(label_of("machine.latched_input"));
     for (QWidget* w : {static_cast<QWidget*>(accel_label_), static_cast<QWidget*>(accel_model_)}) {
         w->setToolTip(help_of("machine.accel_model"));
@@ -151,6 +171,7 @@ void ParameterPanel::retranslate() {
         const QSignalBlocker b1(accel_model_);
         const QSignalBlocker b2(strategy_);
         const QSignalBlocker b3(feature_);
+        const QSignalBlocker b4(backoff_from_);
         accel_model_->clear();
         for (AccelModel m :
              {AccelModel::time_constant, AccelModel::constant_accel, AccelModel::jerk_limited}) {
@@ -164,6 +185,10 @@ void ParameterPanel::retranslate() {
         for (Feature f :
              {Feature::surface, Feature::web, Feature::pocket, Feature::bore, Feature::boss}) {
             feature_->addItem(feature_label(f), static_cast<int>(f));
+        }
+        backoff_from_->clear();
+        for (BackoffFrom f : {BackoffFrom::stop, BackoffFrom::trigger}) {
+            backoff_from_->addItem(backoff_from_label(f), static_cast<int>(f));
         }
     }
     for (QuantityEdit* edit : edits_) edit->retranslate();
@@ -186,10 +211,13 @@ void ParameterPanel::set_scenario(const Scenario& scenario) {
     const QSignalBlocker b2(strategy_);
     const QSignalBlocker b3(feature_);
     const QSignalBlocker b4(latched_);
+    const QSignalBlocker b5(backoff_from_);
     accel_model_->setCurrentIndex(
         accel_model_->findData(static_cast<int>(scenario_.machine.accel_model)));
     strategy_->setCurrentIndex(strategy_->findData(static_cast<int>(scenario_.cycle.strategy)));
     feature_->setCurrentIndex(feature_->findData(static_cast<int>(scenario_.cycle.feature)));
+    backoff_from_->setCurrentIndex(
+        backoff_from_->findData(static_cast<int>(scenario_.cycle.backoff_from)));
     latched_->setChecked(scenario_.machine.latched_input);
     update_enabled();
 }
@@ -217,6 +245,7 @@ void ParameterPanel::update_enabled() {
     enable("cycle.feature_size_mm", several_touches);
     enable("cycle.measure_feed_mm_min", two_touch);
     enable("cycle.backoff_mm", two_touch);
+    backoff_from_row_->setVisible(two_touch);
 }
 
 void ParameterPanel::emit_edit(const QString& key) {

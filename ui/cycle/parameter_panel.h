@@ -52,6 +52,9 @@ class ParameterPanel : public QWidget {
     QComboBox* strategy_{nullptr};
     QLabel* feature_label_{nullptr};
     QComboBox* feature_{nullptr};
+    QWidget* backoff_from_row_{nullptr};  // two-touch only
+    QLabel* backoff_from_label_{nullptr};
+    QComboBox* backoff_from_{nullptr};
     std::vector<QuantityEdit*> edits_;
 };
 

@@ -114,8 +114,10 @@ void Readouts::retranslate() {
         tr("Expanded uncertainty of the measuring touch: the scan-period "
            "range combined with the probe's repeatability."));
     cards_[4].title->setToolTip(
-        tr("Two-touch: the first touch's overtravel plus the reseat distance. Less risks a "
-           "probe that has not reseated; more is approached again at the slow measuring feed."));
+        tr("Two-touch: from the backoff's reference (where the probe stopped, or the recorded "
+           "trigger position) the larger of the reseat distance and the distance to reach the "
+           "measuring feed. Less risks a probe that has not reseated; more is approached again "
+           "at the slow measuring feed."));
     cards_[5].title->setToolTip(
         tr("The lowest probing feed whose cycle time is within the knee tolerance (1 % by "
            "default) of the best, among the valid cycles (overtravel under the probe's limit): "

@@ -700,6 +700,84 @@ TEST(Validity, AnErrorMakesTheCycleInvalidAndNamesWhy) {
     EXPECT_TRUE(r.valid());
 }
 
+// Issue 11, loose end 5: with a reseat distance shorter than the distance to
+// reach the measuring feed, the recommended backoff leaves that distance.
+// 600 mm/min = 10 mm/s, T = 0.06 s: reach = v T / 2 = 0.3 mm > reseat 0.005 mm.
+TEST(RecommendedBackoff, LeavesTheSecondTouchRoomToReachTheMeasuringFeed) {
+    Scenario s;  // two-touch surface at 2000 mm/min: overtravel_1 = 1.2716667 mm
+    s.probe.reseat_mm = 0.005;
+    s.cycle.measure_feed_mm_min = 600.0;
+    const CycleResult r = evaluate(s);
+    ASSERT_NEAR(r.first_touch().overtravel_mm, 1.27166667, 1e-8);
+    EXPECT_NEAR(r.recommended_backoff_mm(), 1.27166667 + 0.3, 1e-8);
+    // Following it: no touch while accelerating, no backoff warning.
+    s.cycle.backoff_mm = r.recommended_backoff_mm();
+    const CycleResult followed = evaluate(s);
+    EXPECT_TRUE(followed.valid()) << describe(followed);
+    EXPECT_EQ(find_warning(followed, WarningCode::touch_while_accelerating), nullptr)
+        << describe(followed);
+    EXPECT_NEAR(followed.measuring_touch().trigger_speed_mm_s, 10.0, 1e-9);
+    // Overtravel plus reseat alone (the old rule) touches while accelerating.
+    s.cycle.backoff_mm = 1.27166667 + 0.005 + 1e-6;
+    const CycleResult old_rule = evaluate(s);
+    EXPECT_NE(find_warning(old_rule, WarningCode::touch_while_accelerating), nullptr);
+    EXPECT_NE(find_warning(old_rule, WarningCode::backoff_too_small), nullptr);
+}
+
+// Issue 11, loose end 3: the backoff from the recorded trigger position. At
+// 2000 mm/min (33.33 mm/s) the control records the touch after pretravel,
+// interface delay and a full scan: 0.005 + 33.33 (0.002 + 0.004) = 0.205 mm past
+// the surface; the axis stops at 1.27167 mm. A 2 mm backoff from there moves
+// 2 + 1.27167 - 0.205 = 3.06667 mm and starts the second touch 1.795 mm out.
+TEST(BackoffFrom, TheRecordedTriggerPosition) {
+    Scenario s;
+    s.cycle.backoff_from = BackoffFrom::trigger;
+    const CycleResult r = evaluate(s);
+    EXPECT_NEAR(r.first_touch().recorded_mm, 0.205, 1e-12);
+    EXPECT_NEAR(find_phase(r, Phase::backoff)->distance_mm, 2.0 + 1.27166667 - 0.205, 1e-8);
+    EXPECT_NEAR(find_phase(r, Phase::second_approach)->distance_mm, 2.0 - 0.205, 1e-12);
+    // Recommended: 0.205 + max(reseat 0.2, reach 0.5 mm/s x 0.03 s) = 0.405 mm.
+    EXPECT_NEAR(r.recommended_backoff_mm(), 0.405, 1e-12);
+    EXPECT_NE(find_warning(r, WarningCode::backoff_excess), nullptr);
+
+    // Latched: recorded when the signal arrives, 0.005 + 33.33 x 0.002.
+    Scenario latched = s;
+    latched.machine.latched_input = true;
+    EXPECT_NEAR(evaluate(latched).first_touch().recorded_mm, 0.005 + 0.2 / 3.0, 1e-12);
+
+    // Too small: its own message, naming the reference.
+    s.cycle.backoff_mm = 0.3;
+    const CycleResult small = evaluate(s);
+    const Warning* w = find_warning(small, WarningCode::backoff_too_small);
+    ASSERT_NE(w, nullptr) << describe(small);
+    EXPECT_EQ(w->d, 1.0);
+    EXPECT_NE(w->message().find("from the recorded trigger position"), std::string::npos);
+    EXPECT_FALSE(small.valid());
+
+    // The same backoff from the stop starts the second touch closer and is quicker;
+    // the recommended cycles of the two references are the same cycle.
+    Scenario from_stop;
+    Scenario from_trigger = from_stop;
+    from_trigger.cycle.backoff_from = BackoffFrom::trigger;
+    EXPECT_LT(evaluate(from_stop).total(), evaluate(from_trigger).total());
+    from_stop.cycle.backoff_mm = evaluate(from_stop).recommended_backoff_mm();
+    from_trigger.cycle.backoff_mm = evaluate(from_trigger).recommended_backoff_mm();
+    EXPECT_NEAR(evaluate(from_stop).total(), evaluate(from_trigger).total(), 1e-12);
+    EXPECT_NEAR(find_phase(evaluate(from_trigger), Phase::second_approach)->distance_mm, 0.2,
+                1e-12);
+}
+
+// A recommendation written back rounded to the editors' 0.001 mm is followed
+// (issue 12 found 2.1050000000000004 refused as 2.105): 1 nm of tolerance.
+TEST(Warnings, BackoffWithinANanometreOfTheRecommendationIsEnough) {
+    Scenario s = clean_two_touch();
+    const double recommended = evaluate(s).recommended_backoff_mm();
+    s.cycle.backoff_mm = recommended - 1e-7;
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::backoff_too_small), nullptr);
+    s.cycle.backoff_mm = recommended - 1e-5;
+    EXPECT_NE(find_warning(evaluate(s), WarningCode::backoff_too_small), nullptr);
+}
+
 TEST(Warnings, BackoffExcessWithTheTimeItWastes) {
     const Scenario clean = clean_two_touch();
     Scenario s = clean;
@@ -941,7 +1019,11 @@ TEST_F(RandomCycles, FormulasOfATouchAtFullSpeed) {
         const double v = mm_min_to_mm_s(s.cycle.probe_feed_mm_min);
         const TouchResult& first = r.first_touch();
         EXPECT_NEAR(first.programmed_feed_mm_s, v, rel_tol(v));
-        EXPECT_NEAR(r.recommended_backoff_mm(), first.overtravel_mm + s.probe.reseat_mm,
+        // Issue 11: room to reseat and to reach the measuring feed, whichever is more.
+        const double room =
+            std::max(s.probe.reseat_mm,
+                     reach_distance_mm(limits, mm_min_to_mm_s(s.cycle.measure_feed_mm_min)));
+        EXPECT_NEAR(r.recommended_backoff_mm(), first.overtravel_mm + room,
                     rel_tol(r.recommended_backoff_mm()));
         EXPECT_NEAR(r.overtravel_mm(),
                     std::max(first.overtravel_mm, r.measuring_touch().overtravel_mm), 1e-12);

@@ -266,8 +266,8 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
           "reseat_mm", "calibration_feed_mm_min"}},
         {"cycle",
          {"strategy", "feature", "feature_size_mm", "approach_mm", "probe_feed_mm_min",
-          "measure_feed_mm_min", "backoff_mm", "return_feed_mm_min", "target_uncertainty_mm",
-          "knee_tolerance"}},
+          "measure_feed_mm_min", "backoff_mm", "backoff_from", "return_feed_mm_min",
+          "target_uncertainty_mm", "knee_tolerance"}},
     };
     EXPECT_EQ(j.size(), expected.size());
     for (const auto& [section, keys] : expected) {
@@ -607,7 +607,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 24u);
+    ASSERT_EQ(scenario_keys().size(), 25u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);

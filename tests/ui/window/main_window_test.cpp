@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -106,10 +107,40 @@ TEST_F(MainWindowTest, EveryScenarioKeyHasAnEditorWithUnitRangeAndTooltip) {
         EXPECT_FALSE(box->toolTip().isEmpty()) << key.key;
         EXPECT_LT(box->minimum(), box->maximum()) << key.key;
     }
-    for (const char* combo :
-         {"combo:machine.accel_model", "combo:cycle.strategy", "combo:cycle.feature"}) {
-        EXPECT_NE(window_->findChild<QWidget*>(QLatin1String(combo)), nullptr) << combo;
+    // Every word key has a combo box, with one item per allowed word and a tooltip.
+    for (const KeyInfo& key : scenario_keys()) {
+        if (key.kind != KeyKind::word) continue;
+        const auto* combo =
+            window_->findChild<QComboBox*>(QStringLiteral("combo:") + QLatin1String(key.key));
+        ASSERT_NE(combo, nullptr) << key.key;
+        EXPECT_EQ(static_cast<std::size_t>(combo->count()), allowed_words(key).size()) << key.key;
+        EXPECT_FALSE(combo->toolTip().isEmpty()) << key.key;
     }
+}
+
+// Issue 11, loose end 3: the backoff measured from the recorded trigger position.
+TEST_F(MainWindowTest, BackoffFromTheTriggerPosition) {
+    auto* combo = window_->findChild<QComboBox*>(QStringLiteral("combo:cycle.backoff_from"));
+    ASSERT_NE(combo, nullptr);
+    EXPECT_TRUE(combo->isVisibleTo(window_.get()));
+    const double from_stop = window_->computed().cycle().recommended_backoff_mm();
+    combo->setCurrentIndex(combo->findData(static_cast<int>(BackoffFrom::trigger)));
+    emit combo->activated(combo->currentIndex());
+    settle();
+    EXPECT_EQ(window_->scenario().cycle.backoff_from, BackoffFrom::trigger);
+    // 0.205 mm recorded past the surface + 0.2 mm reseat, against 1.272 + 0.2 from the stop.
+    EXPECT_NEAR(window_->computed().cycle().recommended_backoff_mm(), 0.405, 1e-9);
+    EXPECT_LT(window_->computed().cycle().recommended_backoff_mm(), from_stop);
+    ASSERT_TRUE(window_->apply_fix_for(QStringLiteral("backoff_excess")));
+    settle();
+    EXPECT_TRUE(window_->computed().cycle().valid());
+    EXPECT_FALSE(window_->warning_codes().contains(QStringLiteral("backoff_excess")));
+    // Single-touch has no backoff: the row goes.
+    Scenario s = window_->scenario();
+    s.cycle.strategy = Strategy::single_touch;
+    window_->edit_scenario(s, QStringLiteral("single touch"));
+    settle();
+    EXPECT_FALSE(combo->isVisibleTo(window_.get()));
 }
 
 // Each slider moves readouts and chart data.
