@@ -34,7 +34,8 @@ void add_fit(CLI::App& latency) {
     add_number(*cmd, "--interpolation-period-s", args->interpolation_period,
                "The control's interpolation cycle, to give the delay in cycles, s", "S");
     cmd->add_option("--apply-to", args->apply_to,
-                    "Write the controller latency the fit implies into SCENARIO.json (atomically)")
+                    "Write the delay the fit implies into SCENARIO.json (atomically): the "
+                    "controller latency, or the interface delay when the input is latched")
         ->type_name("SCENARIO.json");
     cmd->add_option("--group", args->group,
                     "With --apply-to: the group to apply, e.g. X+ (default: the only group, or "
@@ -62,7 +63,7 @@ void add_fit(CLI::App& latency) {
             const std::optional<std::string> group =
                 args->group.empty() ? std::nullopt : std::optional<std::string>(args->group);
             try {
-                applied = controller_latency_from_fit(fit, scenario, group);
+                applied = delay_to_apply(fit, scenario, group);
             } catch (const std::invalid_argument& e) {
                 throw UsageError(std::string(group ? "--group: " : "--apply-to: ") + e.what());
             }

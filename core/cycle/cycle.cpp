@@ -235,13 +235,18 @@ double expanded_uncertainty_mm(double range_mm, double repeatability_2sigma_mm) 
 }
 
 // Issue 4, "Calibration feed versus measuring feed": the delay travel
-// calibrated at one speed is wrong at another by (v - v_cal)(t_i + t_c + t_s/2);
-// the mean scan wait t_s/2 only where the input is scanned, not latched.
+// calibrated at one speed is wrong at another by (v - v_cal) * tau, tau =
+// t_i + t_c + t_s/2 with a scanned input. Issue 11: a latched input captures
+// the position when the signal reaches the control, before the controller's
+// latency and scan, so there tau = t_i alone.
+double measurement_delay_s(const Machine& machine, const Probe& probe) {
+    if (machine.latched_input) return probe.interface_delay_s;
+    return probe.interface_delay_s + machine.controller_latency_s + 0.5 * machine.scan_period_s;
+}
+
 double speed_error_mm(const Machine& machine, const Probe& probe, double speed_mm_s,
                       double calibrated_speed_mm_s) {
-    const double scan_mean_s = machine.latched_input ? 0.0 : 0.5 * machine.scan_period_s;
-    return (speed_mm_s - calibrated_speed_mm_s) *
-           (probe.interface_delay_s + machine.controller_latency_s + scan_mean_s);
+    return (speed_mm_s - calibrated_speed_mm_s) * measurement_delay_s(machine, probe);
 }
 
 int touch_count(Feature feature) {
@@ -422,6 +427,8 @@ class CycleBuilder {
         // Overtravel: pretravel + delay travel + stopping distance, past the surface.
         touch.overtravel_mm = at_react.position_mm + stop_distance - at_touch.position_mm;
         touch.recorded_mm = plan.state_at(t_record).position_mm - at_touch.position_mm;
+        touch.delay_travel_mm = plan.state_at(t_trigger + measurement_delay_s(m, p)).position_mm -
+                                at_trigger.position_mm;
         return touch;
     }
 
@@ -462,10 +469,11 @@ void add_touch_warnings(const Scenario& scenario, const MotionLimits& limits,
     const double v = touch.programmed_feed_mm_s;
     if (distance_mm < reach_distance_mm(limits, v) && touch.trigger_speed_mm_s < v) {
         // domain.md, "Acceleration models": a slower touch misses the delay
-        // travel calibrated at full feed; the brief calls it the same error as
-        // a calibration-feed mismatch, whose formula issue 4 gives in full.
+        // travel calibrated at full feed, v * tau. Issue 11: the axis keeps
+        // accelerating while the signal travels, so the travel it makes is
+        // that of its real speed through tau, not v_t * tau.
         const double error =
-            speed_error_mm(scenario.machine, scenario.probe, v, touch.trigger_speed_mm_s);
+            v * measurement_delay_s(scenario.machine, scenario.probe) - touch.delay_travel_mm;
         warnings.push_back({WarningCode::touch_while_accelerating, Severity::warning,
                             touch.trigger_speed_mm_s, v, error, static_cast<double>(which)});
     }

@@ -119,6 +119,10 @@ struct TouchResult {
     // position): the trigger plus the interface delay's travel plus, with a
     // scanned input, a full scan period's (worst case, as the overtravel).
     double recorded_mm{0.0};
+    // Travel from the trigger through the measurement delay (see
+    // measurement_delay_s) at the axis's real speed: what calibration takes
+    // as v * tau when the touch is at full feed.
+    double delay_travel_mm{0.0};
 };
 
 class CycleResult {
@@ -179,8 +183,12 @@ double reaction_time_s(const Machine& machine, const Probe& probe);
 double scan_range_mm(const Machine& machine, double trigger_speed_mm_s);
 // k = 2 combination of a uniform range and a 2-sigma repeatability.
 double expanded_uncertainty_mm(double scan_range_mm, double repeatability_2sigma_mm);
+// The delay between trigger and recorded position that calibration absorbs:
+// t_i + t_c + t_s/2 with a scanned input (issue 4), t_i alone with a latched
+// one (issue 11: the position is captured when the signal arrives).
+double measurement_delay_s(const Machine& machine, const Probe& probe);
 // Error in the measured value from a speed other than the calibrated one:
-// (v - v_cal) * (t_i + t_c + t_s/2) (issue 4) with t_s only when scanned.
+// (v - v_cal) * measurement_delay_s.
 double speed_error_mm(const Machine& machine, const Probe& probe, double speed_mm_s,
                       double calibrated_speed_mm_s);
 

@@ -405,21 +405,38 @@ ChosenGroup choose_group(const DelayFit& fit, const std::optional<std::string>& 
                       {arg("groups", ArgKind::integer, static_cast<double>(fit.groups.size()))})};
 }
 
-AppliedDelay controller_latency_from_fit(const DelayFit& fit, const Scenario& scenario,
-                                         const std::optional<std::string>& group) {
+AppliedDelay delay_to_apply(const DelayFit& fit, const Scenario& scenario,
+                            const std::optional<std::string>& group) {
     const ChosenGroup chosen_group = choose_group(fit, group);
     const DelayGroup* chosen = chosen_group.group;
     AppliedDelay applied;
     applied.rule = chosen_group.rule;
     applied.group = chosen->name();
     applied.total_delay_s = chosen->delay_s;
+    applied.latched = scenario.machine.latched_input;
+    if (applied.latched) {
+        // Issue 11: latched in hardware when the signal arrives: tau = t_i.
+        applied.key = "probe.interface_delay_s";
+        applied.interface_delay_s = applied.total_delay_s;
+        applied.previous_s = scenario.probe.interface_delay_s;
+        applied.value_s = applied.total_delay_s;
+        if (applied.value_s < 0.0) {
+            throw InputError(delay_message(
+                "negative_delay",
+                QT_TRANSLATE_NOOP("DelayFit",
+                                  "the fitted delay of %1, %2, is negative: the input is latched, "
+                                  "so it would be the probe's interface delay; check the touches"),
+                {text_arg("group", applied.group),
+                 significant_arg("delay_s", ArgKind::delay_s, applied.total_delay_s, 6)}));
+        }
+        return applied;
+    }
+    applied.key = "machine.controller_latency_s";
     applied.interface_delay_s = scenario.probe.interface_delay_s;
-    applied.half_scan_s =
-        scenario.machine.latched_input ? 0.0 : scenario.machine.scan_period_s / 2.0;
+    applied.half_scan_s = scenario.machine.scan_period_s / 2.0;
     applied.previous_s = scenario.machine.controller_latency_s;
-    applied.controller_latency_s =
-        applied.total_delay_s - applied.interface_delay_s - applied.half_scan_s;
-    if (applied.controller_latency_s < 0.0) {
+    applied.value_s = applied.total_delay_s - applied.interface_delay_s - applied.half_scan_s;
+    if (applied.value_s < 0.0) {
         throw InputError(delay_message(
             "negative_latency",
             QT_TRANSLATE_NOOP("DelayFit",
@@ -437,7 +454,9 @@ AppliedDelay controller_latency_from_fit(const DelayFit& fit, const Scenario& sc
 
 Scenario apply_delay(const Scenario& scenario, const AppliedDelay& applied) {
     Scenario out = scenario;
-    out.machine.controller_latency_s = applied.controller_latency_s;
+    if (!set_number(out, applied.key, applied.value_s)) {
+        throw std::logic_error("apply_delay: no key " + applied.key);
+    }
     validate_or_throw(out);
     return out;
 }

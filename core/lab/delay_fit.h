@@ -100,15 +100,22 @@ DelayFit fit_delay(std::span<const DelayTouch> touches, const DelayFitOptions& o
 // average half a scan period (domain.md, "One touch", phases 3 and 4; issue 4's
 // mismatch formula counts the same three). The scenario keeps the interface
 // delay and the scan period as keys of their own, so the controller latency is
-// what remains: tau - t_i - t_s/2 (no t_s/2 when the input is latched).
+// what remains: tau - t_i - t_s/2. With a latched input (issue 11) the position
+// is captured in hardware when the signal reaches the control, so tau is the
+// interface delay alone: it goes into probe.interface_delay_s, and the
+// controller latency (which still lengthens the overtravel) is left alone.
 struct AppliedDelay {
     std::string group;  // "X+", the group whose delay was used
     Message rule;       // why that group
     double total_delay_s{0.0};
     double interface_delay_s{0.0};
     double half_scan_s{0.0};
-    double previous_s{0.0};  // the scenario's controller latency before
-    double controller_latency_s{0.0};
+    bool latched{false};
+    // The key written: machine.controller_latency_s, or probe.interface_delay_s
+    // with a latched input; its value before and after.
+    std::string key;
+    double previous_s{0.0};
+    double value_s{0.0};
 };
 // The group whose delay goes into the scenario: the named one
 // (case-insensitive), the only one, or else the one with the longest delay.
@@ -121,14 +128,13 @@ struct ChosenGroup {
 ChosenGroup choose_group(const DelayFit& fit, const std::optional<std::string>& name);
 
 // Uses the named group (case-insensitive), the only group, or else the
-// longest delay: the scenario has one controller latency for every axis, and
-// the longest gives the longest overtravel (the safe side for the stylus).
-// Throws InputError (a std::invalid_argument) naming the problem: an unknown
-// group, a fit with no groups, or a delay shorter than t_i + t_s/2 (a negative
-// latency).
-AppliedDelay controller_latency_from_fit(const DelayFit& fit, const Scenario& scenario,
-                                         const std::optional<std::string>& group = std::nullopt);
-// The scenario with the applied controller latency (validated; throws ScenarioError).
+// longest delay: the scenario has one delay for every axis, and the longest
+// gives the longest overtravel (the safe side for the stylus). Throws
+// InputError (a std::invalid_argument) naming the problem: an unknown group, a
+// fit with no groups, or a delay shorter than t_i + t_s/2 (a negative latency).
+AppliedDelay delay_to_apply(const DelayFit& fit, const Scenario& scenario,
+                            const std::optional<std::string>& group = std::nullopt);
+// The scenario with the applied delay (validated; throws ScenarioError).
 Scenario apply_delay(const Scenario& scenario, const AppliedDelay& applied);
 
 // The straight-line fit alone: y = p0 + slope * x, least squares.

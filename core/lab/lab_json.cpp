@@ -118,9 +118,23 @@ Json delay_fit_json(const DelayFit& fit, const DelayFitOptions& options) {
 }
 
 Json applied_delay_json(const AppliedDelay& applied, const std::string& file) {
+    if (applied.latched) {
+        return {{"file", file},
+                {"key", applied.key},
+                {"value_s", applied.value_s},
+                {"previous_s", applied.previous_s},
+                {"group", applied.group},
+                {"rule", render(applied.rule)},
+                {"total_delay_s", applied.total_delay_s},
+                {"note",
+                 "latched input: the position is captured when the signal reaches the control, "
+                 "so the fitted delay is the probe's interface delay; "
+                 "machine.controller_latency_s is left as it was (it still lengthens the "
+                 "overtravel)"}};
+    }
     return {{"file", file},
-            {"key", "machine.controller_latency_s"},
-            {"value_s", applied.controller_latency_s},
+            {"key", applied.key},
+            {"value_s", applied.value_s},
             {"previous_s", applied.previous_s},
             {"group", applied.group},
             {"rule", render(applied.rule)},

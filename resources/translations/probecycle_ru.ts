@@ -309,6 +309,10 @@
         <source>the fitted delay of %1, %2, is shorter than the scenario&apos;s probe.interface_delay_s + half of machine.scan_period_s (%3): the controller latency would be negative; check those keys (or machine.latched_input) in the scenario</source>
         <translation>подобранная задержка %1, %2, меньше, чем probe.interface_delay_s плюс половина machine.scan_period_s в сценарии (%3): задержка ЧПУ была бы отрицательной; проверьте эти ключи (или machine.latched_input) в сценарии</translation>
     </message>
+    <message>
+        <source>the fitted delay of %1, %2, is negative: the input is latched, so it would be the probe&apos;s interface delay; check the touches</source>
+        <translation>подобранная задержка %1, %2, отрицательна: вход с защёлкой, и она была бы задержкой интерфейса датчика; проверьте касания</translation>
+    </message>
 </context>
 <context>
     <name>FieldError</name>
@@ -1878,10 +1882,6 @@
         <translation>Применить к сценарию</translation>
     </message>
     <message>
-        <source>Sets machine.controller_latency_s to the fitted delay less the probe&apos;s interface delay and half the scan period (none with a latched input).</source>
-        <translation>Задаёт machine.controller_latency_s равной подобранной задержке минус задержка интерфейса датчика и половина периода опроса (для входа с защёлкой — без неё).</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1914,13 +1914,18 @@
         <translation>Нет сценария, к которому применить задержку.</translation>
     </message>
     <message>
-        <source>0 (latched input)</source>
-        <translation>0 (вход с защёлкой)</translation>
-    </message>
-    <message>
         <source>Controller latency = %1 delay %2 − interface %3 − half scan %4 = &lt;b&gt;%5&lt;/b&gt; (now %6)</source>
         <extracomment>%1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now</extracomment>
         <translation>Задержка ЧПУ = %1 задержка %2 − интерфейс %3 − половина опроса %4 = &lt;b&gt;%5&lt;/b&gt; (сейчас %6)</translation>
+    </message>
+    <message>
+        <source>Sets machine.controller_latency_s to the fitted delay less the probe&apos;s interface delay and half the scan period. With a latched input the fitted delay is the interface delay: it sets probe.interface_delay_s and leaves the latency alone.</source>
+        <translation>Задаёт machine.controller_latency_s: подобранная задержка минус задержка интерфейса датчика и половина периода опроса. При входе с защёлкой подобранная задержка — это задержка интерфейса: задаётся probe.interface_delay_s, а задержка ЧПУ не меняется.</translation>
+    </message>
+    <message>
+        <source>Latched input: interface delay = %1 delay &lt;b&gt;%2&lt;/b&gt; (now %3); the controller latency is left as it is</source>
+        <extracomment>%1 group, %2 its delay (the result), %3 the interface delay now</extracomment>
+        <translation>Вход с защёлкой: задержка интерфейса = %1 задержка &lt;b&gt;%2&lt;/b&gt; (сейчас %3); задержка ЧПУ не меняется</translation>
     </message>
 </context>
 <context>

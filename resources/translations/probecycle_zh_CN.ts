@@ -309,6 +309,10 @@
         <source>the fitted delay of %1, %2, is shorter than the scenario&apos;s probe.interface_delay_s + half of machine.scan_period_s (%3): the controller latency would be negative; check those keys (or machine.latched_input) in the scenario</source>
         <translation>%1 的拟合延迟 %2 短于场景中 probe.interface_delay_s 加 machine.scan_period_s 的一半（%3）：控制器延迟将为负；请检查场景中的这些键（或 machine.latched_input）</translation>
     </message>
+    <message>
+        <source>the fitted delay of %1, %2, is negative: the input is latched, so it would be the probe&apos;s interface delay; check the touches</source>
+        <translation>%1 的拟合延迟 %2 为负：输入为锁存输入，该值将作为测头接口延迟；请检查触测数据</translation>
+    </message>
 </context>
 <context>
     <name>FieldError</name>
@@ -1878,10 +1882,6 @@
         <translation>应用到场景</translation>
     </message>
     <message>
-        <source>Sets machine.controller_latency_s to the fitted delay less the probe&apos;s interface delay and half the scan period (none with a latched input).</source>
-        <translation>将 machine.controller_latency_s 设为拟合的延迟减去测头接口延迟和半个扫描周期（锁存输入时不减扫描周期）。</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -1914,13 +1914,18 @@
         <translation>没有可应用延迟的场景。</translation>
     </message>
     <message>
-        <source>0 (latched input)</source>
-        <translation>0（锁存输入）</translation>
-    </message>
-    <message>
         <source>Controller latency = %1 delay %2 − interface %3 − half scan %4 = &lt;b&gt;%5&lt;/b&gt; (now %6)</source>
         <extracomment>%1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now</extracomment>
         <translation>控制器延迟 = %1 延迟 %2 − 接口 %3 − 半个扫描周期 %4 = &lt;b&gt;%5&lt;/b&gt;（当前 %6）</translation>
+    </message>
+    <message>
+        <source>Sets machine.controller_latency_s to the fitted delay less the probe&apos;s interface delay and half the scan period. With a latched input the fitted delay is the interface delay: it sets probe.interface_delay_s and leaves the latency alone.</source>
+        <translation>将 machine.controller_latency_s 设为拟合延迟减去测头接口延迟和半个扫描周期。锁存输入时拟合延迟即接口延迟：设置 probe.interface_delay_s，控制器延迟保持不变。</translation>
+    </message>
+    <message>
+        <source>Latched input: interface delay = %1 delay &lt;b&gt;%2&lt;/b&gt; (now %3); the controller latency is left as it is</source>
+        <extracomment>%1 group, %2 its delay (the result), %3 the interface delay now</extracomment>
+        <translation>锁存输入：接口延迟 = %1 延迟 &lt;b&gt;%2&lt;/b&gt;（当前 %3）；控制器延迟保持不变</translation>
     </message>
 </context>
 <context>

@@ -282,6 +282,29 @@ TEST(LabLatencyFit, ApplyToWritesTheControllerLatency) {
     EXPECT_EQ(run_lab_cli("evaluate " + lab_quote(scenario.string())).exit_code, 0);
 }
 
+// Issue 11, loose end 1: with a latched input the fit is the interface delay.
+TEST(LabLatencyFit, ApplyToALatchedScenarioWritesTheInterfaceDelayAndSaysSo) {
+    const LabTempDir dir;
+    const fs::path scenario = dir / "scenario.json";
+    const auto defaults = run_lab_cli("defaults");
+    ASSERT_EQ(defaults.exit_code, 0) << defaults.err;
+    Json json = Json::parse(defaults.out);
+    json["machine"]["latched_input"] = true;
+    lab_write(scenario, json.dump(2));
+    const auto run = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay.csv")) +
+                                 " --apply-to " + lab_quote(scenario.string()) + " --group x+");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const Json applied = lab_json(run).at("applied");
+    EXPECT_EQ(applied.at("key"), "probe.interface_delay_s");
+    EXPECT_NEAR(applied.at("value_s").get<double>(), 0.0085, 1e-8);
+    EXPECT_NE(applied.at("note").get<std::string>().find("controller_latency_s is left"),
+              std::string::npos);
+    const Json written = Json::parse(lab_read(scenario));
+    EXPECT_NEAR(written.at("probe").at("interface_delay_s").get<double>(), 0.0085, 1e-8);
+    EXPECT_EQ(written.at("machine").at("controller_latency_s"),
+              json.at("machine").at("controller_latency_s"));
+}
+
 TEST(LabLatencyFit, SeveralGroupsApplyTheLongestDelayAndSaySo) {
     const LabTempDir dir;
     const fs::path scenario = dir / "scenario.json";

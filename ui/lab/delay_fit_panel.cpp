@@ -206,7 +206,8 @@ void DelayFitPanel::retranslate() {
     apply_button_->setText(tr("Apply to scenario"));
     apply_button_->setToolTip(
         tr("Sets machine.controller_latency_s to the fitted delay less the probe's interface "
-           "delay and half the scan period (none with a latched input)."));
+           "delay and half the scan period. With a latched input the fitted delay is the "
+           "interface delay: it sets probe.interface_delay_s and leaves the latency alone."));
     period_->retranslate();
     show_fit();
 }
@@ -468,7 +469,7 @@ DelayFitPanel::ApplyState DelayFitPanel::evaluate_apply() const {
     }
     try {
         // The CLI's --apply-to rule, from the core; it refuses a negative latency.
-        AppliedDelay applied = controller_latency_from_fit(*fit_, *scenario_, chosen_group());
+        AppliedDelay applied = delay_to_apply(*fit_, *scenario_, chosen_group());
         // The result must be a valid scenario (the key's range).
         apply_delay(*scenario_, applied);
         state.applied = std::move(applied);
@@ -491,15 +492,21 @@ void DelayFitPanel::update_apply() {
     const ApplyState state = evaluate_apply();
     if (state.applied) {
         const AppliedDelay& a = *state.applied;
-        const QString half_scan =
-            scenario_->machine.latched_input ? tr("0 (latched input)") : lab_ms(a.half_scan_s);
-        //: %1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now
-        apply_breakdown_->setText(
-            tr("Controller latency = %1 delay %2 − interface %3 − half scan %4 = <b>%5</b> "
-               "(now %6)")
-                .arg(QString::fromStdString(a.group), lab_ms(a.total_delay_s),
-                     lab_ms(a.interface_delay_s), half_scan, lab_ms(a.controller_latency_s),
-                     lab_ms(a.previous_s)));
+        if (a.latched) {
+            //: %1 group, %2 its delay (the result), %3 the interface delay now
+            apply_breakdown_->setText(
+                tr("Latched input: interface delay = %1 delay <b>%2</b> (now %3); the "
+                   "controller latency is left as it is")
+                    .arg(QString::fromStdString(a.group), lab_ms(a.value_s), lab_ms(a.previous_s)));
+        } else {
+            //: %1 group, %2 its delay, %3 interface delay, %4 half scan period, %5 result, %6 now
+            apply_breakdown_->setText(
+                tr("Controller latency = %1 delay %2 − interface %3 − half scan %4 = <b>%5</b> "
+                   "(now %6)")
+                    .arg(QString::fromStdString(a.group), lab_ms(a.total_delay_s),
+                         lab_ms(a.interface_delay_s), lab_ms(a.half_scan_s), lab_ms(a.value_s),
+                         lab_ms(a.previous_s)));
+        }
         apply_breakdown_->setStyleSheet({});
         apply_breakdown_->setToolTip(translate(a.rule));
     } else if (fit_ && scenario_) {
@@ -522,7 +529,7 @@ bool DelayFitPanel::apply_to_scenario() {
         return false;
     }
     last_error_.clear();
-    emit controller_latency_applied(state.applied->controller_latency_s);
+    emit delay_applied(QString::fromStdString(state.applied->key), state.applied->value_s);
     return true;
 }
 

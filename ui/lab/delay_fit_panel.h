@@ -8,7 +8,7 @@
 // direction; the chart shows the deviation from the zero-speed position
 // against the feed with the fitted line and every touch, the tree the delay
 // and its stability. "Apply to scenario" turns the delay into the scenario's
-// controller latency by the CLI's --apply-to rule (controller_latency_from_fit
+// controller latency by the CLI's --apply-to rule (delay_to_apply
 // in core/lab/delay_fit.h).
 
 #include <QGroupBox>
@@ -75,7 +75,7 @@ class DelayFitPanel : public QGroupBox {
     // rule refuses (a negative latency), with the reason in apply_problem().
     std::optional<AppliedDelay> pending_application() const;
     QString apply_problem() const;
-    // Emits controller_latency_applied(); false with last_error() when the
+    // Emits delay_applied(); false with last_error() when the
     // controller latency would be negative or out of the key's range.
     bool apply_to_scenario();
 
@@ -89,8 +89,9 @@ class DelayFitPanel : public QGroupBox {
     std::optional<LagFromFit> lag_from_fit() const;
 
   signals:
-    // "Apply to scenario": the value for machine.controller_latency_s.
-    void controller_latency_applied(double controller_latency_s);
+    // "Apply to scenario": the key (machine.controller_latency_s, or
+    // probe.interface_delay_s with a latched input) and its value in s.
+    void delay_applied(const QString& key, double value_s);
     // The fit, its period or the group for "Apply" changed.
     void fit_changed();
 

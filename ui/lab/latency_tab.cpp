@@ -21,8 +21,7 @@ LatencyTab::LatencyTab(QWidget* parent) : QWidget(parent) {
     auto* root = new QVBoxLayout(this);
     root->addWidget(splitter_);
 
-    connect(delay_, &DelayFitPanel::controller_latency_applied, this,
-            &LatencyTab::controller_latency_applied);
+    connect(delay_, &DelayFitPanel::delay_applied, this, &LatencyTab::delay_applied);
     connect(delay_, &DelayFitPanel::fit_changed, this, [this] {
         compensation_->set_lag_from_fit_available(delay_->lag_from_fit().has_value());
     });

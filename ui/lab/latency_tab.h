@@ -85,8 +85,9 @@ class LatencyTab : public QWidget {
     PlotView* comparison_plot() const { return compensation_->comparison_plot(); }
 
   signals:
-    // "Apply to scenario": the value for machine.controller_latency_s.
-    void controller_latency_applied(double controller_latency_s);
+    // "Apply to scenario": the key (machine.controller_latency_s, or
+    // probe.interface_delay_s with a latched input) and its value in s.
+    void delay_applied(const QString& key, double value_s);
 
   private:
     void take_lag_from_fit();

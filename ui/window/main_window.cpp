@@ -181,11 +181,12 @@ void MainWindow::build_ui() {
     // The lab (issue 4): calibration and latency from the user's own touches.
     calibration_tab_ = new CalibrationTab;
     latency_tab_ = new LatencyTab;
-    connect(latency_tab_, &LatencyTab::controller_latency_applied, this, [this](double latency_s) {
-        Scenario s = scenario_;
-        s.machine.controller_latency_s = latency_s;
-        edit_scenario(s, tr("apply the measured delay"));
-    });
+    connect(latency_tab_, &LatencyTab::delay_applied, this,
+            [this](const QString& key, double value_s) {
+                Scenario s = scenario_;
+                if (!set_number(s, key.toStdString(), value_s)) return;
+                edit_scenario(s, tr("apply the measured delay"));
+            });
     tabs_ = new QTabWidget;
     tabs_->setObjectName(QStringLiteral("tabs"));
     tabs_->setDocumentMode(true);

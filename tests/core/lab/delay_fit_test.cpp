@@ -106,21 +106,29 @@ TEST(ApplyDelay, ControllerLatencyIsTheDelayLessInterfaceAndHalfScan) {
     scenario.machine.scan_period_s = 0.004;
 
     // Two groups, none chosen: the longer delay (Z-, 12 ms), the safe side.
-    const AppliedDelay longest = controller_latency_from_fit(fit, scenario);
+    const AppliedDelay longest = delay_to_apply(fit, scenario);
     EXPECT_EQ(longest.group, "Z-");
-    EXPECT_NEAR(longest.controller_latency_s, 0.012 - 0.002 - 0.002, 1e-12);
+    EXPECT_EQ(longest.key, "machine.controller_latency_s");
+    EXPECT_NEAR(longest.value_s, 0.012 - 0.002 - 0.002, 1e-12);
     EXPECT_NEAR(longest.previous_s, 0.002, 0.0);
 
     // A chosen group, case-insensitive.
-    const AppliedDelay x = controller_latency_from_fit(fit, scenario, std::string("x+"));
+    const AppliedDelay x = delay_to_apply(fit, scenario, std::string("x+"));
     EXPECT_EQ(x.group, "X+");
-    EXPECT_NEAR(x.controller_latency_s, 0.0085 - 0.002 - 0.002, 1e-12);
+    EXPECT_NEAR(x.value_s, 0.0085 - 0.002 - 0.002, 1e-12);
     EXPECT_NEAR(apply_delay(scenario, x).machine.controller_latency_s, 0.0045, 1e-12);
 
-    // Latched: the scan wait is not in the recorded position.
+    // Latched (issue 11): the position is captured when the signal arrives, so
+    // the whole fitted delay is the interface delay; the latency is left alone.
     scenario.machine.latched_input = true;
-    EXPECT_NEAR(controller_latency_from_fit(fit, scenario, std::string("X+")).controller_latency_s,
-                0.0085 - 0.002, 1e-12);
+    const AppliedDelay latched = delay_to_apply(fit, scenario, std::string("X+"));
+    EXPECT_TRUE(latched.latched);
+    EXPECT_EQ(latched.key, "probe.interface_delay_s");
+    EXPECT_NEAR(latched.value_s, 0.0085, 1e-12);
+    EXPECT_EQ(latched.previous_s, 0.002);
+    const Scenario applied = apply_delay(scenario, latched);
+    EXPECT_NEAR(applied.probe.interface_delay_s, 0.0085, 1e-12);
+    EXPECT_EQ(applied.machine.controller_latency_s, scenario.machine.controller_latency_s);
 }
 
 TEST(ChooseGroup, NamedOnlyOrLongest) {
@@ -152,7 +160,7 @@ TEST(ApplyDelay, RefusesAnUnknownGroupAndANegativeLatency) {
     const DelayFit fit = fit_delay(touches);
     Scenario scenario;
     try {
-        (void)controller_latency_from_fit(fit, scenario, std::string("Y+"));
+        (void)delay_to_apply(fit, scenario, std::string("Y+"));
         FAIL() << "an unknown group was accepted";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("Y+"), std::string::npos) << e.what();
@@ -160,12 +168,12 @@ TEST(ApplyDelay, RefusesAnUnknownGroupAndANegativeLatency) {
     }
     // 3 ms < t_i (2 ms) + t_s/2 (2 ms): the latency would be -1 ms.
     try {
-        (void)controller_latency_from_fit(fit, scenario);
+        (void)delay_to_apply(fit, scenario);
         FAIL() << "a negative controller latency was accepted";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("negative"), std::string::npos) << e.what();
     }
-    EXPECT_THROW((void)controller_latency_from_fit(DelayFit{}, scenario), std::invalid_argument);
+    EXPECT_THROW((void)delay_to_apply(DelayFit{}, scenario), std::invalid_argument);
 }
 
 TEST(DelayFit, NoLagCyclesWithoutAPeriod) {
@@ -498,7 +506,7 @@ TEST(DelayFitMessages, TheRuleAndTheRefusalsAreMessages) {
     scenario.probe.interface_delay_s = 0.008;
     scenario.machine.scan_period_s = 0.004;
     try {
-        (void)controller_latency_from_fit(fit, scenario, std::string("X+"));
+        (void)delay_to_apply(fit, scenario, std::string("X+"));
         FAIL() << "a negative latency was accepted";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()).rfind("the fitted delay of X+, 8.5 ms, is shorter than the "

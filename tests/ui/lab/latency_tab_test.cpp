@@ -131,7 +131,7 @@ TEST_F(LabLatencyTab, FewFeedsWarn) {
 
 TEST_F(LabLatencyTab, ApplyEmitsTheControllerLatencyByTheCliRule) {
     ASSERT_TRUE(import_delay());
-    QSignalSpy spy(&tab_, &LatencyTab::controller_latency_applied);
+    QSignalSpy spy(&tab_, &LatencyTab::delay_applied);
 
     // No scenario yet: nothing to apply to.
     EXPECT_FALSE(apply_button()->isEnabled());
@@ -153,28 +153,33 @@ TEST_F(LabLatencyTab, ApplyEmitsTheControllerLatencyByTheCliRule) {
         << render(pending->rule);
     ASSERT_TRUE(tab_.apply_to_scenario()) << tab_.last_error().toStdString();
     ASSERT_EQ(spy.count(), 1);
-    EXPECT_NEAR(spy.at(0).at(0).toDouble(), 0.005, 1e-9);
+    EXPECT_EQ(spy.at(0).at(0).toString(), QStringLiteral("machine.controller_latency_s"));
+    EXPECT_NEAR(spy.at(0).at(1).toDouble(), 0.005, 1e-9);
 
     // X+ chosen: 8.5 - 2 - 2 ms, as the CLI's --group x+.
     tab_.set_applied_group(QStringLiteral("x+"));
     apply_button()->click();
     ASSERT_EQ(spy.count(), 2);
-    EXPECT_NEAR(spy.at(1).at(0).toDouble(), 0.0045, 1e-9);
+    EXPECT_NEAR(spy.at(1).at(1).toDouble(), 0.0045, 1e-9);
     auto* breakdown = tab_.findChild<QLabel*>(QStringLiteral("apply-breakdown"));
     ASSERT_NE(breakdown, nullptr);
     EXPECT_TRUE(breakdown->text().contains(QStringLiteral("4.500")))
         << breakdown->text().toStdString();
 
-    // A latched input has no scan delay.
+    // A latched input (issue 11): the fitted delay is the interface delay, and
+    // the controller latency is left alone, which the breakdown says.
     scenario.machine.latched_input = true;
     tab_.set_scenario(scenario);
     ASSERT_TRUE(tab_.apply_to_scenario());
-    EXPECT_NEAR(spy.at(2).at(0).toDouble(), 0.0065, 1e-9);
+    EXPECT_EQ(spy.at(2).at(0).toString(), QStringLiteral("probe.interface_delay_s"));
+    EXPECT_NEAR(spy.at(2).at(1).toDouble(), 0.0085, 1e-9);
+    EXPECT_TRUE(breakdown->text().contains(QStringLiteral("left as it is")))
+        << breakdown->text().toStdString();
 }
 
 TEST_F(LabLatencyTab, ANegativeControllerLatencyIsAnErrorAndEmitsNothing) {
     ASSERT_TRUE(import_delay());
-    QSignalSpy spy(&tab_, &LatencyTab::controller_latency_applied);
+    QSignalSpy spy(&tab_, &LatencyTab::delay_applied);
     Scenario scenario;
     scenario.probe.interface_delay_s = 0.008;
     scenario.machine.scan_period_s = 0.004;
