@@ -37,6 +37,10 @@ const char* to_string(Phase phase) {
             return "return";
         case Phase::position:
             return "position";
+        case Phase::lift:
+            return "lift";
+        case Phase::lower:
+            return "lower";
     }
     return "?";
 }
@@ -56,6 +60,8 @@ const std::array<Phase, kPhaseCount>& all_phases() {
         Phase::second_deceleration,
         Phase::return_move,
         Phase::position,
+        Phase::lift,
+        Phase::lower,
     };
     return phases;
 }
@@ -265,31 +271,29 @@ int touch_count(Feature feature) {
 
 namespace {
 
-// domain.md, "Features": positioning moves between the touches' start
-// positions, at the rapid feed. Inside a pocket or bore they run straight
-// across; around a boss along the arc of radius D/2 + approach; over a web
-// straight across D + 2 approach (the Z lift over it is not modelled).
-// Bore and boss touch X+, X-, Y+, Y- in that order.
-double positioning_distance_mm(const Cycle& cycle, int touch) {
-    const double d = cycle.feature_size_mm;
-    const double s = cycle.approach_mm;
-    switch (cycle.feature) {
-        case Feature::surface:
-            return 0.0;
-        case Feature::pocket:
-            return d - 2.0 * s;
-        case Feature::web:
-            return d + 2.0 * s;
-        case Feature::bore: {
-            const double r = 0.5 * d - s;
-            return touch == 2 ? std::numbers::sqrt2 * r : 2.0 * r;
-        }
-        case Feature::boss: {
-            const double r = 0.5 * d + s;
-            return touch == 2 ? 0.5 * std::numbers::pi * r : std::numbers::pi * r;
-        }
-    }
-    return 0.0;
+// Issue 11, loose end 6: the moves of a feature as real cycles make them.
+// A pocket or bore starts and ends at the feature centre; each touch starts
+// `approach` inside the wall, r = D/2 - approach from the centre. A boss or web
+// starts above its centre at the clearance height; each touch starts outside,
+// R = D/2 + approach from the centre, and the probe lifts over the wall
+// between touches. Touches go X+, X-, Y+, Y- (pocket and web X+, X-).
+// Distance from the centre to a touch's start position.
+double start_radius_mm(const Cycle& cycle) {
+    const double half = 0.5 * cycle.feature_size_mm;
+    return cycle.feature == Feature::boss || cycle.feature == Feature::web
+               ? half + cycle.approach_mm
+               : half - cycle.approach_mm;
+}
+
+// Straight from the start of touch k - 1 to the start of touch k (k >= 1):
+// across the centre (2 rho) or, X- to Y+, a quarter turn (sqrt(2) rho).
+double between_starts_mm(const Cycle& cycle, int touch) {
+    const double rho = start_radius_mm(cycle);
+    return touch == 2 ? std::numbers::sqrt2 * rho : 2.0 * rho;
+}
+
+bool lifts_over(Feature feature) {
+    return feature == Feature::boss || feature == Feature::web;
 }
 
 // Long enough for any touch: the approach plan is cut where the axis reacts.
@@ -350,28 +354,51 @@ class CycleBuilder {
     std::size_t phase_count() const { return phases_.size(); }
     std::size_t segment_count() const { return segments_.size(); }
 
-    // Repeats the first `phase_count` phases and `segment_count` segments
-    // (a touch sequence recorded from t = 0) as touch `touch_`, from now. The
-    // sequence starts and ends at the touch's start position.
-    void replay_sequence(std::size_t phase_count, std::size_t segment_count) {
-        const double shift = t_;
-        for (std::size_t i = 0; i < phase_count; ++i) {
+    // Repeats `phase_count` phases from `first_phase` and `segment_count`
+    // segments from `first_segment` (a touch sequence that starts and ends at
+    // the touch's start position) as touch `touch_`, from now.
+    void replay_sequence(std::size_t first_phase, std::size_t phase_count,
+                         std::size_t first_segment, std::size_t segment_count) {
+        const double origin = phases_[first_phase].start_s;
+        const double shift = t_ - origin;
+        for (std::size_t i = first_phase; i < first_phase + phase_count; ++i) {
             PhaseRecord record = phases_[i];
             record.start_s += shift;
             record.touch = touch_;
             phase_time_[static_cast<std::size_t>(record.phase)] += record.time_s;
             phases_.push_back(record);
         }
-        for (std::size_t i = 0; i < segment_count; ++i) {
+        for (std::size_t i = first_segment; i < first_segment + segment_count; ++i) {
             TimedSegment segment = segments_[i];
             segment.start_s += shift;
             segment.touch = touch_;
             segments_.push_back(segment);
         }
-        const double sequence_s =
-            phases_[phase_count - 1].start_s + phases_[phase_count - 1].time_s;
+        const PhaseRecord& last = phases_[first_phase + phase_count - 1];
+        const double sequence_s = last.start_s + last.time_s - origin;
         t_ += sequence_s;
         motion_t_ += sequence_s;
+    }
+
+    // Moves that come before everything built so far (a feature's first move
+    // from its centre): `build` adds them to a builder of their own from t = 0;
+    // they go in front and the rest moves later by their duration.
+    template <typename Build>
+    void prepend_moves(Build&& build) {
+        std::vector<PhaseRecord> phases;
+        std::vector<TimedSegment> segments;
+        std::array<double, kPhaseCount> times{};
+        CycleBuilder front(phases, segments, times);
+        front.set_touch(touch_);
+        build(front);
+        const double shift = front.now();
+        for (PhaseRecord& record : phases_) record.start_s += shift;
+        for (TimedSegment& segment : segments_) segment.start_s += shift;
+        phases_.insert(phases_.begin(), phases.begin(), phases.end());
+        segments_.insert(segments_.begin(), segments.begin(), segments.end());
+        for (std::size_t k = 0; k < kPhaseCount; ++k) phase_time_[k] += times[k];
+        t_ += shift;
+        motion_t_ += shift;
     }
 
     // A rest-to-rest move as one phase.
@@ -552,15 +579,35 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     r.first_ = first;
     r.measuring_ = measuring;
 
-    // The other touches of a feature differ only in direction: each is a
-    // positioning move at rapid, then the same sequence again.
-    const std::size_t sequence_phases = b.phase_count();
-    const std::size_t sequence_segments = b.segment_count();
-    for (int k = 1; k < touches; ++k) {
-        b.set_touch(k);
-        b.add_move(Phase::position, limits, positioning_distance_mm(c, k), rapid_v, 0.0);
-        b.set_touch(k);
-        b.replay_sequence(sequence_phases, sequence_segments);
+    // The other touches of a feature differ only in direction: each is reached
+    // by protected moves (and a lift over a boss or web), then the same
+    // sequence again. The feature's first and last moves join the centre.
+    if (touches > 1) {
+        const std::size_t sequence_phases = b.phase_count();
+        const std::size_t sequence_segments = b.segment_count();
+        const double position_v = mm_min_to_mm_s(c.position_feed_mm_min);
+        const bool lift = lifts_over(c.feature);
+        const auto up = [&] {
+            if (lift) b.add_move(Phase::lift, limits, c.clearance_mm, rapid_v, 0.0);
+        };
+        const auto down = [&] {
+            if (lift) b.add_move(Phase::lower, limits, c.clearance_mm, position_v, 0.0);
+        };
+        for (int k = 1; k < touches; ++k) {
+            b.set_touch(k);
+            up();
+            b.add_move(Phase::position, limits, between_starts_mm(c, k), position_v, 0.0);
+            down();
+            b.replay_sequence(0, sequence_phases, 0, sequence_segments);
+        }
+        up();
+        b.add_move(Phase::position, limits, start_radius_mm(c), position_v, 0.0);
+        // From the centre to the first start, before the first touch.
+        b.set_touch(0);
+        b.prepend_moves([&](CycleBuilder& front) {
+            front.add_move(Phase::position, limits, start_radius_mm(c), position_v, 0.0);
+            if (lift) front.add_move(Phase::lower, limits, c.clearance_mm, position_v, 0.0);
+        });
     }
     const double worst_overtravel = std::max(first.overtravel_mm, measuring.overtravel_mm);
     // Two-touch: a faster first touch may overtravel less than the slow second

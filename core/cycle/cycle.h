@@ -29,9 +29,11 @@ enum class Phase {
     second_controller_delay,
     second_deceleration,
     return_move,  // "return"
-    position,
+    position,     // protected move at the positioning feed (between touches, from/to the centre)
+    lift,         // boss/web: up to the clearance height, at the rapid feed (away from the part)
+    lower,        // boss/web: down to the measuring depth, protected, at the positioning feed
 };
-constexpr std::size_t kPhaseCount = 13;
+constexpr std::size_t kPhaseCount = 15;
 const char* to_string(Phase phase);  // the exact file/CSV names ("return" for return_move)
 // Every phase in its canonical order.
 const std::array<Phase, kPhaseCount>& all_phases();

@@ -120,8 +120,8 @@ const std::vector<KeyEntry>& key_table() {
             {"machine.rapid_feed_mm_min", "mm/min", 100.0, 200000.0,
              QT_TRANSLATE_NOOP(
                  "Parameter",
-                 "Rapid feed of the positioning moves between the touches of a web, pocket, bore "
-                 "or boss."),
+                 "Rapid feed: a boss or web lifts over its wall at it, away from the part. Moves "
+                 "toward the part are protected, at the positioning feed."),
              QT_TRANSLATE_NOOP("Parameter", "Rapid feed")},
             PC_NUMBER(machine, rapid_feed_mm_min)),
         number(
@@ -224,7 +224,7 @@ const std::vector<KeyEntry>& key_table() {
                     "Parameter",
                     "Distance between opposite stylus-centre contact points: web or pocket width, "
                     "bore or boss diameter less the ball diameter. Sets the positioning moves "
-                    "between touches; unused for a surface."),
+                    "from the centre and between touches; unused for a surface."),
                 QT_TRANSLATE_NOOP("Parameter", "Feature size")},
                PC_NUMBER(cycle, feature_size_mm)),
         number(
@@ -284,6 +284,22 @@ const std::vector<KeyEntry>& key_table() {
                     "plus overtravel)."),
                 QT_TRANSLATE_NOOP("Parameter", "Return feedrate")},
                PC_NUMBER(cycle, return_feed_mm_min)),
+        number({"cycle.position_feed_mm_min", "mm/min", 1.0, 100000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Web, pocket, bore, boss: feed of the protected positioning moves (probe "
+                    "armed, so a collision stops the axis) from the feature's centre to the "
+                    "first touch, between touches and back to the centre."),
+                QT_TRANSLATE_NOOP("Parameter", "Positioning feed")},
+               PC_NUMBER(cycle, position_feed_mm_min)),
+        number({"cycle.clearance_mm", "mm", 0.0, 1000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Boss or web: height the probe lifts above the measuring depth to pass over "
+                    "the wall between touches (up at the rapid feed, down at the positioning "
+                    "feed)."),
+                QT_TRANSLATE_NOOP("Parameter", "Clearance height")},
+               PC_NUMBER(cycle, clearance_mm)),
         number({"cycle.target_uncertainty_mm", "mm", 0.0, 10.0,
                 QT_TRANSLATE_NOOP(
                     "Parameter",

@@ -57,6 +57,11 @@ struct Cycle {
     double backoff_mm{2.0};
     BackoffFrom backoff_from{BackoffFrom::stop};
     double return_feed_mm_min{10000.0};
+    // Protected positioning moves of a feature (probe armed): between touches
+    // and from/to the centre (issue 11).
+    double position_feed_mm_min{3000.0};
+    // Boss/web: height the probe lifts to, over the wall, between touches.
+    double clearance_mm{10.0};
     double target_uncertainty_mm{0.0};  // 0 = no target
     // The knee is the lowest feed whose cycle time is within this fraction of
     // the best (domain.md, "Cycle time versus feed").

@@ -515,10 +515,6 @@
         <translation>Ускоренная подача</translation>
     </message>
     <message>
-        <source>Rapid feed of the positioning moves between the touches of a web, pocket, bore or boss.</source>
-        <translation>Скорость ускоренных позиционирующих перемещений между касаниями на стенке, пазу, отверстии или бобышке.</translation>
-    </message>
-    <message>
         <source>mm/min</source>
         <translation>мм/мин</translation>
     </message>
@@ -601,10 +597,6 @@
     <message>
         <source>Feature size</source>
         <translation>Размер элемента</translation>
-    </message>
-    <message>
-        <source>Distance between opposite stylus-centre contact points: web or pocket width, bore or boss diameter less the ball diameter. Sets the positioning moves between touches; unused for a surface.</source>
-        <translation>Расстояние между противоположными точками контакта по центру шарика: ширина стенки или паза, диаметр отверстия или бобышки минус диаметр шарика. Определяет позиционирующие перемещения между касаниями; для плоскости не используется.</translation>
     </message>
     <message>
         <source>Approach distance</source>
@@ -778,6 +770,30 @@
         <source>Trigger position</source>
         <translation>Точки срабатывания</translation>
     </message>
+    <message>
+        <source>Rapid feed: a boss or web lifts over its wall at it, away from the part. Moves toward the part are protected, at the positioning feed.</source>
+        <translation>Ускоренная подача: на ней щуп поднимается над стенкой бобышки или перемычки, прочь от детали. Перемещения к детали защищённые, на подаче позиционирования.</translation>
+    </message>
+    <message>
+        <source>Distance between opposite stylus-centre contact points: web or pocket width, bore or boss diameter less the ball diameter. Sets the positioning moves from the centre and between touches; unused for a surface.</source>
+        <translation>Расстояние между противоположными точками контакта по центру шарика: ширина стенки или паза, диаметр отверстия или бобышки минус диаметр шарика. Определяет позиционирующие перемещения от центра и между касаниями; для плоскости не используется.</translation>
+    </message>
+    <message>
+        <source>Web, pocket, bore, boss: feed of the protected positioning moves (probe armed, so a collision stops the axis) from the feature&apos;s centre to the first touch, between touches and back to the centre.</source>
+        <translation>Перемычка, паз, отверстие, бобышка: подача защищённых позиционирующих перемещений (датчик включён, столкновение останавливает ось) от центра элемента к первому касанию, между касаниями и обратно к центру.</translation>
+    </message>
+    <message>
+        <source>Positioning feed</source>
+        <translation>Подача позиционирования</translation>
+    </message>
+    <message>
+        <source>Boss or web: height the probe lifts above the measuring depth to pass over the wall between touches (up at the rapid feed, down at the positioning feed).</source>
+        <translation>Бобышка или перемычка: высота подъёма щупа над глубиной измерения, чтобы пройти над стенкой между касаниями (вверх на ускоренной подаче, вниз на подаче позиционирования).</translation>
+    </message>
+    <message>
+        <source>Clearance height</source>
+        <translation>Высота безопасного подъёма</translation>
+    </message>
 </context>
 <context>
     <name>Phase</name>
@@ -832,6 +848,14 @@
     <message>
         <source>2nd controller delay</source>
         <translation>2-я задержка ЧПУ</translation>
+    </message>
+    <message>
+        <source>Lift</source>
+        <translation>Подъём</translation>
+    </message>
+    <message>
+        <source>Lower</source>
+        <translation>Опускание</translation>
     </message>
 </context>
 <context>

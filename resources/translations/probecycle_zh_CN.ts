@@ -515,10 +515,6 @@
         <translation>快移速度</translation>
     </message>
     <message>
-        <source>Rapid feed of the positioning moves between the touches of a web, pocket, bore or boss.</source>
-        <translation>凸台、槽、孔或圆柱各次触测之间定位移动的快移速度。</translation>
-    </message>
-    <message>
         <source>mm/min</source>
         <translation>mm/min</translation>
     </message>
@@ -601,10 +597,6 @@
     <message>
         <source>Feature size</source>
         <translation>特征尺寸</translation>
-    </message>
-    <message>
-        <source>Distance between opposite stylus-centre contact points: web or pocket width, bore or boss diameter less the ball diameter. Sets the positioning moves between touches; unused for a surface.</source>
-        <translation>相对两个测针球心接触点之间的距离：凸台或槽的宽度、孔或圆柱直径减去测球直径。它决定各次触测之间的定位移动；测量平面时不使用。</translation>
     </message>
     <message>
         <source>Approach distance</source>
@@ -778,6 +770,30 @@
         <source>Trigger position</source>
         <translation>触发位置</translation>
     </message>
+    <message>
+        <source>Rapid feed: a boss or web lifts over its wall at it, away from the part. Moves toward the part are protected, at the positioning feed.</source>
+        <translation>快移速度：测量圆柱或凸台时以此速度抬起越过侧壁（远离工件）。朝向工件的移动为保护移动，使用定位进给率。</translation>
+    </message>
+    <message>
+        <source>Distance between opposite stylus-centre contact points: web or pocket width, bore or boss diameter less the ball diameter. Sets the positioning moves from the centre and between touches; unused for a surface.</source>
+        <translation>相对两个测针球心接触点之间的距离：凸台或槽的宽度、孔或圆柱直径减去测球直径。它决定从中心出发以及各次触测之间的定位移动；测量平面时不使用。</translation>
+    </message>
+    <message>
+        <source>Web, pocket, bore, boss: feed of the protected positioning moves (probe armed, so a collision stops the axis) from the feature&apos;s centre to the first touch, between touches and back to the centre.</source>
+        <translation>凸台、槽、孔、圆柱：保护定位移动的进给率（测头已启用，碰撞会使轴停止），用于从特征中心到第一次触测、各次触测之间以及返回中心。</translation>
+    </message>
+    <message>
+        <source>Positioning feed</source>
+        <translation>定位进给率</translation>
+    </message>
+    <message>
+        <source>Boss or web: height the probe lifts above the measuring depth to pass over the wall between touches (up at the rapid feed, down at the positioning feed).</source>
+        <translation>圆柱或凸台：各次触测之间测头抬到测量深度以上越过侧壁的高度（以快移速度抬起，以定位进给率下降）。</translation>
+    </message>
+    <message>
+        <source>Clearance height</source>
+        <translation>安全高度</translation>
+    </message>
 </context>
 <context>
     <name>Phase</name>
@@ -832,6 +848,14 @@
     <message>
         <source>2nd controller delay</source>
         <translation>第二次控制器延迟</translation>
+    </message>
+    <message>
+        <source>Lift</source>
+        <translation>抬起</translation>
+    </message>
+    <message>
+        <source>Lower</source>
+        <translation>下降</translation>
     </message>
 </context>
 <context>

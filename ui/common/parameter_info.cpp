@@ -48,6 +48,8 @@ const KeyText kKeyTexts[] = {
     {"cycle.measure_feed_mm_min", QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
     {"cycle.backoff_mm", QT_TRANSLATE_NOOP("Parameter", "mm"), 1.0, 3, SliderScale::linear, 0.0, 10.0, nullptr},
     {"cycle.return_feed_mm_min", QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
+    {"cycle.position_feed_mm_min", QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
+    {"cycle.clearance_mm", QT_TRANSLATE_NOOP("Parameter", "mm"), 1.0, 3, SliderScale::none, 0.0, 0.0, nullptr},
     {"cycle.target_uncertainty_mm", QT_TRANSLATE_NOOP("Parameter", "µm"), 1000.0, 1, SliderScale::none, 0.0, 0.0,
      QT_TRANSLATE_NOOP("Parameter", "none")},
     {"cycle.knee_tolerance", QT_TRANSLATE_NOOP("Parameter", "%"), 100.0, 1, SliderScale::none, 0.0, 0.0, nullptr},

@@ -192,6 +192,12 @@ QString phase_label(Phase phase) {
         case Phase::position:
             text = QT_TRANSLATE_NOOP("Phase", "Positioning");
             break;
+        case Phase::lift:
+            text = QT_TRANSLATE_NOOP("Phase", "Lift");
+            break;
+        case Phase::lower:
+            text = QT_TRANSLATE_NOOP("Phase", "Lower");
+            break;
     }
     return text != nullptr ? QCoreApplication::translate("Phase", text)
                            : QString::fromUtf8(to_string(phase));

@@ -61,6 +61,10 @@ QColor phase_colour(Phase phase) {
             return {0x79, 0x70, 0x6e};
         case Phase::position:
             return {0xba, 0xb0, 0xac};
+        case Phase::lift:
+            return {0xd7, 0xb5, 0xa6};
+        case Phase::lower:
+            return {0x9c, 0x9e, 0xde};
     }
     return Qt::gray;
 }

@@ -241,7 +241,11 @@ void ParameterPanel::update_enabled() {
     enable("machine.time_constant_s", model == AccelModel::time_constant);
     enable("machine.max_accel_mm_s2", model != AccelModel::time_constant);
     enable("machine.max_jerk_mm_s3", model == AccelModel::jerk_limited);
-    enable("machine.rapid_feed_mm_min", several_touches);
+    const bool lifts =
+        scenario_.cycle.feature == Feature::boss || scenario_.cycle.feature == Feature::web;
+    enable("machine.rapid_feed_mm_min", lifts);
+    enable("cycle.position_feed_mm_min", several_touches);
+    enable("cycle.clearance_mm", lifts);
     enable("cycle.feature_size_mm", several_touches);
     enable("cycle.measure_feed_mm_min", two_touch);
     enable("cycle.backoff_mm", two_touch);

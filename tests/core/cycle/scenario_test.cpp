@@ -108,7 +108,8 @@ const std::vector<std::string> kNumericKeys = {
     "probe.overtravel_limit_mm",   "probe.reseat_mm",         "probe.calibration_feed_mm_min",
     "cycle.feature_size_mm",       "cycle.approach_mm",       "cycle.probe_feed_mm_min",
     "cycle.measure_feed_mm_min",   "cycle.backoff_mm",        "cycle.return_feed_mm_min",
-    "cycle.target_uncertainty_mm", "cycle.knee_tolerance",
+    "cycle.target_uncertainty_mm", "cycle.knee_tolerance",    "cycle.position_feed_mm_min",
+    "cycle.clearance_mm",
 };
 
 // ---------------------------------------------------------------------------
@@ -267,7 +268,7 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
         {"cycle",
          {"strategy", "feature", "feature_size_mm", "approach_mm", "probe_feed_mm_min",
           "measure_feed_mm_min", "backoff_mm", "backoff_from", "return_feed_mm_min",
-          "target_uncertainty_mm", "knee_tolerance"}},
+          "position_feed_mm_min", "clearance_mm", "target_uncertainty_mm", "knee_tolerance"}},
     };
     EXPECT_EQ(j.size(), expected.size());
     for (const auto& [section, keys] : expected) {
@@ -607,7 +608,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 25u);
+    ASSERT_EQ(scenario_keys().size(), 27u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);
