@@ -103,6 +103,8 @@ void add_compensate(CLI::App& latency) {
         NumberArg naive_delay{0.0, 1.0};
         IntegerArg sweep{2, 100};
         bool trace{false};
+        IntegerArg compensated_lag_cycles{0, static_cast<long long>(IncrementRing::kCapacity) - 1};
+        bool lag_sweep{false};
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = latency.add_subcommand(
@@ -130,6 +132,8 @@ void add_compensate(CLI::App& latency) {
                "Interpolation cycle, s (default 0.001)", "S");
     add_integer(*cmd, "--lag-cycles", args->lag_cycles,
                 "Cycles between the trigger's cycle and the recorded position (default 8)");
+    add_integer(*cmd, "--compensated-lag-cycles", args->compensated_lag_cycles,
+                "The lag the cycle-lag compensation subtracts (default: --lag-cycles)");
     add_number(*cmd, "--trigger-phase", args->trigger_phase,
                "Where in its cycle the trigger falls, below 1 (default 0.4)", "P");
     cmd->add_option("--direction", args->direction, "Direction of travel (default +1)")
@@ -153,6 +157,8 @@ void add_compensate(CLI::App& latency) {
     add_integer(*cmd, "--sweep", args->sweep,
                 "Also compare the methods at N speeds while braking, from the feed down to 1/N");
     cmd->add_flag("--trace", args->trace, "Also print the simulated per-cycle trace");
+    cmd->add_flag("--lag-sweep", args->lag_sweep,
+                  "Also give the cycle-lag error for every compensated lag from 0 to 49");
     cmd->callback([args] {
         const Scenario scenario = load_scenario(args->scenario);
         CompensationSetup setup;
@@ -166,6 +172,9 @@ void add_compensate(CLI::App& latency) {
         setup.interpolation_period_s =
             args->interpolation_period.value_or(setup.interpolation_period_s);
         setup.lag_cycles = static_cast<int>(args->lag_cycles.value_or(setup.lag_cycles));
+        if (args->compensated_lag_cycles.given()) {
+            setup.compensated_lag_cycles = static_cast<int>(args->compensated_lag_cycles.value());
+        }
         if (args->trigger_phase.given()) {
             if (args->trigger_phase.value() >= 1.0) {
                 throw UsageError(
@@ -197,7 +206,9 @@ void add_compensate(CLI::App& latency) {
             }
             braking = sweep_braking(setup, fractions);
         }
-        std::cout << compensation_json(setup, result, braking, args->trace).dump(2) << '\n';
+        std::vector<LagRow> lags;
+        if (args->lag_sweep) lags = sweep_compensated_lag(setup);
+        std::cout << compensation_json(setup, result, braking, args->trace, lags).dump(2) << '\n';
     });
 }
 

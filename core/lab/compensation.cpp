@@ -129,6 +129,10 @@ std::vector<FieldError> validate(const CompensationSetup& setup) {
     check("counts-per-mm", setup.counts_per_mm, 1.0, 1e7, false, false);
     check("counter-bits", setup.counter_bits, 16.0, 64.0, false, false);
     if (setup.naive_delay_s) check("naive-delay-s", *setup.naive_delay_s, 0.0, 1.0, false, false);
+    if (setup.compensated_lag_cycles) {
+        check("compensated-lag-cycles", *setup.compensated_lag_cycles, 0.0,
+              static_cast<double>(IncrementRing::kCapacity) - 1.0, false, false);
+    }
     if (errors.empty() && setup.counter_bits < 64) {
         // One cycle must move the counter by less than half its range, or the
         // roll-over cannot be told from a move the other way.
@@ -266,8 +270,10 @@ CompensationComparison simulate_compensation(const CompensationSetup& setup) {
     set(CompensationMethod::naive_v_tau,
         compensate_naive_mm(out.recorded_position_mm, setup.direction, v, out.naive_delay_s));
     set(CompensationMethod::cycle_lag,
-        compensate_cycle_lag_mm(out.recorded_position_mm, ring, static_cast<std::size_t>(lag),
-                                setup.counts_per_mm));
+        compensate_cycle_lag_mm(
+            out.recorded_position_mm, ring,
+            static_cast<std::size_t>(setup.compensated_lag_cycles.value_or(lag)),
+            setup.counts_per_mm));
     set(CompensationMethod::timestamp,
         interpolate_trigger_mm(out.p1_mm, out.p2_mm, out.dt_s, period));
     return out;
@@ -289,6 +295,18 @@ std::vector<BrakingRow> sweep_braking(const CompensationSetup& setup,
             row.error_mm[m] = comparison.methods[m].error_mm;
         }
         rows.push_back(row);
+    }
+    return rows;
+}
+
+std::vector<LagRow> sweep_compensated_lag(const CompensationSetup& setup) {
+    std::vector<LagRow> rows;
+    rows.reserve(IncrementRing::kCapacity);
+    CompensationSetup with = setup;
+    for (int n = 0; n < static_cast<int>(IncrementRing::kCapacity); ++n) {
+        with.compensated_lag_cycles = n;
+        rows.push_back(
+            {n, simulate_compensation(with).result(CompensationMethod::cycle_lag).error_mm});
     }
     return rows;
 }

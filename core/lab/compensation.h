@@ -96,6 +96,10 @@ struct CompensationSetup {
     // The control records the position `lag_cycles` cycles after the end of the
     // cycle in which the probe triggered.
     int lag_cycles{8};
+    // The lag the cycle-lag compensation subtracts (issue 11: the published
+    // study compensated 7-9 cycles on a machine that lagged about 10). By
+    // default the true lag_cycles.
+    std::optional<int> compensated_lag_cycles;
     // Where in its cycle the trigger falls: dt = phase * T_ipo, in [0, 1).
     double trigger_phase{0.4};
     double counts_per_mm{10000.0};  // encoder resolution (0.1 um)
@@ -157,5 +161,13 @@ struct BrakingRow {
 };
 std::vector<BrakingRow> sweep_braking(const CompensationSetup& setup,
                                       std::span<const double> speed_fractions);
+
+// The cycle-lag method's error against the lag it compensates, the true lag
+// as set: one row per compensated lag from 0 to the ring's 49.
+struct LagRow {
+    int compensated_lag_cycles{0};
+    double error_mm{0.0};
+};
+std::vector<LagRow> sweep_compensated_lag(const CompensationSetup& setup);
 
 }  // namespace probecycle

@@ -144,7 +144,8 @@ Json applied_delay_json(const AppliedDelay& applied, const std::string& file) {
 }
 
 Json compensation_json(const CompensationSetup& setup, const CompensationComparison& result,
-                       const std::vector<BrakingRow>& braking_sweep, bool with_trace) {
+                       const std::vector<BrakingRow>& braking_sweep, bool with_trace,
+                       const std::vector<LagRow>& lag_sweep) {
     Json out = Json::object();
     Json s = Json::object();
     s["accel_model"] = to_string(setup.limits.model);
@@ -154,6 +155,7 @@ Json compensation_json(const CompensationSetup& setup, const CompensationCompari
     if (setup.touch == TouchMotion::braking) s["speed_fraction"] = setup.braking_speed_fraction;
     s["interpolation_period_s"] = setup.interpolation_period_s;
     s["lag_cycles"] = setup.lag_cycles;
+    s["compensated_lag_cycles"] = setup.compensated_lag_cycles.value_or(setup.lag_cycles);
     s["trigger_phase"] = setup.trigger_phase;
     s["counts_per_mm"] = setup.counts_per_mm;
     s["counter_bits"] = setup.counter_bits;
@@ -182,6 +184,14 @@ Json compensation_json(const CompensationSetup& setup, const CompensationCompari
                             {"error_mm", errors_json(row.error_mm)}});
         }
         out["braking_sweep"] = rows;
+    }
+    if (!lag_sweep.empty()) {
+        Json rows = Json::array();
+        for (const LagRow& row : lag_sweep) {
+            rows.push_back({{"compensated_lag_cycles", row.compensated_lag_cycles},
+                            {"cycle_lag_error_mm", row.error_mm}});
+        }
+        out["lag_sweep"] = rows;
     }
     if (with_trace) {
         Json trace = Json::array();

@@ -23,10 +23,11 @@ nlohmann::ordered_json delay_fit_json(const DelayFit& fit, const DelayFitOptions
 // What --apply-to wrote into `file`.
 nlohmann::ordered_json applied_delay_json(const AppliedDelay& applied, const std::string& file);
 // The setup, the trigger, what was recorded and each method's error; the
-// braking sweep and the per-cycle trace when given.
+// braking sweep, the per-cycle trace and the compensated-lag sweep when given.
 nlohmann::ordered_json compensation_json(const CompensationSetup& setup,
                                          const CompensationComparison& result,
                                          const std::vector<BrakingRow>& braking_sweep,
-                                         bool with_trace);
+                                         bool with_trace,
+                                         const std::vector<LagRow>& lag_sweep = {});
 
 }  // namespace probecycle

@@ -1667,6 +1667,34 @@
         <source>Counter roll-overs: %1.</source>
         <translation>Переполнений счётчика: %1.</translation>
     </message>
+    <message>
+        <source>Compensated lag</source>
+        <translation>Компенсация</translation>
+    </message>
+    <message>
+        <source>The lag the real-increments method subtracts. Controls are often set up with a lag other than the machine&apos;s (a published study compensated 7 to 9 cycles on a machine that lagged about 10): each cycle too few leaves one cycle&apos;s travel of error. Lowest value: the lag itself.</source>
+        <translation>Запаздывание, которое вычитает метод приращений. ЧПУ часто настроены на запаздывание, отличное от фактического (в опубликованном исследовании компенсировали 7–9 периодов на станке с запаздыванием около 10): каждый недостающий период оставляет ошибку в путь за один период. Наименьшее значение: само запаздывание.</translation>
+    </message>
+    <message>
+        <source>as the lag</source>
+        <translation>= запаздыванию</translation>
+    </message>
+    <message>
+        <source>Real increments: error against the compensated lag</source>
+        <translation>Приращения: ошибка в зависимости от компенсируемого запаздывания</translation>
+    </message>
+    <message>
+        <source>Compensated lag [cycles]</source>
+        <translation>Компенсируемое запаздывание [периодов]</translation>
+    </message>
+    <message>
+        <source>Dashed: the machine&apos;s lag. Dotted: the lag compensated. The error grows by one cycle&apos;s travel for each cycle the compensation is off.</source>
+        <translation>Штриховая линия: запаздывание станка. Пунктир: компенсируемое запаздывание. Ошибка растёт на путь за один период с каждым периодом расхождения.</translation>
+    </message>
+    <message>
+        <source>Against the compensated lag</source>
+        <translation>От компенсируемого запаздывания</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::CycleCharts</name>

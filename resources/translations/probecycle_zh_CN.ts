@@ -1667,6 +1667,34 @@
         <source>Counter roll-overs: %1.</source>
         <translation>计数器溢出：%1 次。</translation>
     </message>
+    <message>
+        <source>Compensated lag</source>
+        <translation>补偿的滞后</translation>
+    </message>
+    <message>
+        <source>The lag the real-increments method subtracts. Controls are often set up with a lag other than the machine&apos;s (a published study compensated 7 to 9 cycles on a machine that lagged about 10): each cycle too few leaves one cycle&apos;s travel of error. Lowest value: the lag itself.</source>
+        <translation>实际增量法所减去的滞后。数控系统常按与机床实际不同的滞后设置（一项已发表的研究在滞后约 10 个周期的机床上补偿了 7 至 9 个周期）：每少补偿一个周期，就留下一个周期行程的误差。最小值：即滞后本身。</translation>
+    </message>
+    <message>
+        <source>as the lag</source>
+        <translation>同滞后</translation>
+    </message>
+    <message>
+        <source>Real increments: error against the compensated lag</source>
+        <translation>实际增量：误差与补偿滞后的关系</translation>
+    </message>
+    <message>
+        <source>Compensated lag [cycles]</source>
+        <translation>补偿的滞后 [周期]</translation>
+    </message>
+    <message>
+        <source>Dashed: the machine&apos;s lag. Dotted: the lag compensated. The error grows by one cycle&apos;s travel for each cycle the compensation is off.</source>
+        <translation>虚线：机床的滞后。点线：补偿的滞后。补偿每偏差一个周期，误差增加一个周期的行程。</translation>
+    </message>
+    <message>
+        <source>Against the compensated lag</source>
+        <translation>与补偿滞后的关系</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::CycleCharts</name>

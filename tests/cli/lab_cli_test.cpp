@@ -396,6 +396,28 @@ TEST(LabLatencyCompensate, ConstantSpeedDefaults) {
     EXPECT_NEAR(lab_method_error(out, "timestamp"), 0.0, 1e-4);
 }
 
+// Issue 11, loose end 7: the true lag and the compensated lag apart.
+TEST(LabLatencyCompensate, CompensatedLagApartFromTheTrueLag) {
+    const auto run =
+        run_lab_cli("latency compensate --lag-cycles 10 --compensated-lag-cycles 8 --lag-sweep");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const Json out = lab_json(run);
+    EXPECT_EQ(out.at("setup").at("lag_cycles"), 10);
+    EXPECT_EQ(out.at("setup").at("compensated_lag_cycles"), 8);
+    const double v = 2000.0 / 60.0;
+    // (1 + 10 - 8) cycles less the 0.4 cycle phase: 2.6 ms of travel.
+    EXPECT_NEAR(lab_method_error(out, "cycle_lag"), v * 0.0026, 1e-4);
+    const Json& sweep = out.at("lag_sweep");
+    ASSERT_EQ(sweep.size(), 50u);
+    EXPECT_EQ(sweep.at(8).at("compensated_lag_cycles"), 8);
+    EXPECT_NEAR(sweep.at(8).at("cycle_lag_error_mm").get<double>(), v * 0.0026, 1e-4);
+    EXPECT_NEAR(sweep.at(10).at("cycle_lag_error_mm").get<double>(), v * 0.0006, 1e-4);
+
+    const auto bad = run_lab_cli("latency compensate --compensated-lag-cycles 50");
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("--compensated-lag-cycles"), std::string::npos) << bad.err;
+}
+
 TEST(LabLatencyCompensate, BrakingOnlyRealIncrementsAreRight) {
     const auto run = run_lab_cli(
         "latency compensate --touch braking --speed-fraction 0.3 --lag-cycles 9 "

@@ -10,6 +10,7 @@
 #include <QPushButton>
 #include <QShowEvent>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -80,16 +81,26 @@ CompensationPanel::CompensationPanel(QWidget* parent) : QGroupBox(parent) {
 
     QWidget* input = build_input_column();
     build_plot();
+    build_lag_plot();
     QWidget* table = build_table_column();
     auto* row = new QHBoxLayout(this);
     row->addWidget(input);
-    row->addWidget(comparison_plot_, 1);
+    // Two charts, one at a time at full size: the methods while braking, and
+    // the real increments against the compensated lag (issue 11).
+    charts_ = new QTabWidget(this);
+    charts_->setObjectName(QStringLiteral("compensation-charts"));
+    charts_->setDocumentMode(true);
+    charts_->addTab(comparison_plot_, QString());
+    charts_->addTab(lag_plot_, QString());
+    row->addWidget(charts_, 1);
     row->addWidget(table);
 
     for (UnitSpinBox* box : {feed_, ipo_period_, speed_fraction_}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, &CompensationPanel::schedule_comparison);
     }
-    connect(lag_cycles_, &QSpinBox::valueChanged, this, &CompensationPanel::schedule_comparison);
+    for (QSpinBox* box : {lag_cycles_, compensated_lag_}) {
+        connect(box, &QSpinBox::valueChanged, this, &CompensationPanel::schedule_comparison);
+    }
     connect(touch_, &QComboBox::currentIndexChanged, this, [this] {
         speed_fraction_->setEnabled(inputs().touch == TouchMotion::braking);
         schedule_comparison();
@@ -117,6 +128,13 @@ QWidget* CompensationPanel::build_input_column() {
     lag_cycles_->setValue(defaults.lag_cycles);
     lag_cycles_->setKeyboardTracking(false);
     lag_cycles_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    // -1 shows as "as the lag" (retranslate() sets the text).
+    compensated_lag_ = new QSpinBox(this);
+    compensated_lag_->setObjectName(QStringLiteral("compensation-compensated-lag"));
+    compensated_lag_->setRange(-1, static_cast<int>(IncrementRing::kCapacity) - 1);
+    compensated_lag_->setValue(defaults.compensated_lag_cycles);
+    compensated_lag_->setKeyboardTracking(false);
+    compensated_lag_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     touch_ = new QComboBox(this);
     touch_->setObjectName(QStringLiteral("compensation-touch"));
     touch_->addItem(QString(), static_cast<int>(TouchMotion::constant_speed));
@@ -131,9 +149,10 @@ QWidget* CompensationPanel::build_input_column() {
     form_ = new QFormLayout;
     form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     // QFormLayout makes no label for an empty text; retranslate() fills these.
-    for (QWidget* field : {static_cast<QWidget*>(feed_), static_cast<QWidget*>(ipo_period_),
-                           static_cast<QWidget*>(lag_cycles_), static_cast<QWidget*>(touch_),
-                           static_cast<QWidget*>(speed_fraction_)}) {
+    for (QWidget* field :
+         {static_cast<QWidget*>(feed_), static_cast<QWidget*>(ipo_period_),
+          static_cast<QWidget*>(lag_cycles_), static_cast<QWidget*>(compensated_lag_),
+          static_cast<QWidget*>(touch_), static_cast<QWidget*>(speed_fraction_)}) {
         auto* label = new QLabel(this);
         label->setBuddy(field);
         form_->addRow(label, field);
@@ -170,6 +189,24 @@ void CompensationPanel::build_plot() {
             comparison_plot_->add_line({QStringLiteral(" "), kMethodColours[m], 2.0,
                                         exact ? PlotView::Dash::dashed : PlotView::Dash::solid});
     }
+}
+
+// Issue 11: the real-increments method's error against the lag it
+// compensates, with the machine's true lag as set.
+void CompensationPanel::build_lag_plot() {
+    lag_plot_ = new PlotView(this);
+    lag_plot_->setObjectName(QStringLiteral("lag-plot"));
+    lag_plot_->set_x_axis({PlotView::Scale::linear, {}, QStringLiteral("%g"), {}});
+    lag_plot_->set_y_axis(PlotView::Side::left,
+                          {PlotView::Scale::linear, {}, QStringLiteral("%g"), {}});
+    lag_plot_->set_x_range(0.0, static_cast<double>(IncrementRing::kCapacity) - 1.0);
+    lag_plot_->set_legend_visible(false);
+    true_lag_marker_curve_ =
+        lag_plot_->add_line({{}, QColor(0x55, 0x55, 0x55), 1.0, PlotView::Dash::dashed});
+    lag_marker_curve_ =
+        lag_plot_->add_line({{}, QColor(0x55, 0x55, 0x55), 1.0, PlotView::Dash::dotted});
+    lag_error_curve_ = lag_plot_->add_line(
+        {{}, kMethodColours[static_cast<std::size_t>(CompensationMethod::cycle_lag)], 2.0});
 }
 
 // The four methods at the current setup, the trigger's summary and a note.
@@ -221,6 +258,7 @@ QString CompensationPanel::field_label(const std::string& key) {
     if (key == "feed-mm-min") return tr("Feed");
     if (key == "interpolation-period-s") return tr("Interpolation period");
     if (key == "lag-cycles") return tr("Lag");
+    if (key == "compensated-lag-cycles") return tr("Compensated lag");
     if (key == "speed-fraction") return tr("Speed at the trigger");
     if (key == "direction") return tr("Direction of travel");
     if (key == "trigger-phase") return tr("Trigger phase in its cycle");
@@ -244,6 +282,24 @@ void CompensationPanel::retranslate() {
               tr("Cycles between the end of the trigger's cycle and the recorded position; the "
                  "delay-stability test above measures it."));
     lag_cycles_->setSuffix(tr(" cycles"));
+    set_label(compensated_lag_, tr("Compensated lag"),
+              tr("The lag the real-increments method subtracts. Controls are often set up with "
+                 "a lag other than the machine's (a published study compensated 7 to 9 cycles on "
+                 "a machine that lagged about 10): each cycle too few leaves one cycle's travel "
+                 "of error. Lowest value: the lag itself."));
+    compensated_lag_->setSuffix(tr(" cycles"));
+    compensated_lag_->setSpecialValueText(tr("as the lag"));
+    lag_plot_->set_title(tr("Real increments: error against the compensated lag"));
+    charts_->setTabText(0, tr("While braking"));
+    charts_->setTabText(1, tr("Against the compensated lag"));
+    lag_plot_->set_x_axis(
+        {PlotView::Scale::linear, tr("Compensated lag [cycles]"), QStringLiteral("%g"), {}});
+    lag_plot_->set_y_axis(
+        PlotView::Side::left,
+        {PlotView::Scale::linear, tr("Error [%1]").arg(unit_um()), QStringLiteral("%g"), {}});
+    lag_plot_->setToolTip(
+        tr("Dashed: the machine's lag. Dotted: the lag compensated. The error grows by one "
+           "cycle's travel for each cycle the compensation is off."));
     set_label(touch_, tr("Touch"), tr("At constant speed, or while the axis is braking."));
     touch_->setItemText(0, tr("At constant speed"));
     touch_->setItemText(1, tr("While braking"));
@@ -292,6 +348,7 @@ void CompensationPanel::set_inputs(const Inputs& wanted) {
     feed_->set_internal_value(wanted.feed_mm_min);
     ipo_period_->set_internal_value(wanted.interpolation_period_s);
     lag_cycles_->setValue(wanted.lag_cycles);
+    compensated_lag_->setValue(wanted.compensated_lag_cycles);
     touch_->setCurrentIndex(touch_->findData(static_cast<int>(wanted.touch)));
     speed_fraction_->set_internal_value(wanted.speed_fraction);
     update_comparison_now();
@@ -302,6 +359,7 @@ CompensationPanel::Inputs CompensationPanel::inputs() const {
     out.feed_mm_min = feed_->internal_value();
     out.interpolation_period_s = ipo_period_->internal_value();
     out.lag_cycles = lag_cycles_->value();
+    out.compensated_lag_cycles = compensated_lag_->value();
     out.touch = static_cast<TouchMotion>(touch_->currentData().toInt());
     out.speed_fraction = speed_fraction_->internal_value();
     return out;
@@ -337,6 +395,9 @@ void CompensationPanel::update_comparison_now() {
     setup.feed_mm_min = current.feed_mm_min;
     setup.interpolation_period_s = current.interpolation_period_s;
     setup.lag_cycles = current.lag_cycles;
+    if (current.compensated_lag_cycles >= 0) {
+        setup.compensated_lag_cycles = current.compensated_lag_cycles;
+    }
     setup.touch = current.touch;
     setup.braking_speed_fraction = current.speed_fraction;
 
@@ -352,7 +413,9 @@ void CompensationPanel::update_comparison_now() {
         comparison_error_ = messages.join(QLatin1Char('\n'));
         comparison_.reset();
         sweep_.clear();
+        lag_sweep_.clear();
     } else {
+        lag_sweep_ = sweep_compensated_lag(setup);
         comparison_ = simulate_compensation(setup);
         std::vector<double> fractions;
         fractions.reserve(kSweepPoints);
@@ -391,6 +454,8 @@ void CompensationPanel::show_comparison() {
                                      : QList<QPointF>{});
     comparison_plot_->set_visible(current_fraction_curve_, braking);
 
+    show_lag_sweep();
+
     for (std::size_t m = 0; m < kCompensationMethodCount; ++m) {
         const int row = static_cast<int>(m);
         if (comparison_) {
@@ -419,6 +484,34 @@ void CompensationPanel::show_comparison() {
     }
     methods_table_->resizeColumnsToContents();
     methods_table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+}
+
+void CompensationPanel::show_lag_sweep() {
+    QList<QPointF> curve;
+    curve.reserve(static_cast<qsizetype>(lag_sweep_.size()));
+    double lo = 0.0;
+    double hi = 0.0;
+    for (const LagRow& row : lag_sweep_) {
+        const double error_um = row.error_mm * kMmToUm;
+        curve.append({static_cast<double>(row.compensated_lag_cycles), error_um});
+        lo = std::min(lo, error_um);
+        hi = std::max(hi, error_um);
+    }
+    lag_plot_->set_points(lag_error_curve_, curve);
+    const double pad = std::max(hi - lo, 1.0) * 0.06;
+    lag_plot_->set_y_range(PlotView::Side::left, lo - pad, hi + pad);
+    const Inputs current = inputs();
+    const double used =
+        current.compensated_lag_cycles >= 0 ? current.compensated_lag_cycles : current.lag_cycles;
+    const auto vertical = [&](double x) {
+        return curve.isEmpty() ? QList<QPointF>{} : QList<QPointF>{{x, lo - pad}, {x, hi + pad}};
+    };
+    lag_plot_->set_points(true_lag_marker_curve_, vertical(current.lag_cycles));
+    lag_plot_->set_points(lag_marker_curve_, vertical(used));
+}
+
+QList<QPointF> CompensationPanel::lag_curve() const {
+    return lag_plot_->points(lag_error_curve_);
 }
 
 QList<QPointF> CompensationPanel::comparison_curve(CompensationMethod method) const {

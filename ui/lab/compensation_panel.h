@@ -27,6 +27,7 @@ class QFormLayout;
 class QLabel;
 class QPushButton;
 class QSpinBox;
+class QTabWidget;
 class QTableWidget;
 
 namespace probecycle::ui {
@@ -51,6 +52,8 @@ class CompensationPanel : public QGroupBox {
         int lag_cycles{8};
         TouchMotion touch{TouchMotion::braking};
         double speed_fraction{0.5};  // braking: the speed at the trigger / the feed
+        // The lag the real-increments method subtracts; -1: the lag itself.
+        int compensated_lag_cycles{-1};
     };
     // Sets the inputs and recomputes at once.
     void set_inputs(const Inputs& inputs);
@@ -62,6 +65,10 @@ class CompensationPanel : public QGroupBox {
     QList<QPointF> comparison_curve(CompensationMethod method) const;
     QString comparison_error() const { return comparison_error_; }
     PlotView* comparison_plot() const { return comparison_plot_; }
+    // (compensated lag in cycles, error µm) of the real-increments method,
+    // with the machine's lag as set (issue 11).
+    QList<QPointF> lag_curve() const;
+    PlotView* lag_plot() const { return lag_plot_; }
 
     // "Take period and lag from the fit" is enabled while a fit offers them.
     void set_lag_from_fit_available(bool available);
@@ -80,6 +87,8 @@ class CompensationPanel : public QGroupBox {
   private:
     QWidget* build_input_column();
     void build_plot();
+    void build_lag_plot();
+    void show_lag_sweep();
     QWidget* build_table_column();
     void schedule_comparison();
     void show_comparison();
@@ -91,6 +100,7 @@ class CompensationPanel : public QGroupBox {
     UnitSpinBox* feed_{nullptr};
     UnitSpinBox* ipo_period_{nullptr};
     QSpinBox* lag_cycles_{nullptr};
+    QSpinBox* compensated_lag_{nullptr};
     QComboBox* touch_{nullptr};
     UnitSpinBox* speed_fraction_{nullptr};
     QPushButton* lag_from_fit_{nullptr};
@@ -99,12 +109,18 @@ class CompensationPanel : public QGroupBox {
     PlotView* comparison_plot_{nullptr};
     int method_curves_[kCompensationMethodCount]{};
     int current_fraction_curve_{-1};
+    QTabWidget* charts_{nullptr};
+    PlotView* lag_plot_{nullptr};
+    int lag_error_curve_{-1};
+    int lag_marker_curve_{-1};       // the compensated lag in use
+    int true_lag_marker_curve_{-1};  // the machine's lag
     QTableWidget* methods_table_{nullptr};
     QLabel* trigger_summary_{nullptr};
     QTimer comparison_timer_;
     bool comparison_stale_{false};  // scenario changed while hidden
     std::optional<CompensationComparison> comparison_;
     std::vector<BrakingRow> sweep_;
+    std::vector<LagRow> lag_sweep_;
     QString comparison_error_;
 };
 

@@ -193,6 +193,48 @@ INSTANTIATE_TEST_SUITE_P(
     CompensationCaseName{});
 // clang-format on
 
+// Issue 11, loose end 7: the machine lags N = 10 cycles, the compensation
+// subtracts N_c. At constant speed the cycle-lag result is the position at the
+// end of cycle 1 + N - N_c: an error of v ((1 + N - N_c) T - dt).
+TEST(SimulatedWrongLag, EachCycleTooFewLeavesVTMoreError) {
+    CompensationSetup setup;
+    setup.lag_cycles = 10;
+    setup.trigger_phase = 0.4;
+    const double v = 2000.0 / 60.0;
+    const double period = setup.interpolation_period_s;
+    const double quantum = 1.0 / setup.counts_per_mm;
+    for (int compensated : {7, 8, 9, 10, 11}) {
+        SCOPED_TRACE(compensated);
+        setup.compensated_lag_cycles = compensated;
+        ASSERT_TRUE(validate(setup).empty());
+        const auto out = simulate_compensation(setup);
+        EXPECT_NEAR(out.result(CompensationMethod::cycle_lag).error_mm,
+                    v * ((1 + 10 - compensated) * period - 0.4 * period), quantum);
+        // The other methods do not use it.
+        EXPECT_NEAR(out.result(CompensationMethod::timestamp).error_mm, 0.0, quantum);
+    }
+    // 7 to 9 cycles on a 10-cycle machine: 0.12 to 0.053 mm at 2000 mm/min.
+    setup.compensated_lag_cycles.reset();
+    const std::vector<LagRow> rows = sweep_compensated_lag(setup);
+    ASSERT_EQ(rows.size(), IncrementRing::kCapacity);
+    // Up to N_c = 11: further back the simulated axis was still accelerating
+    // (it triggers one cycle into its cruise).
+    for (const LagRow& row : rows) {
+        if (row.compensated_lag_cycles > 11) break;
+        EXPECT_NEAR(row.error_mm, v * ((11 - row.compensated_lag_cycles) * period - 0.4 * period),
+                    quantum)
+            << row.compensated_lag_cycles;
+    }
+    // Default: the true lag.
+    EXPECT_NEAR(rows[10].error_mm,
+                simulate_compensation(setup).result(CompensationMethod::cycle_lag).error_mm, 1e-15);
+    // Outside the ring: refused, naming the option.
+    setup.compensated_lag_cycles = 50;
+    const auto errors = validate(setup);
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0].key, "compensated-lag-cycles");
+}
+
 TEST(SimulatedRollOver, SameResultWithAndWithoutTheWrap) {
     CompensationSetup setup;
     setup.lag_cycles = 9;

@@ -10,6 +10,7 @@
 #include <QPixmap>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <cmath>
 #include <cstdlib>
 
@@ -190,6 +191,41 @@ TEST_F(LabLatencyTab, ANegativeControllerLatencyIsAnErrorAndEmitsNothing) {
     EXPECT_EQ(spy.count(), 0);
     EXPECT_TRUE(tab_.last_error().contains(QStringLiteral("negative")))
         << tab_.last_error().toStdString();
+}
+
+// Issue 11, loose end 7: the machine lags 10 cycles, the control compensates 8.
+TEST_F(LabLatencyTab, TheCompensatedLagIsSetApartAndCharted) {
+    tab_.set_scenario(Scenario{});
+    LatencyTab::CompensationInputs inputs;
+    inputs.feed_mm_min = 2000.0;
+    inputs.interpolation_period_s = 0.001;
+    inputs.lag_cycles = 10;
+    inputs.touch = TouchMotion::constant_speed;
+    inputs.compensated_lag_cycles = 8;
+    tab_.set_compensation_inputs(inputs);
+    ASSERT_TRUE(tab_.comparison_error().isEmpty()) << tab_.comparison_error().toStdString();
+    EXPECT_EQ(tab_.compensation_inputs().compensated_lag_cycles, 8);
+    // Two cycles too few: (1 + 10 - 8 - 0.4) cycles of 33.3 µm = 86.7 µm.
+    const double cycle_um = 2000.0 / 60.0;
+    ASSERT_TRUE(tab_.comparison().has_value());
+    EXPECT_NEAR(tab_.comparison()->result(CompensationMethod::cycle_lag).error_mm * 1000.0,
+                2.6 * cycle_um, 0.1);
+    // The chart: one point per compensated lag, 0 to 49, falling by a cycle's
+    // travel per cycle at constant speed.
+    const QList<QPointF> curve = tab_.compensation_panel()->lag_curve();
+    ASSERT_EQ(curve.size(), 50);
+    EXPECT_DOUBLE_EQ(curve.front().x(), 0.0);
+    EXPECT_NEAR(curve[8].y(), 2.6 * cycle_um, 0.1);
+    EXPECT_NEAR(curve[10].y(), 0.6 * cycle_um, 0.1);
+    EXPECT_NEAR(curve[9].y() - curve[10].y(), cycle_um, 0.1);
+    // -1: the lag itself.
+    inputs.compensated_lag_cycles = -1;
+    tab_.set_compensation_inputs(inputs);
+    EXPECT_NEAR(tab_.comparison()->result(CompensationMethod::cycle_lag).error_mm * 1000.0,
+                0.6 * cycle_um, 0.1);
+    auto* box = tab_.findChild<QSpinBox*>(QStringLiteral("compensation-compensated-lag"));
+    ASSERT_NE(box, nullptr);
+    EXPECT_EQ(box->text(), QStringLiteral("as the lag"));
 }
 
 TEST_F(LabLatencyTab, TheComparisonChartHasOneCurvePerMethod) {
