@@ -380,27 +380,6 @@ class CycleBuilder {
         motion_t_ += sequence_s;
     }
 
-    // Moves that come before everything built so far (a feature's first move
-    // from its centre): `build` adds them to a builder of their own from t = 0;
-    // they go in front and the rest moves later by their duration.
-    template <typename Build>
-    void prepend_moves(Build&& build) {
-        std::vector<PhaseRecord> phases;
-        std::vector<TimedSegment> segments;
-        std::array<double, kPhaseCount> times{};
-        CycleBuilder front(phases, segments, times);
-        front.set_touch(touch_);
-        build(front);
-        const double shift = front.now();
-        for (PhaseRecord& record : phases_) record.start_s += shift;
-        for (TimedSegment& segment : segments_) segment.start_s += shift;
-        phases_.insert(phases_.begin(), phases.begin(), phases.end());
-        segments_.insert(segments_.begin(), segments.begin(), segments.end());
-        for (std::size_t k = 0; k < kPhaseCount; ++k) phase_time_[k] += times[k];
-        t_ += shift;
-        motion_t_ += shift;
-    }
-
     // A rest-to-rest move as one phase.
     void add_move(Phase phase, const MotionLimits& limits, double distance_mm, double feed_mm_s,
                   double direction) {
@@ -558,6 +537,23 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     const int touches = touch_count(c.feature);
 
     CycleBuilder b(r.phases_, r.segments_, r.phase_time_s_);
+    // Issue 11, loose end 6: a feature's moves are protected, at the positioning
+    // feed, from the centre (above it for a boss or web, which lifts over the
+    // wall at the rapid feed, away from the part).
+    const double position_v = mm_min_to_mm_s(c.position_feed_mm_min);
+    const bool lift = lifts_over(c.feature);
+    const auto up = [&] {
+        if (lift) b.add_move(Phase::lift, limits, c.clearance_mm, rapid_v, 0.0);
+    };
+    const auto down = [&] {
+        if (lift) b.add_move(Phase::lower, limits, c.clearance_mm, position_v, 0.0);
+    };
+    if (touches > 1) {
+        b.add_move(Phase::position, limits, start_radius_mm(c), position_v, 0.0);
+        down();
+    }
+    const std::size_t sequence_first_phase = b.phase_count();
+    const std::size_t sequence_first_segment = b.segment_count();
     // One touch sequence: first touch, (backoff, second touch,) return to start.
     const TouchResult first = b.add_touch(scenario, limits, probe_v, s, kFirstTouch);
     TouchResult measuring = first;
@@ -583,31 +579,19 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     // by protected moves (and a lift over a boss or web), then the same
     // sequence again. The feature's first and last moves join the centre.
     if (touches > 1) {
-        const std::size_t sequence_phases = b.phase_count();
-        const std::size_t sequence_segments = b.segment_count();
-        const double position_v = mm_min_to_mm_s(c.position_feed_mm_min);
-        const bool lift = lifts_over(c.feature);
-        const auto up = [&] {
-            if (lift) b.add_move(Phase::lift, limits, c.clearance_mm, rapid_v, 0.0);
-        };
-        const auto down = [&] {
-            if (lift) b.add_move(Phase::lower, limits, c.clearance_mm, position_v, 0.0);
-        };
+        const std::size_t sequence_phases = b.phase_count() - sequence_first_phase;
+        const std::size_t sequence_segments = b.segment_count() - sequence_first_segment;
         for (int k = 1; k < touches; ++k) {
             b.set_touch(k);
             up();
             b.add_move(Phase::position, limits, between_starts_mm(c, k), position_v, 0.0);
             down();
-            b.replay_sequence(0, sequence_phases, 0, sequence_segments);
+            b.replay_sequence(sequence_first_phase, sequence_phases, sequence_first_segment,
+                              sequence_segments);
         }
+        // Back to the centre.
         up();
         b.add_move(Phase::position, limits, start_radius_mm(c), position_v, 0.0);
-        // From the centre to the first start, before the first touch.
-        b.set_touch(0);
-        b.prepend_moves([&](CycleBuilder& front) {
-            front.add_move(Phase::position, limits, start_radius_mm(c), position_v, 0.0);
-            if (lift) front.add_move(Phase::lower, limits, c.clearance_mm, position_v, 0.0);
-        });
     }
     const double worst_overtravel = std::max(first.overtravel_mm, measuring.overtravel_mm);
     // Two-touch: a faster first touch may overtravel less than the slow second

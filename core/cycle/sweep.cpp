@@ -146,91 +146,110 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
     KneeSearch out;
     if (!(from_mm_min > 0.0) || !(to_mm_min > from_mm_min)) return out;
     CycleResult& scratch = scratch_result();
-    constexpr std::size_t kGrid = 48;
-    std::vector<double> grid = log_feeds(from_mm_min, to_mm_min, kGrid);
-    std::array<double, kGrid> times{};
-    const auto valid_at = [&](double feed) {
-        cycle_time_at(scenario, feed, options, scratch);
-        return scratch.valid();
+    const auto time_at = [&](double feed) {
+        return cycle_time_at(scenario, feed, options, scratch);
     };
-    std::size_t first_invalid = kGrid;
+    // A log grid of the valid feeds: it ends at the first invalid one, where a
+    // bisection finds the last valid feed, which closes the grid.
+    constexpr std::size_t kGrid = 48;
+    const std::vector<double> grid = log_feeds(from_mm_min, to_mm_min, kGrid);
+    std::array<double, kGrid + 1> feeds{};
+    std::array<double, kGrid + 1> times{};
+    std::size_t n = 0;
+    bool cut = false;
     for (std::size_t i = 0; i < kGrid; ++i) {
-        times[i] = cycle_time_at(scenario, grid[i], options, scratch);
+        const double t = time_at(grid[i]);
         if (!scratch.valid()) {
-            first_invalid = i;
+            cut = true;
             break;
         }
+        feeds[n] = grid[i];
+        times[n] = t;
+        ++n;
     }
-    if (first_invalid == 0) return out;
-    double top = to_mm_min;
-    if (first_invalid < kGrid) {
-        // The cycle turns invalid inside the range: find where (bisection), and
-        // search below it on a grid of its own.
-        double lo = grid[first_invalid - 1];
-        double hi = grid[first_invalid];
-        for (int iter = 0; iter < 60 && hi - lo > 1e-9 * hi; ++iter) {
+    if (n == 0) return out;
+    out.valid_to_mm_min = to_mm_min;
+    if (cut) {
+        double lo = feeds[n - 1];
+        double hi = grid[n];
+        for (int iter = 0; iter < 60 && hi - lo > 1e-7 * hi; ++iter) {
             const double mid = 0.5 * (lo + hi);
-            (valid_at(mid) ? lo : hi) = mid;
+            time_at(mid);
+            (scratch.valid() ? lo : hi) = mid;
         }
-        top = lo;
-        grid = top > from_mm_min ? log_feeds(from_mm_min, top, kGrid)
-                                 : std::vector<double>(kGrid, from_mm_min);
-        for (std::size_t i = 0; i < kGrid; ++i) {
-            times[i] = cycle_time_at(scenario, grid[i], options, scratch);
+        out.valid_to_mm_min = lo;
+        if (lo > feeds[n - 1]) {
+            feeds[n] = lo;
+            times[n] = time_at(lo);
+            ++n;
         }
     }
-    out.valid_to_mm_min = top;
     std::size_t best = 0;
-    for (std::size_t i = 1; i < kGrid; ++i) {
+    for (std::size_t i = 1; i < n; ++i) {
         if (times[i] < times[best]) best = i;
     }
-    // Refine the minimum between the grid neighbours (golden section).
-    double lo = grid[best == 0 ? 0 : best - 1];
-    double hi = grid[std::min(best + 1, kGrid - 1)];
+    // Refine the minimum between the grid neighbours: golden section, one new
+    // cycle per step.
     double best_time = times[best];
-    double best_feed = grid[best];
-    constexpr double kInvPhi = 0.6180339887498949;
-    for (int iter = 0; iter < 40 && hi - lo > 1e-9 * hi; ++iter) {
-        const double x1 = hi - kInvPhi * (hi - lo);
-        const double x2 = lo + kInvPhi * (hi - lo);
-        const double t1 = cycle_time_at(scenario, x1, options, scratch);
-        const double t2 = cycle_time_at(scenario, x2, options, scratch);
-        for (const auto& [feed, time] : {std::pair{x1, t1}, std::pair{x2, t2}}) {
+    double best_feed = feeds[best];
+    {
+        double a = feeds[best == 0 ? 0 : best - 1];
+        double b = feeds[std::min(best + 1, n - 1)];
+        constexpr double kInvPhi = 0.6180339887498949;
+        double x1 = b - kInvPhi * (b - a);
+        double x2 = a + kInvPhi * (b - a);
+        double f1 = time_at(x1);
+        double f2 = time_at(x2);
+        const auto consider = [&](double feed, double time) {
             if (time < best_time) {
                 best_time = time;
                 best_feed = feed;
             }
-        }
-        if (t1 < t2) {
-            hi = x2;
-        } else {
-            lo = x1;
+        };
+        consider(x1, f1);
+        consider(x2, f2);
+        for (int iter = 0; iter < 80 && b - a > 1e-9 * b; ++iter) {
+            if (f1 < f2) {
+                b = x2;
+                x2 = x1;
+                f2 = f1;
+                x1 = b - kInvPhi * (b - a);
+                f1 = time_at(x1);
+                consider(x1, f1);
+            } else {
+                a = x1;
+                x1 = x2;
+                f1 = f2;
+                x2 = a + kInvPhi * (b - a);
+                f2 = time_at(x2);
+                consider(x2, f2);
+            }
         }
     }
     out.best_feed_mm_min = best_feed;
     out.best_cycle_time_s = best_time;
     const double limit = best_time * (1.0 + scenario.cycle.knee_tolerance);
     std::size_t first = 0;
-    while (first < kGrid && times[first] > limit) ++first;
+    while (first < n && times[first] > limit) ++first;
     if (first == 0) {
-        out.knee_feed_mm_min = grid[0];
-    } else if (first == kGrid) {
+        out.knee_feed_mm_min = feeds[0];
+    } else if (first == n) {
         out.knee_feed_mm_min = best_feed;  // only the refined minimum itself qualifies
     } else {
         // Bisection for the crossing between the last grid feed above the limit
         // and the first within.
-        lo = grid[first - 1];
-        hi = grid[first];
+        double lo = feeds[first - 1];
+        double hi = feeds[first];
         for (int iter = 0; iter < 50 && hi - lo > 1e-6; ++iter) {
             const double mid = 0.5 * (lo + hi);
-            (cycle_time_at(scenario, mid, options, scratch) <= limit ? hi : lo) = mid;
+            (time_at(mid) <= limit ? hi : lo) = mid;
         }
         out.knee_feed_mm_min = hi;
     }
     // At an end of the searched range the fastest cycle may lie beyond it. Not
     // when invalid cycles end the range: that end does not move.
     const bool at_low = best_feed == from_mm_min;
-    const bool at_high = best_feed == to_mm_min && top == to_mm_min;
+    const bool at_high = best_feed == to_mm_min && !cut;
     if (at_low || at_high) {
         out.range_end_warning = range_end_warning(best_feed, *out.knee_feed_mm_min, at_high);
     }

@@ -396,10 +396,12 @@ TEST(FindKnee, StopsWhereTheOvertravelReachesTheLimit) {
     ASSERT_TRUE(knee.knee_feed_mm_min.has_value());
     ASSERT_TRUE(knee.best_feed_mm_min.has_value());
     // (2 - 0.005) / 0.038 mm/s = 52.5 mm/s.
-    EXPECT_NEAR(knee.valid_to_mm_min, mm_s_to_mm_min((2.0 - 0.005) / 0.038), 1e-6);
+    // Found to 1e-7 of the feed, on the valid side.
+    EXPECT_NEAR(knee.valid_to_mm_min, mm_s_to_mm_min((2.0 - 0.005) / 0.038), 1e-3);
     Scenario at = s;
     at.cycle.probe_feed_mm_min = knee.valid_to_mm_min;
-    EXPECT_NEAR(evaluate(at).overtravel_mm(), 2.0, 1e-9);
+    EXPECT_NEAR(evaluate(at).overtravel_mm(), 2.0, 1e-6);
+    EXPECT_TRUE(evaluate(at).valid());
     EXPECT_LE(*knee.best_feed_mm_min, knee.valid_to_mm_min);
     EXPECT_LE(*knee.knee_feed_mm_min, *knee.best_feed_mm_min);
     EXPECT_FALSE(knee.range_end_warning.has_value());
