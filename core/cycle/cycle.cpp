@@ -88,8 +88,6 @@ const char* to_string(WarningCode code) {
     return "?";
 }
 
-// The texts are the window's too (ui::translate); each exists here only.
-// Arguments in the units their names say.
 unsigned CycleResult::invalid_codes() const {
     unsigned codes = 0;
     for (const Warning& w : warnings_) {
@@ -108,6 +106,8 @@ std::string invalid_codes_text(unsigned codes, const char* separator) {
     return text;
 }
 
+// The texts are the window's too (ui::translate); each exists here only.
+// Arguments in the units their names say.
 Message Warning::to_message() const {
     Message m;
     m.code = to_string(code);
