@@ -73,6 +73,39 @@ void BM_Evaluate(benchmark::State& state) {
     }
 }
 
+// The bore with Fanuc-type dynamics after interpolation (issue 11): the skip
+// feed commanded at once, an exponential filter and a servo lag.
+Scenario filtered_bore() {
+    Scenario s = two_touch_bore();
+    s.machine.accel_model = AccelModel::none;
+    s.machine.filter = FilterKind::exponential;
+    s.machine.filter_time_s = 0.032;
+    s.machine.servo_time_constant_s = 0.033;
+    s.machine.in_position_mm = 0.02;
+    s.cycle.backoff_mm = 3.0;  // over the recommended 2.63 mm: a valid cycle
+    return s;
+}
+
+void BM_Evaluate_Filtered(benchmark::State& state) {
+    const Scenario scenario = filtered_bore();
+    CycleResult result;
+    for (auto _ : state) {
+        evaluate_into(scenario, result);
+        benchmark::DoNotOptimize(result.total());
+    }
+}
+
+void BM_Sweep1000_Filtered(benchmark::State& state) {
+    Scenario scenario = filtered_bore();
+    scenario.cycle.feature = Feature::surface;  // as BM_Sweep1000: the default surface
+    const std::vector<double> feeds = log_feeds(10.0, 10000.0, 1000);
+    SweepResult sweep;
+    for (auto _ : state) {
+        sweep_feeds_into(scenario, feeds, sweep);
+        benchmark::DoNotOptimize(sweep.points.data());
+    }
+}
+
 void BM_Sweep1000(benchmark::State& state) {
     const Scenario scenario;  // the default: two-touch surface
     const std::vector<double> feeds = log_feeds(10.0, 10000.0, 1000);
@@ -115,7 +148,9 @@ BENCHMARK(BM_MoveTime_TimeConstant);
 BENCHMARK(BM_MoveTime_ConstantAccel);
 BENCHMARK(BM_MoveTime_JerkLimited);
 BENCHMARK(BM_Evaluate);
+BENCHMARK(BM_Evaluate_Filtered);
 BENCHMARK(BM_Sweep1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Sweep1000_Filtered)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Analyse)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK(BM_Compare200)->Unit(benchmark::kMillisecond);

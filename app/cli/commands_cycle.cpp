@@ -48,8 +48,7 @@ void add_move(CLI::App& app) {
     add_number(*cmd, "--feed", args->feed, "Programmed feed, mm/min", "MM_MIN")->required();
     cmd->callback([args] {
         const Scenario scenario = load_scenario(args->scenario);
-        std::cout << move_to_json(scenario.motion_limits(), args->distance.value(),
-                                  args->feed.value());
+        std::cout << move_to_json(scenario, args->distance.value(), args->feed.value());
     });
 }
 

@@ -308,12 +308,47 @@ constexpr TouchPhases kSecondTouch{Phase::second_approach, Phase::second_pretrav
                                    Phase::second_interface_delay, Phase::second_controller_delay,
                                    Phase::second_deceleration};
 
+// The actual motion of a rest-to-rest move, and of a touch's approach (the
+// plan accelerating and cruising on, uncut).
+AxisMotion move_motion(const AxisKernel& kernel, const SegmentPlan& plan) {
+    AxisCommand command;
+    command.append(plan, plan.duration_s());
+    command.close();
+    return {kernel, command};
+}
+
+AxisMotion approach_motion(const AxisKernel& kernel, const SegmentPlan& plan) {
+    AxisCommand command;
+    command.append(plan, plan.duration_s());
+    return {kernel, command};
+}
+
+// Time from rest until a touch's approach covers `distance_mm`.
+double approach_time_s(const MotionLimits& limits, const AxisKernel* kernel, double feed_mm_s,
+                       double distance_mm) {
+    const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
+    const double planned = time_at_distance_s(plan, distance_mm);
+    if (kernel == nullptr) return planned;
+    return approach_motion(*kernel, plan)
+        .time_at_position(distance_mm, planned + kernel->moment(1));
+}
+
+const AxisKernel* active_kernel(const AxisKernel& kernel) {
+    return kernel.active() ? &kernel : nullptr;
+}
+
 // Appends phases and motion to a result under construction.
 class CycleBuilder {
   public:
+    // `kernel`: the dynamics after interpolation, or nullptr for the ideal axis.
     CycleBuilder(std::vector<PhaseRecord>& phases, std::vector<TimedSegment>& segments,
-                 std::array<double, kPhaseCount>& phase_time)
-        : phases_(phases), segments_(segments), phase_time_(phase_time) {}
+                 std::vector<AxisMotion>& motions, std::array<double, kPhaseCount>& phase_time,
+                 const AxisKernel* kernel)
+        : phases_(phases),
+          segments_(segments),
+          motions_(motions),
+          phase_time_(phase_time),
+          kernel_(kernel) {}
 
     double now() const { return t_; }
     double axis_mm() const { return axis_mm_; }
@@ -338,6 +373,7 @@ class CycleBuilder {
             const Segment& seg = plan.segments[i];
             const double dt = std::min(seg.duration_s, remaining);
             state.accel_mm_s2 = seg.accel_mm_s2;
+            if (seg.step_speed_mm_s >= 0.0) state.speed_mm_s = seg.step_speed_mm_s;
             KinematicState start = state;
             start.position_mm = 0.0;
             segments_.push_back({seg_t, dt, axis_mm_ + direction * state.position_mm, direction,
@@ -349,6 +385,27 @@ class CycleBuilder {
         motion_t_ = seg_t;
         axis_mm_ += direction * state.position_mm;
         return state.position_mm;
+    }
+
+    // A block's actual motion with dynamics, `duration_s` of it (to the
+    // in-position check); the next block starts where the command ended.
+    void add_filtered_motion(const AxisMotion& motion, double direction, double duration_s) {
+        motions_.push_back(motion);
+        add_filtered_motion(static_cast<int>(motions_.size() - 1), direction, duration_s);
+    }
+    // The same with a motion already in motions_.
+    void add_filtered_motion(int index, double direction, double duration_s) {
+        const AxisMotion& motion = motions_[static_cast<std::size_t>(index)];
+        TimedSegment segment;
+        segment.start_s = motion_t_;
+        segment.duration_s = duration_s;
+        segment.axis_start_mm = axis_mm_;
+        segment.direction = direction;
+        segment.touch = touch_;
+        segment.motion = index;
+        segments_.push_back(segment);
+        motion_t_ += duration_s;
+        axis_mm_ += direction * motion.command().end_state().position_mm;
     }
 
     std::size_t phase_count() const { return phases_.size(); }
@@ -384,6 +441,26 @@ class CycleBuilder {
     void add_move(Phase phase, const MotionLimits& limits, double distance_mm, double feed_mm_s,
                   double direction) {
         const SegmentPlan plan = plan_move(limits, distance_mm, feed_mm_s);
+        if (kernel_ != nullptr) {
+            // A feature repeats its moves (to and from the centre, across it):
+            // one motion serves every repeat.
+            for (const MoveMemo& memo : memo_) {
+                if (memo.distance_mm == distance_mm && memo.feed_mm_s == feed_mm_s) {
+                    add_filtered_motion(memo.motion, direction, memo.duration_s);
+                    add_phase(phase, memo.duration_s, distance_mm);
+                    return;
+                }
+            }
+            const AxisMotion motion = move_motion(*kernel_, plan);
+            const double duration = motion.in_position_time();
+            add_filtered_motion(motion, direction, duration);
+            if (memo_.size() < memo_.capacity()) {
+                memo_.push_back(
+                    {distance_mm, feed_mm_s, static_cast<int>(motions_.size() - 1), duration});
+            }
+            add_phase(phase, duration, distance_mm);
+            return;
+        }
         const double duration = plan.duration_s();
         add_motion(plan, direction, duration);
         add_phase(phase, duration, distance_mm);
@@ -396,6 +473,9 @@ class CycleBuilder {
     // triggers at the real, lower speed.
     TouchResult add_touch(const Scenario& scenario, const MotionLimits& limits, double feed_mm_s,
                           double distance_mm, const TouchPhases& names) {
+        if (kernel_ != nullptr) {
+            return add_filtered_touch(scenario, limits, feed_mm_s, distance_mm, names);
+        }
         const Machine& m = scenario.machine;
         const Probe& p = scenario.probe;
         const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
@@ -439,9 +519,97 @@ class CycleBuilder {
     }
 
   private:
+    // The touch with dynamics after interpolation (issue 11): the actual
+    // position touches and triggers; the control reacts after the trigger
+    // chain, the interpolator then stops its command (at once, or braking as
+    // its plan does), and the axis drains the filters and the servo lag. The
+    // overtravel is where it comes to rest, the command's end; the next block
+    // starts when the in-position check passes.
+    TouchResult add_filtered_touch(const Scenario& scenario, const MotionLimits& limits,
+                                   double feed_mm_s, double distance_mm, const TouchPhases& names) {
+        const Machine& m = scenario.machine;
+        const Probe& p = scenario.probe;
+        const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
+        const AxisMotion approach = approach_motion(*kernel_, plan);
+        const double lag = kernel_->moment(1);
+        const auto reach = [&](double position_mm) {
+            return approach.time_at_position(position_mm,
+                                             time_at_distance_s(plan, position_mm) + lag);
+        };
+        const double t_touch = reach(distance_mm);
+        // The trigger a pretravel later, near the touch at its speed.
+        const KinematicState touching = approach.state(t_touch);
+        const double t_trigger =
+            p.pretravel_mm <= 0.0 ? t_touch
+            : touching.speed_mm_s > 0.0
+                ? approach.time_at_position(distance_mm + p.pretravel_mm,
+                                            t_touch + p.pretravel_mm / touching.speed_mm_s)
+                : reach(distance_mm + p.pretravel_mm);
+        const double t_interface = t_trigger + p.interface_delay_s;
+        const double t_react = t_trigger + reaction_time_s(m, p);
+        const double t_record = t_interface + (m.latched_input ? 0.0 : m.scan_period_s);
+
+        AxisCommand command;
+        command.append(plan, t_react);
+        const KinematicState at_react_command = command.end_state();
+        const SegmentPlan stop =
+            plan_stop(limits, feed_mm_s, at_react_command.speed_mm_s, at_react_command.accel_mm_s2);
+        command.append(stop, stop.duration_s());
+        command.close();
+        const AxisMotion motion(*kernel_, command);
+        const double t_settle = std::max(motion.in_position_time(), t_react);
+        const double rest_mm = command.end_state().position_mm;
+
+        // (Before the reaction the command is the approach's.)
+        const KinematicState& at_touch = touching;
+        const KinematicState at_trigger = approach.state(t_trigger);
+        const KinematicState at_interface = motion.state(t_interface);
+        const KinematicState at_react = motion.state(t_react);
+        add_filtered_motion(motion, +1.0, t_settle);
+
+        add_phase(names.approach, t_touch, distance_mm);
+        add_phase(names.pretravel, t_trigger - t_touch, p.pretravel_mm);
+        add_phase(names.interface_delay, p.interface_delay_s,
+                  at_interface.position_mm - at_trigger.position_mm);
+        add_phase(names.controller_delay, t_react - t_interface,
+                  at_react.position_mm - at_interface.position_mm);
+        add_phase(names.deceleration, t_settle - t_react, rest_mm - at_react.position_mm);
+
+        TouchResult touch;
+        touch.programmed_feed_mm_s = feed_mm_s;
+        touch.touch_speed_mm_s = at_touch.speed_mm_s;
+        touch.trigger_speed_mm_s = at_trigger.speed_mm_s;
+        touch.react_speed_mm_s = at_react.speed_mm_s;
+        touch.overtravel_mm = rest_mm - distance_mm;
+        touch.recorded_mm = motion.state(t_record).position_mm - distance_mm;
+        touch.delay_travel_mm = motion.state(t_trigger + measurement_delay_s(m, p)).position_mm -
+                                at_trigger.position_mm;
+        return touch;
+    }
+
+    struct MoveMemo {
+        double distance_mm;
+        double feed_mm_s;
+        int motion;
+        double duration_s;
+    };
+    // A handful of distinct moves per cycle; fixed capacity, no allocation.
+    struct MemoList {
+        std::array<MoveMemo, 8> items{};
+        std::size_t count{0};
+        const MoveMemo* begin() const { return items.data(); }
+        const MoveMemo* end() const { return items.data() + count; }
+        std::size_t size() const { return count; }
+        std::size_t capacity() const { return items.size(); }
+        void push_back(const MoveMemo& m) { items[count++] = m; }
+    };
+    MemoList memo_;
+
     std::vector<PhaseRecord>& phases_;
     std::vector<TimedSegment>& segments_;
+    std::vector<AxisMotion>& motions_;
     std::array<double, kPhaseCount>& phase_time_;
+    const AxisKernel* kernel_;
     double t_{0.0};
     double motion_t_{0.0};
     double axis_mm_{0.0};
@@ -458,28 +626,27 @@ double backoff_reference_mm(const Cycle& cycle, const TouchResult& first) {
 // cycle that the backoff changes (domain.md, "Strategies"). The move runs from
 // the stop to `backoff_mm` in front of the reference; the second touch starts
 // `backoff_mm - reference` in front of the surface.
-double backoff_cost_s(const Scenario& scenario, const MotionLimits& limits, double backoff_mm,
-                      const TouchResult& first) {
+double backoff_cost_s(const Scenario& scenario, const MotionLimits& limits,
+                      const AxisKernel* kernel, double backoff_mm, const TouchResult& first) {
     const Cycle& c = scenario.cycle;
     const double reference = backoff_reference_mm(c, first);
     const double measure_v = mm_min_to_mm_s(c.measure_feed_mm_min);
-    const SegmentPlan approach = plan_accelerate(limits, measure_v, kOpenCruise_s);
-    return move_time_s(limits, backoff_mm + first.overtravel_mm - reference,
-                       mm_min_to_mm_s(c.return_feed_mm_min)) +
-           time_at_distance_s(approach, std::max(0.0, backoff_mm - reference));
+    return block_time_s(scenario, backoff_mm + first.overtravel_mm - reference,
+                        mm_min_to_mm_s(c.return_feed_mm_min)) +
+           approach_time_s(limits, kernel, measure_v, std::max(0.0, backoff_mm - reference));
 }
 
-void add_touch_warnings(const Scenario& scenario, const MotionLimits& limits,
-                        const TouchResult& touch, double distance_mm, int which,
+void add_touch_warnings(const Scenario& scenario, const TouchResult& touch, int which,
                         std::vector<Warning>& warnings) {
     const double v = touch.programmed_feed_mm_s;
-    if (distance_mm < reach_distance_mm(limits, v) && touch.trigger_speed_mm_s < v) {
-        // domain.md, "Acceleration models": a slower touch misses the delay
-        // travel calibrated at full feed, v * tau. Issue 11: the axis keeps
-        // accelerating while the signal travels, so the travel it makes is
-        // that of its real speed through tau, not v_t * tau.
-        const double error =
-            v * measurement_delay_s(scenario.machine, scenario.probe) - touch.delay_travel_mm;
+    if (touch.trigger_speed_mm_s >= v) return;
+    // domain.md, "Acceleration models": a slower touch misses the delay
+    // travel calibrated at full feed, v * tau. Issue 11: the axis keeps
+    // accelerating while the signal travels, so the travel it makes is
+    // that of its real speed through tau, not v_t * tau.
+    const double error =
+        v * measurement_delay_s(scenario.machine, scenario.probe) - touch.delay_travel_mm;
+    if (error > kAccelErrorTolerance_mm) {
         warnings.push_back({WarningCode::touch_while_accelerating, Severity::warning,
                             touch.trigger_speed_mm_s, v, error, static_cast<double>(which)});
     }
@@ -504,12 +671,44 @@ CycleState CycleResult::state_at(double t_s) const {
     auto seg_it = std::upper_bound(segments_.begin(), segments_.end(), t,
                                    [](double v, const TimedSegment& s) { return v < s.start_s; });
     const TimedSegment& seg = seg_it == segments_.begin() ? segments_.front() : *(seg_it - 1);
+    if (seg.motion >= 0) {
+        const KinematicState k = motions_[static_cast<std::size_t>(seg.motion)].state(
+            std::min(t - seg.start_s, seg.duration_s));
+        state.position_mm = seg.axis_start_mm + seg.direction * k.position_mm;
+        state.velocity_mm_s = seg.direction * k.speed_mm_s;
+        state.path_speed_mm_s = k.speed_mm_s;
+        return state;
+    }
     const KinematicState k =
         integrate(std::min(t - seg.start_s, seg.duration_s), seg.start, seg.jerk_mm_s3);
     state.position_mm = seg.axis_start_mm + seg.direction * k.position_mm;
     state.velocity_mm_s = seg.direction * k.speed_mm_s;
     state.path_speed_mm_s = k.speed_mm_s;
     return state;
+}
+
+double block_time_s(const Scenario& scenario, double distance_mm, double feed_mm_s) {
+    const MotionLimits limits = scenario.motion_limits();
+    const AxisKernel kernel(scenario.axis_dynamics());
+    if (!kernel.active()) return move_time_s(limits, distance_mm, feed_mm_s);
+    return move_motion(kernel, plan_move(limits, distance_mm, feed_mm_s)).in_position_time();
+}
+
+double approach_room_mm(const Scenario& scenario, double feed_mm_s) {
+    const MotionLimits limits = scenario.motion_limits();
+    const AxisKernel kernel(scenario.axis_dynamics());
+    if (!kernel.active()) return reach_distance_mm(limits, feed_mm_s);
+    // The error of a touch at speed v - dv is at most dv * tau (the speed
+    // still rises through the delay tau), so the feed counts as reached when
+    // the deficit is under the tolerance / tau.
+    const double tau = measurement_delay_s(scenario.machine, scenario.probe);
+    if (tau <= 0.0) return 0.0;
+    const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
+    const AxisMotion motion = approach_motion(kernel, plan);
+    const double t = motion.time_at_speed_deficit(
+        kAccelErrorTolerance_mm / tau,
+        reach_time_s(limits, feed_mm_s) + kernel.window_s() + kernel.lag_time_s());
+    return motion.state(t).position_mm;
 }
 
 CycleResult evaluate(const Scenario& scenario) {
@@ -521,6 +720,7 @@ CycleResult evaluate(const Scenario& scenario) {
 void evaluate_into(const Scenario& scenario, CycleResult& r) {
     r.phases_.clear();
     r.segments_.clear();
+    r.motions_.clear();
     r.warnings_.clear();
     r.phase_time_s_.fill(0.0);
 
@@ -536,7 +736,9 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     const bool two_touch = c.strategy == Strategy::two_touch;
     const int touches = touch_count(c.feature);
 
-    CycleBuilder b(r.phases_, r.segments_, r.phase_time_s_);
+    const AxisKernel kernel(scenario.axis_dynamics());
+    const AxisKernel* dynamics = active_kernel(kernel);
+    CycleBuilder b(r.phases_, r.segments_, r.motions_, r.phase_time_s_, dynamics);
     // Issue 11, loose end 6: a feature's moves are protected, at the positioning
     // feed, from the centre (above it for a boss or web, which lifts over the
     // wall at the rapid feed, away from the part).
@@ -567,11 +769,11 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
                    -1.0);
         const double second_distance = std::max(0.0, c.backoff_mm - reference);
         measuring = b.add_touch(scenario, limits, measure_v, second_distance, kSecondTouch);
-        add_touch_warnings(scenario, limits, measuring, second_distance, 1, r.warnings_);
+        add_touch_warnings(scenario, measuring, 1, r.warnings_);
     }
     // domain.md, "Return": back to the start position, s + overtravel.
     b.add_move(Phase::return_move, limits, b.axis_mm(), return_v, -1.0);
-    add_touch_warnings(scenario, limits, first, s, 0, r.warnings_);
+    add_touch_warnings(scenario, first, 0, r.warnings_);
     r.first_ = first;
     r.measuring_ = measuring;
 
@@ -608,7 +810,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     // Issue 11: measured from the backoff's reference, and the second touch
     // also needs room to reach the measuring feed before it touches.
     r.recommended_backoff_mm_ = backoff_reference_mm(c, r.first_) +
-                                std::max(p.reseat_mm, reach_distance_mm(limits, measure_v));
+                                std::max(p.reseat_mm, approach_room_mm(scenario, measure_v));
 
     // Touches of one cycle differ only in direction, so touch 0 speaks for all.
     std::vector<Warning>& w = r.warnings_;
@@ -630,8 +832,8 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
         } else if (c.backoff_mm - recommended > std::max(0.1 * recommended, 0.05)) {
             // Excess beyond 10 % (at least 0.05 mm) of the recommendation is reported.
             const double wasted =
-                touches * (backoff_cost_s(scenario, limits, c.backoff_mm, r.first_) -
-                           backoff_cost_s(scenario, limits, recommended, r.first_));
+                touches * (backoff_cost_s(scenario, limits, dynamics, c.backoff_mm, r.first_) -
+                           backoff_cost_s(scenario, limits, dynamics, recommended, r.first_));
             w.push_back(
                 {WarningCode::backoff_excess, Severity::info, c.backoff_mm, recommended, wasted});
         }

@@ -11,6 +11,7 @@
 
 #include "core/common/message.h"
 #include "core/common/severity.h"
+#include "core/cycle/dynamics.h"
 #include "core/cycle/motion.h"
 #include "core/cycle/scenario.h"
 
@@ -109,6 +110,10 @@ struct TimedSegment {
     KinematicState start{};     // path state at start (position 0)
     double jerk_mm_s3{0.0};
     int touch{0};
+    // With dynamics after interpolation (issue 11): the block's actual motion
+    // is CycleResult::motions()[motion] at (t - start_s); start and jerk are
+    // then unused. -1: the constant-jerk piece above.
+    int motion{-1};
 };
 
 struct TouchResult {
@@ -150,6 +155,7 @@ class CycleResult {
     const TouchResult& measuring_touch() const { return measuring_; }
     const std::vector<Warning>& warnings() const { return warnings_; }
     const std::vector<TimedSegment>& segments() const { return segments_; }
+    const std::vector<AxisMotion>& motions() const { return motions_; }
     // Issue 11: false when the cycle as set cannot run as modelled, which an
     // error says: backoff_too_small (the second touch would start with the
     // stylus still deflected) or overtravel_limit at or over the limit (the
@@ -165,6 +171,7 @@ class CycleResult {
     friend void evaluate_into(const Scenario&, CycleResult&);
     std::vector<PhaseRecord> phases_;
     std::vector<TimedSegment> segments_;
+    std::vector<AxisMotion> motions_;
     std::vector<Warning> warnings_;
     std::array<double, kPhaseCount> phase_time_s_{};
     double total_s_{0.0};
@@ -193,6 +200,22 @@ double measurement_delay_s(const Machine& machine, const Probe& probe);
 // (v - v_cal) * measurement_delay_s.
 double speed_error_mm(const Machine& machine, const Probe& probe, double speed_mm_s,
                       double calibrated_speed_mm_s);
+
+// A touch while accelerating is reported when its error is over this (0.1 µm):
+// below it the axis counts as at its feed (filters and a servo lag approach
+// the feed only exponentially).
+constexpr double kAccelErrorTolerance_mm = 1e-4;
+
+// The scenario's axis: the interpolator's plans (motion.h) and, when the
+// machine has them, its dynamics after interpolation (dynamics.h).
+// Time of a rest-to-rest move: the plan's, or until the in-position check
+// passes.
+double block_time_s(const Scenario& scenario, double distance_mm, double feed_mm_s);
+// Distance a touch from rest needs to reach `feed_mm_s`: the plan's ramp
+// (reach_distance_mm), or with dynamics the actual travel until the speed is
+// close enough to the feed that a touch there errs less than
+// kAccelErrorTolerance_mm.
+double approach_room_mm(const Scenario& scenario, double feed_mm_s);
 
 // Evaluates the cycle: phases, overtravel, uncertainty, warnings that need no
 // sweep (all but feed_beyond_knee; see analyse() in sweep.h). Assumes a valid

@@ -66,12 +66,15 @@ std::string evaluation_to_json(const Analysis& analysis) {
     return out.dump(2) + "\n";
 }
 
-std::string move_to_json(const MotionLimits& limits, double distance_mm, double feed_mm_min) {
+std::string move_to_json(const Scenario& scenario, double distance_mm, double feed_mm_min) {
+    const MotionLimits limits = scenario.motion_limits();
     const double v = mm_min_to_mm_s(feed_mm_min);
     Json out = Json::object();
-    out["time_s"] = move_time_s(limits, distance_mm, v);
+    out["time_s"] = block_time_s(scenario, distance_mm, v);
+    out["command_time_s"] = move_time_s(limits, distance_mm, v);
     out["peak_speed_mm_min"] = mm_s_to_mm_min(move_peak_speed_mm_s(limits, distance_mm, v));
     out["accel_model"] = to_string(limits.model);
+    out["filter"] = to_string(scenario.machine.filter);
     return out.dump(2) + "\n";
 }
 
@@ -137,12 +140,12 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
                        const SweepResult& sweep) {
     const CycleResult& r = analysis.cycle;
     std::string csv = "# scenario\nkey,value,unit\n";
-    csv += std::string("machine.accel_model,") + to_string(scenario.machine.accel_model) + ",\n";
-    csv += std::string("machine.latched_input,") +
-           (scenario.machine.latched_input ? "true" : "false") + ",\n";
-    csv += std::string("cycle.strategy,") + to_string(scenario.cycle.strategy) + ",\n";
-    csv += std::string("cycle.feature,") + to_string(scenario.cycle.feature) + ",\n";
-    csv += std::string("cycle.backoff_from,") + to_string(scenario.cycle.backoff_from) + ",\n";
+    // The words and flags first, then the numbers, each in the key table's order.
+    for (const KeyInfo& key : scenario_keys()) {
+        if (key.kind != KeyKind::number) {
+            csv += std::string(key.key) + ',' + value_text(scenario, key) + ",\n";
+        }
+    }
     for (const KeyInfo& key : numeric_keys()) {
         csv += std::string(key.key) + ',' + number(*get_number(scenario, key.key)) + ',' +
                key.unit + '\n';

@@ -18,9 +18,11 @@ namespace probecycle {
 // `probecycle-cli evaluate` output: cycle_time_s, overtravel_mm, ... phases, warnings.
 std::string evaluation_to_json(const Analysis& analysis);
 
-// `probecycle-cli move`: time_s, peak_speed_mm_min, accel_model of one
-// rest-to-rest move (distance in mm, feed in mm/min).
-std::string move_to_json(const MotionLimits& limits, double distance_mm, double feed_mm_min);
+// `probecycle-cli move`: time_s (to the in-position check with dynamics
+// after interpolation), the interpolator's command_time_s, peak_speed_mm_min
+// (commanded), accel_model and filter of one rest-to-rest move of the
+// scenario's axis (distance in mm, feed in mm/min).
+std::string move_to_json(const Scenario& scenario, double distance_mm, double feed_mm_min);
 // `probecycle-cli montecarlo`: the options and the histogram.
 std::string monte_carlo_to_json(const MonteCarloOptions& options, const Histogram& histogram);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 // Formulas: domain.md, "Acceleration models". The jerk-limited rest-to-rest
 // profile is the time-optimal one for symmetric limits: the acceleration phase
@@ -24,6 +25,20 @@ void SegmentPlan::push(double duration_s, double accel_mm_s2, double jerk_mm_s3)
     segments[count++] = {duration_s, accel_mm_s2, jerk_mm_s3};
 }
 
+void SegmentPlan::push_step(double duration_s, double speed_mm_s) {
+    if (duration_s <= 0.0 || count == segments.size()) return;
+    segments[count++] = {duration_s, 0.0, 0.0, speed_mm_s};
+}
+
+namespace {
+// The state where segment `seg` starts, from the state where the last ended.
+KinematicState enter(KinematicState state, const Segment& seg) {
+    state.accel_mm_s2 = seg.accel_mm_s2;
+    if (seg.step_speed_mm_s >= 0.0) state.speed_mm_s = seg.step_speed_mm_s;
+    return state;
+}
+}  // namespace
+
 double SegmentPlan::duration_s() const {
     double total = 0.0;
     for (std::size_t i = 0; i < count; ++i) total += segments[i].duration_s;
@@ -33,8 +48,8 @@ double SegmentPlan::duration_s() const {
 KinematicState SegmentPlan::end_state(const KinematicState& start) const {
     KinematicState state = start;
     for (std::size_t i = 0; i < count; ++i) {
-        state.accel_mm_s2 = segments[i].accel_mm_s2;
-        state = integrate(segments[i].duration_s, state, segments[i].jerk_mm_s3);
+        state =
+            integrate(segments[i].duration_s, enter(state, segments[i]), segments[i].jerk_mm_s3);
     }
     return state;
 }
@@ -43,7 +58,7 @@ KinematicState SegmentPlan::state_at(double t_s, const KinematicState& start) co
     KinematicState state = start;
     double remaining = std::max(t_s, 0.0);
     for (std::size_t i = 0; i < count; ++i) {
-        state.accel_mm_s2 = segments[i].accel_mm_s2;
+        state = enter(state, segments[i]);
         if (remaining <= segments[i].duration_s) {
             return integrate(remaining, state, segments[i].jerk_mm_s3);
         }
@@ -58,6 +73,7 @@ double effective_accel_mm_s2(const MotionLimits& limits, double feed_mm_s) {
     // Time constant: "the control chooses the acceleration so that the
     // programmed feed is reached in T seconds whatever the feed: a = v/T".
     if (limits.model == AccelModel::time_constant) return feed_mm_s / limits.time_constant_s;
+    if (limits.model == AccelModel::none) return std::numeric_limits<double>::infinity();
     return limits.max_accel_mm_s2;
 }
 
@@ -99,6 +115,7 @@ void push_jerk_ramp(SegmentPlan& plan, double v, double a, double j, double sign
 }  // namespace
 
 double reach_time_s(const MotionLimits& limits, double feed_mm_s) {
+    if (limits.model == AccelModel::none) return 0.0;
     if (limits.model == AccelModel::jerk_limited) {
         return jerk_reach_time_s(feed_mm_s, limits.max_accel_mm_s2, limits.max_jerk_mm_s3);
     }
@@ -125,6 +142,7 @@ struct MoveShape {
 MoveShape move_shape(const MotionLimits& limits, double distance_mm, double feed_mm_s) {
     if (distance_mm <= 0.0) return {};
     const double v = feed_mm_s;
+    if (limits.model == AccelModel::none) return {v, 0.0, distance_mm / v};
     if (limits.model == AccelModel::jerk_limited) {
         const double a = limits.max_accel_mm_s2;
         const double j = limits.max_jerk_mm_s3;
@@ -155,7 +173,9 @@ SegmentPlan plan_move(const MotionLimits& limits, double distance_mm, double fee
     SegmentPlan plan;
     const MoveShape shape = move_shape(limits, distance_mm, feed_mm_s);
     if (shape.peak_mm_s <= 0.0) return plan;
-    if (limits.model == AccelModel::jerk_limited) {
+    if (limits.model == AccelModel::none) {
+        plan.push_step(shape.cruise_s, shape.peak_mm_s);
+    } else if (limits.model == AccelModel::jerk_limited) {
         push_jerk_ramp(plan, shape.peak_mm_s, limits.max_accel_mm_s2, limits.max_jerk_mm_s3, +1.0);
         plan.push(shape.cruise_s, 0.0, 0.0);
         push_jerk_ramp(plan, shape.peak_mm_s, limits.max_accel_mm_s2, limits.max_jerk_mm_s3, -1.0);
@@ -170,6 +190,10 @@ SegmentPlan plan_move(const MotionLimits& limits, double distance_mm, double fee
 
 SegmentPlan plan_accelerate(const MotionLimits& limits, double feed_mm_s, double cruise_s) {
     SegmentPlan plan;
+    if (limits.model == AccelModel::none) {
+        plan.push_step(cruise_s, feed_mm_s);
+        return plan;
+    }
     if (limits.model == AccelModel::jerk_limited) {
         push_jerk_ramp(plan, feed_mm_s, limits.max_accel_mm_s2, limits.max_jerk_mm_s3, +1.0);
     } else {
@@ -192,6 +216,8 @@ double speed_after_mm_s(const MotionLimits& limits, double feed_mm_s, double dis
 SegmentPlan plan_stop(const MotionLimits& limits, double feed_mm_s, double speed_mm_s,
                       double accel_mm_s2) {
     SegmentPlan plan;
+    // none: the command stops at once (an empty plan; the speed steps to 0).
+    if (limits.model == AccelModel::none) return plan;
     if (speed_mm_s <= 0.0 && accel_mm_s2 <= 0.0) return plan;
     if (limits.model != AccelModel::jerk_limited) {
         // The acceleration switches at once to the braking value.
@@ -218,7 +244,7 @@ SegmentPlan plan_stop(const MotionLimits& limits, double feed_mm_s, double speed
 }
 
 double stop_time_s(const MotionLimits& limits, double feed_mm_s, double speed_mm_s) {
-    if (speed_mm_s <= 0.0) return 0.0;
+    if (speed_mm_s <= 0.0 || limits.model == AccelModel::none) return 0.0;
     if (limits.model == AccelModel::jerk_limited) {
         return jerk_reach_time_s(speed_mm_s, limits.max_accel_mm_s2, limits.max_jerk_mm_s3);
     }
@@ -237,7 +263,7 @@ double time_at_distance_s(const SegmentPlan& plan, double distance_mm) {
     double t0 = 0.0;
     for (std::size_t i = 0; i < plan.count; ++i) {
         const Segment& seg = plan.segments[i];
-        state.accel_mm_s2 = seg.accel_mm_s2;
+        state = enter(state, seg);
         const KinematicState end = integrate(seg.duration_s, state, seg.jerk_mm_s3);
         if (end.position_mm >= distance_mm) {
             const double rest = distance_mm - state.position_mm;
@@ -284,6 +310,8 @@ const char* to_string(AccelModel model) {
             return "constant_accel";
         case AccelModel::jerk_limited:
             return "jerk_limited";
+        case AccelModel::none:
+            return "none";
     }
     return "?";
 }

@@ -11,7 +11,11 @@
 
 namespace probecycle {
 
-enum class AccelModel { time_constant, constant_accel, jerk_limited };
+// none (issue 11): the interpolator commands the feed at once and stops at
+// once, as on a skip block without acceleration (Mitsubishi G31 without
+// acc/dec); what smooths the motion then is the filter after interpolation
+// and the servo (dynamics.h).
+enum class AccelModel { time_constant, constant_accel, jerk_limited, none };
 
 struct MotionLimits {
     AccelModel model{AccelModel::time_constant};
@@ -36,6 +40,9 @@ struct Segment {
     double duration_s{0.0};
     double accel_mm_s2{0.0};
     double jerk_mm_s3{0.0};
+    // AccelModel::none: the speed steps to this value where the segment
+    // starts (negative: continuous, the usual case).
+    double step_speed_mm_s{-1.0};
 };
 
 // At most seven segments (the S-curve); fewer for the other models.
@@ -44,6 +51,8 @@ struct SegmentPlan {
     std::size_t count{0};
 
     void push(double duration_s, double accel_mm_s2, double jerk_mm_s3);
+    // A constant-speed segment entered with a step of the speed (model none).
+    void push_step(double duration_s, double speed_mm_s);
     double duration_s() const;
     // End state after all segments, starting from `start`.
     KinematicState end_state(const KinematicState& start = {}) const;

@@ -15,7 +15,9 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 constexpr std::array kAccelModels = {AccelModel::time_constant, AccelModel::constant_accel,
-                                     AccelModel::jerk_limited};
+                                     AccelModel::jerk_limited, AccelModel::none};
+constexpr std::array kFilterKinds = {FilterKind::none, FilterKind::linear, FilterKind::exponential,
+                                     FilterKind::bell};
 constexpr std::array kStrategies = {Strategy::single_touch, Strategy::two_touch};
 constexpr std::array kBackoffFroms = {BackoffFrom::stop, BackoffFrom::trigger};
 constexpr std::array kFeatures = {Feature::surface, Feature::web, Feature::pocket, Feature::bore,
@@ -82,10 +84,13 @@ const std::vector<KeyEntry>& key_table() {
         word(
             {"machine.accel_model", "", 0.0, 0.0,
              QT_TRANSLATE_NOOP("Parameter",
-                               "How the control accelerates: a time constant (a = v/T, common "
-                               "on many controls), a constant acceleration, or a jerk-limited "
-                               "S-curve. Sets every move time and the braking distance after "
-                               "the trigger."),
+                               "How the control accelerates before interpolation: a time "
+                               "constant (a = v/T, common on many controls), a constant "
+                               "acceleration, a jerk-limited S-curve, or none (the feed is "
+                               "commanded at once and stopped at once, as on a skip block "
+                               "without acc/dec; then the filter after interpolation and the "
+                               "servo shape the motion). Sets every move time and the braking "
+                               "distance after the trigger."),
              QT_TRANSLATE_NOOP("Parameter", "Acceleration model"), KeyKind::word},
             enum_words<AccelModel>(kAccelModels),
             [](const Scenario& s) { return std::string(to_string(s.machine.accel_model)); },
@@ -116,6 +121,51 @@ const std::vector<KeyEntry>& key_table() {
                     "lengthens every acceleration and the braking after the trigger."),
                 QT_TRANSLATE_NOOP("Parameter", "Max. jerk")},
                PC_NUMBER(machine, max_jerk_mm_s3)),
+        word(
+            {"machine.filter", "", 0.0, 0.0,
+             QT_TRANSLATE_NOOP(
+                 "Parameter",
+                 "Acc/dec filter after interpolation: none, linear (a moving average of the "
+                 "commanded speed over the filter time), exponential (first order, time "
+                 "constant = the filter time) or bell (two moving averages, the filter time and "
+                 "the second filter time). After the trigger the axis drains it: v*T/2 more "
+                 "(linear), v*T (exponential), v*(T1+T2)/2 (bell)."),
+             QT_TRANSLATE_NOOP("Parameter", "Filter after interpolation"), KeyKind::word},
+            enum_words<FilterKind>(kFilterKinds),
+            [](const Scenario& s) { return std::string(to_string(s.machine.filter)); },
+            [](Scenario& s, std::string_view w) {
+                return set_from(s.machine.filter, filter_kind_from_string(w));
+            }),
+        number({"machine.filter_time_s", "s", 0.0005, 1.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Time of the filter after interpolation: the linear filter's window, the "
+                    "exponential filter's time constant, or the bell filter's first window "
+                    "(Fanuc: the cutting-feed acc/dec time constant)."),
+                QT_TRANSLATE_NOOP("Parameter", "Filter time")},
+               PC_NUMBER(machine, filter_time_s)),
+        number({"machine.filter2_time_s", "s", 0.0005, 1.0,
+                QT_TRANSLATE_NOOP("Parameter",
+                                  "Second window of the bell filter after interpolation (the "
+                                  "S-shaping time)."),
+                QT_TRANSLATE_NOOP("Parameter", "Second filter time")},
+               PC_NUMBER(machine, filter2_time_s)),
+        number({"machine.servo_time_constant_s", "s", 0.0, 0.5,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Servo time constant Tp = 1/Kv (position loop gain): the axis trails the "
+                    "command by v*Tp and, after the command stops, travels that much more. 0 = "
+                    "the axis follows the command exactly."),
+                QT_TRANSLATE_NOOP("Parameter", "Servo time constant")},
+               PC_NUMBER(machine, servo_time_constant_s)),
+        number({"machine.in_position_mm", "mm", 0.0001, 1.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "In-position width: with a filter or a servo lag, a move counts as done "
+                    "when the axis is within this of its commanded end, and the next move "
+                    "starts then. The overtravel is still where the axis comes to rest."),
+                QT_TRANSLATE_NOOP("Parameter", "In-position width")},
+               PC_NUMBER(machine, in_position_mm)),
         number(
             {"machine.rapid_feed_mm_min", "mm/min", 100.0, 200000.0,
              QT_TRANSLATE_NOOP(
@@ -402,6 +452,11 @@ constexpr std::size_t kMaxJsonDepth = 4;
 MotionLimits Scenario::motion_limits() const {
     return {machine.accel_model, machine.time_constant_s, machine.max_accel_mm_s2,
             machine.max_jerk_mm_s3};
+}
+
+AxisDynamics Scenario::axis_dynamics() const {
+    return {machine.filter, machine.filter_time_s, machine.filter2_time_s,
+            machine.servo_time_constant_s, machine.in_position_mm};
 }
 
 namespace {
@@ -703,6 +758,13 @@ std::optional<Feature> feature_from_string(std::string_view word) {
 std::optional<AccelModel> accel_model_from_string(std::string_view word) {
     for (AccelModel m : kAccelModels) {
         if (word == to_string(m)) return m;
+    }
+    return std::nullopt;
+}
+
+std::optional<FilterKind> filter_kind_from_string(std::string_view word) {
+    for (FilterKind k : kFilterKinds) {
+        if (word == to_string(k)) return k;
     }
     return std::nullopt;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/common/field_error.h"
+#include "core/cycle/dynamics.h"
 #include "core/cycle/motion.h"
 
 namespace probecycle {
@@ -27,6 +28,12 @@ struct Machine {
     double time_constant_s{0.06};
     double max_accel_mm_s2{2000.0};
     double max_jerk_mm_s3{40000.0};
+    // Dynamics after interpolation (issue 11); none and 0 = the ideal axis.
+    FilterKind filter{FilterKind::none};
+    double filter_time_s{0.03};
+    double filter2_time_s{0.01};
+    double servo_time_constant_s{0.0};
+    double in_position_mm{0.01};
     double rapid_feed_mm_min{30000.0};
     double scan_period_s{0.004};
     double controller_latency_s{0.002};
@@ -74,6 +81,7 @@ struct Scenario {
     Cycle cycle;
 
     MotionLimits motion_limits() const;
+    AxisDynamics axis_dynamics() const;
 };
 
 class ScenarioError : public std::runtime_error {
@@ -144,5 +152,6 @@ std::optional<Strategy> strategy_from_string(std::string_view word);
 std::optional<BackoffFrom> backoff_from_from_string(std::string_view word);
 std::optional<Feature> feature_from_string(std::string_view word);
 std::optional<AccelModel> accel_model_from_string(std::string_view word);
+std::optional<FilterKind> filter_kind_from_string(std::string_view word);
 
 }  // namespace probecycle

@@ -707,10 +707,6 @@
         <translation>Постоянная T</translation>
     </message>
     <message>
-        <source>How the control accelerates: a time constant (a = v/T, common on many controls), a constant acceleration, or a jerk-limited S-curve. Sets every move time and the braking distance after the trigger.</source>
-        <translation>Как разгоняется ЧПУ: с постоянной времени (a = v/T, распространено), с постоянным ускорением или по S-кривой с ограничением рывка. Определяет время каждого перемещения и тормозной путь после срабатывания.</translation>
-    </message>
-    <message>
         <source>Acceleration model</source>
         <translation>Модель разгона</translation>
     </message>
@@ -793,6 +789,74 @@
     <message>
         <source>Clearance height</source>
         <translation>Высота безопасного подъёма</translation>
+    </message>
+    <message>
+        <source>How the control accelerates before interpolation: a time constant (a = v/T, common on many controls), a constant acceleration, a jerk-limited S-curve, or none (the feed is commanded at once and stopped at once, as on a skip block without acc/dec; then the filter after interpolation and the servo shape the motion). Sets every move time and the braking distance after the trigger.</source>
+        <translation>Как система ЧПУ разгоняет ось до интерполяции: постоянная времени (a = v/T, распространена на многих системах), постоянное ускорение, S-кривая с ограничением рывка или без разгона (подача задаётся сразу и снимается сразу, как в кадре пропуска без разгона/торможения; тогда движение формируют фильтр после интерполяции и сервопривод). Определяет время каждого перемещения и тормозной путь после срабатывания.</translation>
+    </message>
+    <message>
+        <source>Acc/dec filter after interpolation: none, linear (a moving average of the commanded speed over the filter time), exponential (first order, time constant = the filter time) or bell (two moving averages, the filter time and the second filter time). After the trigger the axis drains it: v*T/2 more (linear), v*T (exponential), v*(T1+T2)/2 (bell).</source>
+        <translation>Фильтр разгона/торможения после интерполяции: нет, линейный (скользящее среднее заданной скорости за время фильтра), экспоненциальный (первого порядка, постоянная времени = время фильтра) или колоколообразный (два скользящих средних: время фильтра и второе время фильтра). После срабатывания ось дорабатывает фильтр: ещё v*T/2 (линейный), v*T (экспоненциальный), v*(T1+T2)/2 (колоколообразный).</translation>
+    </message>
+    <message>
+        <source>Filter after interpolation</source>
+        <translation>Фильтр после интерполяции</translation>
+    </message>
+    <message>
+        <source>Time of the filter after interpolation: the linear filter&apos;s window, the exponential filter&apos;s time constant, or the bell filter&apos;s first window (Fanuc: the cutting-feed acc/dec time constant).</source>
+        <translation>Время фильтра после интерполяции: окно линейного фильтра, постоянная времени экспоненциального или первое окно колоколообразного (Fanuc: постоянная времени разгона/торможения рабочей подачи).</translation>
+    </message>
+    <message>
+        <source>Filter time</source>
+        <translation>Время фильтра</translation>
+    </message>
+    <message>
+        <source>Second window of the bell filter after interpolation (the S-shaping time).</source>
+        <translation>Второе окно колоколообразного фильтра после интерполяции (время S-сглаживания).</translation>
+    </message>
+    <message>
+        <source>Second filter time</source>
+        <translation>Второе время фильтра</translation>
+    </message>
+    <message>
+        <source>Servo time constant Tp = 1/Kv (position loop gain): the axis trails the command by v*Tp and, after the command stops, travels that much more. 0 = the axis follows the command exactly.</source>
+        <translation>Постоянная времени сервопривода Tp = 1/Kv (коэффициент контура положения): ось отстаёт от задания на v*Tp и после остановки задания проходит ещё столько же. 0 — ось точно следует заданию.</translation>
+    </message>
+    <message>
+        <source>Servo time constant</source>
+        <translation>Постоянная времени сервопривода</translation>
+    </message>
+    <message>
+        <source>In-position width: with a filter or a servo lag, a move counts as done when the axis is within this of its commanded end, and the next move starts then. The overtravel is still where the axis comes to rest.</source>
+        <translation>Зона контроля достижения позиции: при фильтре или запаздывании сервопривода перемещение считается завершённым, когда ось ближе этой величины к заданному концу, и тогда начинается следующее. Перебег по-прежнему считается до точки, где ось останавливается.</translation>
+    </message>
+    <message>
+        <source>In-position width</source>
+        <translation>Зона достижения позиции</translation>
+    </message>
+    <message>
+        <source>ideal servo</source>
+        <translation>идеальный привод</translation>
+    </message>
+    <message>
+        <source>None (feed at once)</source>
+        <translation>Нет (подача сразу)</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Нет</translation>
+    </message>
+    <message>
+        <source>Linear (moving average)</source>
+        <translation>Линейный (ср. за окно)</translation>
+    </message>
+    <message>
+        <source>Exponential</source>
+        <translation>Экспоненциальный</translation>
+    </message>
+    <message>
+        <source>Bell (two averages)</source>
+        <translation>Колокол (2 средних)</translation>
     </message>
 </context>
 <context>
@@ -2048,10 +2112,6 @@
         <translation>Стандартный вход пропуска (опрос 4 мс)</translation>
     </message>
     <message>
-        <source>A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms). Typical values: replace them with your machine&apos;s.</source>
-        <translation>Вход пропуска с опросом каждые 4 мс и задержкой 2 мс на станке с постоянной времени (T = 60 мс). Типовые значения: замените их значениями вашего станка.</translation>
-    </message>
-    <message>
         <source>High-speed skip input (4 µs scan)</source>
         <translation>Быстрый вход пропуска (опрос 4 мкс)</translation>
     </message>
@@ -2206,10 +2266,6 @@
     <message>
         <source>&amp;Presets</source>
         <translation>П&amp;редустановки</translation>
-    </message>
-    <message>
-        <source>&amp;Machine (skip input)</source>
-        <translation>&amp;Станок (вход пропуска)</translation>
     </message>
     <message>
         <source>P&amp;robe class</source>
@@ -2408,6 +2464,38 @@
     <message>
         <source>Comparison</source>
         <translation>Сравнение</translation>
+    </message>
+    <message>
+        <source>A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms) without a filter after interpolation or servo lag. Typical values: replace them with your machine&apos;s.</source>
+        <translation>Вход пропуска с опросом каждые 4 мс и задержкой 2 мс на станке с постоянной времени (T = 60 мс), без фильтра после интерполяции и без запаздывания сервопривода. Типичные значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>Fanuc-type: exponential acc/dec after interpolation + servo</source>
+        <translation>Типа Fanuc: экспоненциальный разгон/торможение после интерполяции + сервопривод</translation>
+    </message>
+    <message>
+        <source>The skip feed is commanded at once and smoothed after interpolation by an exponential filter (32 ms), then a servo lag (33 ms); 20 ms from trigger to reaction with the probe&apos;s 2 ms. Overtravel at cruise: F/60 × (20 + Tc + Ts) / 1000 mm. Typical values: replace them with your machine&apos;s.</source>
+        <translation>Подача пропуска задаётся сразу и сглаживается после интерполяции экспоненциальным фильтром (32 мс), затем запаздывание сервопривода (33 мс); 20 мс от срабатывания до реакции вместе с 2 мс щупа. Перебег на установившейся подаче: F/60 × (20 + Tc + Ts) / 1000 мм. Типичные значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>Mitsubishi-type: G31 without acc/dec</source>
+        <translation>Типа Mitsubishi: G31 без разгона/торможения</translation>
+    </message>
+    <message>
+        <source>The skip block moves without acceleration: the command starts and stops at once and only the servo lag (Tp = 30 ms) smooths it; 5 ms response delay with the probe&apos;s 2 ms, 1 ms scan. Overtravel: F/60 × (Tp + t1 ± t2). Typical values: replace them with your machine&apos;s.</source>
+        <translation>Кадр пропуска выполняется без разгона: задание начинается и прекращается сразу, сглаживает его только запаздывание сервопривода (Tp = 30 мс); задержка отклика 5 мс вместе с 2 мс щупа, опрос 1 мс. Перебег: F/60 × (Tp + t1 ± t2). Типичные значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>Linear acc/dec after interpolation</source>
+        <translation>Линейный разгон/торможение после интерполяции</translation>
+    </message>
+    <message>
+        <source>The feed is commanded at once and averaged over 64 ms after interpolation, then a 20 ms servo lag: a touch during the ramp does not brake at once. Typical values: replace them with your machine&apos;s.</source>
+        <translation>Подача задаётся сразу и усредняется за 64 мс после интерполяции, затем запаздывание сервопривода 20 мс: касание во время разгона не тормозит ось сразу. Типичные значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>&amp;Machine (skip input, control)</source>
+        <translation>&amp;Станок (вход пропуска, ЧПУ)</translation>
     </message>
 </context>
 <context>

@@ -707,10 +707,6 @@
         <translation>时间常数 (T)</translation>
     </message>
     <message>
-        <source>How the control accelerates: a time constant (a = v/T, common on many controls), a constant acceleration, or a jerk-limited S-curve. Sets every move time and the braking distance after the trigger.</source>
-        <translation>数控系统的加速方式：时间常数（a = v/T，许多系统常用）、恒加速度，或限加加速度的 S 曲线。它决定每次移动的时间以及触发后的制动距离。</translation>
-    </message>
-    <message>
         <source>Acceleration model</source>
         <translation>加速模型</translation>
     </message>
@@ -793,6 +789,74 @@
     <message>
         <source>Clearance height</source>
         <translation>安全高度</translation>
+    </message>
+    <message>
+        <source>How the control accelerates before interpolation: a time constant (a = v/T, common on many controls), a constant acceleration, a jerk-limited S-curve, or none (the feed is commanded at once and stopped at once, as on a skip block without acc/dec; then the filter after interpolation and the servo shape the motion). Sets every move time and the braking distance after the trigger.</source>
+        <translation>控制系统在插补前如何加速：时间常数（a = v/T，多数系统常用）、恒定加速度、限制加加速度的S曲线，或无（进给立即给出、立即停止，如无加减速的跳跃程序段；此时由插补后滤波器和伺服决定运动）。决定每段移动的时间和触发后的制动距离。</translation>
+    </message>
+    <message>
+        <source>Acc/dec filter after interpolation: none, linear (a moving average of the commanded speed over the filter time), exponential (first order, time constant = the filter time) or bell (two moving averages, the filter time and the second filter time). After the trigger the axis drains it: v*T/2 more (linear), v*T (exponential), v*(T1+T2)/2 (bell).</source>
+        <translation>插补后加减速滤波器：无、直线型（指令速度在滤波时间内的移动平均）、指数型（一阶，时间常数 = 滤波时间）或铃型（两个移动平均：滤波时间和第二滤波时间）。触发后轴还要走完滤波器的滞后：直线型再走 v*T/2，指数型 v*T，铃型 v*(T1+T2)/2。</translation>
+    </message>
+    <message>
+        <source>Filter after interpolation</source>
+        <translation>插补后滤波器</translation>
+    </message>
+    <message>
+        <source>Time of the filter after interpolation: the linear filter&apos;s window, the exponential filter&apos;s time constant, or the bell filter&apos;s first window (Fanuc: the cutting-feed acc/dec time constant).</source>
+        <translation>插补后滤波器的时间：直线型的窗口、指数型的时间常数或铃型的第一窗口（Fanuc：切削进给加减速时间常数）。</translation>
+    </message>
+    <message>
+        <source>Filter time</source>
+        <translation>滤波时间</translation>
+    </message>
+    <message>
+        <source>Second window of the bell filter after interpolation (the S-shaping time).</source>
+        <translation>插补后铃型滤波器的第二窗口（S形平滑时间）。</translation>
+    </message>
+    <message>
+        <source>Second filter time</source>
+        <translation>第二滤波时间</translation>
+    </message>
+    <message>
+        <source>Servo time constant Tp = 1/Kv (position loop gain): the axis trails the command by v*Tp and, after the command stops, travels that much more. 0 = the axis follows the command exactly.</source>
+        <translation>伺服时间常数 Tp = 1/Kv（位置环增益）：轴滞后指令 v*Tp，指令停止后还要再走这么多。0 = 轴完全跟随指令。</translation>
+    </message>
+    <message>
+        <source>Servo time constant</source>
+        <translation>伺服时间常数</translation>
+    </message>
+    <message>
+        <source>In-position width: with a filter or a servo lag, a move counts as done when the axis is within this of its commanded end, and the next move starts then. The overtravel is still where the axis comes to rest.</source>
+        <translation>到位宽度（到位检测）：有滤波器或伺服滞后时，轴距指令终点小于此值即认为移动完成，随即开始下一段移动。过行程仍按轴最终停止的位置计算。</translation>
+    </message>
+    <message>
+        <source>In-position width</source>
+        <translation>到位宽度</translation>
+    </message>
+    <message>
+        <source>ideal servo</source>
+        <translation>理想伺服</translation>
+    </message>
+    <message>
+        <source>None (feed at once)</source>
+        <translation>无（立即给出进给）</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Linear (moving average)</source>
+        <translation>直线型（移动平均）</translation>
+    </message>
+    <message>
+        <source>Exponential</source>
+        <translation>指数型</translation>
+    </message>
+    <message>
+        <source>Bell (two averages)</source>
+        <translation>铃型（两次平均）</translation>
     </message>
 </context>
 <context>
@@ -2048,10 +2112,6 @@
         <translation>标准跳跃输入（4 ms 扫描）</translation>
     </message>
     <message>
-        <source>A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms). Typical values: replace them with your machine&apos;s.</source>
-        <translation>每 4 ms 扫描一次、延迟 2 ms 的跳跃输入，机床采用时间常数加速 (T = 60 ms)。典型值：请替换为您机床的实测值。</translation>
-    </message>
-    <message>
         <source>High-speed skip input (4 µs scan)</source>
         <translation>高速跳跃输入（4 µs 扫描）</translation>
     </message>
@@ -2206,10 +2266,6 @@
     <message>
         <source>&amp;Presets</source>
         <translation>预设(&amp;P)</translation>
-    </message>
-    <message>
-        <source>&amp;Machine (skip input)</source>
-        <translation>机床（跳跃输入）(&amp;M)</translation>
     </message>
     <message>
         <source>P&amp;robe class</source>
@@ -2408,6 +2464,38 @@
     <message>
         <source>Comparison</source>
         <translation>比较测量</translation>
+    </message>
+    <message>
+        <source>A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms) without a filter after interpolation or servo lag. Typical values: replace them with your machine&apos;s.</source>
+        <translation>跳跃输入每 4 ms 扫描一次，延迟 2 ms，机床采用时间常数（T = 60 ms），无插补后滤波器、无伺服滞后。典型值：请换成您机床的值。</translation>
+    </message>
+    <message>
+        <source>Fanuc-type: exponential acc/dec after interpolation + servo</source>
+        <translation>Fanuc 类型：插补后指数型加减速 + 伺服</translation>
+    </message>
+    <message>
+        <source>The skip feed is commanded at once and smoothed after interpolation by an exponential filter (32 ms), then a servo lag (33 ms); 20 ms from trigger to reaction with the probe&apos;s 2 ms. Overtravel at cruise: F/60 × (20 + Tc + Ts) / 1000 mm. Typical values: replace them with your machine&apos;s.</source>
+        <translation>跳跃进给立即给出，插补后经指数型滤波器（32 ms）平滑，再经伺服滞后（33 ms）；从触发到响应共 20 ms（含测头的 2 ms）。匀速时的过行程：F/60 × (20 + Tc + Ts) / 1000 mm。典型值：请换成您机床的值。</translation>
+    </message>
+    <message>
+        <source>Mitsubishi-type: G31 without acc/dec</source>
+        <translation>三菱类型：无加减速的 G31</translation>
+    </message>
+    <message>
+        <source>The skip block moves without acceleration: the command starts and stops at once and only the servo lag (Tp = 30 ms) smooths it; 5 ms response delay with the probe&apos;s 2 ms, 1 ms scan. Overtravel: F/60 × (Tp + t1 ± t2). Typical values: replace them with your machine&apos;s.</source>
+        <translation>跳跃程序段不加减速：指令立即开始、立即停止，只有伺服滞后（Tp = 30 ms）使其平滑；响应延迟 5 ms（含测头的 2 ms），扫描 1 ms。过行程：F/60 × (Tp + t1 ± t2)。典型值：请换成您机床的值。</translation>
+    </message>
+    <message>
+        <source>Linear acc/dec after interpolation</source>
+        <translation>插补后直线型加减速</translation>
+    </message>
+    <message>
+        <source>The feed is commanded at once and averaged over 64 ms after interpolation, then a 20 ms servo lag: a touch during the ramp does not brake at once. Typical values: replace them with your machine&apos;s.</source>
+        <translation>进给立即给出，插补后在 64 ms 内平均，再经 20 ms 伺服滞后：加速中触碰时不会立即制动。典型值：请换成您机床的值。</translation>
+    </message>
+    <message>
+        <source>&amp;Machine (skip input, control)</source>
+        <translation>机床（跳跃输入、控制系统）(&amp;M)</translation>
     </message>
 </context>
 <context>

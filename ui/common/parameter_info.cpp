@@ -32,6 +32,11 @@ const KeyText kKeyTexts[] = {
     {"machine.time_constant_s", QT_TRANSLATE_NOOP("Parameter", "ms"), 1000.0, 1, SliderScale::log, 0.005, 0.5, nullptr},
     {"machine.max_accel_mm_s2", QT_TRANSLATE_NOOP("Parameter", "mm/s²"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
     {"machine.max_jerk_mm_s3", QT_TRANSLATE_NOOP("Parameter", "mm/s³"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
+    {"machine.filter_time_s", QT_TRANSLATE_NOOP("Parameter", "ms"), 1000.0, 1, SliderScale::none, 0.0, 0.0, nullptr},
+    {"machine.filter2_time_s", QT_TRANSLATE_NOOP("Parameter", "ms"), 1000.0, 1, SliderScale::none, 0.0, 0.0, nullptr},
+    {"machine.servo_time_constant_s", QT_TRANSLATE_NOOP("Parameter", "ms"), 1000.0, 1, SliderScale::none, 0.0, 0.0,
+     QT_TRANSLATE_NOOP("Parameter", "ideal servo")},
+    {"machine.in_position_mm", QT_TRANSLATE_NOOP("Parameter", "µm"), 1000.0, 1, SliderScale::none, 0.0, 0.0, nullptr},
     {"machine.rapid_feed_mm_min", QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
     {"machine.scan_period_s", QT_TRANSLATE_NOOP("Parameter", "ms"), 1000.0, 3, SliderScale::log, 1e-6, 0.02, nullptr},
     {"machine.controller_latency_s", QT_TRANSLATE_NOOP("Parameter", "ms"), 1000.0, 3, SliderScale::none, 0.0, 0.0, nullptr},
@@ -99,6 +104,22 @@ QString accel_model_label(AccelModel model) {
             return tr_param(QT_TRANSLATE_NOOP("Parameter", "Constant accel."));
         case AccelModel::jerk_limited:
             return tr_param(QT_TRANSLATE_NOOP("Parameter", "S-curve (jerk)"));
+        case AccelModel::none:
+            return tr_param(QT_TRANSLATE_NOOP("Parameter", "None (feed at once)"));
+    }
+    return {};
+}
+
+QString filter_label(FilterKind kind) {
+    switch (kind) {
+        case FilterKind::none:
+            return tr_param(QT_TRANSLATE_NOOP("Parameter", "None"));
+        case FilterKind::linear:
+            return tr_param(QT_TRANSLATE_NOOP("Parameter", "Linear (moving average)"));
+        case FilterKind::exponential:
+            return tr_param(QT_TRANSLATE_NOOP("Parameter", "Exponential"));
+        case FilterKind::bell:
+            return tr_param(QT_TRANSLATE_NOOP("Parameter", "Bell (two averages)"));
     }
     return {};
 }

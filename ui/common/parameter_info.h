@@ -38,6 +38,7 @@ QString section_of(std::string_view dotted_key);
 
 // Translated names of the enum values and sections.
 QString accel_model_label(AccelModel model);
+QString filter_label(FilterKind kind);
 QString strategy_label(Strategy strategy);
 QString backoff_from_label(BackoffFrom from);
 QString feature_label(Feature feature);

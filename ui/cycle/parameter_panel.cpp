@@ -82,6 +82,14 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
         auto* edit = new QuantityEdit(info, box);
         qobject_cast<QVBoxLayout*>(box->layout())->addWidget(edit);
         edits_.push_back(edit);
+        if (info.key == std::string_view("machine.max_jerk_mm_s3")) {
+            // The filter after interpolation, after the plan's keys, before its own.
+            filter_row_ = new QWidget(box);
+            filter_label_ = new QLabel(filter_row_);
+            filter_ = make_combo(QStringLiteral("combo:machine.filter"), filter_row_);
+            filter_row_->setLayout(labelled_row(filter_label_, filter_));
+            qobject_cast<QVBoxLayout*>(box->layout())->addWidget(filter_row_);
+        }
         if (info.key == std::string_view("cycle.backoff_mm")) {
             // Where the backoff is measured from, right under it.
             backoff_from_row_ = new QWidget(box);
@@ -109,6 +117,10 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
         scenario_.machine.accel_model =
             static_cast<AccelModel>(accel_model_->itemData(index).toInt());
         emit_edit(QStringLiteral("machine.accel_model"));
+    });
+    connect(filter_, &QComboBox::activated, this, [this](int index) {
+        scenario_.machine.filter = static_cast<FilterKind>(filter_->itemData(index).toInt());
+        emit_edit(QStringLiteral("machine.filter"));
     });
     connect(strategy_, &QComboBox::activated, this, [this](int index) {
         scenario_.cycle.strategy = static_cast<Strategy>(strategy_->itemData(index).toInt());
@@ -148,6 +160,10 @@ void ParameterPanel::retranslate() {
         return QCoreApplication::translate("Parameter", find_any_key(key)->description);
     };
     accel_label_->setText(label_of("machine.accel_model"));
+    filter_label_->setText(label_of("machine.filter"));
+    for (QWidget* w : {static_cast<QWidget*>(filter_label_), static_cast<QWidget*>(filter_)}) {
+        w->setToolTip(help_of("machine.filter"));
+    }
     strategy_label_->setText(label_of("cycle.strategy"));
     feature_label_->setText(label_of("cycle.feature"));
     backoff_from_label_->setText(label_of("cycle.backoff_from"));
@@ -172,10 +188,16 @@ void ParameterPanel::retranslate() {
         const QSignalBlocker b2(strategy_);
         const QSignalBlocker b3(feature_);
         const QSignalBlocker b4(backoff_from_);
+        const QSignalBlocker b5(filter_);
         accel_model_->clear();
-        for (AccelModel m :
-             {AccelModel::time_constant, AccelModel::constant_accel, AccelModel::jerk_limited}) {
+        for (AccelModel m : {AccelModel::time_constant, AccelModel::constant_accel,
+                             AccelModel::jerk_limited, AccelModel::none}) {
             accel_model_->addItem(accel_model_label(m), static_cast<int>(m));
+        }
+        filter_->clear();
+        for (FilterKind k :
+             {FilterKind::none, FilterKind::linear, FilterKind::exponential, FilterKind::bell}) {
+            filter_->addItem(filter_label(k), static_cast<int>(k));
         }
         strategy_->clear();
         for (Strategy s : {Strategy::single_touch, Strategy::two_touch}) {
@@ -212,6 +234,8 @@ void ParameterPanel::set_scenario(const Scenario& scenario) {
     const QSignalBlocker b3(feature_);
     const QSignalBlocker b4(latched_);
     const QSignalBlocker b5(backoff_from_);
+    const QSignalBlocker b6(filter_);
+    filter_->setCurrentIndex(filter_->findData(static_cast<int>(scenario_.machine.filter)));
     accel_model_->setCurrentIndex(
         accel_model_->findData(static_cast<int>(scenario_.machine.accel_model)));
     strategy_->setCurrentIndex(strategy_->findData(static_cast<int>(scenario_.cycle.strategy)));
@@ -239,8 +263,13 @@ void ParameterPanel::update_enabled() {
         if (QuantityEdit* edit = edit_for(key)) edit->setVisible(on);
     };
     enable("machine.time_constant_s", model == AccelModel::time_constant);
-    enable("machine.max_accel_mm_s2", model != AccelModel::time_constant);
+    enable("machine.max_accel_mm_s2",
+           model == AccelModel::constant_accel || model == AccelModel::jerk_limited);
     enable("machine.max_jerk_mm_s3", model == AccelModel::jerk_limited);
+    const FilterKind filter = scenario_.machine.filter;
+    enable("machine.filter_time_s", filter != FilterKind::none);
+    enable("machine.filter2_time_s", filter == FilterKind::bell);
+    enable("machine.in_position_mm", scenario_.axis_dynamics().active());
     const bool lifts =
         scenario_.cycle.feature == Feature::boss || scenario_.cycle.feature == Feature::web;
     enable("machine.rapid_feed_mm_min", lifts);

@@ -47,6 +47,9 @@ class ParameterPanel : public QWidget {
     QGroupBox* cycle_box_{nullptr};
     QLabel* accel_label_{nullptr};
     QComboBox* accel_model_{nullptr};
+    QWidget* filter_row_{nullptr};  // under the acceleration model's keys
+    QLabel* filter_label_{nullptr};
+    QComboBox* filter_{nullptr};
     QCheckBox* latched_{nullptr};
     QLabel* strategy_label_{nullptr};
     QComboBox* strategy_{nullptr};

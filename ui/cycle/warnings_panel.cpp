@@ -52,7 +52,7 @@ std::optional<Scenario> fixed_scenario(const Computed& c, Fix fix) {
         }
         case Fix::approach_to_reach_feed: {
             const double feed_mm_s = c.cycle().first_touch().programmed_feed_mm_s;
-            s.cycle.approach_mm = round_up(reach_distance_mm(s.motion_limits(), feed_mm_s), 0.01);
+            s.cycle.approach_mm = round_up(approach_room_mm(s, feed_mm_s), 0.01);
             if (s.cycle.approach_mm <= c.scenario.cycle.approach_mm) return std::nullopt;
             return s;
         }

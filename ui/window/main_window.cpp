@@ -57,13 +57,22 @@ struct PresetDef {
 const PresetDef kMachinePresets[] = {
     {":/presets/machine_standard_skip.json",
      QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Standard skip input (4 ms scan)"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms). Typical values: replace them with your machine's.")},
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms) without a filter after interpolation or servo lag. Typical values: replace them with your machine's.")},
     {":/presets/machine_high_speed_skip.json",
      QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "High-speed skip input (4 µs scan)"),
      QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "A direct, high-speed skip input scanned every 4 µs with a 0.5 ms latency. Typical values: replace them with your machine's.")},
     {":/presets/machine_latched_input.json",
      QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Latched input (position captured in hardware)"),
      QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "The control latches the axis positions at the trigger: the scan wait leaves the measured value but not the travel. Typical values: replace them with your machine's.")},
+    {":/presets/machine_fanuc_exponential_servo.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Fanuc-type: exponential acc/dec after interpolation + servo"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "The skip feed is commanded at once and smoothed after interpolation by an exponential filter (32 ms), then a servo lag (33 ms); 20 ms from trigger to reaction with the probe's 2 ms. Overtravel at cruise: F/60 × (20 + Tc + Ts) / 1000 mm. Typical values: replace them with your machine's.")},
+    {":/presets/machine_mitsubishi_g31.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Mitsubishi-type: G31 without acc/dec"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "The skip block moves without acceleration: the command starts and stops at once and only the servo lag (Tp = 30 ms) smooths it; 5 ms response delay with the probe's 2 ms, 1 ms scan. Overtravel: F/60 × (Tp + t1 ± t2). Typical values: replace them with your machine's.")},
+    {":/presets/machine_linear_after_interpolation.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Linear acc/dec after interpolation"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "The feed is commanded at once and averaged over 64 ms after interpolation, then a 20 ms servo lag: a touch during the ramp does not brake at once. Typical values: replace them with your machine's.")},
 };
 const PresetDef kProbePresets[] = {
     {":/presets/probe_kinematic_optical.json",
@@ -390,7 +399,7 @@ void MainWindow::retranslate() {
     recent_menu_->setTitle(tr("Open &Recent"));
     edit_menu_->setTitle(tr("&Edit"));
     presets_menu_->setTitle(tr("&Presets"));
-    machine_presets_menu_->setTitle(tr("&Machine (skip input)"));
+    machine_presets_menu_->setTitle(tr("&Machine (skip input, control)"));
     probe_presets_menu_->setTitle(tr("P&robe class"));
     compare_menu_->setTitle(tr("&Compare"));
     view_menu_->setTitle(tr("&View"));

@@ -102,14 +102,32 @@ void expect_same_scenario(const Scenario& a, const Scenario& b) {
 }
 
 const std::vector<std::string> kNumericKeys = {
-    "machine.time_constant_s",     "machine.max_accel_mm_s2", "machine.max_jerk_mm_s3",
-    "machine.rapid_feed_mm_min",   "machine.scan_period_s",   "machine.controller_latency_s",
-    "probe.pretravel_mm",          "probe.interface_delay_s", "probe.repeatability_2sigma_mm",
-    "probe.overtravel_limit_mm",   "probe.reseat_mm",         "probe.calibration_feed_mm_min",
-    "cycle.feature_size_mm",       "cycle.approach_mm",       "cycle.probe_feed_mm_min",
-    "cycle.measure_feed_mm_min",   "cycle.backoff_mm",        "cycle.return_feed_mm_min",
-    "cycle.target_uncertainty_mm", "cycle.knee_tolerance",    "cycle.position_feed_mm_min",
+    "machine.time_constant_s",
+    "machine.max_accel_mm_s2",
+    "machine.max_jerk_mm_s3",
+    "machine.rapid_feed_mm_min",
+    "machine.scan_period_s",
+    "machine.controller_latency_s",
+    "probe.pretravel_mm",
+    "probe.interface_delay_s",
+    "probe.repeatability_2sigma_mm",
+    "probe.overtravel_limit_mm",
+    "probe.reseat_mm",
+    "probe.calibration_feed_mm_min",
+    "cycle.feature_size_mm",
+    "cycle.approach_mm",
+    "cycle.probe_feed_mm_min",
+    "cycle.measure_feed_mm_min",
+    "cycle.backoff_mm",
+    "cycle.return_feed_mm_min",
+    "cycle.target_uncertainty_mm",
+    "cycle.knee_tolerance",
+    "cycle.position_feed_mm_min",
     "cycle.clearance_mm",
+    "machine.filter_time_s",
+    "machine.filter2_time_s",
+    "machine.servo_time_constant_s",
+    "machine.in_position_mm",
 };
 
 // ---------------------------------------------------------------------------
@@ -260,7 +278,8 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
     ASSERT_TRUE(j.is_object());
     const std::map<std::string, std::set<std::string>> expected = {
         {"machine",
-         {"accel_model", "time_constant_s", "max_accel_mm_s2", "max_jerk_mm_s3",
+         {"accel_model", "time_constant_s", "max_accel_mm_s2", "max_jerk_mm_s3", "filter",
+          "filter_time_s", "filter2_time_s", "servo_time_constant_s", "in_position_mm",
           "rapid_feed_mm_min", "scan_period_s", "controller_latency_s", "latched_input"}},
         {"probe",
          {"pretravel_mm", "interface_delay_s", "repeatability_2sigma_mm", "overtravel_limit_mm",
@@ -278,6 +297,7 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
         EXPECT_EQ(written, keys) << section;
     }
     EXPECT_EQ(j["machine"]["accel_model"], "time_constant");
+    EXPECT_EQ(j["machine"]["filter"], "none");
     EXPECT_EQ(j["machine"]["latched_input"], false);
     EXPECT_EQ(j["cycle"]["strategy"], "two_touch");
     EXPECT_EQ(j["cycle"]["feature"], "surface");
@@ -608,7 +628,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 27u);
+    ASSERT_EQ(scenario_keys().size(), 32u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);

@@ -499,6 +499,8 @@ TEST_F(MainWindowTest, UndoRestoresAndRedoReapplies) {
 TEST_F(MainWindowTest, EveryPresetLoadsAndChangesOnlyItsKeys) {
     for (const char* preset :
          {":/presets/machine_standard_skip.json", ":/presets/machine_high_speed_skip.json",
+          ":/presets/machine_fanuc_exponential_servo.json", ":/presets/machine_mitsubishi_g31.json",
+          ":/presets/machine_linear_after_interpolation.json",
           ":/presets/machine_latched_input.json", ":/presets/probe_kinematic_optical.json",
           ":/presets/probe_kinematic_radio.json", ":/presets/probe_strain_gauge.json",
           ":/presets/probe_small_stylus.json"}) {
@@ -509,6 +511,9 @@ TEST_F(MainWindowTest, EveryPresetLoadsAndChangesOnlyItsKeys) {
         EXPECT_TRUE(window_->computed().valid()) << preset;
     }
     EXPECT_TRUE(window_->scenario().machine.latched_input);  // the last machine preset
+    // The latched preset names the input only: the linear filter stays.
+    EXPECT_EQ(window_->scenario().machine.filter, FilterKind::linear);
+    EXPECT_DOUBLE_EQ(window_->scenario().machine.filter_time_s, 0.064);
     EXPECT_DOUBLE_EQ(window_->scenario().probe.overtravel_limit_mm, 2.0);
 }
 

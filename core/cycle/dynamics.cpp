@@ -1,0 +1,464 @@
+#include "core/cycle/dynamics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+// Formulas: dynamics.h and domain.md, "Controller dynamics after
+// interpolation". The first-order lag's response to a ramp r_m solves
+// y' = (r_m - y) / T from rest: the particular solution sum_k (-T)^k r_(m-k)
+// plus the homogeneous term that makes y(0) = 0.
+
+namespace probecycle {
+
+const char* to_string(FilterKind kind) {
+    switch (kind) {
+        case FilterKind::none:
+            return "none";
+        case FilterKind::linear:
+            return "linear";
+        case FilterKind::exponential:
+            return "exponential";
+        case FilterKind::bell:
+            return "bell";
+    }
+    return "?";
+}
+
+bool AxisDynamics::active() const {
+    return filter != FilterKind::none || servo_time_constant_s > 0.0;
+}
+
+double AxisDynamics::lag_s() const {
+    double lag = servo_time_constant_s;
+    switch (filter) {
+        case FilterKind::none:
+            break;
+        case FilterKind::linear:
+            lag += 0.5 * filter_time_s;
+            break;
+        case FilterKind::exponential:
+            lag += filter_time_s;
+            break;
+        case FilterKind::bell:
+            lag += 0.5 * (filter_time_s + filter2_time_s);
+            break;
+    }
+    return lag;
+}
+
+namespace {
+
+// tau^p / p! for p >= 0.
+double ramp(int p, double tau) {
+    double value = 1.0;
+    for (int i = 1; i <= p; ++i) value *= tau / i;
+    return value;
+}
+
+double power(double x, int p) {
+    double value = 1.0;
+    for (int i = 0; i < p; ++i) value *= x;
+    return value;
+}
+
+}  // namespace
+
+AxisKernel::AxisKernel(const AxisDynamics& d) : in_position_mm_(d.in_position_mm) {
+    switch (d.filter) {
+        case FilterKind::none:
+            break;
+        case FilterKind::linear:
+            window_[fir_count_++] = d.filter_time_s;
+            break;
+        case FilterKind::bell:
+            window_[fir_count_++] = d.filter_time_s;
+            window_[fir_count_++] = d.filter2_time_s;
+            break;
+        case FilterKind::exponential:
+            lag_[lag_count_++] = d.filter_time_s;
+            break;
+    }
+    if (d.servo_time_constant_s > 0.0) lag_[lag_count_++] = d.servo_time_constant_s;
+    for (int i = 0; i < fir_count_; ++i) window_s_ += window_[static_cast<std::size_t>(i)];
+    for (int i = 0; i < lag_count_; ++i) lag_sum_s_ += lag_[static_cast<std::size_t>(i)];
+    // Two lags closer than this are one double pole: the partial fractions
+    // would divide by their difference.
+    double_pole_ =
+        lag_count_ == 2 && std::abs(lag_[0] - lag_[1]) <= 1e-9 * std::max(lag_[0], lag_[1]);
+
+    // Normalised moments mu_k = M_k / k! convolve as sequences: a lag has T^k,
+    // two lags sum_i T1^i T2^(k-i), a moving average W^k / (k+1)!.
+    for (std::size_t k = 0; k < lag_moment_.size(); ++k) {
+        double mu = k == 0 ? 1.0 : 0.0;
+        if (lag_count_ == 1) mu = power(lag_[0], static_cast<int>(k));
+        if (lag_count_ == 2) {
+            mu = 0.0;
+            for (std::size_t i = 0; i <= k; ++i) {
+                mu += power(lag_[0], static_cast<int>(i)) * power(lag_[1], static_cast<int>(k - i));
+            }
+        }
+        lag_moment_[k] = mu;
+    }
+    std::array<double, 4> mu{};
+    for (std::size_t k = 0; k < mu.size(); ++k) mu[k] = lag_moment_[k];
+    for (int f = 0; f < fir_count_; ++f) {
+        const double w = window_[static_cast<std::size_t>(f)];
+        std::array<double, 4> next{};
+        for (std::size_t k = 0; k < next.size(); ++k) {
+            for (std::size_t i = 0; i <= k; ++i) {
+                // W^i / (i + 1)!
+                next[k] += mu[k - i] * ramp(static_cast<int>(i), w) / static_cast<double>(i + 1);
+            }
+        }
+        mu = next;
+    }
+    moment_ = mu;
+}
+
+AxisKernel::Decay AxisKernel::decay(double tau) const {
+    Decay d;
+    if (lag_count_ >= 1) d.e1 = std::exp(-tau / lag_[0]);
+    if (lag_count_ == 2) d.e2 = double_pole_ ? d.e1 : std::exp(-tau / lag_[1]);
+    return d;
+}
+
+double AxisKernel::lag_transient(int m, double tau, const Decay& d) const {
+    switch (lag_count_) {
+        case 0:
+            return 0.0;
+        case 1:
+            return -power(-lag_[0], m) * d.e1;
+        default: {
+            const double t1 = lag_[0];
+            const double t2 = lag_[1];
+            if (double_pole_) return -power(-t1, m) * (m + 1 + tau / t1) * d.e1;
+            return (power(-t1, m + 1) * d.e1 - power(-t2, m + 1) * d.e2) / (t1 - t2);
+        }
+    }
+}
+
+double AxisKernel::lag_polynomial(int m, double tau) const {
+    // The moment expansion: sum_k (-1)^k mu_k r_(m-k).
+    double poly = 0.0;
+    double sign = 1.0;
+    for (int k = 0; k <= m; ++k) {
+        poly += sign * lag_moment_[static_cast<std::size_t>(k)] * ramp(m - k, tau);
+        sign = -sign;
+    }
+    return poly;
+}
+
+void AxisKernel::accumulate(const std::array<double, 3>& steps, double tau, bool transient_only,
+                            double& position, double& speed) const {
+    if (transient_only && lag_count_ == 0) return;
+    // A moving average over W turns a response g into (G(t) - G(t - W)) / W,
+    // G its integral (the response to the next ramp): one term per subset of
+    // the windows, signed by its size.
+    const int terms = 1 << fir_count_;
+    double norm = 1.0;
+    for (int f = 0; f < fir_count_; ++f) norm *= window_[static_cast<std::size_t>(f)];
+    for (int subset = 0; subset < terms; ++subset) {
+        double shift = 0.0;
+        double sign = 1.0;
+        for (int f = 0; f < fir_count_; ++f) {
+            if ((subset & (1 << f)) != 0) {
+                shift += window_[static_cast<std::size_t>(f)];
+                sign = -sign;
+            }
+        }
+        const double age = tau - shift;
+        // Causal: nothing before the (shifted) break; the transient alone is
+        // asked for ages >= 0 only.
+        if (age < 0.0 || (age == 0.0 && !transient_only)) continue;
+        const Decay d = decay(age);
+        const double weight = sign / norm;
+        for (int n = 1; n <= 3; ++n) {
+            const double step = steps[static_cast<std::size_t>(n - 1)];
+            if (step == 0.0) continue;
+            const int m = n + fir_count_;
+            double g = lag_transient(m, age, d);
+            double dg = lag_transient(m - 1, age, d);
+            if (!transient_only) {
+                g += lag_polynomial(m, age);
+                dg += lag_polynomial(m - 1, age);
+            }
+            position += weight * step * g;
+            speed += weight * step * dg;
+        }
+    }
+}
+
+void AxisKernel::accumulate_tail(const std::array<double, 3>& steps, double age,
+                                 TailParts& parts) const {
+    if (lag_count_ == 0) return;
+    const int terms = 1 << fir_count_;
+    double norm = 1.0;
+    for (int f = 0; f < fir_count_; ++f) norm *= window_[static_cast<std::size_t>(f)];
+    for (int subset = 0; subset < terms; ++subset) {
+        double shift = 0.0;
+        double sign = 1.0;
+        for (int f = 0; f < fir_count_; ++f) {
+            if ((subset & (1 << f)) != 0) {
+                shift += window_[static_cast<std::size_t>(f)];
+                sign = -sign;
+            }
+        }
+        const double a = age - shift;
+        const Decay d = decay(a);
+        for (int n = 1; n <= 3; ++n) {
+            const double step = steps[static_cast<std::size_t>(n - 1)];
+            if (step == 0.0) continue;
+            const int m = n + fir_count_;
+            const double w = sign * step / norm;
+            const double t1 = lag_[0];
+            if (lag_count_ == 1) {
+                parts.a1 += w * -power(-t1, m) * d.e1;
+            } else if (double_pole_) {
+                parts.a1 += w * -power(-t1, m) * (m + 1 + a / t1) * d.e1;
+                parts.b += w * -power(-t1, m) * d.e1 / t1;
+            } else {
+                const double t2 = lag_[1];
+                parts.a1 += w * power(-t1, m + 1) * d.e1 / (t1 - t2);
+                parts.a2 += w * -power(-t2, m + 1) * d.e2 / (t1 - t2);
+            }
+        }
+    }
+}
+
+double AxisKernel::tail_position(const TailParts& p, double s) const {
+    if (lag_count_ == 0) return 0.0;
+    const double e1 = std::exp(-s / lag_[0]);
+    const double e2 = lag_count_ == 2 && !double_pole_ ? std::exp(-s / lag_[1]) : 0.0;
+    return (p.a1 + p.b * s) * e1 + p.a2 * e2;
+}
+
+double AxisKernel::tail_speed(const TailParts& p, double s) const {
+    if (lag_count_ == 0) return 0.0;
+    const double t1 = lag_[0];
+    const double e1 = std::exp(-s / t1);
+    const double e2 = lag_count_ == 2 && !double_pole_ ? std::exp(-s / lag_[1]) : 0.0;
+    const double t2 = lag_count_ == 2 ? lag_[1] : 1.0;
+    return (p.b - (p.a1 + p.b * s) / t1) * e1 - p.a2 / t2 * e2;
+}
+
+double AxisKernel::tail_accel(const TailParts& p, double s) const {
+    if (lag_count_ == 0) return 0.0;
+    const double t1 = lag_[0];
+    const double e1 = std::exp(-s / t1);
+    const double e2 = lag_count_ == 2 && !double_pole_ ? std::exp(-s / lag_[1]) : 0.0;
+    const double t2 = lag_count_ == 2 ? lag_[1] : 1.0;
+    return ((p.a1 + p.b * s) / (t1 * t1) - 2.0 * p.b / t1) * e1 + p.a2 / (t2 * t2) * e2;
+}
+
+void AxisCommand::add_break(double speed, double accel, double jerk) {
+    const std::array<double, 3> step = {speed - state_.speed_mm_s, accel - state_.accel_mm_s2,
+                                        jerk - jerk_};
+    if (step[0] == 0.0 && step[1] == 0.0 && step[2] == 0.0) return;
+    state_.speed_mm_s = speed;
+    state_.accel_mm_s2 = accel;
+    jerk_ = jerk;
+    if (count_ > 0 && breaks_[count_ - 1].t_s == t_s_) {
+        // Two changes at one instant are one break.
+        Break& last = breaks_[count_ - 1];
+        for (std::size_t i = 0; i < step.size(); ++i) last.step[i] += step[i];
+        last.after = state_;
+        last.jerk_after = jerk_;
+        return;
+    }
+    if (count_ == breaks_.size()) return;  // cannot happen: plans have at most 7 segments
+    breaks_[count_++] = {t_s_, step, state_, jerk_};
+}
+
+void AxisCommand::append(const SegmentPlan& plan, double duration_s) {
+    double remaining = duration_s;
+    for (std::size_t i = 0; i < plan.count && remaining > 0.0; ++i) {
+        const Segment& seg = plan.segments[i];
+        const double speed = seg.step_speed_mm_s >= 0.0 ? seg.step_speed_mm_s : state_.speed_mm_s;
+        add_break(speed, seg.accel_mm_s2, seg.jerk_mm_s3);
+        const double dt = std::min(seg.duration_s, remaining);
+        state_ = integrate(dt, state_, jerk_);
+        t_s_ += dt;
+        remaining -= dt;
+    }
+}
+
+void AxisCommand::close() { add_break(0.0, 0.0, 0.0); }
+
+KinematicState AxisMotion::state(double t_s) const {
+    if (t_s <= 0.0) return {};
+    const std::size_t count = command_.size();
+    const double window = kernel_.window_s();
+    // Breaks further back than the windows: the moment expansion of the
+    // command they make, plus their decaying terms.
+    std::size_t settled = 0;
+    while (settled < count && t_s - command_.at(settled).t_s >= window) ++settled;
+    KinematicState out;
+    if (settled > 0) {
+        const AxisCommand::Break& last = command_.at(settled - 1);
+        const KinematicState c = integrate(t_s - last.t_s, last.after, last.jerk_after);
+        const double mu1 = kernel_.moment(1);
+        const double mu2 = kernel_.moment(2);
+        const double mu3 = kernel_.moment(3);
+        out.position_mm =
+            c.position_mm - mu1 * c.speed_mm_s + mu2 * c.accel_mm_s2 - mu3 * last.jerk_after;
+        out.speed_mm_s = c.speed_mm_s - mu1 * c.accel_mm_s2 + mu2 * last.jerk_after;
+        for (std::size_t i = 0; i < settled; ++i) {
+            const AxisCommand::Break& b = command_.at(i);
+            kernel_.accumulate(b.step, t_s - b.t_s, true, out.position_mm, out.speed_mm_s);
+        }
+    }
+    for (std::size_t i = settled; i < count; ++i) {
+        const AxisCommand::Break& b = command_.at(i);
+        if (t_s <= b.t_s) break;
+        kernel_.accumulate(b.step, t_s - b.t_s, false, out.position_mm, out.speed_mm_s);
+    }
+    // Commands here never move backward, and the kernel is non-negative: what
+    // falls below zero is rounding in the sums.
+    out.position_mm = std::max(out.position_mm, 0.0);
+    out.speed_mm_s = std::max(out.speed_mm_s, 0.0);
+    return out;
+}
+
+namespace {
+
+// A root of an increasing f from `t` (f(lo) < 0 at `lo`), by the steps
+// `eval(t) -> {f, step}` proposes (Newton's), kept inside the bracket once
+// one is known, else bisection; before a point with f >= 0 is found, a
+// step that does not advance doubles the distance from `lo` instead.
+template <typename Eval>
+double safeguarded_root(double lo, double t, double f_tolerance, Eval eval) {
+    double hi = std::numeric_limits<double>::infinity();
+    for (int iter = 0; iter < 200; ++iter) {
+        const auto [f, step] = eval(t);
+        if (std::abs(f) <= f_tolerance) return t;
+        if (f > 0.0) {
+            hi = t;
+        } else {
+            lo = t;
+        }
+        double next = t + step;
+        const bool bracketed = std::isfinite(hi);
+        if (!(next > lo) || (bracketed && !(next < hi)) || !std::isfinite(next)) {
+            next = bracketed ? 0.5 * (lo + hi) : lo + 2.0 * std::max(t - lo, 1e-9);
+        }
+        if (bracketed && hi - lo <= 1e-15 * std::max(1.0, hi)) return hi;
+        t = next;
+    }
+    return std::isfinite(hi) ? hi : t;
+}
+
+}  // namespace
+
+double AxisMotion::time_at_position(double position_mm, double guess_s) const {
+    if (position_mm <= 0.0) return 0.0;
+    return safeguarded_root(0.0, std::max(guess_s, 1e-9), 1e-12 * std::max(1.0, position_mm),
+                            [&](double t) {
+                                const KinematicState s = state(t);
+                                const double f = s.position_mm - position_mm;
+                                const double step =
+                                    s.speed_mm_s > 0.0 ? -f / s.speed_mm_s : 0.0;
+                                return std::pair{f, step};
+                            });
+}
+
+double AxisMotion::in_position_time() const {
+    const double t_end = command_.end_s();
+    const double x_end = command_.end_state().position_mm;
+    const double width = kernel_.in_position_mm();
+    // f = width - error rises through 0. The tail is a sum of decaying
+    // exponentials, so Newton runs on log(error / width): exact in one step
+    // for a single one.
+    const auto eval = [&](double t) {
+        const KinematicState s = state(t);
+        const double e = x_end - s.position_mm;
+        const double f = width - e;
+        const double step =
+            e > 0.0 && s.speed_mm_s > 0.0 ? e / s.speed_mm_s * std::log(e / width) : 0.0;
+        return std::pair{f, step};
+    };
+    const auto [f_end, step_end] = eval(t_end);
+    if (f_end >= 0.0) return t_end;
+    const double t_ref = t_end + kernel_.window_s();
+    if (kernel_.lag_count() > 0 && t_ref > t_end && eval(t_ref).first < 0.0) {
+        // Still out of position when every break has settled: the error is
+        // the tail alone, solved without the breaks.
+        return t_ref + tail_root(tail_at(t_ref), width, false);
+    }
+    if (kernel_.lag_count() > 0 && t_ref == t_end) {
+        return t_end + tail_root(tail_at(t_end), width, false);
+    }
+    const double first = t_end + step_end;
+    return safeguarded_root(t_end, first > t_end ? first : t_end, 1e-12 * width, eval);
+}
+
+AxisKernel::TailParts AxisMotion::tail_at(double t_ref) const {
+    AxisKernel::TailParts parts;
+    for (std::size_t i = 0; i < command_.size(); ++i) {
+        const AxisCommand::Break& b = command_.at(i);
+        kernel_.accumulate_tail(b.step, t_ref - b.t_s, parts);
+    }
+    return parts;
+}
+
+double AxisMotion::tail_root(const AxisKernel::TailParts& parts, double level,
+                             bool speed) const {
+    // The remaining error (position) or speed deficit is minus the tail's
+    // position or speed: decaying exponentials, so Newton runs on
+    // log(value / level).
+    const auto eval = [&](double s) {
+        const double value =
+            speed ? -kernel_.tail_speed(parts, s) : -kernel_.tail_position(parts, s);
+        const double rate =
+            speed ? kernel_.tail_accel(parts, s) : kernel_.tail_speed(parts, s);  // -d/ds value
+        const double f = level - value;
+        const double step = value > 0.0 && rate > 0.0 ? value / rate * std::log(value / level) : 0.0;
+        return std::pair{f, step};
+    };
+    const auto [f0, step0] = eval(0.0);
+    if (f0 >= 0.0) return 0.0;
+    return safeguarded_root(0.0, step0 > 0.0 ? step0 : 0.0, 1e-12 * level, eval);
+}
+
+double AxisMotion::time_at_speed_deficit(double deficit_mm_s, double guess_s) const {
+    const double target = command_.end_state().speed_mm_s - deficit_mm_s;
+    if (target <= 0.0) return 0.0;
+    const auto f = [&](double t) { return state(t).speed_mm_s - target; };
+    if (kernel_.lag_count() > 0 && command_.size() > 0) {
+        // Cruising once every break has settled: the deficit is the tail's.
+        const double t_ref = command_.at(command_.size() - 1).t_s + kernel_.window_s();
+        if (f(t_ref) < 0.0) return t_ref + tail_root(tail_at(t_ref), deficit_mm_s, true);
+        guess_s = t_ref;
+    }
+    double lo = 0.0;
+    double hi = std::max(guess_s, 1e-6);
+    for (int i = 0; i < 200 && f(hi) < 0.0; ++i) {
+        lo = hi;
+        hi *= 2.0;
+    }
+    // Illinois regula falsi: the speed has no cheap derivative here.
+    double f_lo = f(lo);
+    double f_hi = f(hi);
+    int side = 0;
+    for (int iter = 0; iter < 100 && hi - lo > 1e-12 * std::max(1.0, hi); ++iter) {
+        const double t = f_hi - f_lo > 0.0 ? (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
+                                           : 0.5 * (lo + hi);
+        const double ft = f(t);
+        if (ft >= 0.0) {
+            hi = t;
+            f_hi = ft;
+            if (side == 1) f_lo *= 0.5;
+            side = 1;
+        } else {
+            lo = t;
+            f_lo = ft;
+            if (side == -1) f_hi *= 0.5;
+            side = -1;
+        }
+        if (ft == 0.0) return t;
+    }
+    return hi;
+}
+
+}  // namespace probecycle

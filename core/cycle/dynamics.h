@@ -1,0 +1,185 @@
+#pragma once
+
+// Controller dynamics after interpolation (domain.md, "Controller dynamics
+// after interpolation"; issue 11): the interpolator's command passes an
+// acc/dec filter after interpolation, then the servo, before it is the axis's
+// actual motion.
+//
+//   command x_c --> filter (moving averages or a first-order lag) --> servo
+//   (first-order lag, Tp = 1/Kv) --> actual x_a
+//
+// Every stage is linear and time-invariant with a non-negative impulse
+// response of unit area, so the actual position is the command convolved
+// with one kernel h, it is monotone wherever the command is, and it drains to
+// the command's end. The command is piecewise constant-jerk (motion.h): a sum
+// of ramps r_n(t - t_k) = (t - t_k)^n / n! (n = 1 speed steps, 2 acceleration
+// steps, 3 jerk steps) started at its breaks t_k. The response to each is in
+// closed form:
+//   - a first-order lag T turns r_m into sum_k (-T)^k r_(m-k) - (-T)^m e^(-t/T);
+//     two lags T1 != T2 into (T1 L_T1 - T2 L_T2) / (T1 - T2); two equal ones
+//     into sum_p (p+1)(-T)^p r_(m-p) - (-T)^m (m + 1 + t/T) e^(-t/T);
+//   - a moving average over W turns any response g_n into
+//     (g_(n+1)(t) - g_(n+1)(t - W)) / W (its integral's difference).
+// Once a break lies further back than the moving averages' windows, the sum
+// of the polynomial parts of its response is the moment expansion of the
+// command, x - mu1 v + mu2 a - mu3 j (mu_k = M_k / k!, M_k the kernel's
+// moments: W^k/(k+1) for a moving average, k! T^k for a lag); only the
+// decaying exponentials are summed break by break. That keeps the sum free of
+// cancellation on long moves, and no time stepping is involved.
+
+#include <array>
+#include <cstddef>
+
+#include "core/cycle/motion.h"
+
+namespace probecycle {
+
+enum class FilterKind { none, linear, exponential, bell };
+const char* to_string(FilterKind kind);
+
+struct AxisDynamics {
+    FilterKind filter{FilterKind::none};
+    double filter_time_s{0.03};   // linear: window; exponential: time constant; bell: T1
+    double filter2_time_s{0.01};  // bell: the second window T2
+    double servo_time_constant_s{0.0};  // Tp = 1/Kv; 0 = the axis follows the command
+    // In-position width: a block counts as done when the following error
+    // (command end - actual) is under it.
+    double in_position_mm{0.01};
+
+    // False for the ideal axis (no filter, no servo lag): then the actual
+    // motion is the command and the plans of motion.h are used as they are.
+    bool active() const;
+    // The actual position's lag behind the command at constant speed, in
+    // time: W/2 (linear), T (exponential), (T1 + T2)/2 (bell), plus Tp.
+    double lag_s() const;
+};
+
+// The kernel of a set of dynamics, prepared once for many evaluations.
+class AxisKernel {
+  public:
+    AxisKernel() = default;
+    explicit AxisKernel(const AxisDynamics& dynamics);
+
+    bool active() const { return fir_count_ + lag_count_ > 0; }
+    // Normalised moments mu_k = M_k / k! of the whole kernel (mu_1 = lag_s).
+    double moment(int k) const { return moment_[static_cast<std::size_t>(k)]; }
+    // Sum of the moving averages' windows: a break further back than this
+    // has a polynomial response plus decaying exponentials only.
+    double window_s() const { return window_s_; }
+    // Sum of the first-order lags' time constants (0 without lags).
+    double lag_time_s() const { return lag_sum_s_; }
+    double in_position_mm() const { return in_position_mm_; }
+
+    // Adds to `position` and `speed` the response at age tau > 0 to the steps
+    // of one break (speed, acceleration, jerk: the ramps r_1, r_2, r_3), or
+    // with `transient_only` its decaying part alone (for tau >= window_s(),
+    // where the polynomial part is the moment expansion).
+    void accumulate(const std::array<double, 3>& steps, double tau, bool transient_only,
+                    double& position, double& speed) const;
+
+    // The decaying part of one break's response once it is settled (age >=
+    // window_s()), by exponential: at age + s it is
+    //   a1 e^(-s/T1) + a2 e^(-s/T2) + b s e^(-s/T1)
+    // (b for two equal lags only), so a tail is solved without the breaks.
+    struct TailParts {
+        double a1{0.0};
+        double a2{0.0};
+        double b{0.0};
+    };
+    void accumulate_tail(const std::array<double, 3>& steps, double age, TailParts& parts) const;
+    // Position and speed of a tail at s >= 0 after where its parts were taken.
+    double tail_position(const TailParts& parts, double s) const;
+    double tail_speed(const TailParts& parts, double s) const;
+    double tail_accel(const TailParts& parts, double s) const;
+    int lag_count() const { return lag_count_; }
+
+  private:
+    struct Decay {
+        double e1{0.0};  // exp(-tau / T1)
+        double e2{0.0};  // exp(-tau / T2)
+    };
+    Decay decay(double tau) const;
+    // The lags alone on r_m at age tau > 0: polynomial + transient, or the
+    // transient only.
+    double lag_polynomial(int m, double tau) const;
+    double lag_transient(int m, double tau, const Decay& d) const;
+
+    int fir_count_{0};
+    std::array<double, 2> window_{};
+    int lag_count_{0};
+    std::array<double, 2> lag_{};
+    bool double_pole_{false};
+    std::array<double, 6> lag_moment_{1.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // of the lags alone
+    std::array<double, 4> moment_{1.0, 0.0, 0.0, 0.0};
+    double window_s_{0.0};
+    double lag_sum_s_{0.0};
+    double in_position_mm_{0.01};
+};
+
+// The command of one block (a move, or a touch from its start to its stop),
+// as breaks where its speed, acceleration or jerk changes, starting at rest
+// at position 0 and time 0.
+class AxisCommand {
+  public:
+    struct Break {
+        double t_s{0.0};
+        std::array<double, 3> step{};  // of speed, acceleration, jerk
+        KinematicState after{};        // the command's state just after the break
+        double jerk_after{0.0};
+    };
+
+    // Appends `duration_s` of the plan (cut there if shorter than the plan).
+    void append(const SegmentPlan& plan, double duration_s);
+    // Brings the command to rest at its current position (a break that cancels
+    // speed, acceleration and jerk).
+    void close();
+
+    double end_s() const { return t_s_; }
+    const KinematicState& end_state() const { return state_; }  // where the command is now
+    std::size_t size() const { return count_; }
+    const Break& at(std::size_t i) const { return breaks_[i]; }
+
+  private:
+    void add_break(double speed, double accel, double jerk);
+
+    std::array<Break, 12> breaks_{};
+    std::size_t count_{0};
+    double t_s_{0.0};
+    KinematicState state_{};
+    double jerk_{0.0};
+};
+
+// The actual motion of a command through a kernel.
+class AxisMotion {
+  public:
+    AxisMotion() = default;
+    AxisMotion(const AxisKernel& kernel, const AxisCommand& command)
+        : kernel_(kernel), command_(command) {}
+
+    // Actual position and speed at time t (acceleration is not computed).
+    KinematicState state(double t_s) const;
+    // First time the actual position reaches `position_mm`, for a command
+    // that never moves backward and goes on at least that far; `guess_s` a
+    // time near it.
+    double time_at_position(double position_mm, double guess_s) const;
+    // First time from the command's end at which the following error is
+    // under the in-position width (a closed command).
+    double in_position_time() const;
+    // First time the actual speed is within `deficit_mm_s` of the command's
+    // (an open command cruising at the end).
+    double time_at_speed_deficit(double deficit_mm_s, double guess_s) const;
+
+    const AxisCommand& command() const { return command_; }
+
+  private:
+    // The tail of all breaks at t_ref (every one settled by then).
+    AxisKernel::TailParts tail_at(double t_ref) const;
+    // The first s >= 0 at which the tail's error (or, with `speed`, its speed
+    // deficit) is down to `level`.
+    double tail_root(const AxisKernel::TailParts& parts, double level, bool speed) const;
+
+    AxisKernel kernel_{};
+    AxisCommand command_{};
+};
+
+}  // namespace probecycle
