@@ -689,15 +689,17 @@ CycleState CycleResult::state_at(double t_s) const {
 
 double block_time_s(const Scenario& scenario, double distance_mm, double feed_mm_s) {
     const MotionLimits limits = scenario.motion_limits();
-    const AxisKernel kernel(scenario.axis_dynamics());
-    if (!kernel.active()) return move_time_s(limits, distance_mm, feed_mm_s);
+    const AxisDynamics dynamics = scenario.axis_dynamics();
+    if (!dynamics.active()) return move_time_s(limits, distance_mm, feed_mm_s);
+    const AxisKernel kernel(dynamics);
     return move_motion(kernel, plan_move(limits, distance_mm, feed_mm_s)).in_position_time();
 }
 
 double approach_room_mm(const Scenario& scenario, double feed_mm_s) {
     const MotionLimits limits = scenario.motion_limits();
-    const AxisKernel kernel(scenario.axis_dynamics());
-    if (!kernel.active()) return reach_distance_mm(limits, feed_mm_s);
+    const AxisDynamics dynamics = scenario.axis_dynamics();
+    if (!dynamics.active()) return reach_distance_mm(limits, feed_mm_s);
+    const AxisKernel kernel(dynamics);
     // The error of a touch at speed v - dv is at most dv * tau (the speed
     // still rises through the delay tau), so the feed counts as reached when
     // the deficit is under the tolerance / tau.

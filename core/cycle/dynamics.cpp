@@ -66,6 +66,7 @@ double power(double x, int p) {
 }  // namespace
 
 AxisKernel::AxisKernel(const AxisDynamics& d) : in_position_mm_(d.in_position_mm) {
+    if (!d.active()) return;  // the ideal axis: the identity kernel
     switch (d.filter) {
         case FilterKind::none:
             break;
@@ -284,7 +285,9 @@ void AxisCommand::append(const SegmentPlan& plan, double duration_s) {
     }
 }
 
-void AxisCommand::close() { add_break(0.0, 0.0, 0.0); }
+void AxisCommand::close() {
+    add_break(0.0, 0.0, 0.0);
+}
 
 KinematicState AxisMotion::state(double t_s) const {
     if (t_s <= 0.0) return {};
@@ -326,9 +329,10 @@ namespace {
 // A root of an increasing f from `t` (f(lo) < 0 at `lo`), by the steps
 // `eval(t) -> {f, step}` proposes (Newton's), kept inside the bracket once
 // one is known, else bisection; before a point with f >= 0 is found, a
-// step that does not advance doubles the distance from `lo` instead.
+// step that does not advance doubles the distance from `lo` instead (at
+// least `scale`, the time over which f changes).
 template <typename Eval>
-double safeguarded_root(double lo, double t, double f_tolerance, Eval eval) {
+double safeguarded_root(double lo, double t, double f_tolerance, double scale, Eval eval) {
     double hi = std::numeric_limits<double>::infinity();
     for (int iter = 0; iter < 200; ++iter) {
         const auto [f, step] = eval(t);
@@ -341,7 +345,11 @@ double safeguarded_root(double lo, double t, double f_tolerance, Eval eval) {
         double next = t + step;
         const bool bracketed = std::isfinite(hi);
         if (!(next > lo) || (bracketed && !(next < hi)) || !std::isfinite(next)) {
-            next = bracketed ? 0.5 * (lo + hi) : lo + 2.0 * std::max(t - lo, 1e-9);
+            next = bracketed ? 0.5 * (lo + hi) : lo + std::max(2.0 * (t - lo), scale);
+        } else if (std::abs(step) <= 1e-7 * std::max(1.0, t)) {
+            // Newton converges quadratically here: the step's own error is
+            // of the order step^2 / scale, under 1e-12 s.
+            return next;
         }
         if (bracketed && hi - lo <= 1e-15 * std::max(1.0, hi)) return hi;
         t = next;
@@ -353,12 +361,12 @@ double safeguarded_root(double lo, double t, double f_tolerance, Eval eval) {
 
 double AxisMotion::time_at_position(double position_mm, double guess_s) const {
     if (position_mm <= 0.0) return 0.0;
-    return safeguarded_root(0.0, std::max(guess_s, 1e-9), 1e-12 * std::max(1.0, position_mm),
+    const double scale = std::max(kernel_.window_s() + kernel_.lag_time_s(), 1e-6);
+    return safeguarded_root(0.0, std::max(guess_s, 1e-9), 1e-12 * std::max(1.0, position_mm), scale,
                             [&](double t) {
                                 const KinematicState s = state(t);
                                 const double f = s.position_mm - position_mm;
-                                const double step =
-                                    s.speed_mm_s > 0.0 ? -f / s.speed_mm_s : 0.0;
+                                const double step = s.speed_mm_s > 0.0 ? -f / s.speed_mm_s : 0.0;
                                 return std::pair{f, step};
                             });
 }
@@ -390,7 +398,8 @@ double AxisMotion::in_position_time() const {
         return t_end + tail_root(tail_at(t_end), width, false);
     }
     const double first = t_end + step_end;
-    return safeguarded_root(t_end, first > t_end ? first : t_end, 1e-12 * width, eval);
+    return safeguarded_root(t_end, first > t_end ? first : t_end, 1e-12 * width,
+                            std::max(kernel_.window_s() + kernel_.lag_time_s(), 1e-6), eval);
 }
 
 AxisKernel::TailParts AxisMotion::tail_at(double t_ref) const {
@@ -402,8 +411,7 @@ AxisKernel::TailParts AxisMotion::tail_at(double t_ref) const {
     return parts;
 }
 
-double AxisMotion::tail_root(const AxisKernel::TailParts& parts, double level,
-                             bool speed) const {
+double AxisMotion::tail_root(const AxisKernel::TailParts& parts, double level, bool speed) const {
     // The remaining error (position) or speed deficit is minus the tail's
     // position or speed: decaying exponentials, so Newton runs on
     // log(value / level).
@@ -413,12 +421,14 @@ double AxisMotion::tail_root(const AxisKernel::TailParts& parts, double level,
         const double rate =
             speed ? kernel_.tail_accel(parts, s) : kernel_.tail_speed(parts, s);  // -d/ds value
         const double f = level - value;
-        const double step = value > 0.0 && rate > 0.0 ? value / rate * std::log(value / level) : 0.0;
+        const double step =
+            value > 0.0 && rate > 0.0 ? value / rate * std::log(value / level) : 0.0;
         return std::pair{f, step};
     };
     const auto [f0, step0] = eval(0.0);
     if (f0 >= 0.0) return 0.0;
-    return safeguarded_root(0.0, step0 > 0.0 ? step0 : 0.0, 1e-12 * level, eval);
+    return safeguarded_root(0.0, step0 > 0.0 ? step0 : 0.0, 1e-12 * level,
+                            std::max(kernel_.lag_time_s(), 1e-6), eval);
 }
 
 double AxisMotion::time_at_speed_deficit(double deficit_mm_s, double guess_s) const {
@@ -442,8 +452,8 @@ double AxisMotion::time_at_speed_deficit(double deficit_mm_s, double guess_s) co
     double f_hi = f(hi);
     int side = 0;
     for (int iter = 0; iter < 100 && hi - lo > 1e-12 * std::max(1.0, hi); ++iter) {
-        const double t = f_hi - f_lo > 0.0 ? (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
-                                           : 0.5 * (lo + hi);
+        const double t =
+            f_hi - f_lo > 0.0 ? (lo * f_hi - hi * f_lo) / (f_hi - f_lo) : 0.5 * (lo + hi);
         const double ft = f(t);
         if (ft >= 0.0) {
             hi = t;

@@ -39,8 +39,8 @@ const char* to_string(FilterKind kind);
 
 struct AxisDynamics {
     FilterKind filter{FilterKind::none};
-    double filter_time_s{0.03};   // linear: window; exponential: time constant; bell: T1
-    double filter2_time_s{0.01};  // bell: the second window T2
+    double filter_time_s{0.03};         // linear: window; exponential: time constant; bell: T1
+    double filter2_time_s{0.01};        // bell: the second window T2
     double servo_time_constant_s{0.0};  // Tp = 1/Kv; 0 = the axis follows the command
     // In-position width: a block counts as done when the following error
     // (command end - actual) is under it.

@@ -143,6 +143,31 @@ TEST_F(MainWindowTest, BackoffFromTheTriggerPosition) {
     EXPECT_FALSE(combo->isVisibleTo(window_.get()));
 }
 
+// Issue 11: the filter after interpolation; its keys show with it.
+TEST_F(MainWindowTest, FilterAfterInterpolationShowsItsKeysAndChangesTheCycle) {
+    auto* combo = window_->findChild<QComboBox*>(QStringLiteral("combo:machine.filter"));
+    ASSERT_NE(combo, nullptr);
+    const auto shown = [this](const char* key) {
+        auto* edit = window_->findChild<QWidget*>(QStringLiteral("edit:") + QLatin1String(key));
+        return edit != nullptr && edit->isVisibleTo(window_.get());
+    };
+    EXPECT_FALSE(shown("machine.filter_time_s"));
+    EXPECT_FALSE(shown("machine.in_position_mm"));
+    EXPECT_TRUE(shown("machine.servo_time_constant_s"));
+    const double overtravel = window_->computed().cycle().overtravel_mm();
+    combo->setCurrentIndex(combo->findData(static_cast<int>(FilterKind::bell)));
+    emit combo->activated(combo->currentIndex());
+    settle();
+    EXPECT_EQ(window_->scenario().machine.filter, FilterKind::bell);
+    EXPECT_TRUE(shown("machine.filter_time_s"));
+    EXPECT_TRUE(shown("machine.filter2_time_s"));
+    EXPECT_TRUE(shown("machine.in_position_mm"));
+    // The drain adds v (T1 + T2)/2 at 2000 mm/min: 33.3 mm/s x 20 ms.
+    EXPECT_NEAR(window_->computed().cycle().overtravel_mm(), overtravel + 2000.0 / 60.0 * 0.02,
+                1e-6);
+    EXPECT_FALSE(window_->computed().cycle().motions().empty());
+}
+
 // Each slider moves readouts and chart data.
 class SliderTest : public MainWindowTest, public ::testing::WithParamInterface<const char*> {};
 
