@@ -856,7 +856,7 @@
     </message>
     <message>
         <source>Bell (two averages)</source>
-        <translation>Колокол (2 средних)</translation>
+        <translation>Колокол (2 ср.)</translation>
     </message>
 </context>
 <context>
