@@ -64,12 +64,20 @@ Scenario two_touch_bore() {
     return s;
 }
 
-void BM_Evaluate(benchmark::State& state) {
-    const Scenario scenario = two_touch_bore();
+void run_evaluate(benchmark::State& state, const Scenario& scenario) {
     CycleResult result;
     for (auto _ : state) {
         evaluate_into(scenario, result);
         benchmark::DoNotOptimize(result.total());
+    }
+}
+
+void run_sweep1000(benchmark::State& state, const Scenario& scenario) {
+    const std::vector<double> feeds = log_feeds(10.0, 10000.0, 1000);
+    SweepResult sweep;
+    for (auto _ : state) {
+        sweep_feeds_into(scenario, feeds, sweep);
+        benchmark::DoNotOptimize(sweep.points.data());
     }
 }
 
@@ -86,34 +94,22 @@ Scenario filtered_bore() {
     return s;
 }
 
+void BM_Evaluate(benchmark::State& state) {
+    run_evaluate(state, two_touch_bore());
+}
+
 void BM_Evaluate_Filtered(benchmark::State& state) {
-    const Scenario scenario = filtered_bore();
-    CycleResult result;
-    for (auto _ : state) {
-        evaluate_into(scenario, result);
-        benchmark::DoNotOptimize(result.total());
-    }
+    run_evaluate(state, filtered_bore());
+}
+
+void BM_Sweep1000(benchmark::State& state) {
+    run_sweep1000(state, Scenario{});  // the default: two-touch surface
 }
 
 void BM_Sweep1000_Filtered(benchmark::State& state) {
     Scenario scenario = filtered_bore();
     scenario.cycle.feature = Feature::surface;  // as BM_Sweep1000: the default surface
-    const std::vector<double> feeds = log_feeds(10.0, 10000.0, 1000);
-    SweepResult sweep;
-    for (auto _ : state) {
-        sweep_feeds_into(scenario, feeds, sweep);
-        benchmark::DoNotOptimize(sweep.points.data());
-    }
-}
-
-void BM_Sweep1000(benchmark::State& state) {
-    const Scenario scenario;  // the default: two-touch surface
-    const std::vector<double> feeds = log_feeds(10.0, 10000.0, 1000);
-    SweepResult sweep;
-    for (auto _ : state) {
-        sweep_feeds_into(scenario, feeds, sweep);
-        benchmark::DoNotOptimize(sweep.points.data());
-    }
+    run_sweep1000(state, scenario);
 }
 
 void BM_Analyse(benchmark::State& state) {

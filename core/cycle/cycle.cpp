@@ -337,6 +337,30 @@ const AxisKernel* active_kernel(const AxisKernel& kernel) {
     return kernel.active() ? &kernel : nullptr;
 }
 
+// block_time_s and approach_room_mm for a kernel already built (nullptr: the
+// ideal axis).
+double block_time(const MotionLimits& limits, const AxisKernel* kernel, double distance_mm,
+                  double feed_mm_s) {
+    if (kernel == nullptr) return move_time_s(limits, distance_mm, feed_mm_s);
+    return move_motion(*kernel, plan_move(limits, distance_mm, feed_mm_s)).in_position_time();
+}
+
+double approach_room(const Scenario& scenario, const MotionLimits& limits, const AxisKernel* kernel,
+                     double feed_mm_s) {
+    if (kernel == nullptr) return reach_distance_mm(limits, feed_mm_s);
+    // The error of a touch at speed v - dv is at most dv * tau (the speed
+    // still rises through the delay tau), so the feed counts as reached when
+    // the deficit is under the tolerance / tau.
+    const double tau = measurement_delay_s(scenario.machine, scenario.probe);
+    if (tau <= 0.0) return 0.0;
+    const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
+    const AxisMotion motion = approach_motion(*kernel, plan);
+    const double t = motion.time_at_speed_deficit(
+        kAccelErrorTolerance_mm / tau,
+        reach_time_s(limits, feed_mm_s) + kernel->window_s() + kernel->lag_time_s());
+    return motion.state(t).position_mm;
+}
+
 // Appends phases and motion to a result under construction.
 class CycleBuilder {
   public:
@@ -631,8 +655,8 @@ double backoff_cost_s(const Scenario& scenario, const MotionLimits& limits,
     const Cycle& c = scenario.cycle;
     const double reference = backoff_reference_mm(c, first);
     const double measure_v = mm_min_to_mm_s(c.measure_feed_mm_min);
-    return block_time_s(scenario, backoff_mm + first.overtravel_mm - reference,
-                        mm_min_to_mm_s(c.return_feed_mm_min)) +
+    return block_time(limits, kernel, backoff_mm + first.overtravel_mm - reference,
+                      mm_min_to_mm_s(c.return_feed_mm_min)) +
            approach_time_s(limits, kernel, measure_v, std::max(0.0, backoff_mm - reference));
 }
 
@@ -688,29 +712,13 @@ CycleState CycleResult::state_at(double t_s) const {
 }
 
 double block_time_s(const Scenario& scenario, double distance_mm, double feed_mm_s) {
-    const MotionLimits limits = scenario.motion_limits();
-    const AxisDynamics dynamics = scenario.axis_dynamics();
-    if (!dynamics.active()) return move_time_s(limits, distance_mm, feed_mm_s);
-    const AxisKernel kernel(dynamics);
-    return move_motion(kernel, plan_move(limits, distance_mm, feed_mm_s)).in_position_time();
+    const AxisKernel kernel(scenario.axis_dynamics());
+    return block_time(scenario.motion_limits(), active_kernel(kernel), distance_mm, feed_mm_s);
 }
 
 double approach_room_mm(const Scenario& scenario, double feed_mm_s) {
-    const MotionLimits limits = scenario.motion_limits();
-    const AxisDynamics dynamics = scenario.axis_dynamics();
-    if (!dynamics.active()) return reach_distance_mm(limits, feed_mm_s);
-    const AxisKernel kernel(dynamics);
-    // The error of a touch at speed v - dv is at most dv * tau (the speed
-    // still rises through the delay tau), so the feed counts as reached when
-    // the deficit is under the tolerance / tau.
-    const double tau = measurement_delay_s(scenario.machine, scenario.probe);
-    if (tau <= 0.0) return 0.0;
-    const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
-    const AxisMotion motion = approach_motion(kernel, plan);
-    const double t = motion.time_at_speed_deficit(
-        kAccelErrorTolerance_mm / tau,
-        reach_time_s(limits, feed_mm_s) + kernel.window_s() + kernel.lag_time_s());
-    return motion.state(t).position_mm;
+    const AxisKernel kernel(scenario.axis_dynamics());
+    return approach_room(scenario, scenario.motion_limits(), active_kernel(kernel), feed_mm_s);
 }
 
 CycleResult evaluate(const Scenario& scenario) {
@@ -811,8 +819,9 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     // domain.md, "Strategies": recommended backoff = overtravel at the fast feed + reseat.
     // Issue 11: measured from the backoff's reference, and the second touch
     // also needs room to reach the measuring feed before it touches.
-    r.recommended_backoff_mm_ = backoff_reference_mm(c, r.first_) +
-                                std::max(p.reseat_mm, approach_room_mm(scenario, measure_v));
+    r.recommended_backoff_mm_ =
+        backoff_reference_mm(c, r.first_) +
+        std::max(p.reseat_mm, approach_room(scenario, limits, dynamics, measure_v));
 
     // Touches of one cycle differ only in direction, so touch 0 speaks for all.
     std::vector<Warning>& w = r.warnings_;

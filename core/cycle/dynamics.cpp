@@ -83,6 +83,21 @@ AxisKernel::AxisKernel(const AxisDynamics& d) : in_position_mm_(d.in_position_mm
     }
     if (d.servo_time_constant_s > 0.0) lag_[lag_count_++] = d.servo_time_constant_s;
     for (int i = 0; i < fir_count_; ++i) window_s_ += window_[static_cast<std::size_t>(i)];
+    double norm = 1.0;
+    for (int f = 0; f < fir_count_; ++f) norm *= window_[static_cast<std::size_t>(f)];
+    term_count_ = 1 << fir_count_;
+    for (int subset = 0; subset < term_count_; ++subset) {
+        double shift = 0.0;
+        double sign = 1.0;
+        for (int f = 0; f < fir_count_; ++f) {
+            if ((subset & (1 << f)) != 0) {
+                shift += window_[static_cast<std::size_t>(f)];
+                sign = -sign;
+            }
+        }
+        term_shift_[static_cast<std::size_t>(subset)] = shift;
+        term_weight_[static_cast<std::size_t>(subset)] = sign / norm;
+    }
     for (int i = 0; i < lag_count_; ++i) lag_sum_s_ += lag_[static_cast<std::size_t>(i)];
     // Two lags closer than this are one double pole: the partial fractions
     // would divide by their difference.
@@ -118,26 +133,34 @@ AxisKernel::AxisKernel(const AxisDynamics& d) : in_position_mm_(d.in_position_mm
     moment_ = mu;
 }
 
-AxisKernel::Decay AxisKernel::decay(double tau) const {
+inline AxisKernel::Decay AxisKernel::decay(double tau) const {
     Decay d;
     if (lag_count_ >= 1) d.e1 = std::exp(-tau / lag_[0]);
     if (lag_count_ == 2) d.e2 = double_pole_ ? d.e1 : std::exp(-tau / lag_[1]);
     return d;
 }
 
-double AxisKernel::lag_transient(int m, double tau, const Decay& d) const {
-    switch (lag_count_) {
-        case 0:
-            return 0.0;
-        case 1:
-            return -power(-lag_[0], m) * d.e1;
-        default: {
-            const double t1 = lag_[0];
-            const double t2 = lag_[1];
-            if (double_pole_) return -power(-t1, m) * (m + 1 + tau / t1) * d.e1;
-            return (power(-t1, m + 1) * d.e1 - power(-t2, m + 1) * d.e2) / (t1 - t2);
-        }
+inline AxisKernel::TailParts AxisKernel::lag_transient_parts(int m, double tau,
+                                                             const Decay& d) const {
+    TailParts parts;
+    if (lag_count_ == 0) return parts;
+    const double t1 = lag_[0];
+    if (lag_count_ == 1) {
+        parts.a1 = -power(-t1, m) * d.e1;
+    } else if (double_pole_) {
+        parts.a1 = -power(-t1, m) * (m + 1 + tau / t1) * d.e1;
+        parts.b = -power(-t1, m) * d.e1 / t1;  // the s in (m + 1 + (tau + s)/T)
+    } else {
+        const double t2 = lag_[1];
+        parts.a1 = power(-t1, m + 1) * d.e1 / (t1 - t2);
+        parts.a2 = -power(-t2, m + 1) * d.e2 / (t1 - t2);
     }
+    return parts;
+}
+
+inline double AxisKernel::lag_transient(int m, double tau, const Decay& d) const {
+    const TailParts parts = lag_transient_parts(m, tau, d);
+    return parts.a1 + parts.a2;
 }
 
 double AxisKernel::lag_polynomial(int m, double tau) const {
@@ -154,27 +177,13 @@ double AxisKernel::lag_polynomial(int m, double tau) const {
 void AxisKernel::accumulate(const std::array<double, 3>& steps, double tau, bool transient_only,
                             double& position, double& speed) const {
     if (transient_only && lag_count_ == 0) return;
-    // A moving average over W turns a response g into (G(t) - G(t - W)) / W,
-    // G its integral (the response to the next ramp): one term per subset of
-    // the windows, signed by its size.
-    const int terms = 1 << fir_count_;
-    double norm = 1.0;
-    for (int f = 0; f < fir_count_; ++f) norm *= window_[static_cast<std::size_t>(f)];
-    for (int subset = 0; subset < terms; ++subset) {
-        double shift = 0.0;
-        double sign = 1.0;
-        for (int f = 0; f < fir_count_; ++f) {
-            if ((subset & (1 << f)) != 0) {
-                shift += window_[static_cast<std::size_t>(f)];
-                sign = -sign;
-            }
-        }
-        const double age = tau - shift;
+    for (int k = 0; k < term_count_; ++k) {
+        const double age = tau - term_shift_[static_cast<std::size_t>(k)];
+        const double weight = term_weight_[static_cast<std::size_t>(k)];
         // Causal: nothing before the (shifted) break; the transient alone is
         // asked for ages >= 0 only.
         if (age < 0.0 || (age == 0.0 && !transient_only)) continue;
         const Decay d = decay(age);
-        const double weight = sign / norm;
         for (int n = 1; n <= 3; ++n) {
             const double step = steps[static_cast<std::size_t>(n - 1)];
             if (step == 0.0) continue;
@@ -194,63 +203,43 @@ void AxisKernel::accumulate(const std::array<double, 3>& steps, double tau, bool
 void AxisKernel::accumulate_tail(const std::array<double, 3>& steps, double age,
                                  TailParts& parts) const {
     if (lag_count_ == 0) return;
-    const int terms = 1 << fir_count_;
-    double norm = 1.0;
-    for (int f = 0; f < fir_count_; ++f) norm *= window_[static_cast<std::size_t>(f)];
-    for (int subset = 0; subset < terms; ++subset) {
-        double shift = 0.0;
-        double sign = 1.0;
-        for (int f = 0; f < fir_count_; ++f) {
-            if ((subset & (1 << f)) != 0) {
-                shift += window_[static_cast<std::size_t>(f)];
-                sign = -sign;
-            }
-        }
-        const double a = age - shift;
+    for (int k = 0; k < term_count_; ++k) {
+        const double a = age - term_shift_[static_cast<std::size_t>(k)];
+        const double weight = term_weight_[static_cast<std::size_t>(k)];
         const Decay d = decay(a);
         for (int n = 1; n <= 3; ++n) {
             const double step = steps[static_cast<std::size_t>(n - 1)];
             if (step == 0.0) continue;
-            const int m = n + fir_count_;
-            const double w = sign * step / norm;
-            const double t1 = lag_[0];
-            if (lag_count_ == 1) {
-                parts.a1 += w * -power(-t1, m) * d.e1;
-            } else if (double_pole_) {
-                parts.a1 += w * -power(-t1, m) * (m + 1 + a / t1) * d.e1;
-                parts.b += w * -power(-t1, m) * d.e1 / t1;
-            } else {
-                const double t2 = lag_[1];
-                parts.a1 += w * power(-t1, m + 1) * d.e1 / (t1 - t2);
-                parts.a2 += w * -power(-t2, m + 1) * d.e2 / (t1 - t2);
-            }
+            const TailParts term = lag_transient_parts(n + fir_count_, a, d);
+            parts.a1 += weight * step * term.a1;
+            parts.a2 += weight * step * term.a2;
+            parts.b += weight * step * term.b;
         }
     }
 }
 
+// The tails' exponentials are decay(s): e2 is 0 with one lag and unused
+// (a2 = 0) with a double pole.
 double AxisKernel::tail_position(const TailParts& p, double s) const {
     if (lag_count_ == 0) return 0.0;
-    const double e1 = std::exp(-s / lag_[0]);
-    const double e2 = lag_count_ == 2 && !double_pole_ ? std::exp(-s / lag_[1]) : 0.0;
-    return (p.a1 + p.b * s) * e1 + p.a2 * e2;
+    const Decay d = decay(s);
+    return (p.a1 + p.b * s) * d.e1 + p.a2 * d.e2;
 }
 
 double AxisKernel::tail_speed(const TailParts& p, double s) const {
     if (lag_count_ == 0) return 0.0;
+    const Decay d = decay(s);
     const double t1 = lag_[0];
-    const double e1 = std::exp(-s / t1);
-    const double e2 = lag_count_ == 2 && !double_pole_ ? std::exp(-s / lag_[1]) : 0.0;
     const double t2 = lag_count_ == 2 ? lag_[1] : 1.0;
-    return (p.b - (p.a1 + p.b * s) / t1) * e1 - p.a2 / t2 * e2;
+    return (p.b - (p.a1 + p.b * s) / t1) * d.e1 - p.a2 / t2 * d.e2;
 }
 
 double AxisKernel::tail_accel(const TailParts& p, double s) const {
     if (lag_count_ == 0) return 0.0;
+    const Decay d = decay(s);
     const double t1 = lag_[0];
-    const double e1 = std::exp(-s / t1);
-    const double e2 = lag_count_ == 2 && !double_pole_ ? std::exp(-s / lag_[1]) : 0.0;
     const double t2 = lag_count_ == 2 ? lag_[1] : 1.0;
-    return ((p.a1 + p.b * s) / (t1 * t1) - 2.0 * p.b / t1) * e1 + p.a2 / (t2 * t2) * e2;
+    return ((p.a1 + p.b * s) / (t1 * t1) - 2.0 * p.b / t1) * d.e1 + p.a2 / (t2 * t2) * d.e2;
 }
 
 void AxisCommand::add_break(double speed, double accel, double jerk) {

@@ -99,9 +99,10 @@ class AxisKernel {
         double e2{0.0};  // exp(-tau / T2)
     };
     Decay decay(double tau) const;
-    // The lags alone on r_m at age tau > 0: polynomial + transient, or the
-    // transient only.
+    // The lags alone on r_m at age tau > 0: the polynomial part, and the
+    // transient split by exponential as in TailParts (its value a1 + a2).
     double lag_polynomial(int m, double tau) const;
+    TailParts lag_transient_parts(int m, double tau, const Decay& d) const;
     double lag_transient(int m, double tau, const Decay& d) const;
 
     int fir_count_{0};
@@ -109,6 +110,13 @@ class AxisKernel {
     int lag_count_{0};
     std::array<double, 2> lag_{};
     bool double_pole_{false};
+    // A moving average over W turns a response g into (G(t) - G(t - W)) / W,
+    // G its integral (the response to the next ramp): one term per subset of
+    // the windows, at the age less the subset's windows, weighted by its sign
+    // over the windows' product (one term, shift 0 and weight 1, without).
+    int term_count_{1};
+    std::array<double, 4> term_shift_{};
+    std::array<double, 4> term_weight_{1.0, 0.0, 0.0, 0.0};
     std::array<double, 6> lag_moment_{1.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // of the lags alone
     std::array<double, 4> moment_{1.0, 0.0, 0.0, 0.0};
     double window_s_{0.0};
