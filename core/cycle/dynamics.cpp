@@ -135,6 +135,11 @@ AxisKernel::AxisKernel(const AxisDynamics& d) : in_position_mm_(d.in_position_mm
 
 inline AxisKernel::Decay AxisKernel::decay(double tau) const {
     Decay d;
+    if (tau == 0.0) {  // a tail's start, asked once per root: no exponentials
+        d.e1 = lag_count_ >= 1 ? 1.0 : 0.0;
+        d.e2 = lag_count_ == 2 ? 1.0 : 0.0;
+        return d;
+    }
     if (lag_count_ >= 1) d.e1 = std::exp(-tau / lag_[0]);
     if (lag_count_ == 2) d.e2 = double_pole_ ? d.e1 : std::exp(-tau / lag_[1]);
     return d;
@@ -220,26 +225,17 @@ void AxisKernel::accumulate_tail(const std::array<double, 3>& steps, double age,
 
 // The tails' exponentials are decay(s): e2 is 0 with one lag and unused
 // (a2 = 0) with a double pole.
-double AxisKernel::tail_position(const TailParts& p, double s) const {
-    if (lag_count_ == 0) return 0.0;
-    const Decay d = decay(s);
-    return (p.a1 + p.b * s) * d.e1 + p.a2 * d.e2;
-}
-
-double AxisKernel::tail_speed(const TailParts& p, double s) const {
-    if (lag_count_ == 0) return 0.0;
+KinematicState AxisKernel::tail_state(const TailParts& p, double s) const {
+    KinematicState out;
+    if (lag_count_ == 0) return out;
     const Decay d = decay(s);
     const double t1 = lag_[0];
     const double t2 = lag_count_ == 2 ? lag_[1] : 1.0;
-    return (p.b - (p.a1 + p.b * s) / t1) * d.e1 - p.a2 / t2 * d.e2;
-}
-
-double AxisKernel::tail_accel(const TailParts& p, double s) const {
-    if (lag_count_ == 0) return 0.0;
-    const Decay d = decay(s);
-    const double t1 = lag_[0];
-    const double t2 = lag_count_ == 2 ? lag_[1] : 1.0;
-    return ((p.a1 + p.b * s) / (t1 * t1) - 2.0 * p.b / t1) * d.e1 + p.a2 / (t2 * t2) * d.e2;
+    const double first = p.a1 + p.b * s;
+    out.position_mm = first * d.e1 + p.a2 * d.e2;
+    out.speed_mm_s = (p.b - first / t1) * d.e1 - p.a2 / t2 * d.e2;
+    out.accel_mm_s2 = (first / (t1 * t1) - 2.0 * p.b / t1) * d.e1 + p.a2 / (t2 * t2) * d.e2;
+    return out;
 }
 
 void AxisCommand::add_break(double speed, double accel, double jerk) {
@@ -319,9 +315,12 @@ namespace {
 // `eval(t) -> {f, step}` proposes (Newton's), kept inside the bracket once
 // one is known, else bisection; before a point with f >= 0 is found, a
 // step that does not advance doubles the distance from `lo` instead (at
-// least `scale`, the time over which f changes).
+// least `scale`, the time over which f changes). A step under
+// `step_tolerance` (relative to max(1, t)) is the last: Newton converges
+// quadratically there, so the root's error is of the order step^2 / scale.
 template <typename Eval>
-double safeguarded_root(double lo, double t, double f_tolerance, double scale, Eval eval) {
+double safeguarded_root(double lo, double t, double f_tolerance, double step_tolerance,
+                        double scale, Eval eval) {
     double hi = std::numeric_limits<double>::infinity();
     for (int iter = 0; iter < 200; ++iter) {
         const auto [f, step] = eval(t);
@@ -335,9 +334,7 @@ double safeguarded_root(double lo, double t, double f_tolerance, double scale, E
         const bool bracketed = std::isfinite(hi);
         if (!(next > lo) || (bracketed && !(next < hi)) || !std::isfinite(next)) {
             next = bracketed ? 0.5 * (lo + hi) : lo + std::max(2.0 * (t - lo), scale);
-        } else if (std::abs(step) <= 1e-7 * std::max(1.0, t)) {
-            // Newton converges quadratically here: the step's own error is
-            // of the order step^2 / scale, under 1e-12 s.
+        } else if (std::abs(step) <= step_tolerance * std::max(1.0, t)) {
             return next;
         }
         if (bracketed && hi - lo <= 1e-15 * std::max(1.0, hi)) return hi;
@@ -346,13 +343,27 @@ double safeguarded_root(double lo, double t, double f_tolerance, double scale, E
     return std::isfinite(hi) ? hi : t;
 }
 
+// The Newton step in time that brings a decaying `value` (falling at `rate`)
+// down to `level`: on log(value / level) while the value is far from the
+// level (exact in one step for a single exponential), within a factor of 1.5
+// of it on the value itself, which converges as fast without a logarithm.
+double decay_step(double value, double rate, double level) {
+    if (!(value > 0.0 && rate > 0.0)) return 0.0;
+    const double ratio = value / level;
+    if (ratio > 1.0 / 1.5 && ratio < 1.5) return (value - level) / rate;
+    return value / rate * std::log(ratio);
+}
+
 }  // namespace
 
 double AxisMotion::time_at_position(double position_mm, double guess_s) const {
     if (position_mm <= 0.0) return 0.0;
     const double scale = std::max(kernel_.window_s() + kernel_.lag_time_s(), 1e-6);
-    return safeguarded_root(0.0, std::max(guess_s, 1e-9), 1e-12 * std::max(1.0, position_mm), scale,
-                            [&](double t) {
+    // Positions set the overtravel and the recorded trigger, which the
+    // published checks compare to 1e-14 mm: a last step under 1e-7 s leaves
+    // an error under 1e-12 s.
+    return safeguarded_root(0.0, std::max(guess_s, 1e-9), 1e-12 * std::max(1.0, position_mm), 1e-7,
+                            scale, [&](double t) {
                                 const KinematicState s = state(t);
                                 const double f = s.position_mm - position_mm;
                                 const double step = s.speed_mm_s > 0.0 ? -f / s.speed_mm_s : 0.0;
@@ -365,29 +376,27 @@ double AxisMotion::in_position_time() const {
     const double x_end = command_.end_state().position_mm;
     const double width = kernel_.in_position_mm();
     // f = width - error rises through 0. The tail is a sum of decaying
-    // exponentials, so Newton runs on log(error / width): exact in one step
-    // for a single one.
+    // exponentials (decay_step).
     const auto eval = [&](double t) {
         const KinematicState s = state(t);
         const double e = x_end - s.position_mm;
-        const double f = width - e;
-        const double step =
-            e > 0.0 && s.speed_mm_s > 0.0 ? e / s.speed_mm_s * std::log(e / width) : 0.0;
-        return std::pair{f, step};
+        return std::pair{width - e, decay_step(e, s.speed_mm_s, width)};
     };
+    const double t_ref = t_end + kernel_.window_s();
+    if (kernel_.lag_count() > 0 && t_ref == t_end) {
+        // Lags alone: every break has settled at the command's end, and the
+        // error is the tail's.
+        return t_end + tail_root(tail_at(t_end), width, false);
+    }
     const auto [f_end, step_end] = eval(t_end);
     if (f_end >= 0.0) return t_end;
-    const double t_ref = t_end + kernel_.window_s();
-    if (kernel_.lag_count() > 0 && t_ref > t_end && eval(t_ref).first < 0.0) {
+    if (kernel_.lag_count() > 0 && eval(t_ref).first < 0.0) {
         // Still out of position when every break has settled: the error is
         // the tail alone, solved without the breaks.
         return t_ref + tail_root(tail_at(t_ref), width, false);
     }
-    if (kernel_.lag_count() > 0 && t_ref == t_end) {
-        return t_end + tail_root(tail_at(t_end), width, false);
-    }
     const double first = t_end + step_end;
-    return safeguarded_root(t_end, first > t_end ? first : t_end, 1e-12 * width,
+    return safeguarded_root(t_end, first > t_end ? first : t_end, 1e-12 * width, 1e-7,
                             std::max(kernel_.window_s() + kernel_.lag_time_s(), 1e-6), eval);
 }
 
@@ -403,20 +412,19 @@ AxisKernel::TailParts AxisMotion::tail_at(double t_ref) const {
 double AxisMotion::tail_root(const AxisKernel::TailParts& parts, double level, bool speed) const {
     // The remaining error (position) or speed deficit is minus the tail's
     // position or speed: decaying exponentials, so Newton runs on
-    // log(value / level).
+    // log(value / level) (decay_step).
     const auto eval = [&](double s) {
-        const double value =
-            speed ? -kernel_.tail_speed(parts, s) : -kernel_.tail_position(parts, s);
-        const double rate =
-            speed ? kernel_.tail_accel(parts, s) : kernel_.tail_speed(parts, s);  // -d/ds value
+        const KinematicState tail = kernel_.tail_state(parts, s);
+        const double value = speed ? -tail.speed_mm_s : -tail.position_mm;
+        const double rate = speed ? tail.accel_mm_s2 : tail.speed_mm_s;  // -d/ds value
         const double f = level - value;
-        const double step =
-            value > 0.0 && rate > 0.0 ? value / rate * std::log(value / level) : 0.0;
-        return std::pair{f, step};
+        return std::pair{f, decay_step(value, rate, level)};
     };
     const auto [f0, step0] = eval(0.0);
     if (f0 >= 0.0) return 0.0;
-    return safeguarded_root(0.0, step0 > 0.0 ? step0 : 0.0, 1e-12 * level,
+    // A tail's root is a phase's end time: a last step under 1e-6 s leaves an
+    // error of the order 1e-12 / T s, a nanosecond at the least T.
+    return safeguarded_root(0.0, step0 > 0.0 ? step0 : 0.0, 1e-12 * level, 1e-6,
                             std::max(kernel_.lag_time_s(), 1e-6), eval);
 }
 

@@ -87,10 +87,9 @@ class AxisKernel {
         double b{0.0};
     };
     void accumulate_tail(const std::array<double, 3>& steps, double age, TailParts& parts) const;
-    // Position and speed of a tail at s >= 0 after where its parts were taken.
-    double tail_position(const TailParts& parts, double s) const;
-    double tail_speed(const TailParts& parts, double s) const;
-    double tail_accel(const TailParts& parts, double s) const;
+    // Position, speed and acceleration of a tail at s >= 0 after where its
+    // parts were taken (one pair of exponentials for all three).
+    KinematicState tail_state(const TailParts& parts, double s) const;
     int lag_count() const { return lag_count_; }
 
   private:
