@@ -84,8 +84,16 @@ const char* to_string(WarningCode code) {
             return "uncertainty_over_target";
         case WarningCode::calibration_feed_mismatch:
             return "calibration_feed_mismatch";
+        case WarningCode::no_valid_feed:
+            return "no_valid_feed";
     }
     return "?";
+}
+
+void order_by_severity(std::vector<Warning>& warnings) {
+    std::stable_sort(warnings.begin(), warnings.end(), [](const Warning& x, const Warning& y) {
+        return static_cast<int>(x.severity) > static_cast<int>(y.severity);
+    });
 }
 
 unsigned CycleResult::invalid_codes() const {
@@ -213,6 +221,15 @@ Message Warning::to_message() const {
             m.args = {arg("speed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 1),
                       arg("calibration_speed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 1),
                       arg("error_mm", ArgKind::length_mm, c, 4)};
+            break;
+        case WarningCode::no_valid_feed:
+            m.text = QT_TRANSLATE_NOOP(
+                "Warning",
+                "No probing feed from %1 to %2 gives a valid cycle: the overtravel reaches the "
+                "probe's limit even at %1, so there is no knee; shorten the delays or use a "
+                "probe with more overtravel");
+            m.args = {arg("from_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 0),
+                      arg("to_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 0)};
             break;
     }
     return m;
@@ -819,23 +836,27 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     // domain.md, "Strategies": recommended backoff = overtravel at the fast feed + reseat.
     // Issue 11: measured from the backoff's reference, and the second touch
     // also needs room to reach the measuring feed before it touches.
-    r.recommended_backoff_mm_ =
+    // Issue 12: rounded up to the editors' digits (the tolerance absorbs a
+    // sum's last bits, 2.1050000000000004 is 2.105), so the value shown is
+    // the value that clears backoff_too_small.
+    const double needed =
         backoff_reference_mm(c, r.first_) +
         std::max(p.reseat_mm, approach_room(scenario, limits, dynamics, measure_v));
+    r.recommended_backoff_mm_ = std::ceil(needed / kBackoffStep_mm - 1e-6) * kBackoffStep_mm;
 
     // Touches of one cycle differ only in direction, so touch 0 speaks for all.
     std::vector<Warning>& w = r.warnings_;
     if (worst_overtravel >= p.overtravel_limit_mm) {
         w.push_back({WarningCode::overtravel_limit, Severity::error, worst_overtravel,
                      p.overtravel_limit_mm, 0.0, static_cast<double>(r.overtravel_touch_)});
-    } else if (worst_overtravel >= 0.8 * p.overtravel_limit_mm) {
+    } else if (worst_overtravel >= kOvertravelWarningFraction * p.overtravel_limit_mm) {
         w.push_back({WarningCode::overtravel_limit, Severity::warning, worst_overtravel,
                      p.overtravel_limit_mm, 0.0, static_cast<double>(r.overtravel_touch_)});
     }
     if (two_touch) {
         const double recommended = r.recommended_backoff_mm_;
-        // Within 1 nm of the recommendation counts as following it: a value
-        // written back rounded to the editors' digits must not be refused.
+        // Within 1 nm of the recommendation counts as following it: the value
+        // shown and typed back may differ from it in its last bits.
         constexpr double kBackoffTolerance_mm = 1e-6;
         if (c.backoff_mm < recommended - kBackoffTolerance_mm) {
             w.push_back({WarningCode::backoff_too_small, Severity::error, c.backoff_mm, recommended,
@@ -860,6 +881,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
                      measuring_programmed_v, calibration_v,
                      speed_error_mm(m, p, measuring_programmed_v, calibration_v)});
     }
+    order_by_severity(w);
 }
 
 }  // namespace probecycle

@@ -56,6 +56,7 @@ enum class WarningCode {
     knee_at_range_end,
     uncertainty_over_target,
     calibration_feed_mismatch,
+    no_valid_feed,
 };
 const char* to_string(WarningCode code);
 
@@ -76,11 +77,17 @@ struct Warning {
     //                           d = which end (0 the lowest feed, 1 the highest)
     // uncertainty_over_target:  a = uncertainty, b = target
     // calibration_feed_mismatch:a = measuring speed, b = calibration speed, c = error
+    // no_valid_feed:            a = lowest feed searched, b = highest (analyse(): no
+    //                           feed between gives a valid cycle, so there is no knee)
     double a{0.0}, b{0.0}, c{0.0}, d{0.0};
     // The message: code, template and the numbers above as named arguments.
     Message to_message() const;
     std::string message() const;  // in English: render(to_message())
 };
+
+// Errors first, then warnings, then notes; in the order computed within each
+// (a stable sort): what makes a cycle invalid is read first.
+void order_by_severity(std::vector<Warning>& warnings);
 
 constexpr unsigned invalid_code_bit(WarningCode code) {
     return 1u << static_cast<unsigned>(code);
@@ -149,6 +156,8 @@ class CycleResult {
     // Expanded (k = 2) uncertainty of the measuring touch: uniform scan phase
     // combined with the probe's repeatability.
     double uncertainty_mm() const { return uncertainty_mm_; }
+    // The backoff the cycle needs, rounded up to kBackoffStep_mm: the value
+    // shown is the value that clears backoff_too_small.
     double recommended_backoff_mm() const { return recommended_backoff_mm_; }
     const TouchResult& first_touch() const { return first_; }
     // The measuring touch (the second touch of two-touch, else the first).
@@ -205,6 +214,11 @@ double speed_error_mm(const Machine& machine, const Probe& probe, double speed_m
 // below it the axis counts as at its feed (filters and a servo lag approach
 // the feed only exponentially).
 constexpr double kAccelErrorTolerance_mm = 1e-4;
+// The recommended backoff is rounded up to this (1 µm), the editors' digits.
+constexpr double kBackoffStep_mm = 0.001;
+// Overtravel at this fraction of the probe's limit is a warning (at the
+// limit, an error).
+constexpr double kOvertravelWarningFraction = 0.8;
 
 // The scenario's axis: the interpolator's plans (motion.h) and, when the
 // machine has them, its dynamics after interpolation (dynamics.h).

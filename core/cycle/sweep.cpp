@@ -264,9 +264,15 @@ Analysis analyse(const Scenario& scenario) {
     const double search_to = std::max(kKneeSearchTo_mm_min, scenario.cycle.probe_feed_mm_min);
     const KneeSearch knee = find_knee(scenario, kKneeSearchFrom_mm_min, search_to, optimised);
     analysis.knee_feed_mm_min = knee.knee_feed_mm_min;
-    if (!analysis.knee_feed_mm_min) return analysis;
-    if (knee.range_end_warning)
-        analysis.cycle.mutable_warnings().push_back(*knee.range_end_warning);
+    std::vector<Warning>& warnings = analysis.cycle.mutable_warnings();
+    if (!analysis.knee_feed_mm_min) {
+        // Issue 12: say why there is no knee.
+        warnings.push_back({WarningCode::no_valid_feed, Severity::warning,
+                            mm_min_to_mm_s(kKneeSearchFrom_mm_min), mm_min_to_mm_s(search_to)});
+        order_by_severity(warnings);
+        return analysis;
+    }
+    if (knee.range_end_warning) warnings.push_back(*knee.range_end_warning);
     CycleResult& scratch = scratch_result();
     const double knee_feed = *analysis.knee_feed_mm_min;
     analysis.knee_cycle_time_s = cycle_time_at(scenario, knee_feed, optimised, scratch);
@@ -274,11 +280,11 @@ Analysis analyse(const Scenario& scenario) {
     if (feed > knee_feed * (1.0 + 1e-6)) {
         // Both times on the same (optimised) curve the knee was found on.
         const double feed_time = cycle_time_at(scenario, feed, optimised, scratch);
-        analysis.cycle.mutable_warnings().push_back(
-            {WarningCode::feed_beyond_knee, Severity::info, mm_min_to_mm_s(feed),
-             mm_min_to_mm_s(knee_feed), *analysis.knee_cycle_time_s - feed_time,
-             scenario.cycle.knee_tolerance});
+        warnings.push_back({WarningCode::feed_beyond_knee, Severity::info, mm_min_to_mm_s(feed),
+                            mm_min_to_mm_s(knee_feed), *analysis.knee_cycle_time_s - feed_time,
+                            scenario.cycle.knee_tolerance});
     }
+    order_by_severity(warnings);
     return analysis;
 }
 

@@ -1008,6 +1008,14 @@
         <source>Backoff %1 from where the probe stopped is less than the recommended %2 (the first touch&apos;s overtravel plus room to reseat and to reach the measuring feed): the probe may not reseat before the second touch</source>
         <translation>Отвод %1 от точки остановки меньше рекомендуемого %2 (перебег первого касания плюс место для возврата в исходное и разгона до измерительной подачи): датчик может не вернуться в исходное до второго касания</translation>
     </message>
+    <message>
+        <source>No probing feed from %1 to %2 gives a valid cycle: the overtravel reaches the probe&apos;s limit even at %1, so there is no knee; shorten the delays or use a probe with more overtravel</source>
+        <translation>Ни одна подача поиска от %1 до %2 не даёт допустимого цикла: перебег достигает предела щупа уже при %1, поэтому перегиба нет; сократите задержки или возьмите щуп с бо́льшим допустимым перебегом</translation>
+    </message>
+    <message>
+        <source>No valid feed</source>
+        <translation>Нет допустимой подачи</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::CalibrationTab</name>
@@ -2497,6 +2505,26 @@
         <source>&amp;Machine (skip input, control)</source>
         <translation>&amp;Станок (вход пропуска, ЧПУ)</translation>
     </message>
+    <message>
+        <source>Cycle (%1)</source>
+        <translation>Цикл (%1)</translation>
+    </message>
+    <message>
+        <source>drop feed for the overtravel</source>
+        <translation>снизить подачу ради перебега</translation>
+    </message>
+    <message>
+        <source>Errors: %1</source>
+        <translation>Ошибок: %1</translation>
+    </message>
+    <message>
+        <source>Warnings: %1</source>
+        <translation>Предупреждений: %1</translation>
+    </message>
+    <message>
+        <source>Notes: %1</source>
+        <translation>Замечаний: %1</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>
@@ -2636,6 +2664,10 @@
     <message>
         <source>Start %1 out</source>
         <translation>Начало за %1</translation>
+    </message>
+    <message>
+        <source>Drop feed to %1</source>
+        <translation>Снизить подачу до %1</translation>
     </message>
 </context>
 </TS>

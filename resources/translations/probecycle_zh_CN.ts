@@ -1008,6 +1008,14 @@
         <source>Backoff %1 from where the probe stopped is less than the recommended %2 (the first touch&apos;s overtravel plus room to reseat and to reach the measuring feed): the probe may not reseat before the second touch</source>
         <translation>从停止处起的回退距离 %1 小于推荐值 %2（第一次触测的过行程加上复位和加速到测量进给率所需的距离）：第二次触测前测头可能尚未复位</translation>
     </message>
+    <message>
+        <source>No probing feed from %1 to %2 gives a valid cycle: the overtravel reaches the probe&apos;s limit even at %1, so there is no knee; shorten the delays or use a probe with more overtravel</source>
+        <translation>从 %1 到 %2 没有任何探测进给率能得到有效循环：即使在 %1 时过行程也已达到测头极限，因此没有拐点；请缩短延迟或选用允许过行程更大的测头</translation>
+    </message>
+    <message>
+        <source>No valid feed</source>
+        <translation>没有有效进给率</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::CalibrationTab</name>
@@ -2497,6 +2505,26 @@
         <source>&amp;Machine (skip input, control)</source>
         <translation>机床（跳跃输入、控制系统）(&amp;M)</translation>
     </message>
+    <message>
+        <source>Cycle (%1)</source>
+        <translation>循环（%1）</translation>
+    </message>
+    <message>
+        <source>drop feed for the overtravel</source>
+        <translation>为过行程降低进给率</translation>
+    </message>
+    <message>
+        <source>Errors: %1</source>
+        <translation>错误：%1</translation>
+    </message>
+    <message>
+        <source>Warnings: %1</source>
+        <translation>警告：%1</translation>
+    </message>
+    <message>
+        <source>Notes: %1</source>
+        <translation>提示：%1</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>
@@ -2636,6 +2664,10 @@
     <message>
         <source>Start %1 out</source>
         <translation>起点设在 %1 外</translation>
+    </message>
+    <message>
+        <source>Drop feed to %1</source>
+        <translation>将进给率降至 %1</translation>
     </message>
 </context>
 </TS>

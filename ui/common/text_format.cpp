@@ -91,6 +91,8 @@ QString warning_title(WarningCode code) {
             return tr_warning(QT_TRANSLATE_NOOP("Warning", "Uncertainty over the target"));
         case WarningCode::calibration_feed_mismatch:
             return tr_warning(QT_TRANSLATE_NOOP("Warning", "Calibration feed differs"));
+        case WarningCode::no_valid_feed:
+            return tr_warning(QT_TRANSLATE_NOOP("Warning", "No valid feed"));
     }
     return QString::fromUtf8(to_string(code));
 }

@@ -27,50 +27,7 @@ QStyle::StandardPixmap severity_icon(Severity severity) {
     return QStyle::SP_MessageBoxInformation;
 }
 
-// Rounded so the editors show exactly the value set, and rounded the way that
-// clears the warning (backoff up, feed down, start distance up).
-double round_up(double value, double step) {
-    return std::ceil(value / step - 1e-9) * step;
-}
-double round_down(double value, double step) {
-    return std::floor(value / step + 1e-9) * step;
-}
-
-std::optional<Scenario> fixed_scenario(const Computed& c, Fix fix) {
-    if (!c.valid()) return std::nullopt;
-    Scenario s = c.scenario;
-    switch (fix) {
-        case Fix::backoff_to_recommended:
-            if (s.cycle.strategy != Strategy::two_touch) return std::nullopt;
-            s.cycle.backoff_mm = round_up(c.cycle().recommended_backoff_mm(), 0.001);
-            return s;
-        case Fix::feed_to_knee: {
-            const auto& knee = c.analysis.knee_feed_mm_min;
-            if (!knee || *knee >= s.cycle.probe_feed_mm_min) return std::nullopt;
-            s.cycle.probe_feed_mm_min = std::max(round_down(*knee, 1.0), 1.0);
-            return s;
-        }
-        case Fix::approach_to_reach_feed: {
-            const double feed_mm_s = c.cycle().first_touch().programmed_feed_mm_s;
-            s.cycle.approach_mm = round_up(approach_room_mm(s, feed_mm_s), 0.01);
-            if (s.cycle.approach_mm <= c.scenario.cycle.approach_mm) return std::nullopt;
-            return s;
-        }
-        case Fix::none:
-            break;
-    }
-    return std::nullopt;
-}
-
 }  // namespace
-
-std::optional<Scenario> apply_fix(const Computed& c, Fix fix) {
-    std::optional<Scenario> fixed = fixed_scenario(c, fix);
-    // A fix that breaks another rule (a bore too narrow for the longer
-    // approach, a value beyond its range) is not offered.
-    if (fixed && !validate(*fixed).empty()) return std::nullopt;
-    return fixed;
-}
 
 WarningsPanel::WarningsPanel(QWidget* parent) : QWidget(parent) {
     rows_layout_ = new QVBoxLayout(this);
@@ -125,7 +82,7 @@ WarningsPanel::Row& WarningsPanel::row(std::size_t index) {
         layout->addWidget(r.button, 0, Qt::AlignVCenter);
         const std::size_t i = rows_.size();
         connect(r.button, &QPushButton::clicked, this, [this, i] {
-            if (i < shown_) emit fix_requested(rows_[i].fix);
+            if (i < shown_) emit fix_requested(rows_[i].code);
         });
         // Before the stretch at the end.
         rows_layout_->insertWidget(rows_layout_->count() - 1, r.widget);
@@ -135,8 +92,8 @@ WarningsPanel::Row& WarningsPanel::row(std::size_t index) {
 }
 
 void WarningsPanel::show_row(std::size_t index, const QString& code, Severity severity,
-                             const QString& title, const QString& text, Fix fix,
-                             const QString& fix_text) {
+                             const QString& title, const QString& text,
+                             const std::optional<Fix>& fix, const QString& fix_text) {
     Row& r = row(index);
     r.code = code;
     r.fix = fix;
@@ -157,64 +114,70 @@ void WarningsPanel::show_row(std::size_t index, const QString& code, Severity se
     r.title->setText(title);
     r.text->setText(text);
     r.button->setObjectName(QStringLiteral("fix:") + code);
-    r.button->setVisible(fix != Fix::none);
+    r.button->setVisible(fix.has_value());
     r.button->setText(fix_text);
     r.widget->setVisible(true);
 }
+
+namespace {
+
+// The button's words: what the fix sets, with the value.
+QString fix_text(const Fix& fix) {
+    const Cycle& c = fix.scenario.cycle;
+    switch (fix.kind) {
+        case FixKind::backoff_to_recommended:
+            return WarningsPanel::tr("Set backoff to %1").arg(format_mm(c.backoff_mm));
+        case FixKind::feed_to_knee:
+            return WarningsPanel::tr("Drop feed to the knee, %1")
+                .arg(format_feed(c.probe_feed_mm_min));
+        case FixKind::feed_for_overtravel:
+            return WarningsPanel::tr("Drop feed to %1").arg(format_feed(c.probe_feed_mm_min));
+        case FixKind::approach_to_reach_feed:
+            return WarningsPanel::tr("Start %1 out").arg(format_mm(c.approach_mm));
+        case FixKind::none:
+            break;
+    }
+    return {};
+}
+
+}  // namespace
 
 void WarningsPanel::show_result(const Computed& c) {
     std::size_t n = 0;
     if (!c.valid()) {
         for (const FieldError& e : c.errors) {
             show_row(n++, QStringLiteral("invalid:") + QString::fromStdString(e.key),
-                     Severity::error, tr("Invalid scenario"), translate(e.to_message()), Fix::none,
-                     {});
+                     Severity::error, tr("Invalid scenario"), translate(e.to_message()),
+                     std::nullopt, {});
         }
     } else {
+        // In the core's order: errors first (order_by_severity).
         for (const Warning& w : c.cycle().warnings()) {
-            Fix fix = Fix::none;
-            switch (w.code) {
-                case WarningCode::backoff_too_small:
-                case WarningCode::backoff_excess:
-                    fix = Fix::backoff_to_recommended;
-                    break;
-                case WarningCode::feed_beyond_knee:
-                case WarningCode::overtravel_limit:
-                    fix = Fix::feed_to_knee;
-                    break;
-                case WarningCode::touch_while_accelerating:
-                    fix = w.d < 0.5 ? Fix::approach_to_reach_feed : Fix::none;
-                    break;
-                default:
-                    break;
+            const std::optional<Fix> fix = probecycle::fix_for(c.scenario, c.analysis, w);
+            // Each row's code is unique: the second touch's acceleration
+            // warning is told from the first's.
+            QString code = QString::fromUtf8(to_string(w.code));
+            if (w.code == WarningCode::touch_while_accelerating && w.d > 0.5) {
+                code += QStringLiteral(":second");
             }
-            const std::optional<Scenario> fixed = apply_fix(c, fix);
-            if (!fixed) fix = Fix::none;
-            QString fix_text;
-            switch (fix) {
-                case Fix::backoff_to_recommended:
-                    fix_text = tr("Set backoff to %1").arg(format_mm(fixed->cycle.backoff_mm));
-                    break;
-                case Fix::feed_to_knee:
-                    fix_text = tr("Drop feed to the knee, %1")
-                                   .arg(format_feed(fixed->cycle.probe_feed_mm_min));
-                    break;
-                case Fix::approach_to_reach_feed:
-                    fix_text = tr("Start %1 out").arg(format_mm(fixed->cycle.approach_mm));
-                    break;
-                case Fix::none:
-                    break;
-            }
-            show_row(n++, QString::fromUtf8(to_string(w.code)), w.severity, warning_title(w.code),
-                     warning_text(w), fix, fix_text);
+            show_row(n++, code, w.severity, warning_title(w.code), warning_text(w), fix,
+                     fix ? fix_text(*fix) : QString());
         }
     }
     for (std::size_t i = n; i < rows_.size(); ++i) {
         rows_[i].widget->setVisible(false);
         rows_[i].code.clear();
+        rows_[i].fix.reset();
     }
     shown_ = n;
     all_clear_->setVisible(n == 0);
+    emit counts_changed();
+}
+
+int WarningsPanel::count(Severity severity) const {
+    int n = 0;
+    for (std::size_t i = 0; i < shown_; ++i) n += rows_[i].severity == static_cast<int>(severity);
+    return n;
 }
 
 QStringList WarningsPanel::codes() const {
@@ -229,11 +192,11 @@ QStringList WarningsPanel::texts() const {
     return out;
 }
 
-Fix WarningsPanel::fix_for(const QString& code) const {
+std::optional<Fix> WarningsPanel::fix_for(const QString& code) const {
     for (std::size_t i = 0; i < shown_; ++i) {
         if (rows_[i].code == code) return rows_[i].fix;
     }
-    return Fix::none;
+    return std::nullopt;
 }
 
 }  // namespace probecycle::ui

@@ -1,7 +1,8 @@
 #pragma once
 
-// Every core warning with a severity icon and colour, and a one-click fix
-// where there is one. Problems that make the scenario invalid are listed too.
+// Every core warning with a severity icon and colour, errors first, and a
+// one-click fix where the core has one that clears it (core/cycle/fixes.h).
+// Problems that make the scenario invalid are listed too.
 
 #include <QString>
 #include <QStringList>
@@ -9,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/cycle/fixes.h"
 #include "ui/cycle/computation.h"
 
 class QFrame;
@@ -18,17 +20,6 @@ class QVBoxLayout;
 
 namespace probecycle::ui {
 
-enum class Fix {
-    none,
-    backoff_to_recommended,  // set the backoff to the first touch's overtravel + reseat
-    feed_to_knee,            // drop the probing feed to the knee
-    approach_to_reach_feed,  // start far enough out to touch at full feed
-};
-
-// The scenario after applying a fix, with the value from the core's result
-// rounded the safe way to what the editors show; nullopt when it does not apply.
-std::optional<Scenario> apply_fix(const Computed& computed, Fix fix);
-
 class WarningsPanel : public QWidget {
     Q_OBJECT
 
@@ -37,14 +28,20 @@ class WarningsPanel : public QWidget {
 
     void show_result(const Computed& computed);
 
-    // Codes shown, in order ("overtravel_limit", ...; "invalid:<key>" for field errors).
+    // Codes shown, in order ("overtravel_limit", ...; "touch_while_accelerating:second"
+    // for the second touch's; "invalid:<key>" for field errors).
     QStringList codes() const;
     QStringList texts() const;
-    // The fix offered for a shown code, Fix::none if none.
-    Fix fix_for(const QString& code) const;
+    // The fix offered for a shown code, nullopt if none.
+    std::optional<Fix> fix_for(const QString& code) const;
+    // Shown problems by severity, for the panel's title.
+    int count(Severity severity) const;
 
   signals:
-    void fix_requested(probecycle::ui::Fix fix);
+    // The user pressed the fix button of the row showing `code`.
+    void fix_requested(const QString& code);
+    // The rows changed (their number or severities).
+    void counts_changed();
 
   protected:
     void changeEvent(QEvent* event) override;
@@ -58,12 +55,12 @@ class WarningsPanel : public QWidget {
         QLabel* text{nullptr};
         QPushButton* button{nullptr};
         QString code;
-        Fix fix{Fix::none};
+        std::optional<Fix> fix;
         int severity{-1};
     };
     Row& row(std::size_t index);
     void show_row(std::size_t index, const QString& code, Severity severity, const QString& title,
-                  const QString& text, Fix fix, const QString& fix_text);
+                  const QString& text, const std::optional<Fix>& fix, const QString& fix_text);
     void retranslate();
 
     QVBoxLayout* rows_layout_{nullptr};

@@ -147,16 +147,20 @@ void MainWindow::build_ui() {
     readouts_ = new Readouts;
     charts_ = new CycleCharts;
     warnings_ = new WarningsPanel;
-    connect(warnings_, &WarningsPanel::fix_requested, this, [this](Fix fix) { apply_fix(fix); });
+    connect(warnings_, &WarningsPanel::fix_requested, this,
+            [this](const QString& code) { apply_fix_for(code); });
+    connect(warnings_, &WarningsPanel::counts_changed, this, &MainWindow::update_warning_counts);
     auto* warnings_scroll = new QScrollArea;
     warnings_scroll->setWidget(warnings_);
     warnings_scroll->setWidgetResizable(true);
     warnings_scroll->setFrameShape(QFrame::NoFrame);
     warnings_title_ = new QLabel;
+    warnings_title_->setObjectName(QStringLiteral("warnings-title"));
     QFont bold = warnings_title_->font();
     bold.setBold(true);
     warnings_title_->setFont(bold);
     auto* warnings_box = new QWidget;
+    warnings_box->setObjectName(QStringLiteral("warnings-box"));
     auto* warnings_layout = new QVBoxLayout(warnings_box);
     warnings_layout->setContentsMargins(0, 0, 0, 0);
     warnings_layout->setSpacing(2);
@@ -167,9 +171,13 @@ void MainWindow::build_ui() {
     right_splitter_->setChildrenCollapsible(false);
     right_splitter_->addWidget(charts_);
     right_splitter_->addWidget(warnings_box);
-    right_splitter_->setStretchFactor(0, 5);
+    right_splitter_->setStretchFactor(0, 3);
     right_splitter_->setStretchFactor(1, 1);
-    warnings_box->setMinimumHeight(70);
+    // Issue 12: room for about three problems, and charts that stay readable
+    // however far the user drags the panel up.
+    const int line = fontMetrics().height();
+    warnings_box->setMinimumHeight(8 * line);
+    charts_->setMinimumHeight(20 * line);
 
     auto* right = new QWidget;
     auto* right_layout = new QVBoxLayout(right);
@@ -359,7 +367,7 @@ void MainWindow::build_menus() {
 }
 
 void MainWindow::retranslate() {
-    tabs_->setTabText(0, tr("Cycle"));
+    update_warning_counts();
     tabs_->setTabText(1, tr("Calibration"));
     tabs_->setTabText(2, tr("Latency"));
     tabs_->setTabText(3, tr("Comparison"));
@@ -405,7 +413,6 @@ void MainWindow::retranslate() {
     view_menu_->setTitle(tr("&View"));
     language_menu_->setTitle(tr("&Language"));
     help_menu_->setTitle(tr("&Help"));
-    warnings_title_->setText(tr("Warnings"));
     if (auto* toolbar = findChild<QToolBar*>(QStringLiteral("main-toolbar"))) {
         toolbar->setWindowTitle(tr("Main toolbar"));
     }
@@ -754,31 +761,48 @@ void MainWindow::clear_baseline() {
     schedule_recompute();
 }
 
-bool MainWindow::apply_fix(Fix fix) {
-    recompute_now();
-    const std::optional<Scenario> fixed = probecycle::ui::apply_fix(computation_.result(), fix);
-    if (!fixed) return false;
-    QString text;
-    switch (fix) {
-        case Fix::backoff_to_recommended:
-            text = tr("set backoff to recommended");
-            break;
-        case Fix::feed_to_knee:
-            text = tr("drop feed to the knee");
-            break;
-        case Fix::approach_to_reach_feed:
-            text = tr("start far enough out to reach the feed");
-            break;
-        case Fix::none:
-            return false;
-    }
-    edit_scenario(*fixed, text);
-    return true;
+// The panel's title and the Cycle tab count the problems shown, so an error
+// is seen from any tab and however small the panel is.
+void MainWindow::update_warning_counts() {
+    const int errors = warnings_->count(Severity::error);
+    const int warnings = warnings_->count(Severity::warning);
+    const int notes = warnings_->count(Severity::info);
+    QStringList parts;
+    if (errors > 0) parts << tr("Errors: %1").arg(errors);
+    if (warnings > 0) parts << tr("Warnings: %1").arg(warnings);
+    if (notes > 0) parts << tr("Notes: %1").arg(notes);
+    warnings_title_->setText(parts.isEmpty() ? tr("Warnings")
+                                             : parts.join(QStringLiteral("  \u00b7  ")));
+    const int problems = errors + warnings;
+    tabs_->setTabText(0, problems > 0 ? tr("Cycle (%1)").arg(problems) : tr("Cycle"));
+    tabs_->setTabIcon(0, errors > 0     ? style()->standardIcon(QStyle::SP_MessageBoxCritical)
+                         : warnings > 0 ? style()->standardIcon(QStyle::SP_MessageBoxWarning)
+                                        : QIcon());
 }
 
 bool MainWindow::apply_fix_for(const QString& warning_code) {
     recompute_now();
-    return apply_fix(warnings_->fix_for(warning_code));
+    const std::optional<Fix> fix = warnings_->fix_for(warning_code);
+    if (!fix) return false;
+    QString text;
+    switch (fix->kind) {
+        case FixKind::backoff_to_recommended:
+            text = tr("set backoff to recommended");
+            break;
+        case FixKind::feed_to_knee:
+            text = tr("drop feed to the knee");
+            break;
+        case FixKind::feed_for_overtravel:
+            text = tr("drop feed for the overtravel");
+            break;
+        case FixKind::approach_to_reach_feed:
+            text = tr("start far enough out to reach the feed");
+            break;
+        case FixKind::none:
+            return false;
+    }
+    edit_scenario(fix->scenario, text);
+    return true;
 }
 
 // --- what the user sees ---------------------------------------------------

@@ -76,7 +76,6 @@ class MainWindow : public QMainWindow {
     bool has_baseline() const { return baseline_.has_value(); }
 
     // Fixes offered by the warnings panel.
-    bool apply_fix(Fix fix);
     bool apply_fix_for(const QString& warning_code);
 
     // What the user sees.
@@ -121,6 +120,7 @@ class MainWindow : public QMainWindow {
     void report_error(const QString& title, const QString& text);
     void remember_recent(const QString& path);
     void update_title();
+    void update_warning_counts();
     void update_undo_texts();
     void update_recent_menu();
 

@@ -11,10 +11,12 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
+#include <QLabel>
 #include <QMenuBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSlider>
+#include <QSplitter>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -31,6 +33,18 @@ namespace probecycle::ui {
 namespace {
 
 using SeriesSnapshot = std::map<QString, QList<QPointF>>;
+
+// Every preset of the Presets menu, machines first (the latched input last).
+constexpr const char* kPresets[] = {":/presets/machine_standard_skip.json",
+                                    ":/presets/machine_high_speed_skip.json",
+                                    ":/presets/machine_fanuc_exponential_servo.json",
+                                    ":/presets/machine_mitsubishi_g31.json",
+                                    ":/presets/machine_linear_after_interpolation.json",
+                                    ":/presets/machine_latched_input.json",
+                                    ":/presets/probe_kinematic_optical.json",
+                                    ":/presets/probe_kinematic_radio.json",
+                                    ":/presets/probe_strain_gauge.json",
+                                    ":/presets/probe_small_stylus.json"};
 
 class MainWindowTest : public ::testing::Test {
   protected:
@@ -495,6 +509,81 @@ TEST_F(MainWindowTest, AFixThatWouldInvalidateTheScenarioIsNotOffered) {
     EXPECT_TRUE(validate(window_->scenario()).empty());
 }
 
+// Issue 12: errors first, counted in the panel's title and on the Cycle tab.
+TEST_F(MainWindowTest, ErrorsAreListedFirstAndCounted) {
+    Scenario s = window_->scenario();  // two-touch surface
+    s.cycle.approach_mm = 0.2;         // the first touch accelerates: a warning
+    s.cycle.backoff_mm = 0.5;          // an error
+    window_->edit_scenario(s, QStringLiteral("errors"));
+    settle();
+    const QStringList codes = window_->warning_codes();
+    ASSERT_GE(codes.size(), 2) << codes.join(QLatin1Char(' ')).toStdString();
+    EXPECT_EQ(codes.front(), QStringLiteral("backoff_too_small"));
+    auto* title = window_->findChild<QLabel*>(QStringLiteral("warnings-title"));
+    ASSERT_NE(title, nullptr);
+    EXPECT_TRUE(title->text().contains(QStringLiteral("Errors: 1"))) << title->text().toStdString();
+    EXPECT_TRUE(title->text().contains(QStringLiteral("Warnings: ")))
+        << title->text().toStdString();
+    auto* tabs = window_->findChild<QTabWidget*>(QStringLiteral("tabs"));
+    ASSERT_NE(tabs, nullptr);
+    EXPECT_TRUE(tabs->tabText(0).startsWith(QStringLiteral("Cycle (")))
+        << tabs->tabText(0).toStdString();
+    EXPECT_FALSE(tabs->tabIcon(0).isNull());
+
+    window_->edit_scenario(Scenario{}, QStringLiteral("defaults"));
+    settle();
+    const int problems = static_cast<int>(window_->warning_codes().size());
+    EXPECT_EQ(tabs->tabText(0), problems == 0 ? QStringLiteral("Cycle") : tabs->tabText(0));
+}
+
+// Issue 12: the panel keeps room for about three problems at 1280x800, and
+// dragging it up leaves the charts readable.
+TEST_F(MainWindowTest, WarningsPanelAndChartsKeepTheirRoom) {
+    auto* box = window_->findChild<QWidget*>(QStringLiteral("warnings-box"));
+    ASSERT_NE(box, nullptr);
+    const int line = window_->fontMetrics().height();
+    EXPECT_GE(box->height(), 8 * line);
+    auto* splitter = qobject_cast<QSplitter*>(box->parentWidget());
+    ASSERT_NE(splitter, nullptr);
+    splitter->setSizes({1, 10000});  // the user drags the panel up as far as it goes
+    QCoreApplication::processEvents();
+    EXPECT_GE(splitter->widget(0)->height(), 20 * line);
+}
+
+// Issue 12: every one-click fix offered, on every preset over the defaults
+// and over the README's bore example, clears the warning it fixes.
+TEST_F(MainWindowTest, EveryOneClickFixOnEveryPresetClearsItsWarning) {
+    Scenario bore;  // resources/examples/bore_two_touch.json
+    bore.cycle.feature = Feature::bore;
+    bore.cycle.feature_size_mm = 40.0;
+    bore.cycle.backoff_mm = 3.0;
+    bore.cycle.target_uncertainty_mm = 0.005;
+    int applied = 0;
+    for (const Scenario& base : {Scenario{}, bore}) {
+        for (const char* preset : kPresets) {
+            for (double feed : {3000.0, 9500.0}) {
+                Scenario s = base;
+                s.cycle.probe_feed_mm_min = feed;
+                window_->edit_scenario(s, QStringLiteral("base"));
+                settle();
+                ASSERT_TRUE(window_->apply_preset(QLatin1String(preset))) << preset;
+                settle();
+                const Scenario before = window_->scenario();
+                for (const QString& code : window_->warning_codes()) {
+                    window_->edit_scenario(before, QStringLiteral("back"));
+                    settle();
+                    if (!window_->apply_fix_for(code)) continue;
+                    ++applied;
+                    settle();
+                    EXPECT_FALSE(window_->warning_codes().contains(code))
+                        << preset << " at " << feed << ": " << code.toStdString();
+                }
+            }
+        }
+    }
+    EXPECT_GT(applied, 10);
+}
+
 TEST_F(MainWindowTest, UndoRestoresAndRedoReapplies) {
     const std::string original = json();
     QSlider* feed = slider("cycle.probe_feed_mm_min");
@@ -522,13 +611,7 @@ TEST_F(MainWindowTest, UndoRestoresAndRedoReapplies) {
 }
 
 TEST_F(MainWindowTest, EveryPresetLoadsAndChangesOnlyItsKeys) {
-    for (const char* preset :
-         {":/presets/machine_standard_skip.json", ":/presets/machine_high_speed_skip.json",
-          ":/presets/machine_fanuc_exponential_servo.json", ":/presets/machine_mitsubishi_g31.json",
-          ":/presets/machine_linear_after_interpolation.json",
-          ":/presets/machine_latched_input.json", ":/presets/probe_kinematic_optical.json",
-          ":/presets/probe_kinematic_radio.json", ":/presets/probe_strain_gauge.json",
-          ":/presets/probe_small_stylus.json"}) {
+    for (const char* preset : kPresets) {
         const Cycle cycle_before = window_->scenario().cycle;
         EXPECT_TRUE(window_->apply_preset(QLatin1String(preset))) << preset;
         settle();

@@ -1,0 +1,162 @@
+#include "core/cycle/fixes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/common/units.h"
+
+namespace probecycle {
+
+const char* to_string(FixKind kind) {
+    switch (kind) {
+        case FixKind::none:
+            return "none";
+        case FixKind::backoff_to_recommended:
+            return "backoff_to_recommended";
+        case FixKind::feed_to_knee:
+            return "feed_to_knee";
+        case FixKind::feed_for_overtravel:
+            return "feed_for_overtravel";
+        case FixKind::approach_to_reach_feed:
+            return "approach_to_reach_feed";
+    }
+    return "?";
+}
+
+namespace {
+
+// Rounded to what the editors show, the way that clears the warning (a
+// backoff or a start distance up, a feed down). The tolerance absorbs a
+// quotient's last bits: 2.1050000000000004 is 2.105.
+double round_up(double value, double step) {
+    return std::ceil(value / step - 1e-6) * step;
+}
+double round_down(double value, double step) {
+    return std::floor(value / step + 1e-6) * step;
+}
+
+// Feeds are shown to 1 mm/min from 100 mm/min up, to 0.1 mm/min below.
+double round_feed_down(double feed_mm_min) {
+    return round_down(feed_mm_min, feed_mm_min >= 100.0 ? 1.0 : 0.1);
+}
+
+// The highest probing feed, rounded down, under `feed_mm_min` at which the
+// overtravel is under the warning fraction of the limit; nullopt when even
+// the slowest feed searched is not. Overtravel grows with the probing feed,
+// so bisection on the feed.
+std::optional<double> feed_for_overtravel(const Scenario& scenario, double feed_mm_min) {
+    const double limit = kOvertravelWarningFraction * scenario.probe.overtravel_limit_mm;
+    Scenario s = scenario;
+    CycleResult r;
+    const auto under = [&](double feed) {
+        s.cycle.probe_feed_mm_min = feed;
+        evaluate_into(s, r);
+        return r.overtravel_mm() < limit;
+    };
+    double lo = std::min(kKneeSearchFrom_mm_min, feed_mm_min);
+    if (!under(lo)) return std::nullopt;
+    double hi = feed_mm_min;
+    while (hi - lo > 0.05) {  // under the 0.1 mm/min the editors show
+        const double mid = 0.5 * (lo + hi);
+        (under(mid) ? lo : hi) = mid;
+    }
+    const double feed = round_feed_down(lo);
+    if (feed <= 0.0 || !under(feed)) return std::nullopt;
+    return feed;
+}
+
+std::optional<Scenario> candidate(const Scenario& scenario, const Analysis& analysis,
+                                  FixKind kind) {
+    Scenario s = scenario;
+    const CycleResult& cycle = analysis.cycle;
+    switch (kind) {
+        case FixKind::backoff_to_recommended:
+            if (s.cycle.strategy != Strategy::two_touch) return std::nullopt;
+            // Already on the µm grid (kBackoffStep_mm).
+            s.cycle.backoff_mm = cycle.recommended_backoff_mm();
+            return s;
+        case FixKind::feed_to_knee: {
+            const std::optional<double>& knee = analysis.knee_feed_mm_min;
+            if (!knee) return std::nullopt;
+            s.cycle.probe_feed_mm_min = round_feed_down(*knee);
+            return s;
+        }
+        case FixKind::feed_for_overtravel: {
+            const std::optional<double> feed =
+                feed_for_overtravel(scenario, scenario.cycle.probe_feed_mm_min);
+            if (!feed) return std::nullopt;
+            // The knee, when it is slower still, is the better feed.
+            const std::optional<double>& knee = analysis.knee_feed_mm_min;
+            s.cycle.probe_feed_mm_min = knee ? std::min(*feed, round_feed_down(*knee)) : *feed;
+            return s;
+        }
+        case FixKind::approach_to_reach_feed: {
+            const double feed_mm_s = cycle.first_touch().programmed_feed_mm_s;
+            s.cycle.approach_mm = round_up(approach_room_mm(s, feed_mm_s), 0.01);
+            return s;
+        }
+        case FixKind::none:
+            break;
+    }
+    return std::nullopt;
+}
+
+// The fixes to try for a warning, best first.
+std::vector<FixKind> kinds_for(const Warning& warning) {
+    switch (warning.code) {
+        case WarningCode::backoff_too_small:
+        case WarningCode::backoff_excess:
+            return {FixKind::backoff_to_recommended};
+        case WarningCode::feed_beyond_knee:
+            return {FixKind::feed_to_knee};
+        case WarningCode::overtravel_limit:
+            return {FixKind::feed_for_overtravel};
+        case WarningCode::touch_while_accelerating:
+            // The first touch starts farther out; the second gets the room
+            // the recommended backoff includes.
+            return {warning.d < 0.5 ? FixKind::approach_to_reach_feed
+                                    : FixKind::backoff_to_recommended};
+        default:
+            break;
+    }
+    return {};
+}
+
+}  // namespace
+
+bool still_warns(const CycleResult& result, const Warning& warning) {
+    return std::any_of(result.warnings().begin(), result.warnings().end(), [&](const Warning& w) {
+        if (w.code != warning.code) return false;
+        if (w.code == WarningCode::touch_while_accelerating) return (w.d > 0.5) == (warning.d > 0.5);
+        return true;
+    });
+}
+
+std::optional<Fix> fix_for(const Scenario& scenario, const Analysis& analysis,
+                           const Warning& warning) {
+    for (FixKind kind : kinds_for(warning)) {
+        const std::optional<Scenario> fixed = candidate(scenario, analysis, kind);
+        if (!fixed || !validate(*fixed).empty()) continue;
+        // A fix that changes nothing fixes nothing.
+        if (fixed->cycle.backoff_mm == scenario.cycle.backoff_mm &&
+            fixed->cycle.probe_feed_mm_min == scenario.cycle.probe_feed_mm_min &&
+            fixed->cycle.approach_mm == scenario.cycle.approach_mm) {
+            continue;
+        }
+        if (warning.code == WarningCode::feed_beyond_knee) {
+            // At or under the knee by construction while the knee search's
+            // range stays the same (it reaches past 10000 mm/min only for a
+            // faster feed): then the knee is the same.
+            if (scenario.cycle.probe_feed_mm_min > kKneeSearchTo_mm_min &&
+                still_warns(analyse(*fixed).cycle, warning)) {
+                continue;
+            }
+            return Fix{kind, *fixed};
+        }
+        if (still_warns(evaluate(*fixed), warning)) continue;
+        return Fix{kind, *fixed};
+    }
+    return std::nullopt;
+}
+
+}  // namespace probecycle

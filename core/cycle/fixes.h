@@ -1,0 +1,41 @@
+#pragma once
+
+// One-click fixes for a cycle's warnings (issue 12): the scenario after the
+// change a warning suggests, rounded to the digits the editors show in the
+// direction that clears it. A fix is offered only when the scenario it makes
+// passes validation and no longer carries the warning it fixes, so the
+// window's buttons and the CLI never propose a change that leaves its own
+// warning behind.
+
+#include <optional>
+
+#include "core/cycle/cycle.h"
+#include "core/cycle/scenario.h"
+#include "core/cycle/sweep.h"
+
+namespace probecycle {
+
+enum class FixKind {
+    none,
+    backoff_to_recommended,  // the backoff the cycle recommends
+    feed_to_knee,            // the probing feed down to the knee
+    feed_for_overtravel,     // the probing feed down until the overtravel is under 80 % of the limit
+    approach_to_reach_feed,  // start far enough out to touch at full feed
+};
+const char* to_string(FixKind kind);
+
+struct Fix {
+    FixKind kind{FixKind::none};
+    Scenario scenario;  // the scenario with the fix applied
+};
+
+// The fix for `warning`, one of `analysis`'s (of `scenario`), or nullopt when
+// no fix clears it.
+std::optional<Fix> fix_for(const Scenario& scenario, const Analysis& analysis,
+                           const Warning& warning);
+
+// Whether `result` still carries `warning` (the same code; for
+// touch_while_accelerating, the same touch).
+bool still_warns(const CycleResult& result, const Warning& warning);
+
+}  // namespace probecycle
