@@ -90,7 +90,7 @@ void add_sweep(CLI::App& app) {
         const SweepOptions options{.recommended_backoff = args->recommended_backoff};
         const SweepResult sweep = sweep_feeds(scenario, linear_feeds(from, to, step), options);
         write_output(args->csv, sweep_to_csv(sweep));
-        std::cerr << sweep_summary(sweep, scenario, options) << '\n';
+        std::cerr << sweep_summary(sweep, scenario) << '\n';
     });
 }
 

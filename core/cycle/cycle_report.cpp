@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "core/common/csv_writer.h"
 #include "core/common/message_json.h"
@@ -92,34 +94,46 @@ std::string monte_carlo_to_json(const MonteCarloOptions& options, const Histogra
     return out.dump(2) + "\n";
 }
 
-std::string sweep_to_csv(const SweepResult& sweep) {
+std::string sweep_to_csv(const SweepResult& sweep, const SweepResult* optimised) {
     std::string csv = "feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm";
     for (Phase phase : all_phases()) csv += std::string(",") + to_string(phase) + "_s";
-    csv += ",valid,invalid_reasons\n";
-    for (const SweepPoint& p : sweep.points) {
+    csv += ",valid,invalid_reasons";
+    csv += optimised != nullptr ? ",cycle_time_recommended_backoff_s\n" : "\n";
+    for (std::size_t i = 0; i < sweep.points.size(); ++i) {
+        const SweepPoint& p = sweep.points[i];
         csv += number(p.feed_mm_min) + ',' + number(p.cycle_time_s) + ',' +
                number(p.overtravel_mm) + ',' + number(p.uncertainty_mm);
         for (double t : p.phase_time_s) csv += ',' + number(t);
         csv += p.valid() ? ",true," : ",false," + invalid_codes_text(p.invalid_codes, ";");
+        if (optimised != nullptr) csv += ',' + number(optimised->points[i].cycle_time_s);
         csv += '\n';
     }
     return csv;
 }
 
-std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario,
-                          const SweepOptions& options) {
-    std::string line = "knee of this sweep";
-    if (scenario.cycle.strategy == Strategy::two_touch) {
-        line += options.recommended_backoff
-                    ? " (recommended backoff at each feed)"
-                    : " (backoff as set, " + number(scenario.cycle.backoff_mm) + " mm)";
+std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario) {
+    // Issue 12: one knee everywhere, find_knee's on the optimised curve (as
+    // analyse()), here over the sweep's own range.
+    double from = std::numeric_limits<double>::infinity();
+    double to = 0.0;
+    for (const SweepPoint& p : sweep.points) {
+        from = std::min(from, p.feed_mm_min);
+        to = std::max(to, p.feed_mm_min);
     }
-    line += ": ";
-    if (sweep.knee_feed_mm_min) {
-        line += number(*sweep.knee_feed_mm_min) + " mm/min";
+    std::string line = "knee";
+    if (scenario.cycle.strategy == Strategy::two_touch) {
+        line += " (recommended backoff at each feed, as evaluate and the window)";
+    }
+    std::optional<Warning> range_end;
+    if (sweep.points.empty()) {
+        line += ": none";
     } else {
-        line +=
-            sweep.points.empty() ? "none" : "none (no feed within the probe's overtravel limit)";
+        const KneeSearch knee =
+            find_knee(scenario, from, std::max(from, to), {.recommended_backoff = true});
+        line += " from " + number(from) + " to " + number(to) + " mm/min: ";
+        line += knee.knee_feed_mm_min ? number(*knee.knee_feed_mm_min) + " mm/min"
+                                      : "none (no feed within the probe's overtravel limit)";
+        range_end = knee.range_end_warning;
     }
     line += "; fastest feed meeting the target uncertainty";
     if (scenario.cycle.target_uncertainty_mm <= 0.0) {
@@ -130,14 +144,19 @@ std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario,
                     ? number(*sweep.max_feed_meeting_target_mm_min) + " mm/min"
                     : "none in the range";
     }
-    for (const Warning& warning : sweep.warnings) {
-        line += std::string("; ") + to_string(warning.code) + ": " + warning.message();
+    if (range_end) {
+        line += std::string("; ") + to_string(range_end->code) + ": " + range_end->message();
     }
     return line;
 }
 
 std::string csv_report(const Scenario& scenario, const Analysis& analysis,
-                       const SweepResult& sweep) {
+                       std::span<const double> feeds_mm_min) {
+    const SweepResult sweep = sweep_feeds(scenario, feeds_mm_min);
+    std::optional<SweepResult> optimised;
+    if (scenario.cycle.strategy == Strategy::two_touch) {
+        optimised = sweep_feeds(scenario, feeds_mm_min, {.recommended_backoff = true});
+    }
     const CycleResult& r = analysis.cycle;
     std::string csv = "# scenario\nkey,value,unit\n";
     // The words and flags first, then the numbers, each in the key table's order.
@@ -176,7 +195,7 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
         csv += std::string(to_string(w.code)) + ',' + to_string(w.severity) + ',' +
                csv_quote(w.message()) + '\n';
     }
-    csv += "\n# sweep\n" + sweep_to_csv(sweep);
+    csv += "\n# sweep\n" + sweep_to_csv(sweep, optimised ? &*optimised : nullptr);
     return csv;
 }
 
@@ -185,7 +204,7 @@ std::vector<double> report_feeds(const Scenario& scenario, const Analysis& analy
                                  300,  400,  500,  600,  800,  1000, 1200, 1500,
                                  2000, 2500, 3000, 4000, 5000, 6000, 8000, 10000};
     feeds.push_back(scenario.cycle.probe_feed_mm_min);
-    if (analysis.knee_feed_mm_min) feeds.push_back(std::round(*analysis.knee_feed_mm_min));
+    if (analysis.knee_feed_mm_min) feeds.push_back(*analysis.knee_feed_mm_min);
     std::sort(feeds.begin(), feeds.end());
     feeds.erase(std::unique(feeds.begin(), feeds.end()), feeds.end());
     return feeds;
@@ -193,7 +212,7 @@ std::vector<double> report_feeds(const Scenario& scenario, const Analysis& analy
 
 std::string csv_report(const Scenario& scenario) {
     const Analysis analysis = analyse(scenario);
-    return csv_report(scenario, analysis, sweep_feeds(scenario, report_feeds(scenario, analysis)));
+    return csv_report(scenario, analysis, report_feeds(scenario, analysis));
 }
 
 }  // namespace probecycle

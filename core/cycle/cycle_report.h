@@ -4,6 +4,7 @@
 // same bytes: evaluation JSON, sweep CSV, and the full CSV report.
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,22 +27,27 @@ std::string move_to_json(const Scenario& scenario, double distance_mm, double fe
 // `probecycle-cli montecarlo`: the options and the histogram.
 std::string monte_carlo_to_json(const MonteCarloOptions& options, const Histogram& histogram);
 
-// Header: feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm,<one column per phase>.
-std::string sweep_to_csv(const SweepResult& sweep);
-// One line: the knee and the fastest feed meeting the target, saying for a
-// two-touch sweep which backoff the knee's curve used.
-std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario,
-                          const SweepOptions& options = {});
+// Header: feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm,<one column per phase>,
+// valid,invalid_reasons; with `optimised` (the same feeds, two-touch with the
+// recommended backoff at each) a last column cycle_time_recommended_backoff_s,
+// the curve the knee is found on.
+std::string sweep_to_csv(const SweepResult& sweep, const SweepResult* optimised = nullptr);
+// One line: the knee as evaluate() and the window find it (find_knee on the
+// optimised curve), searched over the sweep's feeds, and the fastest valid
+// feed meeting the target.
+std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario);
 
 // Feeds of the report's sweep table: round numbers from 10 to 10000 mm/min,
-// plus the scenario's feed and its knee.
+// plus the scenario's feed and its knee (exactly, so that row repeats the
+// summary's knee_cycle_time).
 std::vector<double> report_feeds(const Scenario& scenario, const Analysis& analysis);
 
 // Sections "# scenario", "# summary", "# phases", "# warnings", "# sweep",
 // each a CSV table, for the report an engineer hands over. The sweep varies
-// the probe feed with the rest as in the scenario.
+// the probe feed over `feeds` with the rest as in the scenario (and, for
+// two-touch, also with the recommended backoff: sweep_to_csv's last column).
 std::string csv_report(const Scenario& scenario, const Analysis& analysis,
-                       const SweepResult& sweep);
+                       std::span<const double> feeds_mm_min);
 // The same, analysed and swept over report_feeds(): what the window exports
 // and `probecycle-cli report` writes.
 std::string csv_report(const Scenario& scenario);

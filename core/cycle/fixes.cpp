@@ -127,8 +127,8 @@ std::vector<FixKind> kinds_for(const Warning& warning) {
 bool still_warns(const CycleResult& result, const Warning& warning) {
     return std::any_of(result.warnings().begin(), result.warnings().end(), [&](const Warning& w) {
         if (w.code != warning.code) return false;
-        if (w.code == WarningCode::touch_while_accelerating) return (w.d > 0.5) == (warning.d > 0.5);
-        return true;
+        if (w.code != WarningCode::touch_while_accelerating) return true;
+        return (w.d > 0.5) == (warning.d > 0.5);  // the same touch
     });
 }
 

@@ -19,7 +19,7 @@ enum class FixKind {
     none,
     backoff_to_recommended,  // the backoff the cycle recommends
     feed_to_knee,            // the probing feed down to the knee
-    feed_for_overtravel,     // the probing feed down until the overtravel is under 80 % of the limit
+    feed_for_overtravel,     // the probing feed down to overtravel under 80 % of the limit
     approach_to_reach_feed,  // start far enough out to touch at full feed
 };
 const char* to_string(FixKind kind);

@@ -90,7 +90,7 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
             (!out.knee_feed_mm_min || point.feed_mm_min < *out.knee_feed_mm_min)) {
             out.knee_feed_mm_min = point.feed_mm_min;
         }
-        if (target > 0.0 && point.uncertainty_mm <= target &&
+        if (target > 0.0 && point.valid() && point.uncertainty_mm <= target &&
             (!out.max_feed_meeting_target_mm_min ||
              point.feed_mm_min > *out.max_feed_meeting_target_mm_min)) {
             out.max_feed_meeting_target_mm_min = point.feed_mm_min;

@@ -33,8 +33,8 @@ struct SweepResult {
     // fastest, both among the valid feeds (CycleResult::valid(): overtravel
     // under the probe's limit, backoff enough); none when no feed is valid.
     std::optional<double> knee_feed_mm_min;
-    // Highest feed whose uncertainty meets the target (none without a target
-    // or when no feed meets it).
+    // Highest valid feed whose uncertainty meets the target (none without a
+    // target or when no valid feed meets it).
     std::optional<double> max_feed_meeting_target_mm_min;
     // knee_at_range_end when the fastest valid cycle lies at the lowest or
     // the highest feed of the sweep: the knee then depends on the range.

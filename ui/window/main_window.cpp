@@ -614,7 +614,7 @@ bool MainWindow::export_csv_report(const QString& path) {
         return false;
     }
     const std::vector<double> feeds = report_feeds(c.scenario, c.analysis);
-    const std::string csv = csv_report(c.scenario, c.analysis, sweep_feeds(c.scenario, feeds));
+    const std::string csv = csv_report(c.scenario, c.analysis, feeds);
     QString error;
     if (!write_file(path, QByteArray::fromStdString(csv), error)) {
         report_error(tr("Could not export the report"),

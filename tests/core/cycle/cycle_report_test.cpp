@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/csv_writer.h"
 #include "core/common/units.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/scenario.h"
@@ -222,16 +223,20 @@ TEST(SweepSummary, OneLineNamingTheKneeAndTheFeedMeetingTheTarget) {
 TEST(CsvReport, SectionsInOrder) {
     const Scenario s = two_touch_with_warnings();
     const Analysis a = analyse(s);
-    const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 3000.0, 100.0));
-    const std::string report = csv_report(s, a, sweep);
+    const std::vector<double> feeds = linear_feeds(100.0, 3000.0, 100.0);
+    const SweepResult sweep = sweep_feeds(s, feeds);
+    const std::string report = csv_report(s, a, feeds);
     std::size_t at = 0;
     for (const char* section : {"# scenario", "# summary", "# phases", "# warnings", "# sweep"}) {
         const std::size_t found = report.find(section, at);
         ASSERT_NE(found, std::string::npos) << section;
         at = found;
     }
-    // The sweep section is the sweep CSV.
-    EXPECT_NE(report.find(sweep_to_csv(sweep)), std::string::npos);
+    // The sweep section is the sweep CSV, with the optimised curve of a
+    // two-touch cycle beside it.
+    ASSERT_EQ(s.cycle.strategy, Strategy::two_touch);
+    const SweepResult optimised = sweep_feeds(s, feeds, {.recommended_backoff = true});
+    EXPECT_NE(report.find(sweep_to_csv(sweep, &optimised)), std::string::npos);
     EXPECT_NE(report.find("backoff_excess"), std::string::npos);
     EXPECT_NE(report.find("machine.scan_period_s"), std::string::npos);
 }

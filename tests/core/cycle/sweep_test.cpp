@@ -51,7 +51,10 @@ std::optional<double> max_feed_meeting(const std::vector<SweepPoint>& points, do
     std::optional<double> best;
     if (target <= 0.0) return best;
     for (const SweepPoint& p : points) {
-        if (p.uncertainty_mm <= target && (!best || p.feed_mm_min > *best)) best = p.feed_mm_min;
+        // Issue 12: valid feeds only.
+        if (p.valid() && p.uncertainty_mm <= target && (!best || p.feed_mm_min > *best)) {
+            best = p.feed_mm_min;
+        }
     }
     return best;
 }
@@ -176,9 +179,16 @@ TEST(Sweep, TwoTouchTargetDependsOnTheMeasuringFeedOnly) {
     Scenario s = single_touch_surface();
     s.cycle.strategy = Strategy::two_touch;
     s.cycle.target_uncertainty_mm = 0.01;  // met at 30 mm/min whatever the first feed
-    const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 3000.0, 100.0));
+    // With the recommended backoff every feed is valid (a fixed backoff is too
+    // small from 2900 mm/min: issue 12, invalid feeds do not count).
+    const SweepResult sweep =
+        sweep_feeds(s, linear_feeds(100.0, 3000.0, 100.0), {.recommended_backoff = true});
     ASSERT_TRUE(sweep.max_feed_meeting_target_mm_min.has_value());
     EXPECT_NEAR(*sweep.max_feed_meeting_target_mm_min, 3000.0, 1e-9);
+    const SweepResult fixed = sweep_feeds(s, linear_feeds(100.0, 3000.0, 100.0));
+    ASSERT_FALSE(fixed.points.back().valid());
+    EXPECT_EQ(fixed.max_feed_meeting_target_mm_min, max_feed_meeting(fixed.points, 0.01));
+    EXPECT_LT(*fixed.max_feed_meeting_target_mm_min, 3000.0);
 }
 
 TEST(Sweep, RandomScenariosKneeAndTargetByDefinition) {
