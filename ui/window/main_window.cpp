@@ -443,17 +443,24 @@ void MainWindow::restore_settings() {
         action->setChecked(action->data().toString() == language_choice_);
     }
     const QString json = settings.value(QStringLiteral("scenario/last")).toString();
-    if (!json.isEmpty()) {
-        try {
+    const QString file = settings.value(QStringLiteral("scenario/file")).toString();
+    try {
+        if (!json.isEmpty()) {
             scenario_ = scenario_from_json(json.toStdString());
-            current_file_ = settings.value(QStringLiteral("scenario/file")).toString();
-        } catch (const std::exception&) {
-            scenario_ = Scenario{};  // a stale or foreign entry: start from the defaults
+            current_file_ = file;
+        } else if (!file.isEmpty()) {
+            // Edits were discarded at the last quit: the file as saved.
+            scenario_ = scenario_from_json(read_text_file(QFile::encodeName(file).toStdString()));
+            current_file_ = file;
         }
+    } catch (const std::exception&) {
+        // A stale or foreign entry, or a file gone: start from the defaults.
+        scenario_ = Scenario{};
+        current_file_.clear();
     }
 }
 
-void MainWindow::save_settings() const {
+void MainWindow::save_settings(bool with_scenario) const {
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
@@ -462,6 +469,12 @@ void MainWindow::save_settings() const {
     settings.setValue(QStringLiteral("files/recent"), recent_files_);
     settings.setValue(QStringLiteral("files/last_dir"), last_dir_);
     settings.setValue(QStringLiteral("view/language"), language_choice_);
+    if (!with_scenario) {
+        // Discarded edits: the file is opened again from disk at the next start.
+        settings.remove(QStringLiteral("scenario/last"));
+        settings.setValue(QStringLiteral("scenario/file"), current_file_);
+        return;
+    }
     settings.setValue(QStringLiteral("scenario/last"),
                       QString::fromStdString(scenario_to_json(scenario_)));
     // A file name is restored only with the file's own content.
@@ -469,18 +482,39 @@ void MainWindow::save_settings() const {
                       undo_->isClean() ? current_file_ : QString());
 }
 
-void MainWindow::closeEvent(QCloseEvent* event) {
-    if (options_.show_dialogs && !undo_->isClean() && !current_file_.isEmpty()) {
-        const auto answer = QMessageBox::question(
-            this, tr("Unsaved changes"),
-            tr("Save the changes to %1?").arg(QFileInfo(current_file_).fileName()),
+bool MainWindow::settle_unsaved_changes() {
+    if (undo_->isClean()) return true;
+    UnsavedAnswer answer = options_.unsaved_answer;
+    if (options_.show_dialogs) {
+        const QString name =
+            current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();
+        const auto button = QMessageBox::question(
+            this, tr("Unsaved changes"), tr("Save the changes to %1?").arg(name),
             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-        if (answer == QMessageBox::Cancel || (answer == QMessageBox::Save && !save_action())) {
-            event->ignore();
-            return;
-        }
+        answer = button == QMessageBox::Save      ? UnsavedAnswer::save
+                 : button == QMessageBox::Discard ? UnsavedAnswer::discard
+                                                  : UnsavedAnswer::cancel;
     }
-    if (options_.persistent) save_settings();
+    switch (answer) {
+        case UnsavedAnswer::save:
+            // Without dialogs there is no file dialog to name an untitled one.
+            return (options_.show_dialogs || !current_file_.isEmpty()) && save_action();
+        case UnsavedAnswer::discard:
+            return true;
+        case UnsavedAnswer::cancel:
+            break;
+    }
+    return false;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!settle_unsaved_changes()) {
+        event->ignore();
+        return;
+    }
+    // Issue 12: Discard means discard (the edits are still unsaved here). The
+    // next start shows the file as it was saved, or the defaults.
+    if (options_.persistent) save_settings(/*with_scenario=*/undo_->isClean());
     event->accept();
 }
 
@@ -555,10 +589,12 @@ void MainWindow::reset_document(const Scenario& scenario, const QString& file) {
     update_title();
 }
 
-void MainWindow::new_scenario() {
+bool MainWindow::new_scenario() {
+    if (!settle_unsaved_changes()) return false;
     reset_document(Scenario{}, QString());
     statusBar()->showMessage(
         tr("Default scenario: typical values, to be replaced with measured ones"), 6000);
+    return true;
 }
 
 bool MainWindow::open_scenario(const QString& path) {
@@ -682,7 +718,9 @@ void MainWindow::update_recent_menu() {
     recent_menu_->clear();
     for (const QString& path : recent_files_) {
         QAction* action = recent_menu_->addAction(QDir::toNativeSeparators(path));
-        connect(action, &QAction::triggered, this, [this, path] { open_scenario(path); });
+        connect(action, &QAction::triggered, this, [this, path] {
+            if (settle_unsaved_changes()) open_scenario(path);
+        });
     }
     if (recent_files_.isEmpty()) recent_menu_->addAction(tr("(none)"))->setEnabled(false);
 }
@@ -704,6 +742,7 @@ void MainWindow::update_title() {
 }
 
 void MainWindow::open_dialog() {
+    if (!settle_unsaved_changes()) return;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open scenario"), last_dir_,
                                                       tr("Scenario (*.json);;All files (*)"));
     if (!path.isEmpty()) open_scenario(path);

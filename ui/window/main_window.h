@@ -37,11 +37,16 @@ class LatencyTab;
 class ComparisonTab;
 class ParameterPanel;
 
+// What to do with unsaved edits before they would be lost.
+enum class UnsavedAnswer { save, discard, cancel };
+
 struct MainWindowOptions {
     // Restore and save geometry, the last scenario and recent files (QSettings).
     bool persistent{true};
     // Errors in modal-free message boxes; off in tests, which read last_error().
     bool show_dialogs{true};
+    // Without dialogs (tests): the answer to "save the changes?".
+    UnsavedAnswer unsaved_answer{UnsavedAnswer::discard};
     std::size_t points_per_curve{500};
 };
 
@@ -59,7 +64,10 @@ class MainWindow : public QMainWindow {
 
     // Files. Each returns false and reports through last_error() on failure;
     // a file that does not load leaves the current scenario untouched.
-    void new_scenario();
+    // Asks first when unsaved edits would be lost; false when the user cancels.
+    bool new_scenario();
+    // Without dialogs: the answer the next questions about unsaved edits get.
+    void set_unsaved_answer(UnsavedAnswer answer) { options_.unsaved_answer = answer; }
     bool open_scenario(const QString& path);
     bool save_scenario(const QString& path);
     bool export_csv_report(const QString& path);
@@ -110,7 +118,8 @@ class MainWindow : public QMainWindow {
     void build_menus();
     void retranslate();
     void restore_settings();
-    void save_settings() const;
+    // with_scenario false: the edits were discarded; only the file name is kept.
+    void save_settings(bool with_scenario = true) const;
 
     void apply_scenario(const Scenario& scenario);
     void on_panel_edit(const Scenario& scenario, const QString& key);
@@ -125,6 +134,9 @@ class MainWindow : public QMainWindow {
     void update_recent_menu();
 
     void open_dialog();
+    // Unsaved edits would be lost: Save, Discard or Cancel, asked once. True
+    // to go on (saved, or discarded), false to keep the edits.
+    bool settle_unsaved_changes();
     bool save_action();
     bool save_as_dialog();
     void export_csv_dialog();

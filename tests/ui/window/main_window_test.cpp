@@ -368,6 +368,21 @@ TEST_F(MainWindowTest, ChartsExportAsPng) {
     EXPECT_GT(image.width(), 400);
 }
 
+// Issue 12: New and Open ask before unsaved edits would go.
+TEST_F(MainWindowTest, NewAsksBeforeUnsavedEditsGo) {
+    Scenario edited = window_->scenario();
+    edited.cycle.probe_feed_mm_min = 1234.0;
+    window_->edit_scenario(edited, QStringLiteral("edit"));
+    window_->set_unsaved_answer(UnsavedAnswer::cancel);
+    EXPECT_FALSE(window_->new_scenario());
+    EXPECT_EQ(window_->scenario().cycle.probe_feed_mm_min, 1234.0);
+    EXPECT_TRUE(window_->isWindowModified());
+    window_->set_unsaved_answer(UnsavedAnswer::discard);
+    EXPECT_TRUE(window_->new_scenario());
+    EXPECT_EQ(json(), scenario_to_json(Scenario{}));
+    EXPECT_FALSE(window_->isWindowModified());
+}
+
 TEST_F(MainWindowTest, SaveAndOpenRoundTrip) {
     drag_to_fraction(slider("cycle.probe_feed_mm_min"), 0.7);
     drag_to_fraction(slider("machine.scan_period_s"), 0.2);
@@ -697,23 +712,70 @@ TEST_F(MainWindowTest, LanguagesSwitchTheInterface) {
     EXPECT_EQ(window_->menuBar()->actions().first()->text(), english);
 }
 
-TEST(MainWindowSettingsTest, RestoresTheWindowAndTheLastScenario) {
+// Issue 12: Quit asks about unsaved edits (untitled ones too) and means the
+// answer: Save keeps them in the file and they come back; Discard does not
+// bring them back; Cancel keeps the window open.
+TEST(MainWindowSettingsTest, QuitSavesOrDiscardsAsAnswered) {
     QSettings().clear();  // test mode: ~/.qttest, never the user's settings
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("kept.json"));
     MainWindowOptions options;
     options.show_dialogs = false;
-    Scenario edited;
-    edited.cycle.probe_feed_mm_min = 1234.0;
+    Scenario saved;
+    saved.cycle.probe_feed_mm_min = 1234.0;
+    Scenario edited = saved;
     edited.machine.scan_period_s = 0.001;
     {
+        options.unsaved_answer = UnsavedAnswer::save;
         MainWindow first(options);
         first.resize(1111, 777);
         first.show();
+        first.edit_scenario(saved, QStringLiteral("edit"));
+        ASSERT_TRUE(first.save_scenario(path));
         first.edit_scenario(edited, QStringLiteral("edit"));
-        first.close();  // saves
+        EXPECT_TRUE(first.close());  // saves the edits into the file
+    }
+    {
+        MainWindow second(options);
+        EXPECT_EQ(scenario_to_json(second.scenario()), scenario_to_json(edited));
+        EXPECT_EQ(second.current_file(), QFileInfo(path).absoluteFilePath());
+        EXPECT_EQ(second.size(), QSize(1111, 777));
+    }
+    {
+        // Cancel: the window stays open with its edits.
+        options.unsaved_answer = UnsavedAnswer::cancel;
+        MainWindow third(options);
+        third.show();
+        Scenario more = third.scenario();
+        more.cycle.backoff_mm = 3.0;
+        third.edit_scenario(more, QStringLiteral("edit"));
+        EXPECT_FALSE(third.close());
+        EXPECT_TRUE(third.isVisible());
+        // Discard: closed, and the next start has the file as saved.
+        third.set_unsaved_answer(UnsavedAnswer::discard);
+        EXPECT_TRUE(third.close());
+    }
+    MainWindow fourth(options);
+    EXPECT_EQ(scenario_to_json(fourth.scenario()), scenario_to_json(edited));
+    EXPECT_FALSE(fourth.isWindowModified());
+    QSettings().clear();
+}
+
+TEST(MainWindowSettingsTest, DiscardedUntitledEditsDoNotComeBack) {
+    QSettings().clear();
+    MainWindowOptions options;
+    options.show_dialogs = false;
+    options.unsaved_answer = UnsavedAnswer::discard;
+    {
+        MainWindow first(options);
+        first.show();
+        Scenario edited;
+        edited.cycle.probe_feed_mm_min = 1234.0;
+        first.edit_scenario(edited, QStringLiteral("edit"));
+        EXPECT_TRUE(first.close());
     }
     MainWindow second(options);
-    EXPECT_EQ(scenario_to_json(second.scenario()), scenario_to_json(edited));
-    EXPECT_EQ(second.size(), QSize(1111, 777));
+    EXPECT_EQ(scenario_to_json(second.scenario()), scenario_to_json(Scenario{}));
     QSettings().clear();
 }
 
