@@ -15,6 +15,7 @@
 #include <QSettings>
 #include <QSize>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTimer>
 #include <chrono>
 #include <cstdio>
@@ -136,7 +137,12 @@ int main(int argc, char** argv) {
     const QCommandLineOption time_startup(
         QStringLiteral("time-startup"),
         QStringLiteral("Print the ms from start to the first painted window, then exit."));
-    parser.addOptions({screenshot, scenario, size, language, time_startup});
+    const QCommandLineOption tab(
+        QStringLiteral("tab"),
+        QStringLiteral(
+            "Tab for --screenshot: cycle (default), calibration, latency or comparison."),
+        QStringLiteral("NAME"), QStringLiteral("cycle"));
+    parser.addOptions({screenshot, scenario, size, language, time_startup, tab});
     parser.addPositionalArgument(QStringLiteral("scenario"), QStringLiteral("Scenario to open."),
                                  QStringLiteral("[SCENARIO.json]"));
     parser.process(app);
@@ -170,6 +176,20 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "probecycle: --size wants WxH, e.g. 1920x1080 (got %s)\n",
                          qPrintable(parser.value(size)));
             return 2;
+        }
+        // Issue 12: any tab can be looked at offscreen. The order is the
+        // window's (main_window.cpp, build_ui).
+        const QStringList tab_names = {QStringLiteral("cycle"), QStringLiteral("calibration"),
+                                       QStringLiteral("latency"), QStringLiteral("comparison")};
+        const qsizetype tab_index = tab_names.indexOf(parser.value(tab));
+        if (tab_index < 0) {
+            std::fprintf(stderr, "probecycle: --tab: got '%s'; allowed: %s\n",
+                         qPrintable(parser.value(tab)),
+                         qPrintable(tab_names.join(QStringLiteral(", "))));
+            return 2;
+        }
+        if (auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("tabs"))) {
+            tabs->setCurrentIndex(static_cast<int>(tab_index));
         }
         window.resize(*wanted);
         window.show();
