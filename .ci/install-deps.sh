@@ -4,7 +4,7 @@ set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 packages=(
-  build-essential cmake git
+  build-essential cmake git python3
   qt6-base-dev libqt6opengl6-dev qt6-charts-dev qt6-tools-dev qt6-l10n-tools qt6-tools-dev-tools libcli11-dev
   libgl1-mesa-dev libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   xvfb xauth fonts-dejavu-core fonts-noto-cjk

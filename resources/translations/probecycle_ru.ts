@@ -576,11 +576,11 @@
     </message>
     <message>
         <source>Reseat distance</source>
-        <translation>Путь возврата в исходное</translation>
+        <translation>Путь восстановления датчика</translation>
     </message>
     <message>
         <source>Distance the probe needs to reseat after a trigger. The two-touch backoff must clear the first touch&apos;s overtravel plus this.</source>
-        <translation>Путь, необходимый датчику для возврата в исходное положение после срабатывания. Отвод при двукратном касании должен перекрывать перебег первого касания плюс этот путь.</translation>
+        <translation>Путь, необходимый датчику для восстановления после срабатывания. Отвод при двукратном касании должен перекрывать перебег первого касания плюс этот путь.</translation>
     </message>
     <message>
         <source>Calibration feed</source>
@@ -748,7 +748,7 @@
     </message>
     <message>
         <source>Two-touch: distance the probe backs off after the first touch, from where it stopped or from the recorded trigger position (Backoff from). It must leave the second touch room to reseat the probe and to reach the measuring feed; any more is approached again at the slow measuring feed and wasted.</source>
-        <translation>Двукратное касание: расстояние отвода датчика после первого касания — от точки остановки или от записанной точки срабатывания («Отвод от»). Оно должно оставить второму касанию место для возврата датчика в исходное и для разгона до измерительной подачи; всё сверх этого снова проходится на медленной измерительной подаче и теряется.</translation>
+        <translation>Двукратное касание: расстояние отвода датчика после первого касания — от точки остановки или от записанной точки срабатывания («Отвод от»). Оно должно оставить второму касанию место для восстановления датчика и для разгона до измерительной подачи; всё сверх этого снова проходится на медленной измерительной подаче и теряется.</translation>
     </message>
     <message>
         <source>Two-touch: where the backoff is measured from. stop: from where the probe stopped after the first touch (Renishaw&apos;s cycles). trigger: from the trigger position the control recorded (the skip position a macro reads); the axis then moves back its overtravel beyond that position as well.</source>
@@ -1002,11 +1002,11 @@
     </message>
     <message>
         <source>Backoff %1 from the recorded trigger position is less than the recommended %2 (that position&apos;s distance past the surface plus room to reseat and to reach the measuring feed): the probe may not reseat before the second touch</source>
-        <translation>Отвод %1 от записанной точки срабатывания меньше рекомендуемого %2 (расстояние этой точки за поверхностью плюс место для возврата в исходное и разгона до измерительной подачи): датчик может не вернуться в исходное до второго касания</translation>
+        <translation>Отвод %1 от записанной точки срабатывания меньше рекомендуемого %2 (расстояние этой точки за поверхностью плюс место для восстановления датчика и разгона до измерительной подачи): датчик может не восстановиться до второго касания</translation>
     </message>
     <message>
         <source>Backoff %1 from where the probe stopped is less than the recommended %2 (the first touch&apos;s overtravel plus room to reseat and to reach the measuring feed): the probe may not reseat before the second touch</source>
-        <translation>Отвод %1 от точки остановки меньше рекомендуемого %2 (перебег первого касания плюс место для возврата в исходное и разгона до измерительной подачи): датчик может не вернуться в исходное до второго касания</translation>
+        <translation>Отвод %1 от точки остановки меньше рекомендуемого %2 (перебег первого касания плюс место для восстановления датчика и разгона до измерительной подачи): датчик может не восстановиться до второго касания</translation>
     </message>
     <message>
         <source>No probing feed from %1 to %2 gives a valid cycle: the overtravel reaches the probe&apos;s limit even at %1, so there is no knee; shorten the delays or use a probe with more overtravel</source>
@@ -2588,7 +2588,7 @@
     </message>
     <message>
         <source>programmed %1</source>
-        <translation>задано %1</translation>
+        <translation>по программе %1</translation>
     </message>
     <message>
         <source>target %1</source>
@@ -2640,7 +2640,7 @@
     </message>
     <message>
         <source>Two-touch: from the backoff&apos;s reference (where the probe stopped, or the recorded trigger position) the larger of the reseat distance and the distance to reach the measuring feed. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
-        <translation>Двукратное касание: от точки отсчёта отвода (точки остановки или записанной точки срабатывания) — большее из пути возврата в исходное и пути разгона до измерительной подачи. Меньше — датчик может не вернуться; больше — лишний путь проходится на медленной подаче.</translation>
+        <translation>Двукратное касание: от точки отсчёта отвода (точки остановки или записанной точки срабатывания) — большее из пути восстановления датчика и пути разгона до измерительной подачи. Меньше — датчик может не вернуться; больше — лишний путь проходится на медленной подаче.</translation>
     </message>
 </context>
 <context>

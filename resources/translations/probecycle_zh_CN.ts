@@ -875,7 +875,7 @@
     </message>
     <message>
         <source>Backoff</source>
-        <translation>回退距离</translation>
+        <translation>回退</translation>
     </message>
     <message>
         <source>2nd approach</source>
