@@ -2378,10 +2378,6 @@
         <translation>предустановка %1</translation>
     </message>
     <message>
-        <source>%1: typical values applied; replace them with your measured ones</source>
-        <translation>%1: применены типовые значения; замените их измеренными</translation>
-    </message>
-    <message>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
@@ -2524,6 +2520,22 @@
     <message>
         <source>Notes: %1</source>
         <translation>Замечаний: %1</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>вкл.</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>выкл.</translation>
+    </message>
+    <message>
+        <source>%1: nothing to change, the values are already the preset&apos;s</source>
+        <translation>%1: менять нечего, значения уже как в предустановке</translation>
+    </message>
+    <message>
+        <source>%1: typical values applied (Undo restores): %2</source>
+        <translation>%1: применены типовые значения (отмена возвращает прежние): %2</translation>
     </message>
 </context>
 <context>

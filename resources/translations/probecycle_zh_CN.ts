@@ -2378,10 +2378,6 @@
         <translation>预设 %1</translation>
     </message>
     <message>
-        <source>%1: typical values applied; replace them with your measured ones</source>
-        <translation>%1：已应用典型值；请替换为您的实测值</translation>
-    </message>
-    <message>
         <source>(none)</source>
         <translation>（无）</translation>
     </message>
@@ -2524,6 +2520,22 @@
     <message>
         <source>Notes: %1</source>
         <translation>提示：%1</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>开</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>关</translation>
+    </message>
+    <message>
+        <source>%1: nothing to change, the values are already the preset&apos;s</source>
+        <translation>%1：无需更改，数值已与预设相同</translation>
+    </message>
+    <message>
+        <source>%1: typical values applied (Undo restores): %2</source>
+        <translation>%1：已应用典型值（撤销可恢复原值）：%2</translation>
     </message>
 </context>
 <context>

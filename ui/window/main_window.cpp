@@ -11,6 +11,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
+#include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -104,6 +105,42 @@ QString error_list(const ScenarioError& error) {
     QStringList lines;
     for (const FieldError& e : error.errors()) lines << translate(e.to_message());
     return lines.join(QLatin1Char('\n'));
+}
+
+// A word or flag key's value as the window shows it.
+QString shown_word(const Scenario& s, const KeyInfo& key) {
+    const std::string_view name = key.key;
+    if (name == "machine.accel_model") return accel_model_label(s.machine.accel_model);
+    if (name == "machine.filter") return filter_label(s.machine.filter);
+    if (name == "cycle.strategy") return strategy_label(s.cycle.strategy);
+    if (name == "cycle.feature") return feature_label(s.cycle.feature);
+    if (name == "cycle.backoff_from") return backoff_from_label(s.cycle.backoff_from);
+    if (key.kind == KeyKind::flag) {
+        return value_text(s, key) == "true" ? MainWindow::tr("on") : MainWindow::tr("off");
+    }
+    return QString::fromStdString(value_text(s, key));
+}
+
+// Issue 12: what a preset overwrote, "label: old -> new" per key it changed,
+// in the editors' units.
+QStringList changed_keys(const Scenario& before, const Scenario& after) {
+    QStringList out;
+    for (const KeyInfo& key : scenario_keys()) {
+        if (value_text(before, key) == value_text(after, key)) continue;
+        if (key.kind != KeyKind::number) {
+            out << QStringLiteral("%1: %2 \u2192 %3")
+                       .arg(QCoreApplication::translate("Parameter", key.label),
+                            shown_word(before, key), shown_word(after, key));
+            continue;
+        }
+        const ParameterView view = parameter_view(key);
+        const auto shown = [&](const Scenario& s) {
+            return QLocale().toString(*get_number(s, key.key) * view.factor, 'f', view.decimals) +
+                   QLatin1Char(' ') + view.unit;
+        };
+        out << QStringLiteral("%1: %2 \u2192 %3").arg(view.label, shown(before), shown(after));
+    }
+    return out;
 }
 
 }  // namespace
@@ -701,9 +738,15 @@ bool MainWindow::apply_preset(const QString& resource_path) {
     for (const PresetDef& def : kProbePresets) {
         if (resource_path == QLatin1String(def.path)) name = tr(def.name);
     }
+    last_preset_changes_ = changed_keys(scenario_, next);
     edit_scenario(next, tr("preset %1").arg(name));
+    // Say what it overwrote (a measured latency, say): Undo brings it back.
     statusBar()->showMessage(
-        tr("%1: typical values applied; replace them with your measured ones").arg(name), 8000);
+        last_preset_changes_.isEmpty()
+            ? tr("%1: nothing to change, the values are already the preset's").arg(name)
+            : tr("%1: typical values applied (Undo restores): %2")
+                  .arg(name, last_preset_changes_.join(QStringLiteral("; "))),
+        20000);
     return true;
 }
 

@@ -75,6 +75,8 @@ class MainWindow : public QMainWindow {
     // A preset from resources/ (":/presets/..."): its machine or probe section
     // replaces the current one, as an undoable edit.
     bool apply_preset(const QString& resource_path);
+    // What the last preset overwrote, "label: old -> new" per key.
+    QStringList last_preset_changes() const { return last_preset_changes_; }
     QString current_file() const { return current_file_; }
     QString last_error() const { return last_error_; }
 
@@ -143,6 +145,7 @@ class MainWindow : public QMainWindow {
     void export_png_dialog();
 
     MainWindowOptions options_;
+    QStringList last_preset_changes_;
     Scenario scenario_;
     Computation computation_;
     std::optional<Computed> baseline_;

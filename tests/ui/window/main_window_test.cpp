@@ -625,6 +625,27 @@ TEST_F(MainWindowTest, UndoRestoresAndRedoReapplies) {
     EXPECT_EQ(json(), dragged);
 }
 
+// Issue 12: a preset says what it overwrote (here a measured latency), and
+// Undo brings it back.
+TEST_F(MainWindowTest, APresetSaysWhatItOverwrote) {
+    Scenario measured = window_->scenario();
+    measured.machine.controller_latency_s = 0.0123;
+    window_->edit_scenario(measured, QStringLiteral("apply the measured delay"));
+    settle();
+    ASSERT_TRUE(window_->apply_preset(QStringLiteral(":/presets/machine_standard_skip.json")));
+    settle();
+    const QStringList changes = window_->last_preset_changes();
+    ASSERT_EQ(changes.size(), 1) << changes.join(QLatin1Char('|')).toStdString();
+    EXPECT_TRUE(changes.front().contains(QStringLiteral("12.300 ms")))
+        << changes.front().toStdString();
+    EXPECT_TRUE(changes.front().contains(QStringLiteral("2.000 ms")))
+        << changes.front().toStdString();
+    EXPECT_DOUBLE_EQ(window_->scenario().machine.controller_latency_s, 0.002);
+    window_->undo_stack()->undo();
+    settle();
+    EXPECT_DOUBLE_EQ(window_->scenario().machine.controller_latency_s, 0.0123);
+}
+
 TEST_F(MainWindowTest, EveryPresetLoadsAndChangesOnlyItsKeys) {
     for (const char* preset : kPresets) {
         const Cycle cycle_before = window_->scenario().cycle;
