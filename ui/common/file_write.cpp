@@ -1,6 +1,9 @@
 #include "ui/common/file_write.h"
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
+#include <QStandardPaths>
 #include <string_view>
 
 #include "core/common/file_io.h"
@@ -18,6 +21,35 @@ bool write_file(const QString& path, const QByteArray& bytes, QString& error) {
         return false;
     }
     return true;
+}
+
+namespace {
+// One folder for the whole window: the user's last place, whichever tab.
+QString& folder() {
+    static QString last;
+    return last;
+}
+}  // namespace
+
+QString dialog_start(const QString& file_name) {
+    QString dir = folder();
+    if (dir.isEmpty() || !QFileInfo(dir).isDir()) {
+        dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    }
+    if (dir.isEmpty()) dir = QDir::homePath();
+    return file_name.isEmpty() ? dir : QDir(dir).filePath(file_name);
+}
+
+void remember_folder_of(const QString& path) {
+    if (!path.isEmpty()) folder() = QFileInfo(path).absolutePath();
+}
+
+QString remembered_folder() {
+    return folder();
+}
+
+void set_remembered_folder(const QString& dir) {
+    folder() = dir;
 }
 
 }  // namespace probecycle::ui

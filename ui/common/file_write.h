@@ -13,4 +13,15 @@ namespace probecycle::ui {
 // False on failure, with `error` the reason in the interface language.
 bool write_file(const QString& path, const QByteArray& bytes, QString& error);
 
+// Where a file dialog starts (issue 12): the folder of the last file the user
+// opened or wrote in any tab, else the user's documents, never "/"; with
+// `file_name` the suggested file in it.
+QString dialog_start(const QString& file_name = {});
+// The folder of a file the user chose or wrote, for the next dialog.
+void remember_folder_of(const QString& path);
+// The folder remembered (empty before any), to save across sessions, and
+// to set it again at the next start.
+QString remembered_folder();
+void set_remembered_folder(const QString& folder);
+
 }  // namespace probecycle::ui

@@ -32,6 +32,7 @@
 #include "core/comparison/comparison_project.h"
 #include "core/comparison/comparison_report.h"
 #include "core/comparison/comparison_simulator.h"
+#include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
 #include "ui/common/text_format.h"
@@ -511,7 +512,7 @@ bool ComparisonTab::simulate_example(const QString& folder) {
     }
     set_c_axis(in.c_axis.x_mm, in.c_axis.y_mm);
     set_angle_deg(in.c_axis.angle_deg);
-    last_dir_ = dir;
+    set_remembered_folder(dir);
     return run();
 }
 
@@ -529,7 +530,7 @@ bool ComparisonTab::export_report(const QString& path) {
         show_error(export_status_, last_error_);
         return false;
     }
-    last_dir_ = QFileInfo(path).absolutePath();
+    remember_folder_of(path);
     export_status_->setStyleSheet({});
     export_status_->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
     export_status_->show();
@@ -560,7 +561,7 @@ bool ComparisonTab::save_project(const QString& path) {
         set_error(lab_error_text(e));
         return false;
     }
-    last_dir_ = base.absolutePath();
+    set_remembered_folder(base.absolutePath());
     return true;
 }
 
@@ -593,7 +594,7 @@ bool ComparisonTab::open_project(const QString& path) {
         const QSignalBlocker block(tolerance_);
         tolerance_->set_internal_value(project.tolerance_mm);
     }
-    last_dir_ = base.absolutePath();
+    set_remembered_folder(base.absolutePath());
     set_error({});
     const bool complete = !project.plan.empty() && !project.reference_cmm.empty() &&
                           !project.test_omm.empty() && !project.reference_omm.empty();
@@ -856,28 +857,28 @@ void ComparisonTab::draw_histogram() {
 
 void ComparisonTab::choose_file(InputFile which) {
     const QString path = QFileDialog::getOpenFileName(
-        this, file_labels_[static_cast<std::size_t>(which)]->text(), last_dir_,
+        this, file_labels_[static_cast<std::size_t>(which)]->text(), dialog_start(),
         tr("Point files (*.csv *.dmi *.dmis *.txt);;All files (*)"));
     if (path.isEmpty()) return;
     set_file(which, path);
-    last_dir_ = QFileInfo(path).absolutePath();
+    remember_folder_of(path);
 }
 
 void ComparisonTab::open_project_dialog() {
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open comparison project"), last_dir_, tr("Comparison projects (*.json)"));
+        this, tr("Open comparison project"), dialog_start(), tr("Comparison projects (*.json)"));
     if (!path.isEmpty()) open_project(path);
 }
 
 void ComparisonTab::save_project_dialog() {
     const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save comparison project"), last_dir_, tr("Comparison projects (*.json)"));
+        this, tr("Save comparison project"), dialog_start(), tr("Comparison projects (*.json)"));
     if (!path.isEmpty()) save_project(path);
 }
 
 void ComparisonTab::export_dialog() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export comparison report"),
-                                                      last_dir_, tr("CSV files (*.csv)"));
+                                                      dialog_start(), tr("CSV files (*.csv)"));
     if (!path.isEmpty()) export_report(path);
 }
 

@@ -145,7 +145,6 @@ class ComparisonTab : public QWidget {
     ComparisonInput input_;  // of result_
     std::optional<ComparisonResult> result_;
     QString last_error_;
-    QString last_dir_;
 };
 
 }  // namespace probecycle::ui

@@ -23,6 +23,7 @@
 #include "core/common/file_io.h"
 #include "core/cycle/cycle_report.h"
 #include "core/lab/calibration_report.h"
+#include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
 #include "ui/lab/lab_widgets.h"
@@ -395,7 +396,7 @@ bool CalibrationTab::import_file(const QString& path) {
         set_error(error);
         return false;
     }
-    last_dir_ = QFileInfo(path).absolutePath();
+    remember_folder_of(path);
     return fit_text(*text, QFileInfo(path).fileName());
 }
 
@@ -731,7 +732,7 @@ bool CalibrationTab::export_report(const QString& path) {
         show_error(export_status_, last_error_);
         return false;
     }
-    last_dir_ = QFileInfo(path).absolutePath();
+    remember_folder_of(path);
     export_status_->setStyleSheet({});
     export_status_->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
     export_status_->show();
@@ -739,14 +740,15 @@ bool CalibrationTab::export_report(const QString& path) {
 }
 
 void CalibrationTab::import_dialog() {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Import ring gauge points"), last_dir_, tr("CSV files (*.csv);;All files (*)"));
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Import ring gauge points"), dialog_start(),
+                                     tr("CSV files (*.csv);;All files (*)"));
     if (!path.isEmpty()) import_file(path);
 }
 
 void CalibrationTab::export_dialog() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export calibration report"),
-                                                      last_dir_, tr("CSV files (*.csv)"));
+                                                      dialog_start(), tr("CSV files (*.csv)"));
     if (!path.isEmpty()) export_report(path);
 }
 

@@ -166,7 +166,6 @@ class CalibrationTab : public QWidget {
     RingCalibrationOptions options_;  // of result_
     std::optional<RingCalibration> result_;
     QString last_error_;
-    QString last_dir_;
 
     std::optional<LengthCalibrationInput> length_input_;
     std::optional<LengthCalibration> length_result_;

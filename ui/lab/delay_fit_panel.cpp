@@ -19,6 +19,7 @@
 #include <stdexcept>
 
 #include "core/lab/compensation.h"  // lag_cycles_for_delay
+#include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
 #include "ui/common/text_format.h"
@@ -270,7 +271,7 @@ bool DelayFitPanel::import_file(const QString& path) {
         set_error(error);
         return false;
     }
-    last_dir_ = QFileInfo(path).absolutePath();
+    remember_folder_of(path);
     return fit_text(*text, QFileInfo(path).fileName());
 }
 
@@ -441,7 +442,7 @@ QList<QPointF> DelayFitPanel::plotted_line(int group) const {
 }
 
 void DelayFitPanel::import_dialog() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Import touches"), last_dir_,
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import touches"), dialog_start(),
                                                       tr("CSV files (*.csv);;All files (*)"));
     if (!path.isEmpty()) import_file(path);
 }

@@ -145,7 +145,6 @@ class DelayFitPanel : public QGroupBox {
     DelayFitOptions fit_options_;
     std::optional<DelayFit> fit_;
     QString last_error_;
-    QString last_dir_;
 };
 
 }  // namespace probecycle::ui

@@ -5,16 +5,20 @@
 #include <QApplication>
 #include <QBuffer>
 #include <QCloseEvent>
+#include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFontMetrics>
 #include <QImage>
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPainter>
+#include <QPixmap>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
@@ -474,7 +478,7 @@ void MainWindow::restore_settings() {
     right_splitter_->restoreState(
         settings.value(QStringLiteral("window/right_splitter")).toByteArray());
     recent_files_ = settings.value(QStringLiteral("files/recent")).toStringList();
-    last_dir_ = settings.value(QStringLiteral("files/last_dir")).toString();
+    set_remembered_folder(settings.value(QStringLiteral("files/last_dir")).toString());
     language_choice_ = settings.value(QStringLiteral("view/language")).toString();
     for (QAction* action : language_actions_) {
         action->setChecked(action->data().toString() == language_choice_);
@@ -504,7 +508,7 @@ void MainWindow::save_settings(bool with_scenario) const {
     settings.setValue(QStringLiteral("window/splitter"), main_splitter_->saveState());
     settings.setValue(QStringLiteral("window/right_splitter"), right_splitter_->saveState());
     settings.setValue(QStringLiteral("files/recent"), recent_files_);
-    settings.setValue(QStringLiteral("files/last_dir"), last_dir_);
+    settings.setValue(QStringLiteral("files/last_dir"), remembered_folder());
     settings.setValue(QStringLiteral("view/language"), language_choice_);
     if (!with_scenario) {
         // Discarded edits: the file is opened again from disk at the next start.
@@ -657,7 +661,7 @@ bool MainWindow::open_scenario(const QString& path) {
     }
     reset_document(loaded, QFileInfo(path).absoluteFilePath());
     remember_recent(current_file_);
-    last_dir_ = QFileInfo(path).absolutePath();
+    remember_folder_of(path);
     statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), 4000);
     return true;
 }
@@ -672,7 +676,7 @@ bool MainWindow::save_scenario(const QString& path) {
     current_file_ = QFileInfo(path).absoluteFilePath();
     undo_->setClean();
     remember_recent(current_file_);
-    last_dir_ = QFileInfo(path).absolutePath();
+    remember_folder_of(path);
     update_title();
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 4000);
     return true;
@@ -694,13 +698,51 @@ bool MainWindow::export_csv_report(const QString& path) {
                      tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
+    remember_folder_of(path);
     statusBar()->showMessage(tr("Report written to %1").arg(QDir::toNativeSeparators(path)), 4000);
     return true;
 }
 
-bool MainWindow::export_charts_png(const QString& path) {
+// Issue 12: the current tab (the Cycle tab's charts, or the whole lab or
+// comparison tab), drawn at `width` pixels (the widgets are vector-drawn, so
+// no upscaled pixels), under a title line naming the scenario, the tab, the
+// date and the program version.
+QImage MainWindow::export_image(int width) {
     recompute_now();
-    const QImage image = charts_->grab().toImage();
+    QWidget* source =
+        tabs_->currentIndex() == 0 ? static_cast<QWidget*>(charts_) : tabs_->currentWidget();
+    const double scale = std::max(1.0, static_cast<double>(width) / std::max(1, source->width()));
+    QPixmap content(source->size() * scale);
+    content.setDevicePixelRatio(scale);
+    content.fill(palette().color(QPalette::Window));
+    source->render(&content);
+
+    const QString name =
+        current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();
+    const QString title =
+        tr("%1 - %2 - %3 - ProbeCycle %4")
+            .arg(name, tabs_->tabText(tabs_->currentIndex()),
+                 QLocale().toString(QDateTime::currentDateTime(), QLocale::ShortFormat),
+                 QCoreApplication::applicationVersion());
+    QFont font = this->font();
+    font.setPointSizeF(font.pointSizeF() * 1.4);
+    const int band = static_cast<int>(QFontMetrics(font).height() * 2.0);
+    const QSize logical = source->size();
+    QImage image(QSize(logical.width(), logical.height() + band) * scale, QImage::Format_RGB32);
+    image.setDevicePixelRatio(scale);
+    image.fill(palette().color(QPalette::Window));
+    QPainter painter(&image);
+    painter.setFont(font);
+    painter.setPen(palette().color(QPalette::WindowText));
+    painter.drawText(QRect(12, 0, logical.width() - 24, band), Qt::AlignVCenter | Qt::AlignLeft,
+                     title);
+    painter.drawPixmap(0, band, content);
+    painter.end();
+    return image;
+}
+
+bool MainWindow::export_charts_png(const QString& path, int width) {
+    const QImage image = export_image(width);
     QByteArray png;
     QBuffer buffer(&png);
     QString error;
@@ -712,6 +754,7 @@ bool MainWindow::export_charts_png(const QString& path) {
                      tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
+    remember_folder_of(path);
     statusBar()->showMessage(tr("Charts written to %1").arg(QDir::toNativeSeparators(path)), 4000);
     return true;
 }
@@ -786,7 +829,7 @@ void MainWindow::update_title() {
 
 void MainWindow::open_dialog() {
     if (!settle_unsaved_changes()) return;
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open scenario"), last_dir_,
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open scenario"), dialog_start(),
                                                       tr("Scenario (*.json);;All files (*)"));
     if (!path.isEmpty()) open_scenario(path);
 }
@@ -799,7 +842,7 @@ bool MainWindow::save_action() {
 bool MainWindow::save_as_dialog() {
     QString path = QFileDialog::getSaveFileName(
         this, tr("Save scenario"),
-        current_file_.isEmpty() ? last_dir_ + QStringLiteral("/scenario.json") : current_file_,
+        current_file_.isEmpty() ? dialog_start(QStringLiteral("scenario.json")) : current_file_,
         tr("Scenario (*.json)"));
     if (path.isEmpty()) return false;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
@@ -808,7 +851,7 @@ bool MainWindow::save_as_dialog() {
 
 void MainWindow::export_csv_dialog() {
     QString path = QFileDialog::getSaveFileName(
-        this, tr("Export CSV report"), last_dir_ + QStringLiteral("/probecycle-report.csv"),
+        this, tr("Export CSV report"), dialog_start(QStringLiteral("probecycle-report.csv")),
         tr("CSV (*.csv)"));
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".csv");
@@ -817,7 +860,7 @@ void MainWindow::export_csv_dialog() {
 
 void MainWindow::export_png_dialog() {
     QString path = QFileDialog::getSaveFileName(
-        this, tr("Export charts as PNG"), last_dir_ + QStringLiteral("/probecycle-charts.png"),
+        this, tr("Export charts as PNG"), dialog_start(QStringLiteral("probecycle-charts.png")),
         tr("PNG image (*.png)"));
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".png");

@@ -8,6 +8,7 @@
 // The public functions below the constructor are the window's behaviour as
 // tests, the benchmark and `--screenshot` drive it.
 
+#include <QImage>
 #include <QList>
 #include <QMainWindow>
 #include <QPointF>
@@ -71,7 +72,9 @@ class MainWindow : public QMainWindow {
     bool open_scenario(const QString& path);
     bool save_scenario(const QString& path);
     bool export_csv_report(const QString& path);
-    bool export_charts_png(const QString& path);
+    // The current tab's charts at `width` pixels under a title line (issue 12).
+    bool export_charts_png(const QString& path, int width = 1920);
+    QImage export_image(int width);
     // A preset from resources/ (":/presets/..."): its machine or probe section
     // replaces the current one, as an undoable edit.
     bool apply_preset(const QString& resource_path);
@@ -153,7 +156,6 @@ class MainWindow : public QMainWindow {
     int recompute_count_{0};
     QString current_file_;
     QString last_error_;
-    QString last_dir_;
     QStringList recent_files_;
 
     QUndoStack* undo_{nullptr};

@@ -365,7 +365,22 @@ TEST_F(MainWindowTest, ChartsExportAsPng) {
     ASSERT_TRUE(window_->export_charts_png(path));
     QImage image(path);
     EXPECT_FALSE(image.isNull());
-    EXPECT_GT(image.width(), 400);
+    // Issue 12: at the width asked for (1920 by default), whatever the window's.
+    EXPECT_GE(image.width(), 1920);
+    EXPECT_GT(image.height(), 400);
+
+    // The current tab's content: the Latency tab gives another picture, with
+    // the same title band above it.
+    auto* tabs = window_->findChild<QTabWidget*>(QStringLiteral("tabs"));
+    ASSERT_NE(tabs, nullptr);
+    const QImage cycle = window_->export_image(1280);
+    tabs->setCurrentIndex(2);
+    settle();
+    const QImage latency = window_->export_image(1280);
+    EXPECT_GE(latency.width(), 1280);
+    EXPECT_NE(cycle.size(), latency.size());
+    EXPECT_NE(cycle.copy(0, cycle.height() / 2, 200, 50),
+              latency.copy(0, latency.height() / 2, 200, 50));
 }
 
 // Issue 12: New and Open ask before unsaved edits would go.
