@@ -2537,6 +2537,10 @@
         <source>%1: typical values applied (Undo restores): %2</source>
         <translation>%1: применены типовые значения (отмена возвращает прежние): %2</translation>
     </message>
+    <message>
+        <source>%1 - %2 - %3 - ProbeCycle %4</source>
+        <translation>%1 — %2 — %3 — ProbeCycle %4</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>

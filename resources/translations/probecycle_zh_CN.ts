@@ -2537,6 +2537,10 @@
         <source>%1: typical values applied (Undo restores): %2</source>
         <translation>%1：已应用典型值（撤销可恢复原值）：%2</translation>
     </message>
+    <message>
+        <source>%1 - %2 - %3 - ProbeCycle %4</source>
+        <translation>%1 — %2 — %3 — ProbeCycle %4</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>
