@@ -2053,6 +2053,61 @@
     </message>
 </context>
 <context>
+    <name>probecycle::ui::HelpGuide</name>
+    <message>
+        <source>One touch, phase by phase</source>
+        <translation>Одно касание по фазам</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Approach&lt;/b&gt;: from the start position to the surface at the probing feed. &lt;b&gt;Pretravel&lt;/b&gt;: the stylus deflects until the probe triggers. &lt;b&gt;Interface delay&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: the probe&apos;s interface passes the signal on. &lt;b&gt;Controller delay&lt;/b&gt;: the control&apos;s latency t&lt;sub&gt;c&lt;/sub&gt; plus, at worst, a whole scan period t&lt;sub&gt;s&lt;/sub&gt; until it sees the signal. &lt;b&gt;Deceleration&lt;/b&gt;: the axis brakes to rest. Two-touch then &lt;b&gt;backs off&lt;/b&gt;, touches again slowly (the &lt;b&gt;2nd&lt;/b&gt; phases) and &lt;b&gt;returns&lt;/b&gt; to the start; a bore or boss adds the &lt;b&gt;positioning&lt;/b&gt; moves between its touches.</source>
+        <translation>&lt;b&gt;Подвод&lt;/b&gt;: от начальной точки до поверхности на подаче поиска. &lt;b&gt;Предход&lt;/b&gt;: наконечник щупа отклоняется, пока датчик не сработает. &lt;b&gt;Задержка интерфейса&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: интерфейс датчика передаёт сигнал дальше. &lt;b&gt;Задержка ЧПУ&lt;/b&gt;: задержка системы ЧПУ t&lt;sub&gt;c&lt;/sub&gt; плюс, в худшем случае, целый период опроса t&lt;sub&gt;s&lt;/sub&gt;, пока она не увидит сигнал. &lt;b&gt;Торможение&lt;/b&gt;: ось тормозит до остановки. Затем при двукратном касании следуют &lt;b&gt;отвод&lt;/b&gt;, повторное медленное касание (фазы &lt;b&gt;2-го&lt;/b&gt; касания) и &lt;b&gt;возврат&lt;/b&gt; в начальную точку; отверстие или бобышка добавляют &lt;b&gt;позиционирование&lt;/b&gt; между касаниями.</translation>
+    </message>
+    <message>
+        <source>The formulas</source>
+        <translation>Формулы</translation>
+    </message>
+    <message>
+        <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T). Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). Uncertainty (k = 2) U = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
+        <translation>Перебег = предход + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + тормозной путь (v&amp;middot;T/2 при постоянной времени T). Разброс опроса R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 при входе с защёлкой). Неопределённость (k = 2) U = &amp;radic;(R&amp;sup2;/3 + повторяемость&amp;sup2;). Рекомендуемый отвод = перебег первого касания + большее из пути восстановления датчика и пути разгона второго касания до его подачи, с округлением вверх до микрометра. Подсказка каждого параметра говорит, где он входит в модель.</translation>
+    </message>
+    <message>
+        <source>Reading the charts</source>
+        <translation>Как читать графики</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Cycle time against the probing feed&lt;/b&gt;: single-touch and two-touch (with the recommended backoff at each feed), the knee (the lowest feed whose cycle time is within the knee tolerance, 1 % by default, of the fastest valid cycle) and this cycle. Feeds whose cycle cannot run (overtravel over the limit, backoff too small) are invalid and never count as fast. &lt;b&gt;Overtravel and uncertainty&lt;/b&gt; against the feed, with the probe&apos;s limit and your target. &lt;b&gt;Phases&lt;/b&gt;: where the time goes. &lt;b&gt;Position and speed&lt;/b&gt; through the whole cycle.</source>
+        <translation>&lt;b&gt;Время цикла в зависимости от подачи поиска&lt;/b&gt;: однократное и двукратное касание (с рекомендуемым отводом при каждой подаче), точка перегиба (наименьшая подача, время цикла при которой отличается от самого быстрого допустимого цикла не более чем на допуск перегиба, по умолчанию 1 %) и этот цикл. Подачи, при которых цикл невыполним (перебег сверх предела, слишком малый отвод), недопустимы и никогда не считаются быстрыми. &lt;b&gt;Перебег и неопределённость&lt;/b&gt; в зависимости от подачи, с пределом датчика и вашей целью. &lt;b&gt;Фазы&lt;/b&gt;: на что уходит время. &lt;b&gt;Положение и скорость&lt;/b&gt; на протяжении всего цикла.</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Предупреждения</translation>
+    </message>
+    <message>
+        <source>Errors come first: an error means the cycle cannot run as set, and no cycle time is shown for it. Where a warning has a one-click fix, its button sets the value that clears it; Undo takes it back.</source>
+        <translation>Ошибки идут первыми: ошибка значит, что цикл в таком виде невыполним, и время цикла для него не показывается. Если у предупреждения есть исправление одним щелчком, его кнопка ставит значение, которое его устраняет; «Отменить» возвращает прежнее.</translation>
+    </message>
+    <message>
+        <source>Measuring the delay</source>
+        <translation>Как измерить задержку</translation>
+    </message>
+    <message>
+        <source>On the machine, touch the same surface at several feeds (for example 30, 100, 300, 1000 and 2000 mm/min, five times each), each time from far enough out to be at full feed, and note the recorded positions. Paste them into the Latency tab (axis, direction, feed, measured) and press Fit: measured = p&lt;sub&gt;0&lt;/sub&gt; + v &amp;middot; &amp;tau;, and the delay &amp;tau; = t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;/2 gives the controller&apos;s latency t&lt;sub&gt;c&lt;/sub&gt;, which Apply writes into the scenario. The Calibration tab fits the stylus&apos;s runout and effective radius from a ring gauge touched at spindle 0&amp;deg; and 180&amp;deg;.</source>
+        <translation>На станке коснитесь одной и той же поверхности на нескольких подачах (например, 30, 100, 300, 1000 и 2000 мм/мин, по пять раз), каждый раз с такого расстояния, чтобы ось успела выйти на полную подачу, и запишите зафиксированные положения. Вставьте их на вкладке «Задержка» (ось, направление, подача, измерено) и нажмите «Подобрать»: измерено = p&lt;sub&gt;0&lt;/sub&gt; + v &amp;middot; &amp;tau;, а задержка &amp;tau; = t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;/2 даёт задержку ЧПУ t&lt;sub&gt;c&lt;/sub&gt;, которую кнопка «Применить к сценарию» записывает в сценарий. Вкладка «Калибровка» определяет биение и эффективный радиус наконечника по установочному кольцу, ощупанному при положении шпинделя 0&amp;deg; и 180&amp;deg;.</translation>
+    </message>
+    <message>
+        <source>More</source>
+        <translation>Подробнее</translation>
+    </message>
+    <message>
+        <source>The README explains the model in full: sections &quot;The model&quot;, &quot;One touch&quot;, &quot;Cycle time against feed&quot;, &quot;The calibration and latency lab&quot; and &quot;Limits of the model&quot;. &lt;a href=&quot;%1&quot;&gt;Open the README&lt;/a&gt;.</source>
+        <translation>README описывает модель полностью: разделы «The model», «One touch», «Cycle time against feed», «The calibration and latency lab» и «Limits of the model». &lt;a href=&quot;%1&quot;&gt;Открыть README&lt;/a&gt;.</translation>
+    </message>
+    <message>
+        <source>ProbeCycle guide</source>
+        <translation>Руководство ProbeCycle</translation>
+    </message>
+</context>
+<context>
     <name>probecycle::ui::Lab</name>
     <message>
         <source>Points on one side</source>
@@ -2540,6 +2595,10 @@
     <message>
         <source>%1 - %2 - %3 - ProbeCycle %4</source>
         <translation>%1 — %2 — %3 — ProbeCycle %4</translation>
+    </message>
+    <message>
+        <source>&amp;Guide</source>
+        <translation>&amp;Руководство</translation>
     </message>
 </context>
 <context>

@@ -2053,6 +2053,61 @@
     </message>
 </context>
 <context>
+    <name>probecycle::ui::HelpGuide</name>
+    <message>
+        <source>One touch, phase by phase</source>
+        <translation>一次触测的各个阶段</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Approach&lt;/b&gt;: from the start position to the surface at the probing feed. &lt;b&gt;Pretravel&lt;/b&gt;: the stylus deflects until the probe triggers. &lt;b&gt;Interface delay&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: the probe&apos;s interface passes the signal on. &lt;b&gt;Controller delay&lt;/b&gt;: the control&apos;s latency t&lt;sub&gt;c&lt;/sub&gt; plus, at worst, a whole scan period t&lt;sub&gt;s&lt;/sub&gt; until it sees the signal. &lt;b&gt;Deceleration&lt;/b&gt;: the axis brakes to rest. Two-touch then &lt;b&gt;backs off&lt;/b&gt;, touches again slowly (the &lt;b&gt;2nd&lt;/b&gt; phases) and &lt;b&gt;returns&lt;/b&gt; to the start; a bore or boss adds the &lt;b&gt;positioning&lt;/b&gt; moves between its touches.</source>
+        <translation>&lt;b&gt;接近&lt;/b&gt;：以探测进给率从起始位置到表面。&lt;b&gt;预行程&lt;/b&gt;：测针偏转直到测头触发。&lt;b&gt;接口延迟&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;：测头接口传出信号。&lt;b&gt;控制器延迟&lt;/b&gt;：数控系统的延迟 t&lt;sub&gt;c&lt;/sub&gt;，最坏情况下再加一个完整的扫描周期 t&lt;sub&gt;s&lt;/sub&gt;，直到系统检测到信号。&lt;b&gt;减速&lt;/b&gt;：轴制动到停止。二次触发随后&lt;b&gt;回退&lt;/b&gt;，再慢速触测一次（&lt;b&gt;第二次&lt;/b&gt;各阶段），然后&lt;b&gt;返回&lt;/b&gt;起始位置；孔或凸台在各触测之间还有&lt;b&gt;定位&lt;/b&gt;移动。</translation>
+    </message>
+    <message>
+        <source>The formulas</source>
+        <translation>公式</translation>
+    </message>
+    <message>
+        <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T). Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). Uncertainty (k = 2) U = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
+        <translation>过行程 = 预行程 + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + 制动距离（时间常数为 T 时为 v&amp;middot;T/2）。扫描范围 R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;（锁存输入时为 0）。不确定度（k = 2）U = &amp;radic;(R&amp;sup2;/3 + 重复性&amp;sup2;)。推荐回退距离 = 第一次触测的过行程 + 测头复位距离与第二次触测加速到其进给率所需距离中的较大者，向上取整到微米。每个参数的提示说明它在模型中的作用。</translation>
+    </message>
+    <message>
+        <source>Reading the charts</source>
+        <translation>如何看图表</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Cycle time against the probing feed&lt;/b&gt;: single-touch and two-touch (with the recommended backoff at each feed), the knee (the lowest feed whose cycle time is within the knee tolerance, 1 % by default, of the fastest valid cycle) and this cycle. Feeds whose cycle cannot run (overtravel over the limit, backoff too small) are invalid and never count as fast. &lt;b&gt;Overtravel and uncertainty&lt;/b&gt; against the feed, with the probe&apos;s limit and your target. &lt;b&gt;Phases&lt;/b&gt;: where the time goes. &lt;b&gt;Position and speed&lt;/b&gt; through the whole cycle.</source>
+        <translation>&lt;b&gt;循环时间与探测进给率的关系&lt;/b&gt;：一次触发和二次触发（每个进给率都用推荐回退距离）、拐点（循环时间与最快有效循环相差不超过拐点容差（默认 1 %）的最低进给率）以及当前循环。循环无法执行的进给率（过行程超过极限、回退距离过小）无效，绝不会被当作更快。&lt;b&gt;过行程和不确定度&lt;/b&gt;与进给率的关系，以及测头极限和您的目标。&lt;b&gt;阶段&lt;/b&gt;：时间花在哪里。&lt;b&gt;位置和速度&lt;/b&gt;：整个循环的过程。</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Errors come first: an error means the cycle cannot run as set, and no cycle time is shown for it. Where a warning has a one-click fix, its button sets the value that clears it; Undo takes it back.</source>
+        <translation>错误排在最前：错误表示按当前设置循环无法执行，此时不显示循环时间。如果警告有一键修复，其按钮会设置消除该警告的数值；撤销可恢复原值。</translation>
+    </message>
+    <message>
+        <source>Measuring the delay</source>
+        <translation>如何测量延迟</translation>
+    </message>
+    <message>
+        <source>On the machine, touch the same surface at several feeds (for example 30, 100, 300, 1000 and 2000 mm/min, five times each), each time from far enough out to be at full feed, and note the recorded positions. Paste them into the Latency tab (axis, direction, feed, measured) and press Fit: measured = p&lt;sub&gt;0&lt;/sub&gt; + v &amp;middot; &amp;tau;, and the delay &amp;tau; = t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;/2 gives the controller&apos;s latency t&lt;sub&gt;c&lt;/sub&gt;, which Apply writes into the scenario. The Calibration tab fits the stylus&apos;s runout and effective radius from a ring gauge touched at spindle 0&amp;deg; and 180&amp;deg;.</source>
+        <translation>在机床上以多个进给率触测同一表面（例如 30、100、300、1000 和 2000 mm/min，各五次），每次都从足够远处开始以达到全速，并记下记录的位置。将它们粘贴到“延迟”选项卡（轴、方向、进给率、测量值），然后按“拟合”：测量值 = p&lt;sub&gt;0&lt;/sub&gt; + v &amp;middot; &amp;tau;，延迟 &amp;tau; = t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;/2 给出控制器延迟 t&lt;sub&gt;c&lt;/sub&gt;，“应用到场景”会把它写入场景。“标定”选项卡根据在主轴 0&amp;deg; 和 180&amp;deg; 触测的环规拟合测针的跳动和有效半径。</translation>
+    </message>
+    <message>
+        <source>More</source>
+        <translation>更多</translation>
+    </message>
+    <message>
+        <source>The README explains the model in full: sections &quot;The model&quot;, &quot;One touch&quot;, &quot;Cycle time against feed&quot;, &quot;The calibration and latency lab&quot; and &quot;Limits of the model&quot;. &lt;a href=&quot;%1&quot;&gt;Open the README&lt;/a&gt;.</source>
+        <translation>README 完整介绍了模型：见“The model”、“One touch”、“Cycle time against feed”、“The calibration and latency lab”和“Limits of the model”各节。&lt;a href=&quot;%1&quot;&gt;打开 README&lt;/a&gt;。</translation>
+    </message>
+    <message>
+        <source>ProbeCycle guide</source>
+        <translation>ProbeCycle 指南</translation>
+    </message>
+</context>
+<context>
     <name>probecycle::ui::Lab</name>
     <message>
         <source>Points on one side</source>
@@ -2540,6 +2595,10 @@
     <message>
         <source>%1 - %2 - %3 - ProbeCycle %4</source>
         <translation>%1 — %2 — %3 — ProbeCycle %4</translation>
+    </message>
+    <message>
+        <source>&amp;Guide</source>
+        <translation>指南(&amp;G)</translation>
     </message>
 </context>
 <context>

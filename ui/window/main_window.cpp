@@ -44,6 +44,7 @@
 #include "ui/cycle/parameter_panel.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
+#include "ui/window/help_guide.h"
 #include "ui/window/scenario_command.h"
 
 namespace probecycle::ui {
@@ -306,6 +307,10 @@ void MainWindow::build_actions() {
     unpin_->setEnabled(false);
     connect(unpin_, &QAction::triggered, this, &MainWindow::clear_baseline);
 
+    guide_ = new QAction(this);
+    guide_->setObjectName(QStringLiteral("action-guide"));
+    guide_->setShortcut(QKeySequence::HelpContents);
+    connect(guide_, &QAction::triggered, this, [this] { show_guide(); });
     about_ = new QAction(this);
     about_->setMenuRole(QAction::AboutRole);
     connect(about_, &QAction::triggered, this, [this] {
@@ -387,6 +392,8 @@ void MainWindow::build_menus() {
     language_menu_->addActions(language_actions_);
 
     help_menu_ = menuBar()->addMenu(QString());
+    help_menu_->addAction(guide_);
+    help_menu_->addSeparator();
     help_menu_->addAction(about_);
 
     auto* toolbar = addToolBar(QString());
@@ -432,6 +439,7 @@ void MainWindow::retranslate() {
         tr("Keep the current scenario as a baseline: its curves stay drawn dashed and the readouts "
            "show the difference"));
     unpin_->setText(tr("&Clear Baseline"));
+    guide_->setText(tr("&Guide"));
     about_->setText(tr("&About ProbeCycle"));
     presets_note_->setText(tr("Presets hold typical values: replace them with measured ones"));
     for (const PresetAction& preset : preset_actions_) {
@@ -903,6 +911,13 @@ void MainWindow::update_warning_counts() {
     tabs_->setTabIcon(0, errors > 0     ? style()->standardIcon(QStyle::SP_MessageBoxCritical)
                          : warnings > 0 ? style()->standardIcon(QStyle::SP_MessageBoxWarning)
                                         : QIcon());
+}
+
+HelpGuide* MainWindow::show_guide() {
+    if (guide_window_ == nullptr) guide_window_ = new HelpGuide(this);
+    guide_window_->show();
+    guide_window_->raise();
+    return guide_window_;
 }
 
 bool MainWindow::apply_fix_for(const QString& warning_code) {

@@ -33,6 +33,7 @@ class QUndoStack;
 namespace probecycle::ui {
 
 class CalibrationTab;
+class HelpGuide;
 class CycleCharts;
 class LatencyTab;
 class ComparisonTab;
@@ -87,6 +88,9 @@ class MainWindow : public QMainWindow {
     void pin_baseline();
     void clear_baseline();
     bool has_baseline() const { return baseline_.has_value(); }
+
+    // Help > Guide (F1): the in-window guide, one window, shown and raised.
+    HelpGuide* show_guide();
 
     // Fixes offered by the warnings panel.
     bool apply_fix_for(const QString& warning_code);
@@ -194,6 +198,8 @@ class MainWindow : public QMainWindow {
     QAction* pin_{nullptr};
     QAction* unpin_{nullptr};
     QAction* about_{nullptr};
+    QAction* guide_{nullptr};
+    HelpGuide* guide_window_{nullptr};
     QAction* presets_note_{nullptr};
     QActionGroup* language_group_{nullptr};
     QList<QAction*> language_actions_;

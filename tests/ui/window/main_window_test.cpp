@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
@@ -28,6 +29,7 @@
 #include "ui/common/language.h"
 #include "ui/common/plot_view.h"
 #include "ui/lab/latency_tab.h"
+#include "ui/window/help_guide.h"
 
 namespace probecycle::ui {
 namespace {
@@ -746,6 +748,32 @@ TEST_F(MainWindowTest, LanguagesSwitchTheInterface) {
     window_->set_language(QStringLiteral("en"));
     settle();
     EXPECT_EQ(window_->menuBar()->actions().first()->text(), english);
+}
+
+// Issue 12: Help has a guide (F1) with the phases, the formulas, the charts
+// and how to measure the delay, in the interface language, with a link to
+// the README.
+TEST_F(MainWindowTest, HelpHasAGuideInTheInterfaceLanguage) {
+    auto* action = window_->findChild<QAction*>(QStringLiteral("action-guide"));
+    ASSERT_NE(action, nullptr);
+    EXPECT_EQ(action->shortcut(), QKeySequence(QKeySequence::HelpContents));
+    HelpGuide* guide = window_->show_guide();
+    ASSERT_NE(guide, nullptr);
+    EXPECT_TRUE(guide->isVisible());
+    EXPECT_EQ(window_->show_guide(), guide);  // one guide window
+    const QString english = guide->html();
+    for (const char* words : {"Pretravel", "Overtravel = pretravel", "the knee",
+                              "Measuring the delay", "Open the README"}) {
+        EXPECT_TRUE(english.contains(QLatin1String(words))) << words;
+    }
+    window_->set_language(QStringLiteral("ru"));
+    settle();
+    const QString russian = guide->html();
+    EXPECT_NE(russian, english);
+    EXPECT_TRUE(russian.contains(QStringLiteral("Перебег"))) << russian.toStdString();
+    window_->set_language(QStringLiteral("en"));
+    settle();
+    guide->close();
 }
 
 // Issue 12: Quit asks about unsaved edits (untitled ones too) and means the

@@ -1,0 +1,117 @@
+#include "ui/window/help_guide.h"
+
+#include <QDialogButtonBox>
+#include <QEvent>
+#include <QFileInfo>
+#include <QTextBrowser>
+#include <QUrl>
+#include <QVBoxLayout>
+
+namespace probecycle::ui {
+
+namespace {
+
+// Each paragraph is one text to translate; the formulas are the README's
+// ("One touch", "Strategies and features", "The calibration and latency lab").
+QString section(const QString& title, const QString& body) {
+    return QStringLiteral("<h3>%1</h3><p>%2</p>").arg(title, body);
+}
+
+#ifndef PROBECYCLE_README_PATH
+#define PROBECYCLE_README_PATH ""
+#endif
+
+}  // namespace
+
+QString help_guide_html(const QString& readme_path) {
+    QString html;
+    html += section(
+        HelpGuide::tr("One touch, phase by phase"),
+        HelpGuide::tr(
+            "<b>Approach</b>: from the start position to the surface at the probing feed. "
+            "<b>Pretravel</b>: the stylus deflects until the probe triggers. <b>Interface "
+            "delay</b> t<sub>i</sub>: the probe's interface passes the signal on. "
+            "<b>Controller delay</b>: the control's latency t<sub>c</sub> plus, at worst, a "
+            "whole scan period t<sub>s</sub> until it sees the signal. <b>Deceleration</b>: "
+            "the axis brakes to rest. Two-touch then <b>backs off</b>, touches again slowly "
+            "(the <b>2nd</b> phases) and <b>returns</b> to the start; a bore or boss adds the "
+            "<b>positioning</b> moves between its touches."));
+    html += section(
+        HelpGuide::tr("The formulas"),
+        HelpGuide::tr(
+            "Overtravel = pretravel + v &middot; (t<sub>i</sub> + t<sub>c</sub> + "
+            "t<sub>s</sub>) + the braking distance (v&middot;T/2 with a time constant T). "
+            "Scan range R = v &middot; t<sub>s</sub> (0 with a latched input). Uncertainty "
+            "(k = 2) U = &radic;(R&sup2;/3 + repeatability&sup2;). Recommended backoff = the "
+            "first touch's overtravel + the larger of the reseat distance and the distance the "
+            "second touch needs to reach its feed, rounded up to the micrometre. The tooltip "
+            "of every parameter says where it enters."));
+    html += section(
+        HelpGuide::tr("Reading the charts"),
+        HelpGuide::tr(
+            "<b>Cycle time against the probing feed</b>: single-touch and two-touch (with the "
+            "recommended backoff at each feed), the knee (the lowest feed whose cycle time is "
+            "within the knee tolerance, 1 % by default, of the fastest valid cycle) and this "
+            "cycle. Feeds whose cycle cannot run (overtravel over the limit, backoff too small) "
+            "are invalid and never count as fast. <b>Overtravel and uncertainty</b> against "
+            "the feed, with the probe's limit and your target. <b>Phases</b>: where the time "
+            "goes. <b>Position and speed</b> through the whole cycle."));
+    html += section(
+        HelpGuide::tr("Warnings"),
+        HelpGuide::tr(
+            "Errors come first: an error means the cycle cannot run as set, and no cycle time "
+            "is shown for it. Where a warning has a one-click fix, its button sets the value "
+            "that clears it; Undo takes it back."));
+    html += section(
+        HelpGuide::tr("Measuring the delay"),
+        HelpGuide::tr(
+            "On the machine, touch the same surface at several feeds (for example 30, 100, "
+            "300, 1000 and 2000 mm/min, five times each), each time from far enough out to be "
+            "at full feed, and note the recorded positions. Paste them into the Latency tab "
+            "(axis, direction, feed, measured) and press Fit: measured = p<sub>0</sub> + v "
+            "&middot; &tau;, and the delay &tau; = t<sub>i</sub> + t<sub>c</sub> + "
+            "t<sub>s</sub>/2 gives the controller's latency t<sub>c</sub>, which Apply writes "
+            "into the scenario. The Calibration tab fits the stylus's runout and effective "
+            "radius from a ring gauge touched at spindle 0&deg; and 180&deg;."));
+    if (!readme_path.isEmpty()) {
+        html += section(HelpGuide::tr("More"),
+                        HelpGuide::tr("The README explains the model in full: sections "
+                                      "\"The model\", \"One touch\", \"Cycle time against "
+                                      "feed\", \"The calibration and latency lab\" and "
+                                      "\"Limits of the model\". <a href=\"%1\">Open the "
+                                      "README</a>.")
+                            .arg(QUrl::fromLocalFile(readme_path).toString()));
+    }
+    return html;
+}
+
+HelpGuide::HelpGuide(QWidget* parent) : QDialog(parent) {
+    setObjectName(QStringLiteral("help-guide"));
+    text_ = new QTextBrowser(this);
+    text_->setOpenExternalLinks(true);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(text_, 1);
+    layout->addWidget(buttons);
+    resize(640, 720);
+    retranslate();
+}
+
+QString HelpGuide::html() const {
+    return text_->toHtml();
+}
+
+void HelpGuide::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QDialog::changeEvent(event);
+}
+
+void HelpGuide::retranslate() {
+    setWindowTitle(tr("ProbeCycle guide"));
+    // The README beside the sources this program was built from, if it is there.
+    const QString readme = QStringLiteral(PROBECYCLE_README_PATH);
+    text_->setHtml(help_guide_html(QFileInfo::exists(readme) ? readme : QString()));
+}
+
+}  // namespace probecycle::ui
