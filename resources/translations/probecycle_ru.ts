@@ -1891,12 +1891,16 @@
         <translation>Этот цикл (недоп.)</translation>
     </message>
     <message>
-        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. A red dot: this cycle is invalid (see the warnings).</source>
-        <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая допустимая подача, время цикла на которой хуже лучшего не более чем на допуск точки перегиба. Красная точка: этот цикл недопустим (см. предупреждения).</translation>
-    </message>
-    <message>
         <source>Phases of an invalid cycle</source>
         <translation>Фазы недопустимого цикла</translation>
+    </message>
+    <message>
+        <source>Invalid</source>
+        <translation>Недопустимые</translation>
+    </message>
+    <message>
+        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
+        <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая допустимая подача, время цикла на которой хуже лучшего не более чем на допуск точки перегиба. Серый пунктир: подачи, при которых цикл недопустим (перебег сверх предела, слишком малый отвод). Красная пунктирная линия: этот цикл недопустим и времени цикла не имеет (см. предупреждения).</translation>
     </message>
 </context>
 <context>

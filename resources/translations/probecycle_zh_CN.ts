@@ -1891,12 +1891,16 @@
         <translation>当前循环（无效）</translation>
     </message>
     <message>
-        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. A red dot: this cycle is invalid (see the warnings).</source>
-        <translation>整个循环的循环时间与探测进给率的关系，一次触发和二次触发，其余参数不变。竖线：当前进给率。圆点：拐点，即循环时间在最佳值的拐点容差以内的最低有效进给率。红点：当前循环无效（见警告）。</translation>
-    </message>
-    <message>
         <source>Phases of an invalid cycle</source>
         <translation>无效循环的各阶段</translation>
+    </message>
+    <message>
+        <source>Invalid</source>
+        <translation>无效</translation>
+    </message>
+    <message>
+        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
+        <translation>整个循环的时间与探测进给率的关系，分一次触发和二次触发，其余参数按当前设置。竖线：当前进给率。圆点：拐点，即循环时间与最佳时间相差不超过拐点容差的最低有效进给率。灰色虚线：循环无效的进给率（过行程超过极限、回退距离过小）。红色虚线：当前循环无效，没有循环时间（见警告）。</translation>
     </message>
 </context>
 <context>

@@ -4,7 +4,10 @@
 #include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
+#include <QGraphicsItemGroup>
 #include <QGraphicsLayout>
+#include <QGraphicsScene>
+#include <QGraphicsTextItem>
 #include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
@@ -14,7 +17,10 @@
 #include <QVBoxLayout>
 #include <QValueAxis>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
+#include <utility>
 #include <vector>
 
 namespace probecycle::ui {
@@ -33,7 +39,6 @@ Qt::PenStyle pen_style(PlotView::Dash dash) {
     return Qt::SolidLine;
 }
 
-// 1, 2 or 5 times a power of ten, nearest above `raw`.
 // A one-pixel cosmetic pen: the raster engine's fast path for grid lines.
 QPen hairline(const QColor& colour) {
     QPen pen(colour, 1.0);
@@ -49,15 +54,49 @@ QPen make_pen(const PlotView::LineSpec& spec) {
     return pen;
 }
 
+bool finite_point(const QPointF& p) {
+    return std::isfinite(p.x()) && std::isfinite(p.y());
+}
+
+PlotView::Range axis_range(const QAbstractAxis* axis) {
+    if (const auto* value = qobject_cast<const QValueAxis*>(axis)) {
+        return {value->min(), value->max()};
+    }
+    if (const auto* log = qobject_cast<const QLogValueAxis*>(axis)) return {log->min(), log->max()};
+    return {};
+}
+
 }  // namespace
 
 struct PlotView::Impl {
+    enum class Kind { line, markers, area, rule };
+
+    // One series a curve draws, with two buffers used in turn: the series shares
+    // the one handed over last, so the other refills in place, never reallocated.
+    struct Piece {
+        QXYSeries* series{nullptr};
+        std::array<QList<QPointF>, 2> buffers;
+        std::size_t current{0};
+        QList<QPointF>& next() {
+            current ^= 1U;
+            QList<QPointF>& buffer = buffers[current];
+            buffer.clear();
+            return buffer;
+        }
+    };
+
     struct Curve {
+        Kind kind{Kind::line};
         QXYSeries* series{nullptr};       // line or scatter; upper line of an area
         QLineSeries* lower{nullptr};      // areas only
         QAreaSeries* area{nullptr};       // areas only
         QAbstractSeries* shown{nullptr};  // what the chart holds
+        Side side{Side::left};
         bool in_legend{false};
+        QList<QPointF> given;  // as handed over, breaks included
+        // pieces[0] draws through `series`; a broken line's further stretches get
+        // series of their own, with the same pen and out of the legend.
+        std::vector<Piece> pieces;
     };
 
     QChart* chart{nullptr};
@@ -67,6 +106,7 @@ struct PlotView::Impl {
     QAbstractAxis* y_right{nullptr};
     QStringList categories;
     std::vector<Curve> curves;
+    QList<QPointF> rule_points;  // a rule's segments before they are split
 
     QAbstractAxis*& y_axis(Side side) { return side == Side::left ? y_left : y_right; }
 
@@ -127,22 +167,136 @@ struct PlotView::Impl {
             if (value->min() != lo || value->max() != hi) value->setRange(lo, hi);
         } else if (auto* log = qobject_cast<QLogValueAxis*>(axis)) {
             if (lo <= 0.0) return;
+            // Qt Charts labels a log axis from ceil(ln(min) / ln(base)), which rounds a
+            // decade below 1 up past itself (ln(0.1) / ln(10) = -0.99999999999999989):
+            // a range from 0.1 s would lose its 0.1 label. A hair below keeps it.
+            const double decade = std::log10(lo);
+            if (std::abs(decade - std::round(decade)) < 1e-9) lo *= 1.0 - 1e-9;
             if (log->min() != lo || log->max() != hi) log->setRange(lo, hi);
         } else {
             axis->setRange(lo, hi);
         }
     }
 
-    CurveId add(QXYSeries* series, QLineSeries* lower, QAreaSeries* area, const LineSpec& spec) {
-        QAbstractSeries* shown = area != nullptr ? static_cast<QAbstractSeries*>(area) : series;
-        shown->setName(spec.name);
+    void attach(QAbstractSeries* shown, Side side, bool in_legend) {
         chart->addSeries(shown);
         if (x_axis != nullptr) shown->attachAxis(x_axis);
-        if (QAbstractAxis* y = y_axis(spec.axis)) shown->attachAxis(y);
+        if (QAbstractAxis* y = y_axis(side)) shown->attachAxis(y);
+        show_in_legend(shown, in_legend);
+    }
+
+    void show_in_legend(QAbstractSeries* shown, bool show) {
+        for (QLegendMarker* marker : chart->legend()->markers(shown)) marker->setVisible(show);
+    }
+
+    CurveId add(Kind kind, QXYSeries* series, QLineSeries* lower, QAreaSeries* area,
+                const LineSpec& spec) {
+        QAbstractSeries* shown = area != nullptr ? static_cast<QAbstractSeries*>(area) : series;
+        shown->setName(spec.name);
         const bool in_legend = !spec.name.isEmpty();
-        for (QLegendMarker* marker : chart->legend()->markers(shown)) marker->setVisible(in_legend);
-        curves.push_back({series, lower, area, shown, in_legend});
+        attach(shown, spec.axis, in_legend);
+        Curve curve{kind, series, lower, area, shown, spec.axis, in_legend, {}, {}};
+        curve.pieces.resize(1);
+        curve.pieces[0].series = series;
+        curves.push_back(std::move(curve));
         return static_cast<CurveId>(curves.size() - 1);
+    }
+
+    Piece& piece(Curve& curve, std::size_t k) {
+        if (k >= curve.pieces.size()) {
+            auto* series = new QLineSeries;
+            series->setPen(curve.series->pen());
+            attach(series, curve.side, false);
+            series->setVisible(curve.shown->isVisible());
+            show_in_legend(series, false);
+            curve.pieces.push_back({});
+            curve.pieces.back().series = series;
+        }
+        return curve.pieces[k];
+    }
+
+    // Draws `points`: unbroken, handed straight to the series; otherwise each
+    // finite stretch to a series of its own (markers: the finite points).
+    void draw(Curve& curve, const QList<QPointF>& points) {
+        const bool broken = !std::all_of(points.begin(), points.end(), finite_point);
+        std::size_t used = 1;
+        if (!broken) {
+            curve.series->replace(points);
+        } else if (curve.kind == Kind::markers) {
+            QList<QPointF>& shown = curve.pieces[0].next();
+            std::copy_if(points.begin(), points.end(), std::back_inserter(shown), finite_point);
+            curve.series->replace(shown);
+        } else {
+            used = 0;
+            for (auto it = points.begin(); it != points.end();) {
+                const auto begin = std::find_if(it, points.end(), finite_point);
+                it = std::find_if_not(begin, points.end(), finite_point);
+                if (begin == it) continue;
+                Piece& p = piece(curve, used++);
+                QList<QPointF>& stretch = p.next();
+                std::copy(begin, it, std::back_inserter(stretch));
+                p.series->replace(stretch);
+            }
+            if (used == 0) curve.series->replace(QList<QPointF>{});
+            used = std::max<std::size_t>(used, 1);
+        }
+        for (std::size_t k = used; k < curve.pieces.size(); ++k) {
+            if (curve.pieces[k].series->count() > 0)
+                curve.pieces[k].series->replace(QList<QPointF>{});
+        }
+    }
+
+    // A rule's points become segments across the y range, apart from each other.
+    void draw_rule(Curve& curve) {
+        const Range y = axis_range(y_axis(curve.side));
+        rule_points.clear();
+        for (const QPointF& p : curve.given) {
+            if (!std::isfinite(p.x())) continue;
+            if (!rule_points.isEmpty()) rule_points.append({qQNaN(), qQNaN()});
+            rule_points.append({p.x(), y.lo});
+            rule_points.append({p.x(), y.hi});
+        }
+        draw(curve, rule_points);
+    }
+
+    void redraw_rules(Side side) {
+        for (Curve& curve : curves) {
+            if (curve.kind == Kind::rule && curve.side == side) draw_rule(curve);
+        }
+    }
+
+    enum class Where { x, left, right };
+    // The labels an axis shows, read from the scene the chart laid out: the
+    // visible text items in an axis's label group, placed by where they sit
+    // around the plot area (Qt Charts offers no public list of them).
+    QStringList labels(Where where) const {
+        const QGraphicsScene* scene = chart->scene();
+        if (scene == nullptr) return {};
+        const QRectF plot = chart->mapRectToScene(chart->plotArea());
+        std::vector<std::pair<double, QString>> found;
+        for (QGraphicsItem* item : scene->items()) {
+            const auto* text = dynamic_cast<const QGraphicsTextItem*>(item);
+            if (text == nullptr || !text->isVisible() || !chart->isAncestorOf(text)) continue;
+            if (dynamic_cast<const QGraphicsItemGroup*>(text->parentItem()) == nullptr) continue;
+            const QString label = text->toPlainText();
+            if (label.isEmpty()) continue;
+            const QPointF c = text->sceneBoundingRect().center();
+            const bool beside = c.y() >= plot.top() - 1.0 && c.y() <= plot.bottom() + 1.0;
+            const bool below =
+                c.y() > plot.bottom() && c.x() >= plot.left() - 1.0 && c.x() <= plot.right() + 1.0;
+            if (where == Where::x && below) found.emplace_back(c.x(), label);
+            if (where == Where::left && beside && c.x() < plot.left()) {
+                found.emplace_back(-c.y(), label);
+            }
+            if (where == Where::right && beside && c.x() > plot.right()) {
+                found.emplace_back(-c.y(), label);
+            }
+        }
+        std::sort(found.begin(), found.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        QStringList out;
+        for (const auto& [position, label] : found) out.append(label);
+        return out;
     }
 
     Curve* find(CurveId id) {
@@ -238,6 +392,7 @@ void PlotView::set_x_range(double lo, double hi) {
 
 void PlotView::set_y_range(Side side, double lo, double hi) {
     Impl::set_range(impl_->y_axis(side), lo, hi);
+    impl_->redraw_rules(side);
 }
 
 void PlotView::set_y_categories(const QStringList& labels) {
@@ -262,7 +417,13 @@ void PlotView::set_y_categories(const QStringList& labels) {
 PlotView::CurveId PlotView::add_line(const LineSpec& spec) {
     auto* series = new QLineSeries;
     series->setPen(make_pen(spec));
-    return impl_->add(series, nullptr, nullptr, spec);
+    return impl_->add(Impl::Kind::line, series, nullptr, nullptr, spec);
+}
+
+PlotView::CurveId PlotView::add_rule(const LineSpec& spec) {
+    auto* series = new QLineSeries;
+    series->setPen(make_pen(spec));
+    return impl_->add(Impl::Kind::rule, series, nullptr, nullptr, spec);
 }
 
 PlotView::CurveId PlotView::add_markers(const LineSpec& spec, double marker_size) {
@@ -271,7 +432,7 @@ PlotView::CurveId PlotView::add_markers(const LineSpec& spec, double marker_size
     series->setMarkerSize(marker_size);
     series->setColor(spec.color);
     series->setBorderColor(QColor(Qt::white));
-    return impl_->add(series, nullptr, nullptr, spec);
+    return impl_->add(Impl::Kind::markers, series, nullptr, nullptr, spec);
 }
 
 PlotView::CurveId PlotView::add_area(const LineSpec& spec, const QColor& fill) {
@@ -282,11 +443,22 @@ PlotView::CurveId PlotView::add_area(const LineSpec& spec, const QColor& fill) {
     if (spec.width <= 0.0) pen = QPen(Qt::NoPen);
     area->setPen(pen);
     area->setBrush(fill);
-    return impl_->add(upper, lower, area, spec);
+    return impl_->add(Impl::Kind::area, upper, lower, area, spec);
 }
 
 void PlotView::set_points(CurveId curve, const QList<QPointF>& points) {
-    if (Impl::Curve* c = impl_->find(curve)) c->series->replace(points);
+    Impl::Curve* c = impl_->find(curve);
+    if (c == nullptr) return;
+    if (c->kind == Impl::Kind::area) {
+        c->series->replace(points);  // the upper line
+        return;
+    }
+    c->given = points;
+    if (c->kind == Impl::Kind::rule) {
+        impl_->draw_rule(*c);
+    } else {
+        impl_->draw(*c, points);
+    }
 }
 
 void PlotView::set_area(CurveId curve, const QList<QPointF>& upper, const QList<QPointF>& lower) {
@@ -298,7 +470,11 @@ void PlotView::set_area(CurveId curve, const QList<QPointF>& upper, const QList<
 
 void PlotView::set_name(CurveId curve, const QString& name) {
     Impl::Curve* c = impl_->find(curve);
-    if (c != nullptr && c->shown->name() != name) c->shown->setName(name);
+    if (c == nullptr) return;
+    if (c->shown->name() != name) c->shown->setName(name);
+    // A curve named after it was added (a baseline named once translated) joins the legend.
+    c->in_legend = !name.isEmpty();
+    impl_->show_in_legend(c->shown, c->in_legend && c->shown->isVisible());
 }
 
 void PlotView::set_visible(CurveId curve, bool visible) {
@@ -306,24 +482,52 @@ void PlotView::set_visible(CurveId curve, bool visible) {
     if (c == nullptr || c->shown->isVisible() == visible) return;
     c->shown->setVisible(visible);
     // Qt Charts shows the marker again with the series; keep unnamed ones out.
-    for (QLegendMarker* marker : impl_->chart->legend()->markers(c->shown)) {
-        marker->setVisible(visible && c->in_legend);
+    impl_->show_in_legend(c->shown, visible && c->in_legend);
+    for (std::size_t k = 1; k < c->pieces.size(); ++k) {
+        c->pieces[k].series->setVisible(visible);
+        impl_->show_in_legend(c->pieces[k].series, false);
     }
 }
 
 QList<QPointF> PlotView::points(CurveId curve) const {
     const Impl::Curve* c = impl_->find(curve);
-    return c != nullptr ? c->series->points() : QList<QPointF>{};
+    if (c == nullptr) return {};
+    return c->kind == Impl::Kind::area ? c->series->points() : c->given;
 }
 
 qsizetype PlotView::point_count(CurveId curve) const {
-    const Impl::Curve* c = impl_->find(curve);
-    return c != nullptr ? c->series->count() : 0;
+    return points(curve).size();
 }
 
 bool PlotView::is_visible(CurveId curve) const {
     const Impl::Curve* c = impl_->find(curve);
     return c != nullptr && c->shown->isVisible();
+}
+
+QStringList PlotView::legend_texts() const {
+    QLegend* legend = impl_->chart->legend();
+    QStringList texts;
+    if (!legend->isVisible()) return texts;
+    for (QLegendMarker* marker : legend->markers()) {
+        if (marker->isVisible()) texts.append(marker->label());
+    }
+    return texts;
+}
+
+PlotView::Range PlotView::x_range() const {
+    return axis_range(impl_->x_axis);
+}
+
+PlotView::Range PlotView::y_range(Side side) const {
+    return axis_range(impl_->y_axis(side));
+}
+
+QStringList PlotView::x_labels() const {
+    return impl_->labels(Impl::Where::x);
+}
+
+QStringList PlotView::y_labels(Side side) const {
+    return impl_->labels(side == Side::left ? Impl::Where::left : Impl::Where::right);
 }
 
 }  // namespace probecycle::ui

@@ -32,7 +32,7 @@ class PlotView : public QWidget {
     };
 
     struct LineSpec {
-        QString name;  // legend text; empty = not in the legend
+        QString name;  // legend text; empty = not in the legend (set_name can change it)
         QColor color;
         double width{2.0};
         Dash dash{Dash::solid};
@@ -40,6 +40,11 @@ class PlotView : public QWidget {
     };
 
     using CurveId = int;
+
+    struct Range {
+        double lo{0.0};
+        double hi{0.0};
+    };
 
     explicit PlotView(QWidget* parent = nullptr);
 
@@ -62,9 +67,14 @@ class PlotView : public QWidget {
     // Labels of a category y axis, bottom to top, placed at 0, 1, 2, ...
     void set_y_categories(const QStringList& labels);
 
-    // Curves must be added after the axes they use.
+    // Curves must be added after the axes they use. A point that is not finite
+    // (NaN) breaks a line: the stretches on either side are drawn apart, and
+    // markers are not drawn there.
     CurveId add_line(const LineSpec& spec);
     CurveId add_markers(const LineSpec& spec, double marker_size);
+    // Vertical lines across the whole plot, at the x of each point handed over
+    // (y is ignored): they span the y axis of spec.axis whatever its range.
+    CurveId add_rule(const LineSpec& spec);
     // A filled region between an upper and a lower polyline.
     CurveId add_area(const LineSpec& spec, const QColor& fill);
 
@@ -74,10 +84,20 @@ class PlotView : public QWidget {
     void set_name(CurveId curve, const QString& name);
     void set_visible(CurveId curve, bool visible);
 
-    // What is drawn: for tests and for the compare feature.
+    // What is drawn: for tests and for the compare feature. points() are the
+    // points handed over (with their breaks; a rule's x).
     QList<QPointF> points(CurveId curve) const;
     qsizetype point_count(CurveId curve) const;
     bool is_visible(CurveId curve) const;
+    // The legend's entries as shown after the last layout, in order (none while
+    // the legend is hidden).
+    QStringList legend_texts() const;
+    Range x_range() const;
+    Range y_range(Side side) const;
+    // The tick labels an axis shows after the last layout: left to right,
+    // bottom to top. Labels the plot hides (overlapping, cut at an edge) are left out.
+    QStringList x_labels() const;
+    QStringList y_labels(Side side) const;
 
   private:
     struct Impl;

@@ -16,6 +16,12 @@ namespace {
 
 constexpr double kFeedLo = kKneeSearchFrom_mm_min;
 constexpr double kFeedHi = kKneeSearchTo_mm_min;
+// Issue 12: the feed axes reach this factor beyond the sweep (a knee dot at
+// 10000 mm/min was cut in half).
+constexpr double kFeedPad = 1.15;
+// The log time axis reaches this fraction of its span beyond the whole decades
+// that hold the curves, for the same reason.
+constexpr double kTimePadFraction = 0.04;
 constexpr std::size_t kMotionSamples = 500;
 constexpr double kBarHalfHeight = 0.36;
 constexpr double kMinBarFraction = 0.004;
@@ -25,7 +31,8 @@ constexpr double kUncertaintyFloor_um = 1e-3;
 const QColor kSingleColour{0x1f, 0x77, 0xb4};
 const QColor kTwoColour{0x2c, 0xa0, 0x2c};
 const QColor kMarkerColour{0x44, 0x44, 0x44};
-const QColor kInvalidColour{0xc0, 0x39, 0x2b};  // the red of the overtravel limit
+const QColor kInvalidColour{0xc0, 0x39, 0x2b};         // the red of the overtravel limit
+const QColor kInvalidStretchColour{0x9a, 0x9a, 0x9a};  // curves where cycles are invalid
 const QColor kKneeColour{0xff, 0x7f, 0x0e};
 const QColor kOvertravelColour{0xc0, 0x39, 0x2b};
 const QColor kUncertaintyColour{0x1f, 0x5f, 0xb4};
@@ -132,6 +139,29 @@ void fill_sweep(QList<QPointF>& out, const SweepResult& sweep, double SweepPoint
     }
 }
 
+// Issue 12: moves the invalid points of a sweep's curve into `invalid` (with
+// the valid neighbours that join the two, so the line stays whole) and breaks
+// the curve there (NaN); `invalid` is all NaN when every cycle is valid.
+// Returns whether any point is invalid.
+bool split_invalid(QList<QPointF>& curve, QList<QPointF>& invalid, const SweepResult& sweep) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const qsizetype n = curve.size();
+    invalid.resize(n);
+    bool any = false;
+    for (qsizetype i = 0; i < n; ++i) {
+        const auto valid = [&](qsizetype k) {
+            return k < 0 || k >= n || sweep.points[static_cast<std::size_t>(k)].valid();
+        };
+        const bool here = valid(i);
+        any = any || !here;
+        invalid[i] = here && valid(i - 1) && valid(i + 1) ? QPointF(curve[i].x(), nan) : curve[i];
+    }
+    for (qsizetype i = 0; i < n; ++i) {
+        if (!sweep.points[static_cast<std::size_t>(i)].valid()) curve[i].setY(nan);
+    }
+    return any;
+}
+
 void fill_segment(QList<QPointF>& out, double x0, double y0, double x1, double y1) {
     out.resize(2);
     out[0] = {x0, y0};
@@ -198,15 +228,22 @@ void CycleCharts::build() {
     cycle_time_->setObjectName(QStringLiteral("chart:cycle_time"));
     cycle_time_->set_x_axis({Scale::log, {}, QStringLiteral("%g"), {}, true});
     cycle_time_->set_y_axis(Side::left, {Scale::log, {}, QStringLiteral("%g"), {}});
-    cycle_time_->set_x_range(kFeedLo, kFeedHi);
+    // A little beyond the swept feeds, so a dot at either end is drawn whole.
+    cycle_time_->set_x_range(kFeedLo / kFeedPad, kFeedHi * kFeedPad);
     ct_base_single_ = add(QStringLiteral("cycle_time.baseline_single_touch"), cycle_time_,
                           cycle_time_->add_line({{}, kSingleColour, 1.5, Dash::dashed}));
+    // Named so the legend has it while a baseline is pinned (retranslate names it).
     ct_base_two_ = add(QStringLiteral("cycle_time.baseline_two_touch"), cycle_time_,
-                       cycle_time_->add_line({{}, kTwoColour, 1.5, Dash::dashed}));
+                       cycle_time_->add_line({QStringLiteral("b"), kTwoColour, 1.5, Dash::dashed}));
     ct_single_ = add(QStringLiteral("cycle_time.single_touch"), cycle_time_,
                      cycle_time_->add_line({QStringLiteral("1"), kSingleColour, 2.0}));
     ct_two_ = add(QStringLiteral("cycle_time.two_touch"), cycle_time_,
                   cycle_time_->add_line({QStringLiteral("2"), kTwoColour, 2.0}));
+    ct_single_invalid_ = add(QStringLiteral("cycle_time.single_touch_invalid"), cycle_time_,
+                             cycle_time_->add_line({{}, kInvalidStretchColour, 1.5, Dash::dashed}));
+    ct_two_invalid_ =
+        add(QStringLiteral("cycle_time.two_touch_invalid"), cycle_time_,
+            cycle_time_->add_line({QStringLiteral("i"), kInvalidStretchColour, 1.5, Dash::dashed}));
     // The current feed's vertical line explains itself: kept out of the legend.
     ct_feed_ = add(QStringLiteral("cycle_time.feed"), cycle_time_,
                    cycle_time_->add_line({{}, kMarkerColour, 1.5}));
@@ -215,10 +252,12 @@ void CycleCharts::build() {
     // The scenario's own cycle: above the two-touch curve by what its backoff wastes.
     ct_cycle_ = add(QStringLiteral("cycle_time.current"), cycle_time_,
                     cycle_time_->add_markers({QStringLiteral("c"), kMarkerColour}, 9.0));
-    // An invalid cycle (issue 11) is no point of the curve: a red dot of its own,
-    // named as invalid in the legend, only while the cycle is invalid.
-    ct_cycle_invalid_ = add(QStringLiteral("cycle_time.current_invalid"), cycle_time_,
-                            cycle_time_->add_markers({QStringLiteral("ci"), kInvalidColour}, 9.0));
+    // An invalid cycle has no cycle time to plot (issue 12): its feed is a red
+    // dashed line across the chart, named as invalid in the legend, in place
+    // of the dot and of the feed's grey line, only while the cycle is invalid.
+    ct_cycle_invalid_ =
+        add(QStringLiteral("cycle_time.current_invalid"), cycle_time_,
+            cycle_time_->add_rule({QStringLiteral("ci"), kInvalidColour, 2.0, Dash::dashed}));
     cycle_time_->set_visible(ct_cycle_invalid_.curve, false);
 
     phases_ = new PlotView(this);
@@ -240,12 +279,13 @@ void CycleCharts::build() {
                             {Scale::linear, {}, QStringLiteral("%.3g"), kOvertravelColour});
     overtravel_->set_y_axis(Side::right,
                             {Scale::log, {}, QStringLiteral("%g"), kUncertaintyColour});
-    overtravel_->set_x_range(kFeedLo, kFeedHi);
+    overtravel_->set_x_range(kFeedLo / kFeedPad, kFeedHi * kFeedPad);
     ot_beyond_ =
         add(QStringLiteral("overtravel.beyond_limit"), overtravel_,
             overtravel_->add_area({{}, kOvertravelColour, 0.0}, QColor(0xc0, 0x39, 0x2b, 40)));
-    ot_base_overtravel_ = add(QStringLiteral("overtravel.baseline_overtravel"), overtravel_,
-                              overtravel_->add_line({{}, kOvertravelColour, 1.5, Dash::dashed}));
+    ot_base_overtravel_ =
+        add(QStringLiteral("overtravel.baseline_overtravel"), overtravel_,
+            overtravel_->add_line({QStringLiteral("b"), kOvertravelColour, 1.5, Dash::dashed}));
     ot_base_uncertainty_ =
         add(QStringLiteral("overtravel.baseline_uncertainty"), overtravel_,
             overtravel_->add_line({{}, kUncertaintyColour, 1.5, Dash::dashed, Side::right}));
@@ -276,8 +316,9 @@ void CycleCharts::build() {
     motion_->set_y_axis(Side::right, {Scale::linear, {}, QStringLiteral("%.0f"), kSpeedColour});
     mo_surface_ = add(QStringLiteral("motion.surface"), motion_,
                       motion_->add_line({QStringLiteral("s"), kSurfaceColour, 1.0, Dash::dashed}));
-    mo_base_position_ = add(QStringLiteral("motion.baseline_position"), motion_,
-                            motion_->add_line({{}, kPositionColour, 1.5, Dash::dashed}));
+    mo_base_position_ =
+        add(QStringLiteral("motion.baseline_position"), motion_,
+            motion_->add_line({QStringLiteral("b"), kPositionColour, 1.5, Dash::dashed}));
     mo_base_speed_ = add(QStringLiteral("motion.baseline_speed"), motion_,
                          motion_->add_line({{}, kSpeedColour, 1.5, Dash::dashed, Side::right}));
     mo_position_ = add(QStringLiteral("motion.position"), motion_,
@@ -309,6 +350,7 @@ void CycleCharts::retranslate() {
     cycle_time_->set_name(ct_two_.curve, tr("Two-touch, best backoff"));
     cycle_time_->set_name(ct_cycle_.curve, tr("This cycle"));
     cycle_time_->set_name(ct_cycle_invalid_.curve, tr("This cycle (invalid)"));
+    cycle_time_->set_name(ct_two_invalid_.curve, tr("Invalid"));
     cycle_time_->set_name(ct_knee_.curve, tr("Knee"));
 
     phases_->set_x_axis({Scale::linear, tr("Time [%1]").arg(unit_s()), QStringLiteral("%.3g"), {}});
@@ -337,8 +379,9 @@ void CycleCharts::retranslate() {
     cycle_time_->setToolTip(tr(
         "Cycle time of the whole cycle against the probing feed, for single-touch and two-touch "
         "with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest "
-        "valid feed within the knee tolerance of the best time. A red dot: this cycle is "
-        "invalid (see the warnings)."));
+        "valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle "
+        "is invalid (overtravel over the limit, backoff too small). A red dashed line: this "
+        "cycle is invalid and has no cycle time (see the warnings)."));
     phases_->setToolTip(
         tr("The phases of the current cycle in time order, each row with its total "
            "time over all touches."));
@@ -375,6 +418,14 @@ void CycleCharts::changeEvent(QEvent* event) {
     QWidget::changeEvent(event);
 }
 
+bool CycleCharts::same_points(const Buffer& a, const Buffer& b) {
+    const auto same = [](double u, double v) { return u == v || (std::isnan(u) && std::isnan(v)); };
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [&](const QPointF& p, const QPointF& q) {
+                          return same(p.x(), q.x()) && same(p.y(), q.y());
+                      });
+}
+
 void CycleCharts::set_if_changed(const Ref& ref, PingPong& buffers) {
     if (buffers.changed()) set(ref, buffers.lists[static_cast<std::size_t>(buffers.current)]);
 }
@@ -396,14 +447,29 @@ void CycleCharts::draw_cycle_time(const Computed& c) {
     Span span;
     span.add_y(single);
     span.add_y(two);
+    Buffer& single_invalid = single_invalid_.next();
+    Buffer& two_invalid = two_invalid_.next();
+    const bool any_single = split_invalid(single, single_invalid, c.single_touch);
+    const bool any_two = split_invalid(two, two_invalid, c.two_touch);
     if (baseline_) {
         span.add_y(baseline_->single);
         span.add_y(baseline_->two);
     }
-    const auto [lo, hi] = decade_range(span, 1e-3);
+    // This cycle's dot sits above the two-touch curve by what its backoff wastes,
+    // possibly above both curves.
+    if (c.cycle().valid()) span.add(c.cycle().total());
+    const auto [decade_lo, decade_hi] = decade_range(span, 1e-3);
+    const double pad = std::pow(decade_hi / decade_lo, kTimePadFraction);
+    const double lo = decade_lo / pad;
+    const double hi = decade_hi * pad;
     cycle_time_->set_y_range(PlotView::Side::left, lo, hi);
     set_if_changed(ct_single_, single_);
     set_if_changed(ct_two_, two_);
+    set_if_changed(ct_single_invalid_, single_invalid_);
+    set_if_changed(ct_two_invalid_, two_invalid_);
+    // One legend entry for the grey stretches, on whichever curve has them.
+    cycle_time_->set_visible(ct_single_invalid_.curve, any_single);
+    cycle_time_->set_visible(ct_two_invalid_.curve, any_single || any_two);
 
     const double feed = std::clamp(c.scenario.cycle.probe_feed_mm_min, kFeedLo, kFeedHi);
     fill_segment(line_, feed, lo, feed, hi);
@@ -419,6 +485,7 @@ void CycleCharts::draw_cycle_time(const Computed& c) {
     set(valid ? ct_cycle_ : ct_cycle_invalid_, current_cycle_);
     set(valid ? ct_cycle_invalid_ : ct_cycle_, {});
     cycle_time_->set_visible(ct_cycle_.curve, valid);
+    cycle_time_->set_visible(ct_feed_.curve, valid);
     cycle_time_->set_visible(ct_cycle_invalid_.curve, !valid);
 }
 
@@ -532,14 +599,16 @@ void CycleCharts::draw_overtravel(const Computed& c) {
     set_if_changed(ot_overtravel2_, overtravel2_pts_);
     set_if_changed(ot_uncertainty_, uncertainty_pts_);
 
-    fill_segment(line_, kFeedLo, limit, kFeedHi, limit);
+    fill_segment(line_, kFeedLo / kFeedPad, limit, kFeedHi * kFeedPad, limit);
     set(ot_limit_, line_);
     if (target_um > 0.0) {
-        fill_segment(line2_, kFeedLo, target_um, kFeedHi, target_um);
+        fill_segment(line2_, kFeedLo / kFeedPad, target_um, kFeedHi * kFeedPad, target_um);
     } else {
         line2_.clear();
     }
     set(ot_target_, line2_);
+    // Issue 12: no "Target" in the legend without a target.
+    overtravel_->set_visible(ot_target_.curve, target_um > 0.0);
 
     // Shade from the first feed whose overtravel reaches the limit (overtravel grows with feed).
     band_upper_.clear();
@@ -554,8 +623,8 @@ void CycleCharts::draw_overtravel(const Computed& c) {
             const double f = (limit - a.overtravel_mm) / (b.overtravel_mm - a.overtravel_mm);
             from = a.feed_mm_min * std::pow(b.feed_mm_min / a.feed_mm_min, std::clamp(f, 0.0, 1.0));
         }
-        band_upper_ = {{from, top}, {kFeedHi, top}};
-        band_lower_ = {{from, 0.0}, {kFeedHi, 0.0}};
+        band_upper_ = {{from, top}, {kFeedHi * kFeedPad, top}};
+        band_lower_ = {{from, 0.0}, {kFeedHi * kFeedPad, 0.0}};
         break;
     }
     ot_beyond_.plot->set_area(ot_beyond_.curve, band_upper_, band_lower_);

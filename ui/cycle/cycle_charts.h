@@ -51,6 +51,10 @@ class CycleCharts : public QWidget {
         PlotView::CurveId curve{-1};
     };
     using Buffer = QList<QPointF>;
+    // Exactly equal, a break (NaN) equal to a break. QPointF's == is fuzzy and
+    // never equal at NaN: a curve broken at its invalid feeds would look changed
+    // at every recompute and be handed over again.
+    static bool same_points(const Buffer& a, const Buffer& b);
     // Two buffers per big curve, used in turn: the plot shares the one handed over
     // last (QList is implicitly shared), so the other refills in place. Reserved
     // once, they are never reallocated while a slider moves.
@@ -68,7 +72,7 @@ class CycleCharts : public QWidget {
         // nothing changed (a feed change leaves the feed sweeps as they are).
         bool changed() {
             const std::size_t now = static_cast<std::size_t>(current);
-            if (lists[now] != lists[now ^ 1U]) return true;
+            if (!same_points(lists[now], lists[now ^ 1U])) return true;
             current ^= 1;
             return false;
         }
@@ -96,12 +100,15 @@ class CycleCharts : public QWidget {
 
     // Curves, by chart.
     Ref ct_single_, ct_two_, ct_feed_, ct_knee_, ct_cycle_, ct_base_single_, ct_base_two_;
-    Ref ct_cycle_invalid_;  // the scenario's own cycle when the model marks it invalid
+    Ref ct_cycle_invalid_;  // the scenario's own feed when the model marks its cycle invalid
+    // Issue 12: the stretches of each curve where the cycles are invalid, grey.
+    Ref ct_single_invalid_, ct_two_invalid_;
     std::array<Ref, kPhaseCount> phase_areas_{};
     Ref ot_overtravel_, ot_overtravel2_, ot_limit_, ot_beyond_, ot_uncertainty_, ot_target_,
         ot_feed_, ot_measure_feed_, ot_base_overtravel_, ot_base_uncertainty_;
     Ref mo_position_, mo_speed_, mo_surface_, mo_base_position_, mo_base_speed_;
 
+    PingPong single_invalid_, two_invalid_;
     PingPong single_, two_, overtravel_pts_, overtravel2_pts_, uncertainty_pts_, position_pts_,
         speed_pts_;
     // Two-touch draws each touch's overtravel (a fast first touch can

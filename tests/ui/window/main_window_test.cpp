@@ -21,6 +21,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -701,6 +702,77 @@ TEST_F(MainWindowTest, PinnedBaselineStaysDrawnAndReadoutsShowTheDifference) {
 // Issue 11, loose end 8: a backoff too small makes the cycle invalid. The
 // readout shows no time but why, the chart's dot is the invalid one, and
 // against a pinned baseline no time difference is offered.
+// Issue 12: an invalid cycle is drawn as invalid. Its feed is a red dashed
+// rule (no dot at a time it does not have), the curves are grey where their
+// cycles are invalid, with one legend entry; the legend names the baseline and
+// has no target without one; the log time axis labels values under 1 s; and a
+// dot at the end of the feed axis is drawn whole.
+TEST_F(MainWindowTest, ChartsDrawInvalidCyclesAsInvalidAndNameWhatTheyShow) {
+    auto* cycle_time = window_->findChild<PlotView*>(QStringLiteral("chart:cycle_time"));
+    auto* overtravel = window_->findChild<PlotView*>(QStringLiteral("chart:overtravel"));
+    ASSERT_NE(cycle_time, nullptr);
+    ASSERT_NE(overtravel, nullptr);
+    Scenario roomy = window_->scenario();
+    roomy.probe.overtravel_limit_mm = 50.0;  // every feed valid
+    window_->edit_scenario(roomy, QStringLiteral("roomy"));
+    settle();
+    EXPECT_FALSE(cycle_time->legend_texts().contains(QStringLiteral("Invalid")));
+    EXPECT_FALSE(window_->series_visible(QStringLiteral("cycle_time.single_touch_invalid")));
+    EXPECT_FALSE(overtravel->legend_texts().contains(QStringLiteral("Target")));
+    EXPECT_FALSE(cycle_time->legend_texts().contains(QStringLiteral("Baseline (dashed)")));
+    EXPECT_GT(cycle_time->x_range().hi, 10000.0);
+    EXPECT_LT(cycle_time->x_range().lo, 10.0);
+
+    Scenario s = window_->scenario();
+    s.cycle.strategy = Strategy::single_touch;
+    s.cycle.approach_mm = 2.0;
+    s.cycle.probe_feed_mm_min = 9000.0;
+    s.probe.overtravel_limit_mm = 3.0;
+    window_->edit_scenario(s, QStringLiteral("fast"));
+    settle();
+    ASSERT_FALSE(window_->computed().cycle().valid());
+    EXPECT_FALSE(window_->series_visible(QStringLiteral("cycle_time.current")));
+    EXPECT_FALSE(window_->series_visible(QStringLiteral("cycle_time.feed")));
+    EXPECT_TRUE(window_->series_visible(QStringLiteral("cycle_time.current_invalid")));
+    const QList<QPointF> rule =
+        window_->series_points(QStringLiteral("cycle_time.current_invalid"));
+    ASSERT_EQ(rule.size(), 1);
+    EXPECT_DOUBLE_EQ(rule.front().x(), 9000.0);
+
+    const SweepResult& sweep = window_->computed().single_touch;
+    const QList<QPointF> curve = window_->series_points(QStringLiteral("cycle_time.single_touch"));
+    const QList<QPointF> grey =
+        window_->series_points(QStringLiteral("cycle_time.single_touch_invalid"));
+    ASSERT_EQ(curve.size(), static_cast<qsizetype>(sweep.points.size()));
+    ASSERT_EQ(grey.size(), curve.size());
+    int invalid = 0;
+    for (std::size_t i = 0; i < sweep.points.size(); ++i) {
+        const auto k = static_cast<qsizetype>(i);
+        const bool valid = sweep.points[i].valid();
+        invalid += valid ? 0 : 1;
+        EXPECT_EQ(std::isfinite(curve[k].y()), valid) << sweep.points[i].feed_mm_min;
+        if (!valid) {
+            EXPECT_DOUBLE_EQ(grey[k].y(), sweep.points[i].cycle_time_s);
+        }
+    }
+    EXPECT_GT(invalid, 0);
+    EXPECT_TRUE(cycle_time->legend_texts().contains(QStringLiteral("Invalid")))
+        << cycle_time->legend_texts().join(QLatin1Char('|')).toStdString();
+    // The curve reaches 0.2 s: the log axis labels 0.1.
+    EXPECT_TRUE(cycle_time->y_labels(PlotView::Side::left).contains(QStringLiteral("0.1")))
+        << cycle_time->y_labels(PlotView::Side::left).join(QLatin1Char('|')).toStdString();
+
+    window_->pin_baseline();
+    s.cycle.target_uncertainty_mm = 0.01;
+    window_->edit_scenario(s, QStringLiteral("target"));
+    settle();
+    EXPECT_TRUE(overtravel->legend_texts().contains(QStringLiteral("Target")));
+    EXPECT_TRUE(cycle_time->legend_texts().contains(QStringLiteral("Baseline (dashed)")));
+    window_->clear_baseline();
+    settle();
+    EXPECT_FALSE(cycle_time->legend_texts().contains(QStringLiteral("Baseline (dashed)")));
+}
+
 TEST_F(MainWindowTest, AnInvalidCycleShowsNoTimeButWhy) {
     window_->pin_baseline();
     settle();

@@ -1,0 +1,369 @@
+// The cycle charts drawn offscreen from a Computation (issue 12, items 1 and
+// 5): what an invalid cycle and invalid feeds look like, what the legends
+// name, the log time axis's labels and the room around the markers. Mirrors
+// ui/cycle/cycle_charts.h; the PlotView tests at the end mirror
+// ui/common/plot_view.h.
+
+#include "ui/cycle/cycle_charts.h"
+
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+#include <QStringList>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "core/cycle/scenario.h"
+#include "core/cycle/sweep.h"
+#include "ui/common/plot_view.h"
+#include "ui/cycle/computation.h"
+
+namespace probecycle::ui {
+namespace {
+
+using Side = PlotView::Side;
+
+std::string joined(const QStringList& texts) {
+    return texts.join(QLatin1Char('|')).toStdString();
+}
+
+bool has_y(const QPointF& p) {
+    return std::isfinite(p.y());
+}
+
+// Where v sits on a log axis, 0 at its bottom (left), 1 at its top (right).
+double log_fraction(double v, const PlotView::Range& range) {
+    return std::log(v / range.lo) / std::log(range.hi / range.lo);
+}
+
+// Single-touch at 9000 mm/min against a 1 mm overtravel limit: every feed
+// above about 1600 mm/min overtravels it, this one included.
+Scenario over_the_limit() {
+    Scenario s;
+    s.cycle.strategy = Strategy::single_touch;
+    s.cycle.probe_feed_mm_min = 9000.0;
+    s.probe.overtravel_limit_mm = 1.0;
+    return s;
+}
+
+// The same at 500 mm/min with room for any overtravel: every cycle valid.
+Scenario all_valid() {
+    Scenario s = over_the_limit();
+    s.cycle.probe_feed_mm_min = 500.0;
+    s.probe.overtravel_limit_mm = 100.0;
+    return s;
+}
+
+// A short, stiff single touch: its cycle time falls to about 0.035 s.
+Scenario fast_surface() {
+    Scenario s;
+    s.machine.time_constant_s = 0.01;
+    s.machine.scan_period_s = 0.001;
+    s.machine.controller_latency_s = 0.001;
+    s.cycle.strategy = Strategy::single_touch;
+    s.cycle.approach_mm = 0.5;
+    s.cycle.probe_feed_mm_min = 3000.0;
+    s.cycle.return_feed_mm_min = 30000.0;
+    return s;
+}
+
+class ChartsTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        charts_.resize(1280, 720);
+        charts_.show();
+        cycle_time_ = charts_.findChild<PlotView*>(QStringLiteral("chart:cycle_time"));
+        overtravel_ = charts_.findChild<PlotView*>(QStringLiteral("chart:overtravel"));
+        motion_ = charts_.findChild<PlotView*>(QStringLiteral("chart:motion"));
+        ASSERT_NE(cycle_time_, nullptr);
+        ASSERT_NE(overtravel_, nullptr);
+        ASSERT_NE(motion_, nullptr);
+    }
+
+    // Draws the scenario and lets the charts lay themselves out.
+    const Computed& draw(const Scenario& scenario) {
+        const Computed& computed = computation_.run(scenario);
+        EXPECT_TRUE(computed.valid());
+        charts_.show_result(computed);
+        QCoreApplication::processEvents();
+        QCoreApplication::processEvents();
+        return computed;
+    }
+
+    QList<QPointF> points(const char* id) const { return charts_.series_points(QLatin1String(id)); }
+    bool visible(const char* id) const { return charts_.series_visible(QLatin1String(id)); }
+
+    // The feeds of a curve's points that have a y (the rest are breaks).
+    static QList<double> drawn_feeds(const QList<QPointF>& curve) {
+        QList<double> feeds;
+        for (const QPointF& p : curve) {
+            if (has_y(p)) feeds.append(p.x());
+        }
+        return feeds;
+    }
+
+    Computation computation_;
+    CycleCharts charts_;
+    PlotView* cycle_time_{nullptr};
+    PlotView* overtravel_{nullptr};
+    PlotView* motion_{nullptr};
+};
+
+// Item 1: an invalid cycle has no time to plot. No dot; its feed is a red
+// dashed line across the plot, named in the legend, in place of the feed's line.
+TEST_F(ChartsTest, AnInvalidCycleIsMarkedAtItsFeedAndHasNoDot) {
+    const Computed& invalid = draw(over_the_limit());
+    ASSERT_FALSE(invalid.cycle().valid());
+    EXPECT_TRUE(points("cycle_time.current").isEmpty());
+    EXPECT_FALSE(visible("cycle_time.current"));
+    EXPECT_FALSE(visible("cycle_time.feed"));
+    EXPECT_TRUE(visible("cycle_time.current_invalid"));
+    const QList<QPointF> rule = points("cycle_time.current_invalid");
+    ASSERT_EQ(rule.size(), 1);
+    EXPECT_DOUBLE_EQ(rule.front().x(), 9000.0);
+    const QStringList legend = cycle_time_->legend_texts();
+    EXPECT_EQ(legend.count(QStringLiteral("This cycle (invalid)")), 1) << joined(legend);
+    EXPECT_FALSE(legend.contains(QStringLiteral("This cycle"))) << joined(legend);
+
+    const Computed& valid = draw(all_valid());
+    ASSERT_TRUE(valid.cycle().valid());
+    const QList<QPointF> dot = points("cycle_time.current");
+    ASSERT_EQ(dot.size(), 1);
+    EXPECT_DOUBLE_EQ(dot.front().x(), 500.0);
+    EXPECT_DOUBLE_EQ(dot.front().y(), valid.cycle().total());
+    EXPECT_TRUE(visible("cycle_time.current"));
+    EXPECT_TRUE(visible("cycle_time.feed"));
+    EXPECT_FALSE(visible("cycle_time.current_invalid"));
+    EXPECT_FALSE(cycle_time_->legend_texts().contains(QStringLiteral("This cycle (invalid)")));
+    EXPECT_TRUE(cycle_time_->legend_texts().contains(QStringLiteral("This cycle")));
+}
+
+// Item 2: each curve is drawn exactly where its cycles are valid, and grey at
+// the feeds where they are not (reaching to the valid neighbour so the line
+// stays whole, nowhere else), with one legend entry for the grey.
+TEST_F(ChartsTest, CurvesAreGreyAtTheInvalidFeedsOfTheirSweep) {
+    const Computed& c = draw(over_the_limit());
+    int invalid_total = 0;
+    for (const auto& entry : {std::pair{"cycle_time.single_touch", &c.single_touch},
+                              std::pair{"cycle_time.two_touch", &c.two_touch}}) {
+        // Named, not structured bindings: the lambda below captures them.
+        const char* id = entry.first;
+        const SweepResult* sweep = entry.second;
+        const QList<QPointF> curve = charts_.series_points(QLatin1String(id));
+        const QList<QPointF> grey =
+            charts_.series_points(QString::fromLatin1(id) + QStringLiteral("_invalid"));
+        ASSERT_EQ(curve.size(), static_cast<qsizetype>(sweep->points.size())) << id;
+        ASSERT_EQ(grey.size(), curve.size()) << id;
+        const auto invalid_at = [&](qsizetype k) {
+            return k >= 0 && k < curve.size() &&
+                   !sweep->points[static_cast<std::size_t>(k)].valid();
+        };
+        QList<double> valid_feeds;
+        for (qsizetype k = 0; k < curve.size(); ++k) {
+            const SweepPoint& p = sweep->points[static_cast<std::size_t>(k)];
+            EXPECT_EQ(curve[k].x(), p.feed_mm_min) << id;
+            EXPECT_EQ(grey[k].x(), p.feed_mm_min) << id;
+            if (p.valid()) valid_feeds.append(p.feed_mm_min);
+            invalid_total += p.valid() ? 0 : 1;
+            const bool joins = invalid_at(k - 1) || invalid_at(k + 1);
+            EXPECT_EQ(has_y(grey[k]), !p.valid() || joins) << id << " at " << p.feed_mm_min;
+            if (has_y(grey[k])) {
+                EXPECT_DOUBLE_EQ(grey[k].y(), p.cycle_time_s) << id;
+            }
+        }
+        EXPECT_EQ(drawn_feeds(curve), valid_feeds) << id;
+    }
+    // Over a 1 mm limit the fast feeds of both strategies are invalid.
+    EXPECT_GT(invalid_total, 100);
+    const QStringList legend = cycle_time_->legend_texts();
+    EXPECT_EQ(legend.count(QStringLiteral("Invalid")), 1) << joined(legend);
+}
+
+TEST_F(ChartsTest, NoGreyAndNoGreyLegendWhenEveryCycleIsValid) {
+    draw(over_the_limit());
+    const Computed& c = draw(all_valid());
+    for (const SweepResult* sweep : {&c.single_touch, &c.two_touch}) {
+        for (const SweepPoint& p : sweep->points) ASSERT_TRUE(p.valid()) << p.feed_mm_min;
+    }
+    EXPECT_TRUE(drawn_feeds(points("cycle_time.single_touch_invalid")).isEmpty());
+    EXPECT_TRUE(drawn_feeds(points("cycle_time.two_touch_invalid")).isEmpty());
+    EXPECT_EQ(drawn_feeds(points("cycle_time.single_touch")).size(), 500);
+    EXPECT_EQ(drawn_feeds(points("cycle_time.two_touch")).size(), 500);
+    EXPECT_FALSE(visible("cycle_time.single_touch_invalid"));
+    EXPECT_FALSE(visible("cycle_time.two_touch_invalid"));
+    EXPECT_FALSE(cycle_time_->legend_texts().contains(QStringLiteral("Invalid")))
+        << joined(cycle_time_->legend_texts());
+}
+
+// Item 3: a pinned baseline is named in each chart's legend, once; unpinned, nowhere.
+TEST_F(ChartsTest, TheLegendNamesThePinnedBaselineOnlyWhilePinned) {
+    const QString baseline = QStringLiteral("Baseline (dashed)");
+    const Computed pinned = draw(all_valid());
+    for (const PlotView* plot : {cycle_time_, overtravel_, motion_}) {
+        EXPECT_FALSE(plot->legend_texts().contains(baseline)) << joined(plot->legend_texts());
+    }
+    charts_.set_baseline(&pinned);
+    draw(over_the_limit());
+    for (const PlotView* plot : {cycle_time_, overtravel_, motion_}) {
+        EXPECT_EQ(plot->legend_texts().count(baseline), 1) << joined(plot->legend_texts());
+    }
+    EXPECT_TRUE(visible("cycle_time.baseline_two_touch"));
+    charts_.set_baseline(nullptr);
+    for (const PlotView* plot : {cycle_time_, overtravel_, motion_}) {
+        EXPECT_FALSE(plot->legend_texts().contains(baseline)) << joined(plot->legend_texts());
+    }
+}
+
+// Item 4: "Target" only with a target uncertainty.
+TEST_F(ChartsTest, TheOvertravelLegendHasATargetOnlyWhenOneIsSet) {
+    Scenario s = all_valid();
+    s.cycle.target_uncertainty_mm = 0.0;
+    draw(s);
+    EXPECT_FALSE(overtravel_->legend_texts().contains(QStringLiteral("Target")))
+        << joined(overtravel_->legend_texts());
+    s.cycle.target_uncertainty_mm = 0.005;
+    draw(s);
+    EXPECT_EQ(overtravel_->legend_texts().count(QStringLiteral("Target")), 1)
+        << joined(overtravel_->legend_texts());
+    s.cycle.target_uncertainty_mm = 0.0;
+    draw(s);
+    EXPECT_FALSE(overtravel_->legend_texts().contains(QStringLiteral("Target")));
+}
+
+// Item 5: the log time axis labels times under 1 s, and shows at least two
+// labels whatever the range.
+TEST_F(ChartsTest, TheLogTimeAxisLabelsTimesUnderOneSecond) {
+    const Computed& c = draw(fast_surface());
+    double fastest = 1e9;
+    for (const SweepPoint& p : c.single_touch.points) fastest = std::min(fastest, p.cycle_time_s);
+    ASSERT_LT(fastest, 0.1);
+    const QStringList labels = cycle_time_->y_labels(Side::left);
+    EXPECT_TRUE(labels.contains(QStringLiteral("0.01"))) << joined(labels);
+    EXPECT_TRUE(labels.contains(QStringLiteral("0.1"))) << joined(labels);
+    EXPECT_TRUE(labels.contains(QStringLiteral("1"))) << joined(labels);
+    EXPECT_EQ(cycle_time_->x_labels(),
+              QStringList({QStringLiteral("10"), QStringLiteral("100"), QStringLiteral("1000"),
+                           QStringLiteral("10000")}));
+    for (const Scenario& s : {Scenario{}, over_the_limit(), all_valid(), fast_surface()}) {
+        draw(s);
+        EXPECT_GE(cycle_time_->y_labels(Side::left).size(), 2)
+            << joined(cycle_time_->y_labels(Side::left));
+    }
+}
+
+// Item 6: the knee and this cycle's dot are drawn whole, even at the ends of
+// the feed range: the axes reach a little beyond every point drawn.
+TEST_F(ChartsTest, TheAxesLeaveRoomAroundEveryDot) {
+    const PlotView::Range x = cycle_time_->x_range();
+    EXPECT_LT(x.lo, kKneeSearchFrom_mm_min);
+    EXPECT_GT(x.hi, kKneeSearchTo_mm_min);
+
+    Scenario at_the_end = all_valid();
+    at_the_end.cycle.probe_feed_mm_min = 10000.0;
+    // Two-touch at 10 mm/min from 1.2 mm with a 2 mm backoff: the curves stay
+    // under 10 s, this cycle's wasted backoff takes it above.
+    Scenario above_the_curves;
+    above_the_curves.cycle.probe_feed_mm_min = 10.0;
+    above_the_curves.cycle.approach_mm = 1.2;
+    above_the_curves.cycle.backoff_mm = 2.0;
+    const Computed& above = draw(above_the_curves);
+    ASSERT_TRUE(above.cycle().valid());
+    for (const SweepResult* sweep : {&above.single_touch, &above.two_touch}) {
+        for (const SweepPoint& p : sweep->points) ASSERT_LT(p.cycle_time_s, 10.0);
+    }
+    ASSERT_GT(above.cycle().total(), 10.0);
+
+    for (const Scenario& s :
+         {Scenario{}, all_valid(), at_the_end, fast_surface(), above_the_curves}) {
+        draw(s);
+        const PlotView::Range y = cycle_time_->y_range(Side::left);
+        for (const char* id : {"cycle_time.knee", "cycle_time.current", "cycle_time.single_touch",
+                               "cycle_time.two_touch"}) {
+            for (const QPointF& p : points(id)) {
+                if (!has_y(p)) continue;
+                EXPECT_GE(log_fraction(p.x(), x), 0.01) << id << " at " << p.x();
+                EXPECT_LE(log_fraction(p.x(), x), 0.99) << id << " at " << p.x();
+                EXPECT_GE(log_fraction(p.y(), y), 0.01) << id << " at " << p.x();
+                EXPECT_LE(log_fraction(p.y(), y), 0.99) << id << " at " << p.x();
+            }
+        }
+    }
+}
+
+// Lets a plot lay itself out, as after the event loop ran.
+void lay_out(PlotView& plot) {
+    plot.show();
+    QCoreApplication::processEvents();
+    QCoreApplication::processEvents();
+}
+
+// PlotView: a curve named after it was added joins the legend while shown;
+// unnamed again, it leaves.
+TEST(PlotViewTest, ACurveNamedLaterJoinsTheLegendWhileVisible) {
+    PlotView plot;
+    plot.set_x_axis({});
+    plot.set_y_axis(Side::left, {});
+    const PlotView::CurveId named = plot.add_line({QStringLiteral("Named"), Qt::blue});
+    const PlotView::CurveId later = plot.add_line({{}, Qt::green});
+    lay_out(plot);
+    EXPECT_EQ(plot.legend_texts(), QStringList({QStringLiteral("Named")}));
+    plot.set_name(later, QStringLiteral("Later"));
+    lay_out(plot);
+    EXPECT_EQ(plot.legend_texts(), QStringList({QStringLiteral("Named"), QStringLiteral("Later")}));
+    plot.set_visible(later, false);
+    lay_out(plot);
+    EXPECT_EQ(plot.legend_texts(), QStringList({QStringLiteral("Named")}));
+    plot.set_visible(later, true);
+    plot.set_name(named, {});
+    lay_out(plot);
+    EXPECT_EQ(plot.legend_texts(), QStringList({QStringLiteral("Later")}));
+    plot.set_legend_visible(false);
+    EXPECT_TRUE(plot.legend_texts().isEmpty());
+}
+
+// PlotView: a NaN breaks a line; what was handed over reads back as it was.
+TEST(PlotViewTest, ABrokenLineReadsBackWithItsBreaks) {
+    PlotView plot;
+    plot.set_x_axis({});
+    plot.set_y_axis(Side::left, {});
+    const PlotView::CurveId line = plot.add_line({QStringLiteral("Line"), Qt::blue});
+    const double gap = std::nan("");
+    const QList<QPointF> broken{{0, 1}, {1, 2}, {2, gap}, {3, 3}, {4, 4}, {5, gap}, {6, 5}, {7, 6}};
+    plot.set_points(line, broken);
+    lay_out(plot);
+    const QList<QPointF> back = plot.points(line);
+    ASSERT_EQ(back.size(), broken.size());
+    for (qsizetype i = 0; i < back.size(); ++i) {
+        EXPECT_EQ(back[i].x(), broken[i].x());
+        EXPECT_EQ(std::isnan(back[i].y()), std::isnan(broken[i].y()));
+    }
+    // One legend entry however many stretches.
+    EXPECT_EQ(plot.legend_texts(), QStringList({QStringLiteral("Line")}));
+    plot.set_points(line, {{0, 1}, {1, 2}});
+    lay_out(plot);
+    EXPECT_EQ(plot.point_count(line), 2);
+    EXPECT_EQ(plot.legend_texts(), QStringList({QStringLiteral("Line")}));
+}
+
+// PlotView: Qt Charts rounds ln(0.1) / ln(10) above -1 and would drop the
+// label of a decade below 1 at the bottom of a log axis.
+TEST(PlotViewTest, ALogAxisFromADecadeBelowOneLabelsThatDecade) {
+    PlotView plot;
+    plot.resize(600, 400);
+    PlotView::AxisSpec log_axis;
+    log_axis.scale = PlotView::Scale::log;
+    plot.set_x_axis(log_axis);
+    plot.set_y_axis(Side::left, log_axis);
+    plot.set_x_range(10.0, 10000.0);
+    plot.set_y_range(Side::left, 0.1, 10.0);
+    plot.set_points(plot.add_line({QStringLiteral("Line"), Qt::blue}), {{10, 0.2}, {10000, 5}});
+    lay_out(plot);
+    EXPECT_EQ(plot.y_labels(Side::left),
+              QStringList({QStringLiteral("0.1"), QStringLiteral("1"), QStringLiteral("10")}));
+    EXPECT_EQ(plot.x_labels(), QStringList({QStringLiteral("10"), QStringLiteral("100"),
+                                            QStringLiteral("1000"), QStringLiteral("10000")}));
+}
+
+}  // namespace
+}  // namespace probecycle::ui
