@@ -30,4 +30,12 @@ std::optional<double> parse_decimal(std::string_view text) {
     return value;
 }
 
+double round_up_to(double value, double step) {
+    return std::ceil(value / step - 1e-6) * step;
+}
+
+double round_down_to(double value, double step) {
+    return std::floor(value / step + 1e-6) * step;
+}
+
 }  // namespace probecycle

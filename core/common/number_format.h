@@ -18,4 +18,10 @@ std::string format_number(double value, int significant = 6);
 // scenario's --set and the CLI's number options read numbers with it.
 std::optional<double> parse_decimal(std::string_view text);
 
+// `value` rounded up or down to a multiple of `step` (the digits an editor
+// shows). A quotient within 1e-6 of a whole step counts as on it, so a sum's
+// last bits (2.1050000000000004 at 0.001) do not move it a whole step.
+double round_up_to(double value, double step);
+double round_down_to(double value, double step);
+
 }  // namespace probecycle

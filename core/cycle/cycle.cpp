@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 namespace probecycle {
@@ -91,9 +92,14 @@ const char* to_string(WarningCode code) {
 }
 
 void order_by_severity(std::vector<Warning>& warnings) {
-    std::stable_sort(warnings.begin(), warnings.end(), [](const Warning& x, const Warning& y) {
+    // An insertion sort, stable and without the buffer std::stable_sort
+    // allocates: it runs in every evaluation, on a handful of warnings.
+    const auto before = [](const Warning& x, const Warning& y) {
         return static_cast<int>(x.severity) > static_cast<int>(y.severity);
-    });
+    };
+    for (auto it = warnings.begin(); it != warnings.end(); ++it) {
+        std::rotate(std::upper_bound(warnings.begin(), it, *it, before), it, it + 1);
+    }
 }
 
 unsigned CycleResult::invalid_codes() const {
@@ -836,13 +842,12 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     // domain.md, "Strategies": recommended backoff = overtravel at the fast feed + reseat.
     // Issue 11: measured from the backoff's reference, and the second touch
     // also needs room to reach the measuring feed before it touches.
-    // Issue 12: rounded up to the editors' digits (the tolerance absorbs a
-    // sum's last bits, 2.1050000000000004 is 2.105), so the value shown is
-    // the value that clears backoff_too_small.
+    // Issue 12: rounded up to the editors' digits, so the value shown is the
+    // value that clears backoff_too_small.
     const double needed =
         backoff_reference_mm(c, r.first_) +
         std::max(p.reseat_mm, approach_room(scenario, limits, dynamics, measure_v));
-    r.recommended_backoff_mm_ = std::ceil(needed / kBackoffStep_mm - 1e-6) * kBackoffStep_mm;
+    r.recommended_backoff_mm_ = round_up_to(needed, kBackoffStep_mm);
 
     // Touches of one cycle differ only in direction, so touch 0 speaks for all.
     std::vector<Warning>& w = r.warnings_;

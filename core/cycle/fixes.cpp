@@ -1,8 +1,8 @@
 #include "core/cycle/fixes.h"
 
 #include <algorithm>
-#include <cmath>
 
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 namespace probecycle {
@@ -25,19 +25,11 @@ const char* to_string(FixKind kind) {
 
 namespace {
 
-// Rounded to what the editors show, the way that clears the warning (a
-// backoff or a start distance up, a feed down). The tolerance absorbs a
-// quotient's last bits: 2.1050000000000004 is 2.105.
-double round_up(double value, double step) {
-    return std::ceil(value / step - 1e-6) * step;
-}
-double round_down(double value, double step) {
-    return std::floor(value / step + 1e-6) * step;
-}
-
-// Feeds are shown to 1 mm/min from 100 mm/min up, to 0.1 mm/min below.
+// Values are rounded to what the editors show, the way that clears the
+// warning: a backoff or a start distance up, a feed down. Feeds are shown to
+// 1 mm/min from 100 mm/min up, to 0.1 mm/min below.
 double round_feed_down(double feed_mm_min) {
-    return round_down(feed_mm_min, feed_mm_min >= 100.0 ? 1.0 : 0.1);
+    return round_down_to(feed_mm_min, feed_mm_min >= 100.0 ? 1.0 : 0.1);
 }
 
 // The highest probing feed, rounded down, under `feed_mm_min` at which the
@@ -92,7 +84,7 @@ std::optional<Scenario> candidate(const Scenario& scenario, const Analysis& anal
         }
         case FixKind::approach_to_reach_feed: {
             const double feed_mm_s = cycle.first_touch().programmed_feed_mm_s;
-            s.cycle.approach_mm = round_up(approach_room_mm(s, feed_mm_s), 0.01);
+            s.cycle.approach_mm = round_up_to(approach_room_mm(s, feed_mm_s), 0.01);
             return s;
         }
         case FixKind::none:

@@ -27,5 +27,15 @@ TEST(FormatNumber, ShortestTextToTheDigitsAsked) {
     EXPECT_EQ(format_number(-INFINITY), "-inf");
 }
 
+TEST(RoundTo, UpAndDownToTheStepWithoutMovingAValueOnIt) {
+    EXPECT_DOUBLE_EQ(round_up_to(1.4716667, 0.001), 1.472);
+    EXPECT_DOUBLE_EQ(round_down_to(3580.9, 1.0), 3580.0);
+    // A sum's last bits do not move a value on the step a whole step.
+    EXPECT_DOUBLE_EQ(round_up_to(2.1050000000000004, 0.001), 2.105);
+    EXPECT_DOUBLE_EQ(round_down_to(0.30000000000000004 - 1e-16, 0.1), 0.3);
+    EXPECT_DOUBLE_EQ(round_up_to(2.105, 0.001), 2.105);
+    EXPECT_DOUBLE_EQ(round_down_to(99.95, 0.1), 99.9);
+}
+
 }  // namespace
 }  // namespace probecycle
