@@ -32,4 +32,18 @@ Message allowed_text(const char* code, const char* text) {
     return make_message(code, "FieldError", text);
 }
 
+Message range_allowed(double min, double max, const char* unit) {
+    if (unit == nullptr || *unit == '\0') {  // a fraction or a count: no unit to name
+        Message m =
+            allowed_text("out_of_range", QT_TRANSLATE_NOOP("FieldError", "a number from %1 to %2"));
+        m.args = {arg("min", ArgKind::number, min), arg("max", ArgKind::number, max)};
+        return m;
+    }
+    Message m =
+        allowed_text("out_of_range", QT_TRANSLATE_NOOP("FieldError", "a number from %1 to %2 %3"));
+    m.args = {arg("min", ArgKind::number, min), arg("max", ArgKind::number, max),
+              text_arg("unit", unit)};
+    return m;
+}
+
 }  // namespace probecycle

@@ -28,5 +28,7 @@ struct FieldError {
 
 // An "allowed" message with no arguments (its text marked for translation).
 Message allowed_text(const char* code, const char* text);
+// "a number from %1 to %2 %3" (without a unit: "a number from %1 to %2").
+Message range_allowed(double min, double max, const char* unit);
 
 }  // namespace probecycle

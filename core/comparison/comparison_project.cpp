@@ -23,14 +23,6 @@ constexpr int kVersion = 1;
     throw InputError(FieldError{key, value, std::move(allowed)}.to_message());
 }
 
-Message range(double min, double max, const char* unit) {
-    return Message{"range",
-                   "FieldError",
-                   QT_TRANSLATE_NOOP("FieldError", "a number from %1 to %2 %3"),
-                   {arg("min", ArgKind::number, min), arg("max", ArgKind::number, max),
-                    text_arg("unit", unit)}};
-}
-
 struct NumberKey {
     const char* key;
     double ComparisonProject::*member;
@@ -62,7 +54,7 @@ const PathKey kPaths[] = {
 };
 
 std::string allowed_keys() {
-    std::string keys = "format, version";
+    std::string keys = "format, version";  // of a comparison project file
     for (const PathKey& p : kPaths) keys += std::string(", ") + p.key;
     for (const NumberKey& n : kNumbers) keys += std::string(", ") + n.key;
     return keys;
@@ -70,12 +62,60 @@ std::string allowed_keys() {
 
 }  // namespace
 
+nlohmann::ordered_json comparison_settings_json(const ComparisonProject& project) {
+    Json out = Json::object();
+    for (const PathKey& p : kPaths) out[p.key] = project.*p.member;
+    for (const NumberKey& n : kNumbers) out[n.key] = project.*n.member;
+    return out;
+}
+
+ComparisonProject comparison_settings_from(const nlohmann::ordered_json& object,
+                                           const std::string& key_prefix,
+                                           std::vector<FieldError>& errors) {
+    ComparisonProject project;
+    for (const auto& [name, value] : object.items()) {
+        const std::string key = key_prefix + name;
+        bool known = false;
+        for (const PathKey& p : kPaths) {
+            if (name != p.key) continue;
+            known = true;
+            if (!value.is_string()) {
+                errors.push_back(
+                    {key, value.dump(),
+                     allowed_text(
+                         "path_text",
+                         QT_TRANSLATE_NOOP("FieldError", "a file path as text (empty: none)"))});
+                continue;
+            }
+            project.*p.member = value.get<std::string>();
+        }
+        for (const NumberKey& n : kNumbers) {
+            if (name != n.key) continue;
+            known = true;
+            const double number = value.is_number() ? value.get<double>() : std::nan("");
+            if (!(number >= n.min && number <= n.max)) {
+                errors.push_back({key, value.dump(), range_allowed(n.min, n.max, n.unit)});
+                continue;
+            }
+            project.*n.member = number == 0.0 ? 0.0 : number;  // no -0
+        }
+        if (!known) {
+            errors.push_back(
+                {key, "",
+                 Message{"unknown_key",
+                         "FieldError",
+                         QT_TRANSLATE_NOOP("FieldError", "an unknown key; allowed: %1"),
+                         {text_arg("keys", allowed_keys())}}});
+        }
+    }
+    return project;
+}
+
 std::string comparison_project_json(const ComparisonProject& project) {
     Json out = Json::object();
     out["format"] = kFormat;
     out["version"] = kVersion;
-    for (const PathKey& p : kPaths) out[p.key] = project.*p.member;
-    for (const NumberKey& n : kNumbers) out[n.key] = project.*n.member;
+    out.update(comparison_settings_json(project));
     return out.dump(2) + "\n";
 }
 
@@ -100,52 +140,24 @@ ComparisonProject parse_comparison_project(std::string_view text) {
                                               "a JSON object with the comparison's files and "
                                               "settings")));
     }
-    ComparisonProject project;
-    for (const auto& [key, value] : root.items()) {
-        if (key == "format") {
-            if (!value.is_string() || value.get<std::string>() != kFormat) {
-                refuse(key, value.dump(),
-                       allowed_text("project_format",
-                                    QT_TRANSLATE_NOOP("FieldError", "\"probecycle-comparison\"")));
-            }
-            continue;
+    if (const auto format = root.find("format"); format != root.end()) {
+        if (!format->is_string() || format->get<std::string>() != kFormat) {
+            refuse("format", format->dump(),
+                   allowed_text("project_format",
+                                QT_TRANSLATE_NOOP("FieldError", "\"probecycle-comparison\"")));
         }
-        if (key == "version") {
-            if (!value.is_number_integer() || value.get<long long>() != kVersion) {
-                refuse(key, value.dump(),
-                       allowed_text("project_version", QT_TRANSLATE_NOOP("FieldError", "1")));
-            }
-            continue;
-        }
-        bool known = false;
-        for (const PathKey& p : kPaths) {
-            if (key != p.key) continue;
-            known = true;
-            if (!value.is_string()) {
-                refuse(key, value.dump(),
-                       allowed_text(
-                           "path_text",
-                           QT_TRANSLATE_NOOP("FieldError", "a file path as text (empty: none)")));
-            }
-            project.*p.member = value.get<std::string>();
-        }
-        for (const NumberKey& n : kNumbers) {
-            if (key != n.key) continue;
-            known = true;
-            const double number = value.is_number() ? value.get<double>() : std::nan("");
-            if (!(number >= n.min && number <= n.max)) {
-                refuse(key, value.dump(), range(n.min, n.max, n.unit));
-            }
-            project.*n.member = number == 0.0 ? 0.0 : number;  // no -0
-        }
-        if (!known) {
-            refuse(key, "",
-                   Message{"unknown_key",
-                           "FieldError",
-                           QT_TRANSLATE_NOOP("FieldError", "an unknown key; allowed: %1"),
-                           {text_arg("keys", allowed_keys())}});
-        }
+        root.erase("format");
     }
+    if (const auto version = root.find("version"); version != root.end()) {
+        if (!version->is_number_integer() || version->get<long long>() != kVersion) {
+            refuse("version", version->dump(),
+                   allowed_text("project_version", QT_TRANSLATE_NOOP("FieldError", "1")));
+        }
+        root.erase("version");
+    }
+    std::vector<FieldError> errors;
+    ComparisonProject project = comparison_settings_from(root, {}, errors);
+    if (!errors.empty()) throw InputError(errors.front().to_message());
     return project;
 }
 

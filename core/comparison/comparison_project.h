@@ -10,8 +10,12 @@
 // A relative path is relative to the project file's folder; an empty one is
 // not given. Every key is optional on reading (a default), none unknown.
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "core/common/field_error.h"
 
 namespace probecycle {
 
@@ -35,6 +39,14 @@ constexpr double kMinTolerance_mm = 1e-6;
 constexpr double kMaxTolerance_mm = 100.0;
 
 std::string comparison_project_json(const ComparisonProject& project);
+// The settings as a JSON object without format and version, and back (for
+// the window's project file, which holds them as one section). Reading
+// collects every problem, keyed `key_prefix` + key, and keeps the default of
+// a refused key.
+nlohmann::ordered_json comparison_settings_json(const ComparisonProject& project);
+ComparisonProject comparison_settings_from(const nlohmann::ordered_json& object,
+                                           const std::string& key_prefix,
+                                           std::vector<FieldError>& errors);
 // InputError naming the key, the value and what is allowed, for malformed
 // JSON, an unknown key, a wrong type or a number out of range.
 ComparisonProject parse_comparison_project(std::string_view text);

@@ -385,17 +385,7 @@ std::string number_text(double value) {
 }
 
 Message range_text(const KeyInfo& info) {
-    if (*info.unit == '\0') {  // a fraction or a count: no unit to name
-        Message m =
-            allowed_text("out_of_range", QT_TRANSLATE_NOOP("FieldError", "a number from %1 to %2"));
-        m.args = {arg("min", ArgKind::number, info.min), arg("max", ArgKind::number, info.max)};
-        return m;
-    }
-    Message m =
-        allowed_text("out_of_range", QT_TRANSLATE_NOOP("FieldError", "a number from %1 to %2 %3"));
-    m.args = {arg("min", ArgKind::number, info.min), arg("max", ArgKind::number, info.max),
-              text_arg("unit", info.unit)};
-    return m;
+    return range_allowed(info.min, info.max, info.unit);
 }
 
 std::string join(const std::vector<std::string>& words) {
