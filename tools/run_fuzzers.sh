@@ -14,9 +14,10 @@ declare -A seeds=(
   [ring_csv]="tests/data/lab_ring*.csv"
   [delay_csv]="tests/data/lab_delay*.csv"
   [comparison_points]="tests/data/comparison/*.csv"
+  [project_json]="tests/data/golden/project.probecycle"
 )
 status=0
-for target in scenario_json ring_csv delay_csv comparison_points; do
+for target in scenario_json ring_csv delay_csv comparison_points project_json; do
   work=$(mktemp -d)
   # shellcheck disable=SC2086
   cp ${seeds[$target]} "$work"/

@@ -163,7 +163,9 @@ void read_lab_section(const std::string& section, const Json& body, Project& pro
         return;
     }
     for (const auto& [name, value] : body.items()) {
-        const std::string key = section + "." + name;
+        std::string key = section;
+        key += '.';
+        key += name;
         bool known = false;
         for (const TextKey& k : kTexts) {
             if (section != k.section || name != k.name) continue;
@@ -202,9 +204,10 @@ void read_lab_section(const std::string& section, const Json& body, Project& pro
         }
         if (section == "compensation" && name == kTouchKey) {
             known = true;
+            const Json& word = value;  // clang cannot capture a structured binding
             const auto* found =
                 std::find_if(std::begin(kTouchMotions), std::end(kTouchMotions),
-                             [&value](TouchMotion m) { return value == to_string(m); });
+                             [&word](TouchMotion m) { return word == to_string(m); });
             if (found != std::end(kTouchMotions)) {
                 project.compensation.touch = *found;
             } else {

@@ -444,6 +444,26 @@
         <source>a number from %1 to %2</source>
         <translation>число от %1 до %2</translation>
     </message>
+    <message>
+        <source>text</source>
+        <translation>текст</translation>
+    </message>
+    <message>
+        <source>a whole number from %1 to %2</source>
+        <translation>целое число от %1 до %2</translation>
+    </message>
+    <message>
+        <source>&quot;probecycle-project&quot; (a ProbeCycle project)</source>
+        <translation>&quot;probecycle-project&quot; (проект ProbeCycle)</translation>
+    </message>
+    <message>
+        <source>1 (a newer ProbeCycle wrote this file)</source>
+        <translation>1 (файл записан более новой версией ProbeCycle)</translation>
+    </message>
+    <message>
+        <source>missing; a project holds a scenario</source>
+        <translation>отсутствует; проект содержит сценарий</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -2445,22 +2465,6 @@
         <translation>Без имени</translation>
     </message>
     <message>
-        <source>Open scenario</source>
-        <translation>Открыть сценарий</translation>
-    </message>
-    <message>
-        <source>Scenario (*.json);;All files (*)</source>
-        <translation>Сценарий (*.json);;Все файлы (*)</translation>
-    </message>
-    <message>
-        <source>Save scenario</source>
-        <translation>Сохранить сценарий</translation>
-    </message>
-    <message>
-        <source>Scenario (*.json)</source>
-        <translation>Сценарий (*.json)</translation>
-    </message>
-    <message>
         <source>Export CSV report</source>
         <translation>Экспорт отчёта CSV</translation>
     </message>
@@ -2603,6 +2607,44 @@
     <message>
         <source>&amp;Guide</source>
         <translation>&amp;Руководство</translation>
+    </message>
+    <message>
+        <source>The project you open replaces the lab&apos;s data (touches, fits, comparison settings), which is in no project file yet. Save everything as a project first?</source>
+        <translation>Открываемый проект заменит данные лаборатории (касания, подгонки, настройки сравнения), которые ещё не сохранены ни в одном файле проекта. Сначала сохранить всё как проект?</translation>
+    </message>
+    <message>
+        <source>Could not open the project</source>
+        <translation>Не удалось открыть проект</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid project:
+%2</source>
+        <translation>%1 — недопустимый проект:
+%2</translation>
+    </message>
+    <message>
+        <source>Could not save the project</source>
+        <translation>Не удалось сохранить проект</translation>
+    </message>
+    <message>
+        <source>Open scenario or project</source>
+        <translation>Открыть сценарий или проект</translation>
+    </message>
+    <message>
+        <source>Scenarios and projects (*.json *.probecycle);;Project (*.probecycle);;Scenario (*.json);;All files (*)</source>
+        <translation>Сценарии и проекты (*.json *.probecycle);;Проект (*.probecycle);;Сценарий (*.json);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>ProbeCycle project: scenario, lab and comparison (*.probecycle)</source>
+        <translation>Проект ProbeCycle: сценарий, лаборатория и сравнение (*.probecycle)</translation>
+    </message>
+    <message>
+        <source>Scenario only (*.json)</source>
+        <translation>Только сценарий (*.json)</translation>
+    </message>
+    <message>
+        <source>Save as</source>
+        <translation>Сохранить как</translation>
     </message>
 </context>
 <context>

@@ -444,6 +444,26 @@
         <source>a number from %1 to %2</source>
         <translation>%1 到 %2 之间的数值</translation>
     </message>
+    <message>
+        <source>text</source>
+        <translation>文本</translation>
+    </message>
+    <message>
+        <source>a whole number from %1 to %2</source>
+        <translation>%1 到 %2 之间的整数</translation>
+    </message>
+    <message>
+        <source>&quot;probecycle-project&quot; (a ProbeCycle project)</source>
+        <translation>&quot;probecycle-project&quot;（ProbeCycle 项目）</translation>
+    </message>
+    <message>
+        <source>1 (a newer ProbeCycle wrote this file)</source>
+        <translation>1（此文件由更新版本的 ProbeCycle 写入）</translation>
+    </message>
+    <message>
+        <source>missing; a project holds a scenario</source>
+        <translation>缺失；项目必须包含场景</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -2445,22 +2465,6 @@
         <translation>未命名</translation>
     </message>
     <message>
-        <source>Open scenario</source>
-        <translation>打开场景</translation>
-    </message>
-    <message>
-        <source>Scenario (*.json);;All files (*)</source>
-        <translation>场景 (*.json);;所有文件 (*)</translation>
-    </message>
-    <message>
-        <source>Save scenario</source>
-        <translation>保存场景</translation>
-    </message>
-    <message>
-        <source>Scenario (*.json)</source>
-        <translation>场景 (*.json)</translation>
-    </message>
-    <message>
         <source>Export CSV report</source>
         <translation>导出 CSV 报告</translation>
     </message>
@@ -2603,6 +2607,44 @@
     <message>
         <source>&amp;Guide</source>
         <translation>指南(&amp;G)</translation>
+    </message>
+    <message>
+        <source>The project you open replaces the lab&apos;s data (touches, fits, comparison settings), which is in no project file yet. Save everything as a project first?</source>
+        <translation>要打开的项目将替换实验室数据（触测点、拟合、比对设置），这些数据尚未保存在任何项目文件中。先将全部内容另存为项目吗？</translation>
+    </message>
+    <message>
+        <source>Could not open the project</source>
+        <translation>无法打开项目</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid project:
+%2</source>
+        <translation>%1 不是有效的项目：
+%2</translation>
+    </message>
+    <message>
+        <source>Could not save the project</source>
+        <translation>无法保存项目</translation>
+    </message>
+    <message>
+        <source>Open scenario or project</source>
+        <translation>打开场景或项目</translation>
+    </message>
+    <message>
+        <source>Scenarios and projects (*.json *.probecycle);;Project (*.probecycle);;Scenario (*.json);;All files (*)</source>
+        <translation>场景和项目 (*.json *.probecycle);;项目 (*.probecycle);;场景 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>ProbeCycle project: scenario, lab and comparison (*.probecycle)</source>
+        <translation>ProbeCycle 项目：场景、实验室和比对 (*.probecycle)</translation>
+    </message>
+    <message>
+        <source>Scenario only (*.json)</source>
+        <translation>仅场景 (*.json)</translation>
+    </message>
+    <message>
+        <source>Save as</source>
+        <translation>另存为</translation>
     </message>
 </context>
 <context>

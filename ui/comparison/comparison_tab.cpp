@@ -537,31 +537,64 @@ bool ComparisonTab::export_report(const QString& path) {
     return true;
 }
 
-bool ComparisonTab::save_project(const QString& path) {
-    const QDir base = QFileInfo(path).absoluteDir();
-    const auto relative = [&base](const QString& file) {
-        return file.isEmpty() ? std::string()
-                              : QFile::encodeName(base.relativeFilePath(file)).toStdString();
+ComparisonProject ComparisonTab::settings(const QString& base_folder) const {
+    const QDir base(base_folder);
+    const auto stored = [&](const QString& file) {
+        if (file.isEmpty()) return std::string();
+        return QFile::encodeName(base_folder.isEmpty() ? file : base.relativeFilePath(file))
+            .toStdString();
     };
     ComparisonProject project;
-    project.plan = relative(file(InputFile::plan));
-    project.reference_cmm = relative(file(InputFile::reference_cmm));
-    project.test_omm = relative(file(InputFile::test_omm));
-    project.reference_omm = relative(file(InputFile::reference_omm));
-    project.block_c0 = relative(file(InputFile::block_c0));
-    project.block_c180 = relative(file(InputFile::block_c180));
+    project.plan = stored(file(InputFile::plan));
+    project.reference_cmm = stored(file(InputFile::reference_cmm));
+    project.test_omm = stored(file(InputFile::test_omm));
+    project.reference_omm = stored(file(InputFile::reference_omm));
+    project.block_c0 = stored(file(InputFile::block_c0));
+    project.block_c180 = stored(file(InputFile::block_c180));
     project.c_axis_x_mm = axis_x_->internal_value();
     project.c_axis_y_mm = axis_y_->internal_value();
     project.angle_deg = angle_->internal_value();
     project.tolerance_mm = tolerance_->internal_value();
+    return project;
+}
+
+bool ComparisonTab::restore(const ComparisonProject& project, const QString& base_folder) {
+    const QDir base(base_folder);
+    const auto absolute = [&](const std::string& file) {
+        if (file.empty()) return QString();
+        const QString name = QFile::decodeName(file.c_str());
+        return base_folder.isEmpty() ? name : QDir::cleanPath(base.absoluteFilePath(name));
+    };
+    set_file(InputFile::plan, absolute(project.plan));
+    set_file(InputFile::reference_cmm, absolute(project.reference_cmm));
+    set_file(InputFile::test_omm, absolute(project.test_omm));
+    set_file(InputFile::reference_omm, absolute(project.reference_omm));
+    set_file(InputFile::block_c0, absolute(project.block_c0));
+    set_file(InputFile::block_c180, absolute(project.block_c180));
+    set_c_axis(project.c_axis_x_mm, project.c_axis_y_mm);
+    set_angle_deg(project.angle_deg);
+    {
+        const QSignalBlocker block(tolerance_);
+        tolerance_->set_internal_value(project.tolerance_mm);
+    }
+    set_error({});
+    const bool complete = !project.plan.empty() && !project.reference_cmm.empty() &&
+                          !project.test_omm.empty() && !project.reference_omm.empty();
+    if (complete) return run();
+    clear_result();
+    return true;
+}
+
+bool ComparisonTab::save_project(const QString& path) {
+    const QString folder = QFileInfo(path).absolutePath();
     try {
         write_file_atomically(QFile::encodeName(path).toStdString(),
-                              comparison_project_json(project));
+                              comparison_project_json(settings(folder)));
     } catch (const std::exception& e) {
         set_error(lab_error_text(e));
         return false;
     }
-    set_remembered_folder(base.absolutePath());
+    set_remembered_folder(folder);
     return true;
 }
 
@@ -576,29 +609,9 @@ bool ComparisonTab::open_project(const QString& path) {
         set_error(QFileInfo(path).fileName() + QStringLiteral(": ") + lab_error_text(e));
         return false;
     }
-    const QDir base = QFileInfo(path).absoluteDir();
-    const auto absolute = [&base](const std::string& file) {
-        return file.empty()
-                   ? QString()
-                   : QDir::cleanPath(base.absoluteFilePath(QFile::decodeName(file.c_str())));
-    };
-    set_file(InputFile::plan, absolute(project.plan));
-    set_file(InputFile::reference_cmm, absolute(project.reference_cmm));
-    set_file(InputFile::test_omm, absolute(project.test_omm));
-    set_file(InputFile::reference_omm, absolute(project.reference_omm));
-    set_file(InputFile::block_c0, absolute(project.block_c0));
-    set_file(InputFile::block_c180, absolute(project.block_c180));
-    set_c_axis(project.c_axis_x_mm, project.c_axis_y_mm);
-    set_angle_deg(project.angle_deg);
-    {
-        const QSignalBlocker block(tolerance_);
-        tolerance_->set_internal_value(project.tolerance_mm);
-    }
-    set_remembered_folder(base.absolutePath());
-    set_error({});
-    const bool complete = !project.plan.empty() && !project.reference_cmm.empty() &&
-                          !project.test_omm.empty() && !project.reference_omm.empty();
-    return complete ? run() : true;
+    const QString folder = QFileInfo(path).absolutePath();
+    set_remembered_folder(folder);
+    return restore(project, folder);
 }
 
 QStringList ComparisonTab::warning_codes() const {
@@ -661,6 +674,11 @@ void ComparisonTab::show_result() {
     fill_tables();
     draw_map();
     draw_histogram();
+}
+
+void ComparisonTab::clear_result() {
+    result_.reset();
+    show_result();
 }
 
 void ComparisonTab::fill_tables() {

@@ -21,6 +21,7 @@
 #include <optional>
 
 #include "core/comparison/comparison.h"
+#include "core/comparison/comparison_project.h"
 
 class QGroupBox;
 class QLabel;
@@ -67,6 +68,13 @@ class ComparisonTab : public QWidget {
     // Loads a project; on a bad file false with last_error(), and the inputs
     // stay as they were. Runs when the four point files are given.
     bool open_project(const QString& path);
+    // The files and settings as a project holds them: paths relative to
+    // `base_folder`, or absolute when it is empty (the window's project file
+    // and its saved session).
+    ComparisonProject settings(const QString& base_folder) const;
+    // Takes them back (paths relative to `base_folder`, or absolute); runs
+    // when the four point files are given, else clears the result shown.
+    bool restore(const ComparisonProject& project, const QString& base_folder);
 
     const std::optional<ComparisonResult>& result() const { return result_; }
     QString last_error() const { return last_error_; }
@@ -92,6 +100,7 @@ class ComparisonTab : public QWidget {
     void retranslate();
     void set_error(const QString& text);
     void show_result();
+    void clear_result();
     void draw_map();
     void draw_histogram();
     void fill_tables();

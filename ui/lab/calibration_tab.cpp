@@ -37,8 +37,8 @@ const QColor kColour180{0xe6, 0x7e, 0x22};  // orientation 180 deg
 const QColor kGaugeColour{0x33, 0x33, 0x33};
 
 constexpr int kCirclePoints = 181;
-// Choices of the magnification box; 0 = automatic.
-constexpr double kMagnifications[] = {0.0, 1.0, 10.0, 100.0, 1000.0, 10000.0};
+// Choices of the magnification box (0 = automatic): the project file's.
+constexpr const auto& kMagnifications = kRingMagnifications;
 
 enum ResultRow {
     row_centre,
@@ -416,6 +416,7 @@ bool CalibrationTab::fit_text(const QString& text, const QString& source) {
     points_ = std::move(points);
     options_ = options;
     result_ = std::move(result);
+    fitted_text_ = text;
     set_error({});
     show_result();
     return true;
@@ -643,6 +644,57 @@ QList<QPointF> CalibrationTab::plotted_points(int orientation) const {
 
 QList<QPointF> CalibrationTab::plotted_circle(int orientation) const {
     return plot_->points(circle_curve_[orientation == 0 ? 0 : 1]);
+}
+
+// --- Project ---
+
+RingSession CalibrationTab::ring_session() const {
+    RingSession session;
+    session.points_csv = points_edit_->toPlainText().toStdString();
+    if (result_) session.fitted_csv = fitted_text_.toStdString();
+    session.options = options();
+    session.magnification =
+        kMagnifications[static_cast<std::size_t>(std::max(magnification_->currentIndex(), 0))];
+    return session;
+}
+
+LengthSession CalibrationTab::length_session() const {
+    LengthSession session;
+    session.surface_z_mm = surface_z_->internal_value();
+    session.trigger_z = trigger_z_->text().toStdString();
+    session.active_length_mm = active_length_->internal_value();
+    session.nominal_length_mm = nominal_length_->internal_value();
+    return session;
+}
+
+bool CalibrationTab::restore(const RingSession& ring, const LengthSession& length) {
+    {
+        // The old fit is not refitted with the new settings on the way.
+        const QSignalBlocker block_diameter(diameter_);
+        const QSignalBlocker block_runout(runout_limit_);
+        const QSignalBlocker block_residual(residual_limit_);
+        diameter_->set_internal_value(ring.options.gauge_diameter_mm);
+        runout_limit_->set_internal_value(ring.options.runout_limit_mm);
+        residual_limit_->set_internal_value(ring.options.residual_limit_mm);
+    }
+    {
+        const QSignalBlocker block(magnification_);
+        set_deviation_magnification(ring.magnification);
+    }
+    result_.reset();
+    points_.clear();
+    fitted_text_.clear();
+    set_error({});
+    bool fitted = true;
+    if (!ring.fitted_csv.empty()) {
+        fitted = fit_text(QString::fromStdString(ring.fitted_csv), QString());
+    } else {
+        show_result();
+    }
+    set_points_text(QString::fromStdString(ring.points_csv));
+    set_length_inputs({length.surface_z_mm, QString::fromStdString(length.trigger_z),
+                       length.active_length_mm, length.nominal_length_mm});
+    return fitted;
 }
 
 // --- Length ---

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/lab/calibration.h"
+#include "core/project/project_file.h"
 
 class QComboBox;
 class QFormLayout;
@@ -92,6 +93,15 @@ class CalibrationTab : public QWidget {
         double nominal_length_mm{0.0};  // 0 = none
     };
     void set_length_inputs(const LengthInputs& inputs);
+
+    // --- Project ---
+    // The inputs as the project file holds them: the paste box as typed, the
+    // CSV behind the fit on screen, the gauge, the limits and the drawing.
+    RingSession ring_session() const;
+    LengthSession length_session() const;
+    // Takes them back and fits the stored CSV; false (with last_error())
+    // when that no longer fits.
+    bool restore(const RingSession& ring, const LengthSession& length);
     const std::optional<LengthCalibration>& length_result() const { return length_result_; }
     QString length_error() const { return length_error_; }
 
@@ -163,6 +173,7 @@ class CalibrationTab : public QWidget {
     QLabel* export_status_{nullptr};
 
     std::vector<RingPoint> points_;
+    QString fitted_text_;             // the CSV behind result_
     RingCalibrationOptions options_;  // of result_
     std::optional<RingCalibration> result_;
     QString last_error_;

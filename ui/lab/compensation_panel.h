@@ -21,6 +21,7 @@
 
 #include "core/cycle/scenario.h"
 #include "core/lab/compensation.h"
+#include "core/project/project_file.h"
 
 class QComboBox;
 class QFormLayout;
@@ -46,15 +47,8 @@ class CompensationPanel : public QGroupBox {
     // scenario is invalid). Recomputes in the event loop.
     void set_scenario(const probecycle::Scenario& scenario);
 
-    struct Inputs {
-        double feed_mm_min{2000.0};
-        double interpolation_period_s{0.001};
-        int lag_cycles{8};
-        TouchMotion touch{TouchMotion::braking};
-        double speed_fraction{0.5};  // braking: the speed at the trigger / the feed
-        // The lag the real-increments method subtracts; -1: the lag itself.
-        int compensated_lag_cycles{-1};
-    };
+    // The inputs the window edits, as the project file holds them.
+    using Inputs = CompensationSession;
     // Sets the inputs and recomputes at once.
     void set_inputs(const Inputs& inputs);
     Inputs inputs() const;

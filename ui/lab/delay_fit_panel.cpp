@@ -293,9 +293,40 @@ bool DelayFitPanel::fit_text(const QString& text, const QString& source) {
     touches_ = std::move(touches);
     fit_options_ = options;
     fit_ = std::move(fit);
+    fitted_text_ = text;
     set_error({});
     show_fit();
     return true;
+}
+
+DelaySession DelayFitPanel::session() const {
+    DelaySession session;
+    session.touches_csv = touches_edit_->toPlainText().toStdString();
+    if (fit_) session.fitted_csv = fitted_text_.toStdString();
+    session.interpolation_period_s = period_->internal_value();
+    if (const std::optional<std::string> group = chosen_group()) session.applied_group = *group;
+    return session;
+}
+
+bool DelayFitPanel::restore(const DelaySession& session) {
+    {
+        const QSignalBlocker block(period_);
+        period_->set_internal_value(session.interpolation_period_s);
+    }
+    fit_.reset();
+    touches_.clear();
+    fitted_text_.clear();
+    set_error({});
+    bool fitted = true;
+    if (!session.fitted_csv.empty()) {
+        fitted = fit_text(QString::fromStdString(session.fitted_csv), QString());
+    } else {
+        apply_period();
+        show_fit();
+    }
+    set_touches_text(QString::fromStdString(session.touches_csv));
+    set_applied_group(QString::fromStdString(session.applied_group));
+    return fitted;
 }
 
 void DelayFitPanel::set_error(const QString& text) {

@@ -22,6 +22,7 @@
 
 #include "core/cycle/scenario.h"
 #include "core/lab/delay_fit.h"
+#include "core/project/project_file.h"
 
 class QComboBox;
 class QLabel;
@@ -78,6 +79,13 @@ class DelayFitPanel : public QGroupBox {
     // Emits delay_applied(); false with last_error() when the
     // controller latency would be negative or out of the key's range.
     bool apply_to_scenario();
+
+    // The inputs as the project file holds them: the paste box as typed, the
+    // CSV behind the fit on screen, the period and the group for "Apply".
+    DelaySession session() const;
+    // Takes them back and fits the stored CSV; false (with last_error())
+    // when that no longer fits.
+    bool restore(const DelaySession& session);
 
     // For the compensation comparison: the fit's interpolation period and the
     // lag in whole cycles of the group "Apply" uses (core lag_cycles_for_delay);
@@ -142,6 +150,7 @@ class DelayFitPanel : public QGroupBox {
     QPushButton* apply_button_{nullptr};
 
     std::vector<DelayTouch> touches_;
+    QString fitted_text_;  // the CSV behind fit_
     DelayFitOptions fit_options_;
     std::optional<DelayFit> fit_;
     QString last_error_;

@@ -164,6 +164,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
     build_actions();
     build_menus();
     retranslate();
+    empty_lab_ = lab_snapshot();
+    saved_lab_ = empty_lab_;
     if (options_.persistent) restore_settings();
     panel_->set_scenario(scenario_);
     latency_tab_->set_scenario(scenario_);
@@ -255,6 +257,12 @@ void MainWindow::build_ui() {
     comparison_tab_ = new ComparisonTab;
     tabs_->addTab(comparison_tab_, QString());
     setCentralWidget(tabs_);
+    // The title's "*" counts the lab in a project: looked at when the user
+    // moves between tabs and when a fit changes (the question on leaving
+    // compares the whole state in any case).
+    connect(tabs_, &QTabWidget::currentChanged, this, &MainWindow::update_title);
+    connect(latency_tab_->delay_fit_panel(), &DelayFitPanel::fit_changed, this,
+            &MainWindow::update_title);
 
     statusBar();  // file and preset messages
     resize(1280, 800);
@@ -275,7 +283,8 @@ void MainWindow::build_actions() {
     connect(save_, &QAction::triggered, this, &MainWindow::save_action);
     save_as_ = new QAction(this);
     save_as_->setShortcut(QKeySequence::SaveAs);
-    connect(save_as_, &QAction::triggered, this, &MainWindow::save_as_dialog);
+    connect(save_as_, &QAction::triggered, this,
+            [this] { save_as_dialog(document_is_project_ || lab_has_data()); });
     export_csv_ = new QAction(icon(QStyle::SP_FileDialogDetailedView), {}, this);
     export_csv_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     connect(export_csv_, &QAction::triggered, this, &MainWindow::export_csv_dialog);
@@ -493,20 +502,42 @@ void MainWindow::restore_settings() {
     }
     const QString json = settings.value(QStringLiteral("scenario/last")).toString();
     const QString file = settings.value(QStringLiteral("scenario/file")).toString();
+    const QString lab = settings.value(QStringLiteral("lab/last")).toString();
     try {
         if (!json.isEmpty()) {
             scenario_ = scenario_from_json(json.toStdString());
             current_file_ = file;
         } else if (!file.isEmpty()) {
             // Edits were discarded at the last quit: the file as saved.
-            scenario_ = scenario_from_json(read_text_file(QFile::encodeName(file).toStdString()));
+            const std::string text = read_text_file(QFile::encodeName(file).toStdString());
+            if (is_project_text(text)) {
+                const Project project = parse_project(text);
+                scenario_ = project.scenario;
+                restore_session(project, QFileInfo(file).absolutePath());
+                document_is_project_ = true;
+            } else {
+                scenario_ = scenario_from_json(text);
+            }
             current_file_ = file;
         }
     } catch (const std::exception&) {
         // A stale or foreign entry, or a file gone: start from the defaults.
         scenario_ = Scenario{};
         current_file_.clear();
+        document_is_project_ = false;
     }
+    if (!json.isEmpty() || !document_is_project_) {
+        // The lab as it was at the last quit (kept with the paths absolute).
+        try {
+            if (!lab.isEmpty()) restore_session(parse_project(lab.toStdString()), QString());
+        } catch (const std::exception&) {
+            // A stale entry: the lab starts empty.
+        }
+        document_is_project_ = !current_file_.isEmpty() &&
+                               settings.value(QStringLiteral("scenario/file_is_project")).toBool();
+    }
+    // A file name is only restored with its own content, so the lab shown is the file's.
+    saved_lab_ = document_is_project_ ? lab_snapshot() : empty_lab_;
 }
 
 void MainWindow::save_settings(bool with_scenario) const {
@@ -518,27 +549,52 @@ void MainWindow::save_settings(bool with_scenario) const {
     settings.setValue(QStringLiteral("files/recent"), recent_files_);
     settings.setValue(QStringLiteral("files/last_dir"), remembered_folder());
     settings.setValue(QStringLiteral("view/language"), language_choice_);
+    settings.setValue(QStringLiteral("scenario/file_is_project"), document_is_project_);
     if (!with_scenario) {
-        // Discarded edits: the file is opened again from disk at the next start.
+        // Discarded edits: the file is opened again from disk at the next
+        // start. Outside a project the lab's data is not the file's, and stays.
         settings.remove(QStringLiteral("scenario/last"));
         settings.setValue(QStringLiteral("scenario/file"), current_file_);
+        if (document_is_project_) {
+            settings.remove(QStringLiteral("lab/last"));
+        } else {
+            settings.setValue(QStringLiteral("lab/last"),
+                              QString::fromStdString(project_json(project_state(QString()))));
+        }
         return;
     }
     settings.setValue(QStringLiteral("scenario/last"),
                       QString::fromStdString(scenario_to_json(scenario_)));
+    settings.setValue(QStringLiteral("lab/last"),
+                      QString::fromStdString(project_json(project_state(QString()))));
     // A file name is restored only with the file's own content.
     settings.setValue(QStringLiteral("scenario/file"),
-                      undo_->isClean() ? current_file_ : QString());
+                      has_unsaved_changes() ? QString() : current_file_);
 }
 
-bool MainWindow::settle_unsaved_changes() {
-    if (undo_->isClean()) return true;
+bool MainWindow::has_unsaved_changes() const {
+    return !undo_->isClean() || (document_is_project_ && lab_unsaved());
+}
+
+bool MainWindow::settle_unsaved_changes(bool replaces_lab) {
+    // Outside a project the lab's data is the session's: it outlives New, a
+    // scenario's Open and Quit, and only opening a project replaces it.
+    const bool lab_at_stake = (document_is_project_ || replaces_lab) && lab_unsaved();
+    if (undo_->isClean() && !lab_at_stake) return true;
+    // The lab's data only fits in a project file.
+    const bool as_project = document_is_project_ || lab_at_stake;
     UnsavedAnswer answer = options_.unsaved_answer;
     if (options_.show_dialogs) {
         const QString name =
             current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();
+        const QString question =
+            !document_is_project_ && lab_at_stake
+                ? tr("The project you open replaces the lab's data (touches, fits, comparison "
+                     "settings), which is in no project file yet. Save everything as a project "
+                     "first?")
+                : tr("Save the changes to %1?").arg(name);
         const auto button = QMessageBox::question(
-            this, tr("Unsaved changes"), tr("Save the changes to %1?").arg(name),
+            this, tr("Unsaved changes"), question,
             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
         answer = button == QMessageBox::Save      ? UnsavedAnswer::save
                  : button == QMessageBox::Discard ? UnsavedAnswer::discard
@@ -546,6 +602,10 @@ bool MainWindow::settle_unsaved_changes() {
     }
     switch (answer) {
         case UnsavedAnswer::save:
+            if (as_project && !document_is_project_) {
+                // A scenario file cannot hold the lab: a new project file.
+                return options_.show_dialogs && save_as_dialog(/*as_project=*/true);
+            }
             // Without dialogs there is no file dialog to name an untitled one.
             return (options_.show_dialogs || !current_file_.isEmpty()) && save_action();
         case UnsavedAnswer::discard:
@@ -563,7 +623,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     }
     // Issue 12: Discard means discard (the edits are still unsaved here). The
     // next start shows the file as it was saved, or the defaults.
-    if (options_.persistent) save_settings(/*with_scenario=*/undo_->isClean());
+    if (options_.persistent) save_settings(/*with_scenario=*/!has_unsaved_changes());
     event->accept();
 }
 
@@ -640,6 +700,7 @@ void MainWindow::reset_document(const Scenario& scenario, const QString& file) {
 
 bool MainWindow::new_scenario() {
     if (!settle_unsaved_changes()) return false;
+    document_is_project_ = false;  // the lab's data stays, outside any file
     reset_document(Scenario{}, QString());
     statusBar()->showMessage(
         tr("Default scenario: typical values, to be replaced with measured ones"), 6000);
@@ -657,21 +718,43 @@ bool MainWindow::open_scenario(const QString& path) {
                          .arg(QDir::toNativeSeparators(path), translate(e.reason())));
         return false;
     }
-    Scenario loaded;
+    const bool project = is_project_text(text);
+    Project loaded;
     try {
-        loaded = scenario_from_json(text);
+        if (project) {
+            loaded = parse_project(text);
+        } else {
+            loaded.scenario = scenario_from_json(text);
+        }
     } catch (const ScenarioError& e) {
         // Each line names the key, the value and what is allowed, translated.
-        report_error(tr("Could not open the scenario"),
-                     tr("%1 is not a valid scenario:\n%2")
-                         .arg(QDir::toNativeSeparators(path), error_list(e)));
+        report_error(
+            project ? tr("Could not open the project") : tr("Could not open the scenario"),
+            (project ? tr("%1 is not a valid project:\n%2") : tr("%1 is not a valid scenario:\n%2"))
+                .arg(QDir::toNativeSeparators(path), error_list(e)));
         return false;
     }
-    reset_document(loaded, QFileInfo(path).absoluteFilePath());
+    // Nothing has changed yet: the file is whole and valid.
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    if (project) restore_session(loaded, QFileInfo(absolute).absolutePath());
+    document_is_project_ = project;
+    reset_document(loaded.scenario, absolute);
+    if (project) saved_lab_ = lab_snapshot();
     remember_recent(current_file_);
     remember_folder_of(path);
     statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), 4000);
     return true;
+}
+
+bool MainWindow::open_asking(const QString& path) {
+    std::string text;
+    try {
+        text = read_text_file(QFile::encodeName(path).toStdString());
+    } catch (const FileError&) {
+        return open_scenario(path);  // says why it cannot be read, and changes nothing
+    }
+    if (!settle_unsaved_changes(/*replaces_lab=*/is_project_text(text))) return false;
+    return open_scenario(path);
 }
 
 bool MainWindow::save_scenario(const QString& path) {
@@ -682,12 +765,61 @@ bool MainWindow::save_scenario(const QString& path) {
         return false;
     }
     current_file_ = QFileInfo(path).absoluteFilePath();
+    document_is_project_ = false;
     undo_->setClean();
     remember_recent(current_file_);
     remember_folder_of(path);
     update_title();
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 4000);
     return true;
+}
+
+bool MainWindow::save_project(const QString& path) {
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    QString error;
+    const std::string text = project_json(project_state(QFileInfo(absolute).absolutePath()));
+    if (!write_file(path, QByteArray::fromStdString(text), error)) {
+        report_error(tr("Could not save the project"),
+                     tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
+        return false;
+    }
+    current_file_ = absolute;
+    document_is_project_ = true;
+    saved_lab_ = lab_snapshot();
+    undo_->setClean();
+    remember_recent(current_file_);
+    remember_folder_of(path);
+    update_title();
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 4000);
+    return true;
+}
+
+Project MainWindow::project_state(const QString& base_folder) const {
+    Project project;
+    project.scenario = scenario_;
+    if (baseline_) project.baseline = baseline_->scenario;
+    project.ring = calibration_tab_->ring_session();
+    project.length = calibration_tab_->length_session();
+    project.delay = latency_tab_->delay_fit_panel()->session();
+    project.compensation = latency_tab_->compensation_inputs();
+    project.comparison = comparison_tab_->settings(base_folder);
+    return project;
+}
+
+void MainWindow::restore_session(const Project& project, const QString& base_folder) {
+    // A fit that no longer fits (the program's checks changed) shows its
+    // message in its tab; everything else is taken as stored.
+    calibration_tab_->restore(project.ring, project.length);
+    latency_tab_->delay_fit_panel()->restore(project.delay);
+    latency_tab_->set_compensation_inputs(project.compensation);
+    comparison_tab_->restore(project.comparison, base_folder);
+    if (!project.baseline || !pin_baseline_of(*project.baseline)) clear_baseline();
+}
+
+std::string MainWindow::lab_snapshot() const {
+    Project state = project_state(QString());
+    state.scenario = Scenario{};
+    return project_json(state);
 }
 
 bool MainWindow::export_csv_report(const QString& path) {
@@ -812,9 +944,7 @@ void MainWindow::update_recent_menu() {
     recent_menu_->clear();
     for (const QString& path : recent_files_) {
         QAction* action = recent_menu_->addAction(QDir::toNativeSeparators(path));
-        connect(action, &QAction::triggered, this, [this, path] {
-            if (settle_unsaved_changes()) open_scenario(path);
-        });
+        connect(action, &QAction::triggered, this, [this, path] { open_asking(path); });
     }
     if (recent_files_.isEmpty()) recent_menu_->addAction(tr("(none)"))->setEnabled(false);
 }
@@ -832,29 +962,44 @@ void MainWindow::update_title() {
     const QString name =
         current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();
     setWindowTitle(QStringLiteral("%1[*] - ProbeCycle").arg(name));
-    setWindowModified(!undo_->isClean());
+    setWindowModified(has_unsaved_changes());
 }
 
 void MainWindow::open_dialog() {
-    if (!settle_unsaved_changes()) return;
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open scenario"), dialog_start(),
-                                                      tr("Scenario (*.json);;All files (*)"));
-    if (!path.isEmpty()) open_scenario(path);
+    // Asked once the file is chosen: a project replaces the lab's data too.
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open scenario or project"), dialog_start(),
+        tr("Scenarios and projects (*.json *.probecycle);;Project (*.probecycle);;"
+           "Scenario (*.json);;All files (*)"));
+    if (!path.isEmpty()) open_asking(path);
 }
 
 bool MainWindow::save_action() {
-    if (current_file_.isEmpty()) return save_as_dialog();
-    return save_scenario(current_file_);
+    if (current_file_.isEmpty()) return save_as_dialog(document_is_project_ || lab_has_data());
+    return document_is_project_ ? save_project(current_file_) : save_scenario(current_file_);
 }
 
-bool MainWindow::save_as_dialog() {
+bool MainWindow::save_as_dialog(bool as_project) {
+    const QString project_filter =
+        tr("ProbeCycle project: scenario, lab and comparison (*.probecycle)");
+    const QString scenario_filter = tr("Scenario only (*.json)");
+    QString chosen = as_project ? project_filter : scenario_filter;
+    QString start = current_file_;
+    if (start.isEmpty() || document_is_project_ != as_project) {
+        const QString stem = current_file_.isEmpty() ? QStringLiteral("scenario")
+                                                     : QFileInfo(current_file_).completeBaseName();
+        start = dialog_start(
+            stem + (as_project ? QStringLiteral(".probecycle") : QStringLiteral(".json")));
+    }
     QString path = QFileDialog::getSaveFileName(
-        this, tr("Save scenario"),
-        current_file_.isEmpty() ? dialog_start(QStringLiteral("scenario.json")) : current_file_,
-        tr("Scenario (*.json)"));
+        this, tr("Save as"), start, project_filter + QStringLiteral(";;") + scenario_filter,
+        &chosen);
     if (path.isEmpty()) return false;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
-    return save_scenario(path);
+    const bool project = chosen == project_filter;
+    if (QFileInfo(path).suffix().isEmpty()) {
+        path += project ? QStringLiteral(".probecycle") : QStringLiteral(".json");
+    }
+    return project ? save_project(path) : save_scenario(path);
 }
 
 void MainWindow::export_csv_dialog() {
@@ -885,6 +1030,17 @@ void MainWindow::pin_baseline() {
     unpin_->setEnabled(true);
     statusBar()->showMessage(tr("Baseline pinned: change parameters to compare against it"), 6000);
     schedule_recompute();
+}
+
+bool MainWindow::pin_baseline_of(const Scenario& scenario) {
+    Computation computation(options_.points_per_curve);
+    const Computed& computed = computation.run(scenario);
+    if (!computed.valid()) return false;
+    baseline_ = computed;
+    charts_->set_baseline(&*baseline_);
+    unpin_->setEnabled(true);
+    schedule_recompute();
+    return true;
 }
 
 void MainWindow::clear_baseline() {

@@ -16,7 +16,9 @@
 #include <QStringList>
 #include <QTimer>
 #include <optional>
+#include <string>
 
+#include "core/project/project_file.h"
 #include "ui/cycle/computation.h"
 #include "ui/cycle/readouts.h"
 #include "ui/cycle/warnings_panel.h"
@@ -67,11 +69,24 @@ class MainWindow : public QMainWindow {
     // Files. Each returns false and reports through last_error() on failure;
     // a file that does not load leaves the current scenario untouched.
     // Asks first when unsaved edits would be lost; false when the user cancels.
+    // The lab's data stays: it is the session's, not the scenario's.
     bool new_scenario();
     // Without dialogs: the answer the next questions about unsaved edits get.
     void set_unsaved_answer(UnsavedAnswer answer) { options_.unsaved_answer = answer; }
+    // A scenario file (the scenario only; the lab keeps its data) or a
+    // project file (everything, README "The project file"), told apart by
+    // content. Does not ask about unsaved edits: open_asking() does.
     bool open_scenario(const QString& path);
+    // Asks first when unsaved work would be lost (a project replaces the
+    // lab's data too), then opens; false when cancelled or refused.
+    bool open_asking(const QString& path);
     bool save_scenario(const QString& path);
+    // The whole session: scenario, baseline, lab, comparison (atomic).
+    bool save_project(const QString& path);
+    bool current_is_project() const { return document_is_project_; }
+    // Edits not in the current file: the scenario's, and for a project the
+    // lab's and the comparison's too.
+    bool has_unsaved_changes() const;
     bool export_csv_report(const QString& path);
     // The current tab's charts at `width` pixels under a title line (issue 12).
     bool export_charts_png(const QString& path, int width = 1920);
@@ -86,6 +101,9 @@ class MainWindow : public QMainWindow {
 
     // Compare.
     void pin_baseline();
+    // Pins the baseline of another scenario (a project's); false when it is
+    // not valid.
+    bool pin_baseline_of(const Scenario& scenario);
     void clear_baseline();
     bool has_baseline() const { return baseline_.has_value(); }
 
@@ -145,9 +163,21 @@ class MainWindow : public QMainWindow {
     void open_dialog();
     // Unsaved edits would be lost: Save, Discard or Cancel, asked once. True
     // to go on (saved, or discarded), false to keep the edits.
-    bool settle_unsaved_changes();
+    // `replaces_lab`: the action also replaces the lab's data (opening a
+    // project), so unsaved lab data counts even outside a project.
+    bool settle_unsaved_changes(bool replaces_lab = false);
+    // Everything a project file holds; comparison paths relative to
+    // `base_folder`, or absolute when empty.
+    Project project_state(const QString& base_folder) const;
+    // Takes a project's lab, comparison and baseline (not its scenario).
+    void restore_session(const Project& project, const QString& base_folder);
+    // The lab's, the comparison's and the baseline's state, to tell changes.
+    std::string lab_snapshot() const;
+    bool lab_unsaved() const { return lab_snapshot() != saved_lab_; }
+    bool lab_has_data() const { return lab_snapshot() != empty_lab_; }
     bool save_action();
-    bool save_as_dialog();
+    // A file dialog offering both kinds, `as_project` chosen first.
+    bool save_as_dialog(bool as_project);
     void export_csv_dialog();
     void export_png_dialog();
 
@@ -159,6 +189,9 @@ class MainWindow : public QMainWindow {
     QTimer recompute_timer_;
     int recompute_count_{0};
     QString current_file_;
+    bool document_is_project_{false};
+    std::string saved_lab_;  // lab_snapshot() as in the current file
+    std::string empty_lab_;  // lab_snapshot() of a new window
     QString last_error_;
     QStringList recent_files_;
 
