@@ -1261,10 +1261,6 @@
         <translation>Нечего экспортировать: сначала подберите точки кольца или введите длину.</translation>
     </message>
     <message>
-        <source>Saved %1</source>
-        <translation>Сохранено: %1</translation>
-    </message>
-    <message>
         <source>Import ring gauge points</source>
         <translation>Импорт точек установочного кольца</translation>
     </message>
@@ -1413,7 +1409,7 @@
     </message>
     <message>
         <source>Deviation of the test part</source>
-        <translation>Отклонение контролируемой детали</translation>
+        <translation>Отклонение детали</translation>
     </message>
     <message>
         <source>X [%1]</source>
@@ -1538,10 +1534,6 @@
     <message>
         <source>Nothing to export: run the comparison first.</source>
         <translation>Нечего экспортировать: сначала выполните сравнение.</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>Сохранено: %1</translation>
     </message>
     <message>
         <source>εx (EAC)</source>
@@ -2190,6 +2182,10 @@
         <source>Unexpected error: %1</source>
         <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
         <translation>Непредвиденная ошибка: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Сохранено: %1</translation>
     </message>
 </context>
 <context>

@@ -1261,10 +1261,6 @@
         <translation>没有可导出的内容：请先拟合环规点或输入长度。</translation>
     </message>
     <message>
-        <source>Saved %1</source>
-        <translation>已保存 %1</translation>
-    </message>
-    <message>
         <source>Import ring gauge points</source>
         <translation>导入环规测点</translation>
     </message>
@@ -1538,10 +1534,6 @@
     <message>
         <source>Nothing to export: run the comparison first.</source>
         <translation>没有可导出的内容：请先运行比较测量。</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>已保存 %1</translation>
     </message>
     <message>
         <source>εx (EAC)</source>
@@ -2190,6 +2182,10 @@
         <source>Unexpected error: %1</source>
         <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
         <translation>意外错误：%1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
     </message>
 </context>
 <context>

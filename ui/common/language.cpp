@@ -1,6 +1,7 @@
 #include "ui/common/language.h"
 
 #include <QCoreApplication>
+#include <QEvent>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QTranslator>
@@ -20,6 +21,23 @@ Installed& installed() {
     static Installed state;
     return state;
 }
+
+// Watches its parent for LanguageChange and runs the text's builder again.
+class Retranslator : public QObject {
+  public:
+    explicit Retranslator(QObject* target) : QObject(target) { target->installEventFilter(this); }
+    void set(std::function<void()> apply) {
+        apply_ = std::move(apply);
+        if (apply_) apply_();
+    }
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        if (watched == parent() && event->type() == QEvent::LanguageChange && apply_) apply_();
+        return false;
+    }
+
+  private:
+    std::function<void()> apply_;
+};
 
 QString language_for_locale(const QLocale& locale) {
     if (locale.language() == QLocale::Chinese) return QStringLiteral("zh_CN");
@@ -69,6 +87,15 @@ QString apply_language(const QString& code) {
 
 QString current_language() {
     return installed().code;
+}
+
+void keep_translated(QObject* target, std::function<void()> apply) {
+    Retranslator* retranslator = nullptr;
+    for (QObject* child : target->children()) {
+        if (auto* found = dynamic_cast<Retranslator*>(child)) retranslator = found;
+    }
+    if (retranslator == nullptr) retranslator = new Retranslator(target);
+    retranslator->set(std::move(apply));
 }
 
 }  // namespace probecycle::ui

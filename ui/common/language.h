@@ -6,6 +6,9 @@
 
 #include <QString>
 #include <QStringList>
+#include <functional>
+
+class QObject;
 
 namespace probecycle::ui {
 
@@ -18,5 +21,11 @@ QString native_language_name(const QString& code);
 QString apply_language(const QString& code);
 // The language in effect ("en", "zh_CN", "ru").
 QString current_language();
+
+// For a text built at run time (a status, an error, a result in words), which
+// a widget's own retranslate() does not know: runs `apply` now and again
+// whenever `target` gets a LanguageChange event, so the text is rebuilt in
+// the new language. A later call for the same target replaces the earlier.
+void keep_translated(QObject* target, std::function<void()> apply);
 
 }  // namespace probecycle::ui

@@ -1,20 +1,25 @@
 #include "ui/common/plot_view.h"
 
 #include <QAreaSeries>
+#include <QBoxLayout>
 #include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
+#include <QEvent>
+#include <QFontInfo>
+#include <QFontMetrics>
 #include <QGraphicsItemGroup>
 #include <QGraphicsLayout>
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
 #include <QLegend>
-#include <QLegendMarker>
 #include <QLineSeries>
+#include <QLocale>
 #include <QLogValueAxis>
+#include <QPainter>
 #include <QPen>
 #include <QScatterSeries>
-#include <QVBoxLayout>
+#include <QTextDocument>
 #include <QValueAxis>
 #include <algorithm>
 #include <array>
@@ -66,6 +71,172 @@ PlotView::Range axis_range(const QAbstractAxis* axis) {
     return {};
 }
 
+// The number format of axis labels: the interface language's decimal sign,
+// without group separators (an axis label is short and "10 000" reads as two).
+QLocale axis_locale() {
+    QLocale locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    return locale;
+}
+
+// QTextDocument turns a no-break space into a space in plain text.
+QString plain(QString text) {
+    return text.replace(QChar(0x00A0), QLatin1Char(' '));
+}
+
+bool elided(const QString& text) {
+    return text.endsWith(QStringLiteral("...")) || text.endsWith(QChar(0x2026));
+}
+
+// Issue 12: our own legend instead of Qt Charts' single row, which elides its
+// entries when they do not fit. Below the plot the entries flow into as many
+// rows as the width needs; beside it, one a row. A swatch drawn with the
+// curve's own pen or brush, then the name in full.
+class Legend : public QWidget {
+  public:
+    enum class Swatch { line, marker, area };
+    struct Entry {
+        QString name;
+        QPen pen;
+        QBrush brush;
+        Swatch swatch{Swatch::line};
+    };
+
+    explicit Legend(QWidget* parent) : QWidget(parent) { set_beside(false); }
+
+    void set_entries(std::vector<Entry> entries) {
+        const bool same = entries.size() == entries_.size() &&
+                          std::equal(entries.begin(), entries.end(), entries_.begin(),
+                                     [](const Entry& a, const Entry& b) {
+                                         return a.name == b.name && a.pen == b.pen &&
+                                                a.brush == b.brush && a.swatch == b.swatch;
+                                     });
+        if (same) return;
+        entries_ = std::move(entries);
+        updateGeometry();
+        update();
+    }
+    const std::vector<Entry>& entries() const { return entries_; }
+
+    void set_beside(bool beside) {
+        beside_ = beside;
+        // Not Fixed below the plot: a fixed height is one row (the size hint's),
+        // whatever heightForWidth says.
+        QSizePolicy policy(QSizePolicy::Preferred, QSizePolicy::Preferred);
+        policy.setHeightForWidth(!beside);
+        setSizePolicy(policy);
+        updateGeometry();
+    }
+
+    bool hasHeightForWidth() const override { return !beside_; }
+    int heightForWidth(int width) const override {
+        return entries_.empty() ? 0 : rows(width) * line() + 2 * kMargin;
+    }
+    QSize sizeHint() const override {
+        if (entries_.empty()) return {0, 0};
+        int widest = 0;
+        int total = 0;
+        for (const Entry& e : entries_) {
+            widest = std::max(widest, entry_width(e));
+            total += entry_width(e) + kGap;
+        }
+        if (beside_) {
+            return {widest + 2 * kMargin, static_cast<int>(entries_.size()) * line() + 2 * kMargin};
+        }
+        return {total + 2 * kMargin, heightForWidth(width() > 0 ? width() : total)};
+    }
+    QSize minimumSizeHint() const override {
+        if (entries_.empty()) return {0, 0};
+        return {kSwatch + 4 * kGap, line() + 2 * kMargin};
+    }
+
+    // Entries not shown in full at the present size.
+    QStringList cut() const {
+        QStringList out;
+        const std::vector<QRect> at = place(width());
+        for (std::size_t i = 0; i < entries_.size(); ++i) {
+            if (!rect().contains(at[i])) out << entries_[i].name;
+        }
+        return out;
+    }
+
+  protected:
+    void paintEvent(QPaintEvent* /*event*/) override {
+        QPainter painter(this);
+        painter.setRenderHint(QPainter::Antialiasing, true);
+        const std::vector<QRect> at = place(width());
+        for (std::size_t i = 0; i < entries_.size(); ++i) {
+            const Entry& e = entries_[i];
+            const QRect r = at[i];
+            const QRect swatch(r.left(), r.top(), kSwatch, r.height());
+            const QPointF mid = QRectF(swatch).center();
+            switch (e.swatch) {
+                case Swatch::line: {
+                    QPen pen = e.pen;
+                    pen.setWidthF(std::min(pen.widthF(), 2.5));
+                    painter.setPen(pen);
+                    painter.drawLine(QPointF(swatch.left(), mid.y()),
+                                     QPointF(swatch.right(), mid.y()));
+                    break;
+                }
+                case Swatch::marker:
+                    painter.setPen(Qt::NoPen);
+                    painter.setBrush(e.brush);
+                    painter.drawEllipse(mid, 4.5, 4.5);
+                    break;
+                case Swatch::area:
+                    painter.setPen(e.pen);
+                    painter.setBrush(e.brush);
+                    painter.drawRect(QRectF(swatch.left() + 2, mid.y() - 5, kSwatch - 4, 10));
+                    break;
+            }
+            painter.setPen(palette().color(QPalette::WindowText));
+            painter.drawText(r.adjusted(kSwatch + kSwatchGap, 0, 0, 0),
+                             Qt::AlignLeft | Qt::AlignVCenter, e.name);
+        }
+    }
+
+  private:
+    static constexpr int kMargin = 2;
+    static constexpr int kSwatch = 22;
+    static constexpr int kSwatchGap = 4;
+    static constexpr int kGap = 14;
+
+    int line() const { return fontMetrics().height() + 2; }
+    int entry_width(const Entry& e) const {
+        return kSwatch + kSwatchGap + fontMetrics().horizontalAdvance(e.name);
+    }
+    int rows(int width) const {
+        const std::vector<QRect> at = place(width);
+        return at.empty() ? 0 : (at.back().bottom() + 1 - kMargin) / line();
+    }
+    // Where each entry goes at `width`: rows below the plot, a column beside it.
+    std::vector<QRect> place(int width) const {
+        std::vector<QRect> at;
+        at.reserve(entries_.size());
+        int x = kMargin;
+        int y = kMargin;
+        for (const Entry& e : entries_) {
+            const int w = entry_width(e);
+            if (beside_) {
+                at.emplace_back(kMargin, y, w, line());
+                y += line();
+                continue;
+            }
+            if (x > kMargin && x + w > width - kMargin) {
+                x = kMargin;
+                y += line();
+            }
+            at.emplace_back(x, y, w, line());
+            x += w + kGap;
+        }
+        return at;
+    }
+
+    std::vector<Entry> entries_;
+    bool beside_{false};
+};
+
 }  // namespace
 
 struct PlotView::Impl {
@@ -101,6 +272,12 @@ struct PlotView::Impl {
 
     QChart* chart{nullptr};
     QChartView* view{nullptr};
+    QBoxLayout* layout{nullptr};
+    Legend* legend{nullptr};
+    bool legend_visible{true};
+    QFont category_font;  // the category axis's full-size label font
+    QFont title_font;     // the axes' full-size title font
+    bool fitting_categories{false};
     QAbstractAxis* x_axis{nullptr};
     QAbstractAxis* y_left{nullptr};
     QAbstractAxis* y_right{nullptr};
@@ -110,12 +287,20 @@ struct PlotView::Impl {
 
     QAbstractAxis*& y_axis(Side side) { return side == Side::left ? y_left : y_right; }
 
+    // Qt Charts formats localised labels only from a format with a precision
+    // ("%.6g"; a bare "%g" gives no label at all).
+    static QString localised_format(const QString& format) {
+        if (format.contains(QLatin1Char('.'))) return format;
+        QString out = format;
+        return out.replace(QLatin1Char('%'), QStringLiteral("%.6"));
+    }
+
     static QAbstractAxis* make_axis(const AxisSpec& spec) {
         switch (spec.scale) {
             case Scale::log: {
                 auto* axis = new QLogValueAxis;
                 axis->setBase(10.0);
-                axis->setLabelFormat(spec.label_format);
+                axis->setLabelFormat(localised_format(spec.label_format));
                 axis->setMinorTickCount(spec.minor_grid ? -1 : 0);
                 return axis;
             }
@@ -133,21 +318,19 @@ struct PlotView::Impl {
                 break;
         }
         auto* axis = new QValueAxis;
-        axis->setLabelFormat(spec.label_format);
+        axis->setLabelFormat(localised_format(spec.label_format));
         axis->setTickType(QValueAxis::TicksDynamic);
         axis->setTickAnchor(0.0);
         axis->setTickInterval(1.0);
         return axis;
     }
 
-    static void style_axis(QAbstractAxis* axis, const AxisSpec& spec) {
+    static void style_axis(QAbstractAxis* axis, const AxisSpec& spec, const QFont& title_font) {
         // Solid hairlines: the theme's dashed minor grid costs more to paint than the curves.
         axis->setGridLinePen(hairline(QColor(0xdd, 0xdd, 0xdd)));
         axis->setMinorGridLinePen(hairline(QColor(0xee, 0xee, 0xee)));
         if (axis->titleText() != spec.title) axis->setTitleText(spec.title);
-        QFont title_font = axis->titleFont();
-        title_font.setBold(false);
-        axis->setTitleFont(title_font);
+        if (axis->titleFont() != title_font) axis->setTitleFont(title_font);
         if (spec.color.isValid()) {
             axis->setTitleBrush(spec.color);
             axis->setLabelsColor(spec.color);
@@ -178,15 +361,92 @@ struct PlotView::Impl {
         }
     }
 
-    void attach(QAbstractSeries* shown, Side side, bool in_legend) {
+    void attach(QAbstractSeries* shown, Side side) {
         chart->addSeries(shown);
         if (x_axis != nullptr) shown->attachAxis(x_axis);
         if (QAbstractAxis* y = y_axis(side)) shown->attachAxis(y);
-        show_in_legend(shown, in_legend);
     }
 
-    void show_in_legend(QAbstractSeries* shown, bool show) {
-        for (QLegendMarker* marker : chart->legend()->markers(shown)) marker->setVisible(show);
+    // The legend's entries: the named curves that are shown, in the order added.
+    void refresh_legend() {
+        std::vector<Legend::Entry> entries;
+        if (legend_visible) {
+            for (const Curve& c : curves) {
+                if (!c.in_legend || !c.shown->isVisible()) continue;
+                Legend::Entry e{c.shown->name(), c.series->pen(), {}, Legend::Swatch::line};
+                if (c.kind == Kind::markers) {
+                    e.swatch = Legend::Swatch::marker;
+                    e.brush = static_cast<QScatterSeries*>(c.series)->color();
+                } else if (c.kind == Kind::area) {
+                    e.swatch = Legend::Swatch::area;
+                    e.pen = c.area->pen();
+                    e.brush = c.area->brush();
+                }
+                entries.push_back(std::move(e));
+            }
+        }
+        legend->set_entries(std::move(entries));
+        legend->setVisible(legend_visible && !legend->entries().empty());
+    }
+
+    // Every row of a category axis keeps its label: Qt Charts hides a label
+    // that would overlap the one below, so the font shrinks to the row
+    // height, not under 6 pixels.
+    void fit_categories() {
+        auto* axis = qobject_cast<QCategoryAxis*>(y_left);
+        if (axis == nullptr || categories.isEmpty() || fitting_categories) return;
+        const double row = chart->plotArea().height() / static_cast<double>(categories.size());
+        if (!(row > 0.0)) return;
+        // Measured as the axis lays its labels out (a text document: a Chinese
+        // label's fallback font is taller than the axis font says).
+        const auto height = [&](const QFont& f) {
+            double tallest = 0.0;
+            QTextDocument doc;
+            doc.setDocumentMargin(0.0);
+            doc.setDefaultFont(f);
+            for (const QString& label : categories) {
+                doc.setPlainText(label);
+                tallest = std::max(tallest, doc.size().height());
+            }
+            return tallest + 2.0;  // Qt Charts' own margins
+        };
+        QFont font = category_font;
+        for (int px = QFontInfo(category_font).pixelSize(); px > 6 && height(font) > row; --px) {
+            font.setPixelSize(px - 1);
+        }
+        if (font == axis->labelsFont()) return;
+        fitting_categories = true;
+        axis->setLabelsFont(font);
+        fitting_categories = false;
+    }
+
+    // An axis title longer than its axis takes a smaller font (down to 7
+    // pixels) rather than being cut short.
+    void fit_titles() {
+        const QRectF plot = chart->plotArea();
+        for (QAbstractAxis* axis : {x_axis, y_left, y_right}) {
+            if (axis == nullptr || axis->titleText().isEmpty()) continue;
+            const double room = (axis == x_axis ? plot.width() : plot.height()) - 4.0;
+            QFont font = title_font;
+            for (int px = QFontInfo(title_font).pixelSize();
+                 px > 7 && QFontMetricsF(font).horizontalAdvance(axis->titleText()) > room; --px) {
+                font.setPixelSize(px - 1);
+            }
+            if (font != axis->titleFont()) axis->setTitleFont(font);
+        }
+    }
+
+    // Every text the chart draws, as plain text.
+    QStringList drawn_texts() const {
+        QStringList out;
+        const QGraphicsScene* scene = chart->scene();
+        if (scene == nullptr) return out;
+        for (QGraphicsItem* item : scene->items()) {
+            const auto* text = dynamic_cast<const QGraphicsTextItem*>(item);
+            if (text == nullptr || !text->isVisible() || !chart->isAncestorOf(text)) continue;
+            out << plain(text->toPlainText());
+        }
+        return out;
     }
 
     CurveId add(Kind kind, QXYSeries* series, QLineSeries* lower, QAreaSeries* area,
@@ -194,11 +454,12 @@ struct PlotView::Impl {
         QAbstractSeries* shown = area != nullptr ? static_cast<QAbstractSeries*>(area) : series;
         shown->setName(spec.name);
         const bool in_legend = !spec.name.isEmpty();
-        attach(shown, spec.axis, in_legend);
+        attach(shown, spec.axis);
         Curve curve{kind, series, lower, area, shown, spec.axis, in_legend, {}, {}};
         curve.pieces.resize(1);
         curve.pieces[0].series = series;
         curves.push_back(std::move(curve));
+        refresh_legend();
         return static_cast<CurveId>(curves.size() - 1);
     }
 
@@ -206,9 +467,8 @@ struct PlotView::Impl {
         if (k >= curve.pieces.size()) {
             auto* series = new QLineSeries;
             series->setPen(curve.series->pen());
-            attach(series, curve.side, false);
+            attach(series, curve.side);
             series->setVisible(curve.shown->isVisible());
-            show_in_legend(series, false);
             curve.pieces.push_back({});
             curve.pieces.back().series = series;
         }
@@ -321,7 +581,9 @@ double PlotView::nice_step(double raw) {
 PlotView::PlotView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<Impl>()) {
     impl_->chart = new QChart;
     impl_->chart->setAnimationOptions(QChart::NoAnimation);
-    impl_->chart->legend()->setAlignment(Qt::AlignBottom);
+    impl_->chart->legend()->hide();  // ours (Legend) wraps instead of eliding
+    impl_->chart->setLocalizeNumbers(true);
+    impl_->chart->setLocale(axis_locale());
     impl_->chart->setMargins(QMargins(4, 4, 4, 4));
     impl_->chart->layout()->setContentsMargins(0, 0, 0, 0);
     impl_->chart->setBackgroundRoundness(0);
@@ -340,9 +602,22 @@ PlotView::PlotView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<Im
     impl_->view->setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
     impl_->view->setOptimizationFlags(QGraphicsView::DontSavePainterState);
     impl_->view->setMinimumSize(220, 160);
-    auto* layout = new QVBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(impl_->view);
+    impl_->legend = new Legend(this);
+    impl_->legend->setVisible(false);
+    impl_->layout = new QBoxLayout(QBoxLayout::TopToBottom, this);
+    impl_->layout->setContentsMargins(0, 0, 0, 0);
+    impl_->layout->setSpacing(0);
+    impl_->layout->addWidget(impl_->view, 1);
+    impl_->layout->addWidget(impl_->legend);
+    connect(impl_->chart, &QChart::plotAreaChanged, this, [this] {
+        impl_->fit_categories();
+        impl_->fit_titles();
+    });
+}
+
+void PlotView::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) impl_->chart->setLocale(axis_locale());
+    QWidget::changeEvent(event);
 }
 
 PlotView::~PlotView() = default;
@@ -356,11 +631,13 @@ QString PlotView::title() const {
 }
 
 void PlotView::set_legend_visible(bool visible) {
-    impl_->chart->legend()->setVisible(visible);
+    impl_->legend_visible = visible;
+    impl_->refresh_legend();
 }
 
 void PlotView::set_legend_beside(bool beside) {
-    impl_->chart->legend()->setAlignment(beside ? Qt::AlignRight : Qt::AlignBottom);
+    impl_->layout->setDirection(beside ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
+    impl_->legend->set_beside(beside);
 }
 
 void PlotView::set_x_axis(const AxisSpec& spec) {
@@ -368,13 +645,21 @@ void PlotView::set_x_axis(const AxisSpec& spec) {
         impl_->x_axis = Impl::make_axis(spec);
         impl_->chart->addAxis(impl_->x_axis, Qt::AlignBottom);
     }
-    Impl::style_axis(impl_->x_axis, spec);
+    if (impl_->title_font == QFont()) {
+        impl_->title_font = impl_->x_axis->titleFont();
+        impl_->title_font.setBold(false);
+    }
+    Impl::style_axis(impl_->x_axis, spec, impl_->title_font);
+    impl_->fit_titles();
 }
 
 void PlotView::set_y_axis(Side side, const AxisSpec& spec) {
     QAbstractAxis*& axis = impl_->y_axis(side);
     if (axis == nullptr) {
         axis = Impl::make_axis(spec);
+        if (const auto* categories = qobject_cast<const QCategoryAxis*>(axis)) {
+            impl_->category_font = categories->labelsFont();
+        }
         impl_->chart->addAxis(axis, side == Side::left ? Qt::AlignLeft : Qt::AlignRight);
         if (side == Side::right) {
             // The left axis draws the grid; a second grid would only cost paint time.
@@ -383,7 +668,12 @@ void PlotView::set_y_axis(Side side, const AxisSpec& spec) {
             if (auto* log = qobject_cast<QLogValueAxis*>(axis)) log->setMinorTickCount(0);
         }
     }
-    Impl::style_axis(axis, spec);
+    if (impl_->title_font == QFont()) {
+        impl_->title_font = axis->titleFont();
+        impl_->title_font.setBold(false);
+    }
+    Impl::style_axis(axis, spec, impl_->title_font);
+    impl_->fit_titles();
 }
 
 void PlotView::set_x_range(double lo, double hi) {
@@ -412,6 +702,7 @@ void PlotView::set_y_categories(const QStringList& labels) {
     impl_->categories = labels;
     axis->setStartValue(-0.5);
     axis->setRange(-0.5, static_cast<qreal>(std::max<qsizetype>(labels.size(), 1)) - 0.5);
+    impl_->fit_categories();
 }
 
 PlotView::CurveId PlotView::add_line(const LineSpec& spec) {
@@ -474,19 +765,15 @@ void PlotView::set_name(CurveId curve, const QString& name) {
     if (c->shown->name() != name) c->shown->setName(name);
     // A curve named after it was added (a baseline named once translated) joins the legend.
     c->in_legend = !name.isEmpty();
-    impl_->show_in_legend(c->shown, c->in_legend && c->shown->isVisible());
+    impl_->refresh_legend();
 }
 
 void PlotView::set_visible(CurveId curve, bool visible) {
     Impl::Curve* c = impl_->find(curve);
     if (c == nullptr || c->shown->isVisible() == visible) return;
     c->shown->setVisible(visible);
-    // Qt Charts shows the marker again with the series; keep unnamed ones out.
-    impl_->show_in_legend(c->shown, visible && c->in_legend);
-    for (std::size_t k = 1; k < c->pieces.size(); ++k) {
-        c->pieces[k].series->setVisible(visible);
-        impl_->show_in_legend(c->pieces[k].series, false);
-    }
+    for (std::size_t k = 1; k < c->pieces.size(); ++k) c->pieces[k].series->setVisible(visible);
+    impl_->refresh_legend();
 }
 
 QList<QPointF> PlotView::points(CurveId curve) const {
@@ -505,12 +792,8 @@ bool PlotView::is_visible(CurveId curve) const {
 }
 
 QStringList PlotView::legend_texts() const {
-    QLegend* legend = impl_->chart->legend();
     QStringList texts;
-    if (!legend->isVisible()) return texts;
-    for (QLegendMarker* marker : legend->markers()) {
-        if (marker->isVisible()) texts.append(marker->label());
-    }
+    for (const Legend::Entry& e : impl_->legend->entries()) texts.append(e.name);
     return texts;
 }
 
@@ -528,6 +811,40 @@ QStringList PlotView::x_labels() const {
 
 QStringList PlotView::y_labels(Side side) const {
     return impl_->labels(side == Side::left ? Impl::Where::left : Impl::Where::right);
+}
+
+QStringList PlotView::texts() const {
+    QStringList out{impl_->chart->title()};
+    for (const QAbstractAxis* axis : {impl_->x_axis, impl_->y_left, impl_->y_right}) {
+        if (axis != nullptr) out << axis->titleText();
+    }
+    out << legend_texts() << impl_->categories;
+    out.removeAll(QString());
+    return out;
+}
+
+QStringList PlotView::cut_texts() const {
+    const QStringList drawn = impl_->drawn_texts();
+    QStringList cut;
+    const auto whole = [&](const QString& text) {
+        if (!text.isEmpty() && !drawn.contains(plain(text))) cut << text;
+    };
+    whole(impl_->chart->title());
+    for (const QAbstractAxis* axis : {impl_->x_axis, impl_->y_left, impl_->y_right}) {
+        if (axis != nullptr && axis->isVisible() && axis->isTitleVisible())
+            whole(axis->titleText());
+    }
+    if (qobject_cast<const QCategoryAxis*>(impl_->y_left) != nullptr) {
+        const QStringList shown = y_labels(Side::left);
+        for (const QString& label : impl_->categories) {
+            if (!shown.contains(plain(label))) cut << label;
+        }
+    }
+    for (const QString& text : drawn) {
+        if (elided(text)) cut << text;
+    }
+    if (impl_->legend->isVisible()) cut << impl_->legend->cut();
+    return cut;
 }
 
 }  // namespace probecycle::ui

@@ -55,8 +55,9 @@ class PlotView : public QWidget {
     void set_title(const QString& title);
     QString title() const;
     void set_legend_visible(bool visible);
-    // Below the plot (the default) or beside it on the right, one entry per
-    // line: the right suits a legend that is a colour scale.
+    // Below the plot (the default), wrapped into as many rows as its entries
+    // need, or beside it on the right, one entry per line: the right suits a
+    // legend that is a colour scale. Entries are never cut short.
     void set_legend_beside(bool beside);
 
     // Axes are created on the first call and only retitled/re-ranged later.
@@ -65,6 +66,7 @@ class PlotView : public QWidget {
     void set_x_range(double lo, double hi);
     void set_y_range(Side side, double lo, double hi);
     // Labels of a category y axis, bottom to top, placed at 0, 1, 2, ...
+    // Their font shrinks (to a readable floor) so that every row keeps its label.
     void set_y_categories(const QStringList& labels);
 
     // Curves must be added after the axes they use. A point that is not finite
@@ -98,6 +100,17 @@ class PlotView : public QWidget {
     // bottom to top. Labels the plot hides (overlapping, cut at an edge) are left out.
     QStringList x_labels() const;
     QStringList y_labels(Side side) const;
+    // The texts the plot shows only in part or not at all after the last
+    // layout: the title, axis titles and legend entries cut short, category
+    // labels dropped, tick labels elided. Empty when everything is whole.
+    QStringList cut_texts() const;
+    // Every text the plot has to show: its title, the axis titles, the legend
+    // entries and the category labels (for checks of the language in use).
+    QStringList texts() const;
+
+  protected:
+    // Axis labels follow the interface language's number format.
+    void changeEvent(QEvent* event) override;
 
   private:
     struct Impl;

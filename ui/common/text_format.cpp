@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QLocale>
+#include <algorithm>
 #include <cmath>
 
 #include "core/common/units.h"
@@ -11,16 +12,8 @@ namespace probecycle::ui {
 
 namespace {
 
-QString number(double value, int decimals) {
-    return QLocale().toString(value, 'f', decimals);
-}
-
 QString unit_us() {
     return QCoreApplication::translate("Parameter", "µs");
-}
-
-QString with_unit(const QString& value, const QString& unit) {
-    return value + QChar(0x00A0) + unit;  // no break between number and unit
 }
 
 QString tr_warning(const char* text) {
@@ -33,27 +26,66 @@ QString signed_prefix(double value) {
 
 }  // namespace
 
+QString format_number(double value, int decimals) {
+    const double shown = std::abs(value) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : value;
+    return QLocale().toString(shown, 'f', decimals);
+}
+
+QString with_unit(const QString& value, const QString& unit) {
+    return value + QChar(0x00A0) + unit;  // no break between number and unit
+}
+
+QStringList format_seconds_column(const std::vector<double>& seconds) {
+    double largest = 0.0;
+    double smallest = 0.0;
+    for (const double s : seconds) {
+        const double a = std::abs(s);
+        largest = std::max(largest, a);
+        if (a > 0.0 && (smallest == 0.0 || a < smallest)) smallest = a;
+    }
+    // The unit and decimals format_seconds gives the largest...
+    const bool in_ms = largest < 0.1 && largest >= 0.0001;
+    const bool in_us = largest < 0.0001 && largest > 0.0;
+    const double factor = in_us ? 1e6 : in_ms ? 1e3 : 1.0;
+    const QString unit = in_us ? unit_us() : in_ms ? unit_ms() : unit_s();
+    const double top = largest * factor;
+    int decimals = in_us   ? (top >= 10.0 ? 0 : 1)
+                   : in_ms ? (top >= 10.0 ? 1 : 2)
+                           : (top >= 10.0                ? 1
+                              : top >= 1.0 || top == 0.0 ? 2
+                                                         : 3);
+    // ... and more for the smallest, to two significant digits.
+    if (smallest > 0.0) {
+        const int needed = static_cast<int>(std::ceil(-std::log10(smallest * factor))) + 1;
+        decimals = std::clamp(needed, decimals, 4);
+    }
+    QStringList out;
+    out.reserve(static_cast<qsizetype>(seconds.size()));
+    for (const double s : seconds) out << with_unit(format_number(s * factor, decimals), unit);
+    return out;
+}
+
 QString format_seconds(double seconds) {
     const double a = std::abs(seconds);
     // Three significant figures, in s down to 0.1 s, then ms, then µs.
-    if (a >= 10.0) return with_unit(number(seconds, 1), unit_s());
-    if (a >= 1.0 || a == 0.0) return with_unit(number(seconds, 2), unit_s());
-    if (a >= 0.1) return with_unit(number(seconds, 3), unit_s());
+    if (a >= 10.0) return with_unit(format_number(seconds, 1), unit_s());
+    if (a >= 1.0 || a == 0.0) return with_unit(format_number(seconds, 2), unit_s());
+    if (a >= 0.1) return with_unit(format_number(seconds, 3), unit_s());
     if (a >= 0.0001) {
         const double ms = seconds * 1e3;
-        return with_unit(number(ms, std::abs(ms) >= 10.0 ? 1 : 2), unit_ms());
+        return with_unit(format_number(ms, std::abs(ms) >= 10.0 ? 1 : 2), unit_ms());
     }
     const double us = seconds * 1e6;
-    return with_unit(number(us, std::abs(us) >= 10.0 ? 0 : 1), unit_us());
+    return with_unit(format_number(us, std::abs(us) >= 10.0 ? 0 : 1), unit_us());
 }
 
 QString format_mm(double mm) {
-    return with_unit(number(mm, 3), unit_mm());
+    return with_unit(format_number(mm, 3), unit_mm());
 }
 
 QString format_um(double mm) {
     const double um = mm * 1000.0;
-    return with_unit(number(um, std::abs(um) < 1.0 ? 3 : 1), unit_um());
+    return with_unit(format_number(um, std::abs(um) < 1.0 ? 3 : 1), unit_um());
 }
 
 QString format_length(double mm) {
@@ -61,7 +93,7 @@ QString format_length(double mm) {
 }
 
 QString format_feed(double mm_min) {
-    return with_unit(number(mm_min, std::abs(mm_min) >= 100.0 ? 0 : 1), unit_mm_min());
+    return with_unit(format_number(mm_min, std::abs(mm_min) >= 100.0 ? 0 : 1), unit_mm_min());
 }
 
 QString format_signed_seconds(double seconds) {
@@ -107,13 +139,13 @@ QString format_arg(const MessageArg& a) {
         case ArgKind::feed_mm_min:
             return format_feed(a.number);
         case ArgKind::angle_deg:
-            return number(a.number, a.decimals < 0 ? 1 : a.decimals) + QChar(0x00B0);
+            return format_number(a.number, a.decimals < 0 ? 1 : a.decimals) + QChar(0x00B0);
         case ArgKind::percent:
-            return with_unit(number(a.number, a.decimals < 0 ? 0 : a.decimals),
+            return with_unit(format_number(a.number, a.decimals < 0 ? 0 : a.decimals),
                              QStringLiteral("%"));
         case ArgKind::number:
             return a.decimals < 0 ? QLocale().toString(a.number, 'g', a.significant)
-                                  : number(a.number, a.decimals);
+                                  : format_number(a.number, a.decimals);
         case ArgKind::integer:
             return QLocale().toString(static_cast<qlonglong>(std::llround(a.number)));
         case ArgKind::message:

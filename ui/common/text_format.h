@@ -4,12 +4,21 @@
 // with units, converted from the core's internal units at this edge only.
 
 #include <QString>
+#include <QStringList>
+#include <vector>
 
 #include "core/cycle/cycle.h"
 
 namespace probecycle::ui {
 
-QString format_seconds(double seconds);         // "4.93 s", "12.0 ms", "40 µs"
+// Every number the window shows goes through these, in the interface
+// language's format (QLocale(), set by apply_language): "0,5" in Russian.
+QString format_number(double value, int decimals);             // "-0.0" shown as "0.0"
+QString with_unit(const QString& value, const QString& unit);  // no break between them
+QString format_seconds(double seconds);                        // "4.93 s", "12.0 ms", "40 µs"
+// Times that stand in one column: all in the unit format_seconds gives the
+// largest, with the decimals the smallest non-zero one needs (at most 4).
+QStringList format_seconds_column(const std::vector<double>& seconds);
 QString format_mm(double mm);                   // "1.274 mm"
 QString format_um(double mm);                   // "3.2 µm"
 QString format_length(double mm);               // mm, or µm below 0.1 mm

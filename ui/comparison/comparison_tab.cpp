@@ -66,13 +66,8 @@ int class_of(double deviation_mm, double tolerance_mm) {
     return c;
 }
 
-QString number(double value, int decimals) {
-    const double shown = std::abs(value) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : value;
-    return QLocale().toString(shown, 'f', decimals);
-}
-
 QString um(double mm, int decimals = 1) {
-    return number(mm * 1000.0, decimals) + QChar(0x00A0) + unit_um();
+    return format_number(mm * 1000.0, decimals) + QChar(0x00A0) + unit_um();
 }
 
 // Reads one input file whole (FileError names it) and parses it.
@@ -125,6 +120,7 @@ QGroupBox* ComparisonTab::build_input_group() {
     for (int i = 0; i < kInputFiles; ++i) {
         const auto k = static_cast<std::size_t>(i);
         file_labels_[k] = new QLabel(input_group_);
+        file_labels_[k]->setWordWrap(true);  // long Russian labels take two lines
         file_edits_[k] = new QLineEdit(input_group_);
         file_edits_[k]->setObjectName(QStringLiteral("comparison-file-%1").arg(i));
         file_edits_[k]->setClearButtonEnabled(true);
@@ -518,22 +514,21 @@ bool ComparisonTab::simulate_example(const QString& folder) {
 
 bool ComparisonTab::export_report(const QString& path) {
     if (!result_) {
-        last_error_ = tr("Nothing to export: run the comparison first.");
-        show_error(export_status_, last_error_);
+        show_live_error(export_status_, [this] {
+            return last_error_ = tr("Nothing to export: run the comparison first.");
+        });
         return false;
     }
     try {
         write_file_atomically(QFile::encodeName(path).toStdString(),
                               comparison_report_csv(input_, *result_));
-    } catch (const std::exception& e) {
-        last_error_ = lab_error_text(e);
-        show_error(export_status_, last_error_);
+    } catch (const std::exception&) {
+        show_live_error(export_status_,
+                        [this, error = current_error_text()] { return last_error_ = error(); });
         return false;
     }
     remember_folder_of(path);
-    export_status_->setStyleSheet({});
-    export_status_->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
-    export_status_->show();
+    show_saved(export_status_, path);
     return true;
 }
 
@@ -703,10 +698,11 @@ void ComparisonTab::fill_tables() {
         const std::optional<CAxisErrors>& u = result_->c_axis.uncertainty;
         if (r < 3) {
             set(c_axis_table_, r, 1,
-                number(value * 1e6, 2) + QChar(0x00A0) + urad + QStringLiteral(" (") +
-                    number(value * kArcsecPerRad, 2) + QStringLiteral("″)"));
+                format_number(value * 1e6, 2) + QChar(0x00A0) + urad + QStringLiteral(" (") +
+                    format_number(value * kArcsecPerRad, 2) + QStringLiteral("″)"));
             set(c_axis_table_, r, 2,
-                u ? QStringLiteral("± ") + number(u->vector()(r) * 1e6, 2) + QChar(0x00A0) + urad
+                u ? QStringLiteral("± ") + format_number(u->vector()(r) * 1e6, 2) + QChar(0x00A0) +
+                        urad
                   : tr("unknown"));
         } else {
             set(c_axis_table_, r, 1, um(value, 2));
@@ -757,9 +753,9 @@ void ComparisonTab::fill_tables() {
         index->setData(Qt::UserRole, static_cast<int>(i + 1));
         index->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         point_table_->setItem(row, 0, index);
-        set(point_table_, row, 1, number(p.nominal.x(), 2));
-        set(point_table_, row, 2, number(p.nominal.y(), 2));
-        set(point_table_, row, 3, number(p.nominal.z(), 2));
+        set(point_table_, row, 1, format_number(p.nominal.x(), 2));
+        set(point_table_, row, 2, format_number(p.nominal.y(), 2));
+        set(point_table_, row, 3, format_number(p.nominal.z(), 2));
         set(point_table_, row, 4, um(p.deviation_mm));
         set(point_table_, row, 5, um(p.system_error_mm));
         set(point_table_, row, 6, um(p.direct_deviation_mm));
@@ -787,7 +783,7 @@ void ComparisonTab::draw_map() {
     }
     // Legend: each class's range in µm, out of tolerance at the ends.
     const auto edge = [tolerance](std::size_t k) {
-        return number(kClassEdges[k] * tolerance * 1000.0, 1);
+        return format_number(kClassEdges[k] * tolerance * 1000.0, 1);
     };
     for (std::size_t c = 0; c < classes.size(); ++c) {
         map_->set_points(class_curves_[c], classes[c]);

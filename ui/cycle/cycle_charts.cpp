@@ -505,13 +505,20 @@ void CycleCharts::draw_phases(const Computed& c) {
     }
     QStringList labels;
     labels.resize(rows);
+    // Issue 12: one unit down the column of times, not s and ms mixed.
+    std::vector<double> times(static_cast<std::size_t>(rows));
+    for (Phase phase : all_phases()) {
+        const int row = order[static_cast<std::size_t>(phase)];
+        if (row >= 0) times[static_cast<std::size_t>(row)] = cycle.phase_time(phase);
+    }
+    const QStringList shown_times = format_seconds_column(times);
     for (Phase phase : all_phases()) {
         const std::size_t k = static_cast<std::size_t>(phase);
         const int row = order[k];
         phase_present_[k] = row >= 0;
         if (row >= 0) {
-            labels[rows - 1 - row] = phase_label(phase) + QStringLiteral(" \u00b7 ") +
-                                     format_seconds(cycle.phase_time(phase));
+            labels[rows - 1 - row] =
+                phase_label(phase) + QStringLiteral(" \u00b7 ") + shown_times.at(row);
         }
         phase_upper_[k].clear();
         phase_lower_[k].clear();

@@ -390,7 +390,7 @@ bool CalibrationTab::fit() {
 }
 
 bool CalibrationTab::import_file(const QString& path) {
-    QString error;
+    LiveText error;
     const std::optional<QString> text = import_csv_into(points_edit_, path, error);
     if (!text) {
         set_error(error);
@@ -407,10 +407,13 @@ bool CalibrationTab::fit_text(const QString& text, const QString& source) {
     try {
         points = parse_ring_csv(text.toStdString());
         result = calibrate_ring(points, options);
-    } catch (const std::exception& e) {
+    } catch (const std::exception&) {
         // CsvError names the line and column; InputError says what is wrong.
-        const QString message = lab_error_text(e);
-        set_error(source.isEmpty() ? message : tr("%1: %2").arg(source, message));
+        LiveText message = current_error_text();
+        if (!source.isEmpty()) {
+            message = [source, message] { return tr("%1: %2").arg(source, message()); };
+        }
+        set_error(std::move(message));
         return false;
     }
     points_ = std::move(points);
@@ -428,8 +431,8 @@ bool CalibrationTab::refit() {
         RingCalibration result = calibrate_ring(points_, options);
         options_ = options;
         result_ = std::move(result);
-    } catch (const std::exception& e) {
-        set_error(lab_error_text(e));
+    } catch (const std::exception&) {
+        set_error(current_error_text());
         return false;
     }
     set_error({});
@@ -437,13 +440,15 @@ bool CalibrationTab::refit() {
     return true;
 }
 
-void CalibrationTab::set_error(const QString& text) {
-    last_error_ = text;
-    QString shown = text;
-    if (!text.isEmpty() && result_) {
-        shown += QLatin1Char('\n') + tr("The result shown is still that of the previous fit.");
-    }
-    show_error(error_label_, shown);
+void CalibrationTab::set_error(LiveText text) {
+    // Built again after a language switch, with the note as it stood.
+    const bool previous = text && result_;
+    show_live_error(error_label_, [this, text = std::move(text), previous] {
+        last_error_ = text ? text() : QString();
+        return previous ? last_error_ + QLatin1Char('\n') +
+                              tr("The result shown is still that of the previous fit.")
+                        : last_error_;
+    });
 }
 
 void CalibrationTab::show_result() {
@@ -767,8 +772,10 @@ void CalibrationTab::compute_length() {
 
 bool CalibrationTab::export_report(const QString& path) {
     if (!result_ && !length_result_) {
-        last_error_ = tr("Nothing to export: fit the ring points or enter a length first.");
-        show_error(export_status_, last_error_);
+        show_live_error(export_status_, [this] {
+            return last_error_ =
+                       tr("Nothing to export: fit the ring points or enter a length first.");
+        });
         return false;
     }
     std::optional<RingReportInput> ring;
@@ -779,15 +786,13 @@ bool CalibrationTab::export_report(const QString& path) {
     try {
         write_file_atomically(QFile::encodeName(path).toStdString(),
                               calibration_report_csv(ring, length));
-    } catch (const std::exception& e) {
-        last_error_ = lab_error_text(e);
-        show_error(export_status_, last_error_);
+    } catch (const std::exception&) {
+        show_live_error(export_status_,
+                        [this, error = current_error_text()] { return last_error_ = error(); });
         return false;
     }
     remember_folder_of(path);
-    export_status_->setStyleSheet({});
-    export_status_->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
-    export_status_->show();
+    show_saved(export_status_, path);
     return true;
 }
 

@@ -17,6 +17,7 @@
 #include <QString>
 #include <QStringList>
 #include <QWidget>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -117,7 +118,7 @@ class CalibrationTab : public QWidget {
     void connect_inputs();
     bool fit_text(const QString& text, const QString& source);
     bool refit();
-    void set_error(const QString& text);
+    void set_error(std::function<QString()> text);
     RingCalibrationOptions options() const;
     void show_result();
     void draw();

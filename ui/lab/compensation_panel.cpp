@@ -67,10 +67,6 @@ QString method_legend(CompensationMethod method) {
     return {};
 }
 
-QString number(double value, int decimals) {
-    return QLocale().toString(value, 'f', decimals);
-}
-
 }  // namespace
 
 CompensationPanel::CompensationPanel(QWidget* parent) : QGroupBox(parent) {
@@ -460,7 +456,7 @@ void CompensationPanel::show_comparison() {
         const int row = static_cast<int>(m);
         if (comparison_) {
             const MethodResult& r = comparison_->methods[m];
-            methods_table_->item(row, 1)->setText(number(r.position_mm, 4));
+            methods_table_->item(row, 1)->setText(format_number(r.position_mm, 4));
             methods_table_->item(row, 2)->setText(lab_signed_um(r.error_mm));
         } else {
             methods_table_->item(row, 1)->setText(QStringLiteral("—"));
@@ -472,9 +468,9 @@ void CompensationPanel::show_comparison() {
         //: %1 speed at the trigger, %2 lag in cycles, %3 speed then, %4 the delay v·τ uses
         QString text = tr("Trigger at %1 mm/s, recorded %2 cycles later at %3 mm/s; v·τ "
                           "uses τ = %4.")
-                           .arg(number(c.trigger_speed_mm_s, 1))
+                           .arg(format_number(c.trigger_speed_mm_s, 1))
                            .arg(current.lag_cycles)
-                           .arg(number(c.recorded_speed_mm_s, 1), lab_ms(c.naive_delay_s));
+                           .arg(format_number(c.recorded_speed_mm_s, 1), lab_ms(c.naive_delay_s));
         if (c.counter_wraps > 0) {
             text += QLatin1Char(' ') + tr("Counter roll-overs: %1.").arg(c.counter_wraps);
         }

@@ -37,10 +37,6 @@ constexpr double kMmToUm = 1000.0;
 
 enum TreeColumn { col_name, col_delay, col_lag, col_position, col_stability, col_n, col_count };
 
-QString number(double value, int decimals) {
-    return QLocale().toString(value, 'f', decimals);
-}
-
 }  // namespace
 
 DelayFitPanel::DelayFitPanel(QWidget* parent) : QGroupBox(parent) {
@@ -253,8 +249,8 @@ void DelayFitPanel::apply_period() {
         DelayFit fit = fit_delay(touches_, options);
         fit_options_ = options;
         fit_ = std::move(fit);
-    } catch (const std::exception& e) {
-        set_error(lab_error_text(e));
+    } catch (const std::exception&) {
+        set_error(current_error_text());
         return;
     }
     show_fit();
@@ -265,7 +261,7 @@ bool DelayFitPanel::fit() {
 }
 
 bool DelayFitPanel::import_file(const QString& path) {
-    QString error;
+    LiveText error;
     const std::optional<QString> text = import_csv_into(touches_edit_, path, error);
     if (!text) {
         set_error(error);
@@ -285,9 +281,12 @@ bool DelayFitPanel::fit_text(const QString& text, const QString& source) {
     try {
         touches = parse_delay_csv(text.toStdString());
         fit = fit_delay(touches, options);
-    } catch (const std::exception& e) {
-        const QString message = lab_error_text(e);
-        set_error(source.isEmpty() ? message : tr("%1: %2").arg(source, message));
+    } catch (const std::exception&) {
+        LiveText message = current_error_text();
+        if (!source.isEmpty()) {
+            message = [source, message] { return tr("%1: %2").arg(source, message()); };
+        }
+        set_error(std::move(message));
         return false;
     }
     touches_ = std::move(touches);
@@ -329,13 +328,15 @@ bool DelayFitPanel::restore(const DelaySession& session) {
     return fitted;
 }
 
-void DelayFitPanel::set_error(const QString& text) {
-    last_error_ = text;
-    QString shown = text;
-    if (!text.isEmpty() && fit_) {
-        shown += QLatin1Char('\n') + tr("The result shown is still that of the previous fit.");
-    }
-    show_error(error_label_, shown);
+void DelayFitPanel::set_error(LiveText text) {
+    // Built again after a language switch, with the note as it stood.
+    const bool previous = text && fit_;
+    show_live_error(error_label_, [this, text = std::move(text), previous] {
+        last_error_ = text ? text() : QString();
+        return previous ? last_error_ + QLatin1Char('\n') +
+                              tr("The result shown is still that of the previous fit.")
+                        : last_error_;
+    });
 }
 
 void DelayFitPanel::show_fit() {
@@ -347,7 +348,8 @@ void DelayFitPanel::show_fit() {
             auto* top = new QTreeWidgetItem(tree_);
             top->setText(col_name, name);
             top->setText(col_delay, lab_ms(g.delay_s));
-            top->setText(col_lag, g.lag_cycles ? number(*g.lag_cycles, 2) : QStringLiteral("—"));
+            top->setText(col_lag,
+                         g.lag_cycles ? format_number(*g.lag_cycles, 2) : QStringLiteral("—"));
             top->setText(col_position, lab_mm(g.zero_speed_position_mm));
             top->setText(col_stability,
                          g.residual_2sigma_mm
@@ -355,7 +357,7 @@ void DelayFitPanel::show_fit() {
                              : QStringLiteral("—"));
             std::size_t n = 0;
             for (const FeedScatter& f : g.feeds) n += f.n;
-            top->setText(col_n, QString::number(n));
+            top->setText(col_n, QLocale().toString(n));
             QFont bold = top->font(col_name);
             bold.setBold(true);
             for (int c = 0; c < col_count; ++c) top->setFont(c, bold);
@@ -364,7 +366,7 @@ void DelayFitPanel::show_fit() {
                 child->setText(col_name, format_feed(f.feed_mm_min));
                 child->setText(col_position, lab_signed_um(f.mean_mm - g.zero_speed_position_mm));
                 child->setText(col_stability, lab_signed_um(f.range_mm).remove(QLatin1Char('+')));
-                child->setText(col_n, QString::number(f.n));
+                child->setText(col_n, QLocale().toString(f.n));
             }
             for (int c = col_delay; c < col_count; ++c) {
                 top->setTextAlignment(c, Qt::AlignRight | Qt::AlignVCenter);

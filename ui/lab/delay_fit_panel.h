@@ -16,6 +16,7 @@
 #include <QPointF>
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -113,7 +114,7 @@ class DelayFitPanel : public QGroupBox {
     void build_plot();
     bool fit_text(const QString& text, const QString& source);
     void apply_period();
-    void set_error(const QString& text);
+    void set_error(std::function<QString()> text);
     void show_fit();
     void draw_fit();
     void update_apply();

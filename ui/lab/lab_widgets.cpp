@@ -15,6 +15,7 @@
 #include "core/common/file_io.h"
 #include "core/common/input_error.h"
 #include "core/cycle/scenario.h"
+#include "ui/common/language.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/text_format.h"
 
@@ -24,10 +25,6 @@ namespace {
 
 QString tr_lab(const char* text) {
     return QCoreApplication::translate("probecycle::ui::Lab", text);
-}
-
-QString with_unit(const QString& value, const QString& unit) {
-    return value + QChar(0x00A0) + unit;  // no break between number and unit
 }
 
 }  // namespace
@@ -186,15 +183,17 @@ void replace_text_undoably(QPlainTextEdit* editor, const QString& text) {
 }
 
 std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& path,
-                                       QString& error) {
+                                       LiveText& error) {
     // Core's reader, as the CLI's: the same size limit (a 1 GB file once ended
     // in bad_alloc) and the same reasons, translated.
     std::string bytes;
     try {
         bytes = read_text_file(QFile::encodeName(path).toStdString());
     } catch (const FileError& e) {
-        error = tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "%1 could not be read: %2"))
-                    .arg(QFileInfo(path).fileName(), translate(e.reason()));
+        error = [name = QFileInfo(path).fileName(), reason = e.reason()] {
+            return tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "%1 could not be read: %2"))
+                .arg(name, translate(reason));
+        };
         return std::nullopt;
     }
     const QString text = QString::fromStdString(bytes);
@@ -236,8 +235,35 @@ QString lab_error_text(const std::exception& error) {
         .arg(QString::fromLocal8Bit(error.what()));
 }
 
+LiveText current_error_text() {
+    return [error = std::current_exception()]() -> QString {
+        try {
+            if (error) std::rethrow_exception(error);
+        } catch (const std::exception& e) {
+            return lab_error_text(e);
+        } catch (...) {
+            return tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Unexpected error: %1"))
+                .arg(QStringLiteral("?"));
+        }
+        return {};
+    };
+}
+
+void show_live_error(QLabel* label, LiveText text) {
+    keep_translated(
+        label, [label, text = std::move(text)] { show_error(label, text ? text() : QString()); });
+}
+
+void show_saved(QLabel* label, const QString& path) {
+    keep_translated(label, [label, name = QFileInfo(path).fileName()] {
+        label->setStyleSheet({});
+        label->setText(tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "Saved %1")).arg(name));
+        label->show();
+    });
+}
+
 QString lab_mm(double mm, int decimals) {
-    return with_unit(QLocale().toString(mm, 'f', decimals), unit_mm());
+    return with_unit(format_number(mm, decimals), unit_mm());
 }
 
 QString lab_signed_um(double mm) {
@@ -245,7 +271,7 @@ QString lab_signed_um(double mm) {
     const QString sign = um > 0.0   ? QStringLiteral("+")
                          : um < 0.0 ? QStringLiteral("\u2212")
                                     : QString();
-    return sign + with_unit(QLocale().toString(std::abs(um), 'f', 1), unit_um());
+    return sign + with_unit(format_number(std::abs(um), 1), unit_um());
 }
 
 QString lab_signed_length(double mm) {
@@ -255,7 +281,7 @@ QString lab_signed_length(double mm) {
 }
 
 QString lab_ms(double seconds) {
-    return with_unit(QLocale().toString(seconds * 1000.0, 'f', 3), unit_ms());
+    return with_unit(format_number(seconds * 1000.0, 3), unit_ms());
 }
 
 }  // namespace probecycle::ui

@@ -75,10 +75,15 @@ QPlainTextEdit* make_csv_editor(QWidget* parent);
 // Replaces the editor's text as one undoable edit (setPlainText would drop
 // the undo history, and with it what the user had pasted).
 void replace_text_undoably(QPlainTextEdit* editor, const QString& text);
+// A message built when shown, so that it can be built again in the language
+// chosen later (keep_translated in ui/common/language.h).
+using LiveText = std::function<QString()>;
+
 // Reads a CSV file into a paste box as one undoable edit: a bad file's named
 // line can then be corrected there, and undo brings back what was pasted.
 // Returns the text, or nullopt with `error` saying why the file was unreadable.
-std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& path, QString& error);
+std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& path,
+                                       LiveText& error);
 
 // A message in the error colour.
 void show_error(QLabel* label, const QString& text);
@@ -86,6 +91,12 @@ void show_error(QLabel* label, const QString& text);
 // ScenarioError and FileError carry messages (translate()); anything else is
 // unexpected and shown as such.
 QString lab_error_text(const std::exception& error);
+// lab_error_text of the exception being handled, built anew at each call.
+LiveText current_error_text();
+// Shows `text` in `label` in the error colour, again after each language switch.
+void show_live_error(QLabel* label, LiveText text);
+// "Saved FILE" in `label`, again after each language switch.
+void show_saved(QLabel* label, const QString& path);
 
 // Lengths and times at the resolution calibration needs (4 decimals in mm,
 // 0.1 µm), in the interface language.

@@ -105,6 +105,12 @@ QString read_file(const QString& path, QString& error) {
     return QString::fromUtf8(file.readAll());
 }
 
+// A scenario key's label in the interface language.
+QString key_label(const QString& key) {
+    const KeyInfo* info = find_any_key(key.toStdString());
+    return info != nullptr ? QCoreApplication::translate("Parameter", info->label) : key;
+}
+
 // Every problem of a refused scenario, one a line, in the interface language.
 QString error_list(const ScenarioError& error) {
     QStringList lines;
@@ -246,7 +252,7 @@ void MainWindow::build_ui() {
             [this](const QString& key, double value_s) {
                 Scenario s = scenario_;
                 if (!set_number(s, key.toStdString(), value_s)) return;
-                edit_scenario(s, tr("apply the measured delay"));
+                edit_scenario(s, [] { return tr("apply the measured delay"); });
             });
     tabs_ = new QTabWidget;
     tabs_->setObjectName(QStringLiteral("tabs"));
@@ -479,6 +485,15 @@ void MainWindow::retranslate() {
 
 void MainWindow::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) {
+        // Texts built at run time: the undo steps' and the status bar's.
+        for (int i = 0; i < undo_->count(); ++i) {
+            // The stack holds ScenarioCommands only, and hands them out const.
+            const auto* command = static_cast<const ScenarioCommand*>(undo_->command(i));
+            const_cast<ScenarioCommand*>(command)->retranslate();
+        }
+        if (status_.make && !statusBar()->currentMessage().isEmpty()) {
+            statusBar()->showMessage(status_.make(), status_.timeout_ms);
+        }
         retranslate();
         if (recompute_count_ > 0) schedule_recompute();  // texts built from numbers
     }
@@ -644,18 +659,18 @@ void MainWindow::apply_scenario(const Scenario& scenario) {
 }
 
 void MainWindow::on_panel_edit(const Scenario& scenario, const QString& key) {
-    QString label = key;
-    if (const KeyInfo* info = find_any_key(key.toStdString())) {
-        label = QCoreApplication::translate("Parameter", info->label);
-    }
     undo_->push(new ScenarioCommand([this](const Scenario& s) { apply_scenario(s); }, scenario_,
-                                    scenario, tr("change %1").arg(label),
+                                    scenario, [key] { return tr("change %1").arg(key_label(key)); },
                                     ScenarioCommand::merge_id_for(key)));
 }
 
 void MainWindow::edit_scenario(const Scenario& scenario, const QString& description) {
+    edit_scenario(scenario, [description] { return description; });
+}
+
+void MainWindow::edit_scenario(const Scenario& scenario, std::function<QString()> describe) {
     undo_->push(new ScenarioCommand([this](const Scenario& s) { apply_scenario(s); }, scenario_,
-                                    scenario, description));
+                                    scenario, std::move(describe)));
 }
 
 void MainWindow::schedule_recompute() {
@@ -681,11 +696,11 @@ void MainWindow::recompute() {
 
 // --- files ----------------------------------------------------------------
 
-void MainWindow::report_error(const QString& title, const QString& text) {
+void MainWindow::report_error(const char* title, const QString& text) {
     last_error_ = text;
-    statusBar()->showMessage(title, 8000);
+    show_status([title] { return tr(title); }, 8000);
     if (!options_.show_dialogs) return;
-    auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
+    auto* box = new QMessageBox(QMessageBox::Warning, tr(title), text, QMessageBox::Ok, this);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
 }
@@ -702,8 +717,9 @@ bool MainWindow::new_scenario() {
     if (!settle_unsaved_changes()) return false;
     document_is_project_ = false;  // the lab's data stays, outside any file
     reset_document(Scenario{}, QString());
-    statusBar()->showMessage(
-        tr("Default scenario: typical values, to be replaced with measured ones"), 6000);
+    show_status(
+        [] { return tr("Default scenario: typical values, to be replaced with measured ones"); },
+        6000);
     return true;
 }
 
@@ -713,7 +729,7 @@ bool MainWindow::open_scenario(const QString& path) {
     try {
         text = read_text_file(QFile::encodeName(path).toStdString());
     } catch (const FileError& e) {
-        report_error(tr("Could not open the scenario"),
+        report_error(QT_TR_NOOP("Could not open the scenario"),
                      tr("%1 could not be read: %2")
                          .arg(QDir::toNativeSeparators(path), translate(e.reason())));
         return false;
@@ -729,7 +745,8 @@ bool MainWindow::open_scenario(const QString& path) {
     } catch (const ScenarioError& e) {
         // Each line names the key, the value and what is allowed, translated.
         report_error(
-            project ? tr("Could not open the project") : tr("Could not open the scenario"),
+            project ? QT_TR_NOOP("Could not open the project")
+                    : QT_TR_NOOP("Could not open the scenario"),
             (project ? tr("%1 is not a valid project:\n%2") : tr("%1 is not a valid scenario:\n%2"))
                 .arg(QDir::toNativeSeparators(path), error_list(e)));
         return false;
@@ -742,7 +759,7 @@ bool MainWindow::open_scenario(const QString& path) {
     if (project) saved_lab_ = lab_snapshot();
     remember_recent(current_file_);
     remember_folder_of(path);
-    statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), 4000);
+    show_status([path] { return tr("Opened %1").arg(QDir::toNativeSeparators(path)); }, 4000);
     return true;
 }
 
@@ -760,7 +777,7 @@ bool MainWindow::open_asking(const QString& path) {
 bool MainWindow::save_scenario(const QString& path) {
     QString error;
     if (!write_file(path, QByteArray::fromStdString(scenario_to_json(scenario_)), error)) {
-        report_error(tr("Could not save the scenario"),
+        report_error(QT_TR_NOOP("Could not save the scenario"),
                      tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
@@ -770,7 +787,7 @@ bool MainWindow::save_scenario(const QString& path) {
     remember_recent(current_file_);
     remember_folder_of(path);
     update_title();
-    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 4000);
+    show_status([path] { return tr("Saved %1").arg(QDir::toNativeSeparators(path)); }, 4000);
     return true;
 }
 
@@ -779,7 +796,7 @@ bool MainWindow::save_project(const QString& path) {
     QString error;
     const std::string text = project_json(project_state(QFileInfo(absolute).absolutePath()));
     if (!write_file(path, QByteArray::fromStdString(text), error)) {
-        report_error(tr("Could not save the project"),
+        report_error(QT_TR_NOOP("Could not save the project"),
                      tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
@@ -790,7 +807,7 @@ bool MainWindow::save_project(const QString& path) {
     remember_recent(current_file_);
     remember_folder_of(path);
     update_title();
-    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 4000);
+    show_status([path] { return tr("Saved %1").arg(QDir::toNativeSeparators(path)); }, 4000);
     return true;
 }
 
@@ -826,7 +843,7 @@ bool MainWindow::export_csv_report(const QString& path) {
     recompute_now();
     const Computed& c = computation_.result();
     if (!c.valid()) {
-        report_error(tr("Could not export the report"),
+        report_error(QT_TR_NOOP("Could not export the report"),
                      tr("The scenario is not valid; see the warnings panel."));
         return false;
     }
@@ -834,12 +851,13 @@ bool MainWindow::export_csv_report(const QString& path) {
     const std::string csv = csv_report(c.scenario, c.analysis, feeds);
     QString error;
     if (!write_file(path, QByteArray::fromStdString(csv), error)) {
-        report_error(tr("Could not export the report"),
+        report_error(QT_TR_NOOP("Could not export the report"),
                      tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
     remember_folder_of(path);
-    statusBar()->showMessage(tr("Report written to %1").arg(QDir::toNativeSeparators(path)), 4000);
+    show_status([path] { return tr("Report written to %1").arg(QDir::toNativeSeparators(path)); },
+                4000);
     return true;
 }
 
@@ -890,12 +908,13 @@ bool MainWindow::export_charts_png(const QString& path, int width) {
         error = tr("the image could not be encoded as PNG");
     }
     if (!error.isEmpty() || !write_file(path, png, error)) {
-        report_error(tr("Could not export the charts"),
+        report_error(QT_TR_NOOP("Could not export the charts"),
                      tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
     remember_folder_of(path);
-    statusBar()->showMessage(tr("Charts written to %1").arg(QDir::toNativeSeparators(path)), 4000);
+    show_status([path] { return tr("Charts written to %1").arg(QDir::toNativeSeparators(path)); },
+                4000);
     return true;
 }
 
@@ -903,7 +922,7 @@ bool MainWindow::apply_preset(const QString& resource_path) {
     QString error;
     const QString text = read_file(resource_path, error);
     if (!error.isEmpty()) {
-        report_error(tr("Could not apply the preset"), error);
+        report_error(QT_TR_NOOP("Could not apply the preset"), error);
         return false;
     }
     // Only the keys the preset names change; everything else stays as the user set it.
@@ -911,26 +930,39 @@ bool MainWindow::apply_preset(const QString& resource_path) {
     try {
         next = merge_json(scenario_, text.toStdString());
     } catch (const ScenarioError& e) {
-        report_error(tr("Could not apply the preset"), error_list(e));
+        report_error(QT_TR_NOOP("Could not apply the preset"), error_list(e));
         return false;
     }
-    QString name = QFileInfo(resource_path).baseName();
-    for (const PresetDef& def : kMachinePresets) {
-        if (resource_path == QLatin1String(def.path)) name = tr(def.name);
-    }
-    for (const PresetDef& def : kProbePresets) {
-        if (resource_path == QLatin1String(def.path)) name = tr(def.name);
-    }
     last_preset_changes_ = changed_keys(scenario_, next);
-    edit_scenario(next, tr("preset %1").arg(name));
+    edit_scenario(next,
+                  [resource_path] { return tr("preset %1").arg(preset_name(resource_path)); });
     // Say what it overwrote (a measured latency, say): Undo brings it back.
-    statusBar()->showMessage(
-        last_preset_changes_.isEmpty()
-            ? tr("%1: nothing to change, the values are already the preset's").arg(name)
-            : tr("%1: typical values applied (Undo restores): %2")
-                  .arg(name, last_preset_changes_.join(QStringLiteral("; "))),
+    show_status(
+        [resource_path, before = scenario_, next] {
+            const QString name = preset_name(resource_path);
+            const QStringList changes = changed_keys(before, next);
+            return changes.isEmpty()
+                       ? tr("%1: nothing to change, the values are already the preset's").arg(name)
+                       : tr("%1: typical values applied (Undo restores): %2")
+                             .arg(name, changes.join(QStringLiteral("; ")));
+        },
         20000);
     return true;
+}
+
+QString MainWindow::preset_name(const QString& resource_path) {
+    for (const PresetDef& def : kMachinePresets) {
+        if (resource_path == QLatin1String(def.path)) return tr(def.name);
+    }
+    for (const PresetDef& def : kProbePresets) {
+        if (resource_path == QLatin1String(def.path)) return tr(def.name);
+    }
+    return QFileInfo(resource_path).baseName();
+}
+
+void MainWindow::show_status(std::function<QString()> make, int timeout_ms) {
+    status_ = {std::move(make), timeout_ms};
+    statusBar()->showMessage(status_.make(), timeout_ms);
 }
 
 void MainWindow::remember_recent(const QString& path) {
@@ -1028,7 +1060,8 @@ void MainWindow::pin_baseline() {
     baseline_ = computation_.result();
     charts_->set_baseline(&*baseline_);
     unpin_->setEnabled(true);
-    statusBar()->showMessage(tr("Baseline pinned: change parameters to compare against it"), 6000);
+    show_status([] { return tr("Baseline pinned: change parameters to compare against it"); },
+                6000);
     schedule_recompute();
 }
 
@@ -1080,24 +1113,22 @@ bool MainWindow::apply_fix_for(const QString& warning_code) {
     recompute_now();
     const std::optional<Fix> fix = warnings_->fix_for(warning_code);
     if (!fix) return false;
-    QString text;
-    switch (fix->kind) {
-        case FixKind::backoff_to_recommended:
-            text = tr("set backoff to recommended");
-            break;
-        case FixKind::feed_to_knee:
-            text = tr("drop feed to the knee");
-            break;
-        case FixKind::feed_for_overtravel:
-            text = tr("drop feed for the overtravel");
-            break;
-        case FixKind::approach_to_reach_feed:
-            text = tr("start far enough out to reach the feed");
-            break;
-        case FixKind::none:
-            return false;
-    }
-    edit_scenario(fix->scenario, text);
+    if (fix->kind == FixKind::none) return false;
+    edit_scenario(fix->scenario, [kind = fix->kind] {
+        switch (kind) {
+            case FixKind::backoff_to_recommended:
+                return tr("set backoff to recommended");
+            case FixKind::feed_to_knee:
+                return tr("drop feed to the knee");
+            case FixKind::feed_for_overtravel:
+                return tr("drop feed for the overtravel");
+            case FixKind::approach_to_reach_feed:
+                return tr("start far enough out to reach the feed");
+            case FixKind::none:
+                break;
+        }
+        return QString();
+    });
     return true;
 }
 

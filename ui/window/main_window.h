@@ -15,6 +15,7 @@
 #include <QString>
 #include <QStringList>
 #include <QTimer>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -63,7 +64,9 @@ class MainWindow : public QMainWindow {
 
     const Scenario& scenario() const { return scenario_; }
     const Computed& computed() const { return computation_.result(); }
-    // An undoable change of the whole scenario.
+    // An undoable change of the whole scenario; `describe` builds its text in
+    // the language in effect (the undo step's text follows a language switch).
+    void edit_scenario(const Scenario& scenario, std::function<QString()> describe);
     void edit_scenario(const Scenario& scenario, const QString& description);
 
     // Files. Each returns false and reports through last_error() on failure;
@@ -153,7 +156,12 @@ class MainWindow : public QMainWindow {
     void schedule_recompute();
     void recompute();
     void reset_document(const Scenario& scenario, const QString& file);
-    void report_error(const QString& title, const QString& text);
+    // `title` untranslated (QT_TR_NOOP): the status bar shows it in the
+    // language in effect, also after a switch.
+    void report_error(const char* title, const QString& text);
+    // A status bar message that is built again after a language switch.
+    void show_status(std::function<QString()> make, int timeout_ms);
+    static QString preset_name(const QString& resource_path);
     void remember_recent(const QString& path);
     void update_title();
     void update_warning_counts();
@@ -194,6 +202,11 @@ class MainWindow : public QMainWindow {
     std::string empty_lab_;  // lab_snapshot() of a new window
     QString last_error_;
     QStringList recent_files_;
+    struct Status {
+        std::function<QString()> make;
+        int timeout_ms{0};
+    };
+    Status status_;
 
     QUndoStack* undo_{nullptr};
     ParameterPanel* panel_{nullptr};

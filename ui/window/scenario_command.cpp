@@ -10,9 +10,13 @@ constexpr qint64 kMergeWindow_ms = 1500;
 }  // namespace
 
 ScenarioCommand::ScenarioCommand(Apply apply, const Scenario& before, const Scenario& after,
-                                 const QString& text, int merge_id)
-    : apply_(std::move(apply)), before_(before), after_(after), merge_id_(merge_id) {
-    setText(text);
+                                 Describe describe, int merge_id)
+    : apply_(std::move(apply)),
+      describe_(std::move(describe)),
+      before_(before),
+      after_(after),
+      merge_id_(merge_id) {
+    retranslate();
     last_edit_.start();
 }
 

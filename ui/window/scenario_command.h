@@ -2,7 +2,8 @@
 
 // One undoable change of the scenario: the whole scenario before and after
 // (a few hundred bytes), so every kind of edit undoes the same way. A slider
-// drag is many edits of one key in a row; they merge into one step.
+// drag is many edits of one key in a row; they merge into one step. Its text
+// is built by a function, so that it can be built again in another language.
 
 #include <QElapsedTimer>
 #include <QString>
@@ -16,10 +17,14 @@ namespace probecycle::ui {
 class ScenarioCommand : public QUndoCommand {
   public:
     using Apply = std::function<void(const Scenario&)>;
+    using Describe = std::function<QString()>;
     static constexpr int kNoMerge = -1;
 
-    ScenarioCommand(Apply apply, const Scenario& before, const Scenario& after, const QString& text,
+    ScenarioCommand(Apply apply, const Scenario& before, const Scenario& after, Describe describe,
                     int merge_id = kNoMerge);
+
+    // Builds the text again, in the language now in effect.
+    void retranslate() { setText(describe_()); }
 
     void undo() override { apply_(before_); }
     void redo() override { apply_(after_); }
@@ -31,6 +36,7 @@ class ScenarioCommand : public QUndoCommand {
 
   private:
     Apply apply_;
+    Describe describe_;
     Scenario before_;
     Scenario after_;
     int merge_id_;
