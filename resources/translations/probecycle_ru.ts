@@ -1241,10 +1241,6 @@
         <translation>Нечего экспортировать: сначала подберите точки кольца или введите длину.</translation>
     </message>
     <message>
-        <source>Saved %1</source>
-        <translation>Сохранено: %1</translation>
-    </message>
-    <message>
         <source>Import ring gauge points</source>
         <translation>Импорт точек установочного кольца</translation>
     </message>
@@ -1255,10 +1251,6 @@
     <message>
         <source>Export calibration report</source>
         <translation>Экспорт отчёта о калибровке</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>Файлы CSV (*.csv)</translation>
     </message>
     <message>
         <source>Spindle at 0°</source>
@@ -2055,6 +2047,22 @@
         <extracomment>%1 group, %2 its delay (the result), %3 the interface delay now</extracomment>
         <translation>Вход с защёлкой: задержка интерфейса = %1 задержка &lt;b&gt;%2&lt;/b&gt; (сейчас %3); задержка ЧПУ не меняется</translation>
     </message>
+    <message>
+        <source>Export CSV report…</source>
+        <translation>Экспорт отчёта CSV…</translation>
+    </message>
+    <message>
+        <source>The delay per group, its stability per feed, every touch&apos;s residual and the warnings as CSV: the same file as probecycle-cli latency fit --report.</source>
+        <translation>Задержка по группам, её стабильность по подачам, остаток каждого касания и предупреждения в CSV: тот же файл, что probecycle-cli latency fit --report.</translation>
+    </message>
+    <message>
+        <source>Nothing to export: fit the touches first.</source>
+        <translation>Нечего экспортировать: сначала выполните подгонку по касаниям.</translation>
+    </message>
+    <message>
+        <source>Export delay fit report</source>
+        <translation>Экспорт отчёта о задержке</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::HelpGuide</name>
@@ -2170,6 +2178,18 @@
         <source>Unexpected error: %1</source>
         <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
         <translation>Непредвиденная ошибка: %1</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Файлы CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>Не удалось записать %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Сохранено: %1</translation>
     </message>
 </context>
 <context>

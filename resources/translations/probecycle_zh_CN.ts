@@ -1241,10 +1241,6 @@
         <translation>没有可导出的内容：请先拟合环规点或输入长度。</translation>
     </message>
     <message>
-        <source>Saved %1</source>
-        <translation>已保存 %1</translation>
-    </message>
-    <message>
         <source>Import ring gauge points</source>
         <translation>导入环规测点</translation>
     </message>
@@ -1255,10 +1251,6 @@
     <message>
         <source>Export calibration report</source>
         <translation>导出标定报告</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
         <source>Spindle at 0°</source>
@@ -2055,6 +2047,22 @@
         <extracomment>%1 group, %2 its delay (the result), %3 the interface delay now</extracomment>
         <translation>锁存输入：接口延迟 = %1 延迟 &lt;b&gt;%2&lt;/b&gt;（当前 %3）；控制器延迟保持不变</translation>
     </message>
+    <message>
+        <source>Export CSV report…</source>
+        <translation>导出 CSV 报告…</translation>
+    </message>
+    <message>
+        <source>The delay per group, its stability per feed, every touch&apos;s residual and the warnings as CSV: the same file as probecycle-cli latency fit --report.</source>
+        <translation>各组的延迟、各进给率下的延迟稳定性、每次触测的残差和警告，导出为 CSV：与 probecycle-cli latency fit --report 生成的文件相同。</translation>
+    </message>
+    <message>
+        <source>Nothing to export: fit the touches first.</source>
+        <translation>没有可导出的内容：请先拟合触测数据。</translation>
+    </message>
+    <message>
+        <source>Export delay fit report</source>
+        <translation>导出延迟拟合报告</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::HelpGuide</name>
@@ -2170,6 +2178,18 @@
         <source>Unexpected error: %1</source>
         <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
         <translation>意外错误：%1</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
     </message>
 </context>
 <context>

@@ -397,6 +397,7 @@ bool CalibrationTab::import_file(const QString& path) {
         return false;
     }
     remember_folder_of(path);
+    imported_ = ImportedText{QFileInfo(path).fileName(), *text};
     return fit_text(*text, QFileInfo(path).fileName());
 }
 
@@ -414,6 +415,7 @@ bool CalibrationTab::fit_text(const QString& text, const QString& source) {
         return false;
     }
     points_ = std::move(points);
+    points_from_ = data_source_name(imported_, text);
     options_ = options;
     result_ = std::move(result);
     set_error({});
@@ -724,19 +726,11 @@ bool CalibrationTab::export_report(const QString& path) {
     std::optional<LengthReportInput> length;
     if (length_result_ && length_input_)
         length = LengthReportInput{*length_input_, *length_result_};
-    try {
-        write_file_atomically(QFile::encodeName(path).toStdString(),
-                              calibration_report_csv(ring, length));
-    } catch (const std::exception& e) {
-        last_error_ = lab_error_text(e);
-        show_error(export_status_, last_error_);
-        return false;
-    }
-    remember_folder_of(path);
-    export_status_->setStyleSheet({});
-    export_status_->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
-    export_status_->show();
-    return true;
+    ReportHeader header;
+    header.date = report_date();
+    header.subject = result_ ? points_from_ : "none";
+    return write_report(path, calibration_report_csv(ring, length, header), export_status_,
+                        last_error_);
 }
 
 void CalibrationTab::import_dialog() {
@@ -747,8 +741,8 @@ void CalibrationTab::import_dialog() {
 }
 
 void CalibrationTab::export_dialog() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export calibration report"),
-                                                      dialog_start(), tr("CSV files (*.csv)"));
+    const QString path = ask_report_path(this, tr("Export calibration report"),
+                                         QStringLiteral("calibration-report.csv"));
     if (!path.isEmpty()) export_report(path);
 }
 

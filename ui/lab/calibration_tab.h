@@ -18,9 +18,11 @@
 #include <QStringList>
 #include <QWidget>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/lab/calibration.h"
+#include "ui/lab/lab_widgets.h"
 
 class QComboBox;
 class QFormLayout;
@@ -163,7 +165,9 @@ class CalibrationTab : public QWidget {
     QLabel* export_status_{nullptr};
 
     std::vector<RingPoint> points_;
-    RingCalibrationOptions options_;  // of result_
+    std::optional<ImportedText> imported_;
+    std::string points_from_{"pasted"};  // the report's subject: points_' file, or "pasted"
+    RingCalibrationOptions options_;     // of result_
     std::optional<RingCalibration> result_;
     QString last_error_;
 

@@ -17,6 +17,7 @@
 #include <QTimer>
 #include <optional>
 
+#include "core/common/report_header.h"
 #include "ui/cycle/computation.h"
 #include "ui/cycle/readouts.h"
 #include "ui/cycle/warnings_panel.h"
@@ -73,6 +74,9 @@ class MainWindow : public QMainWindow {
     bool open_scenario(const QString& path);
     bool save_scenario(const QString& path);
     bool export_csv_report(const QString& path);
+    // The header of the cycle report: today's date (SOURCE_DATE_EPOCH's when
+    // set, as the CLI) and the scenario's file name, or "untitled".
+    ReportHeader report_header() const;
     // The current tab's charts at `width` pixels under a title line (issue 12).
     bool export_charts_png(const QString& path, int width = 1920);
     QImage export_image(int width);

@@ -8,6 +8,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDate>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -348,18 +349,50 @@ TEST_F(MainWindowTest, CsvExportWritesTheCoreReport) {
     // One row per phase of the current cycle, after the header.
     const qsizetype phases = lines.indexOf(QStringLiteral("# phases"));
     ASSERT_GE(phases, 0);
-    EXPECT_EQ(lines[phases + 1], QStringLiteral("touch,phase,start_s,time_s,distance_mm"));
+    EXPECT_EQ(lines[phases + 1], QStringLiteral("touch,name,start_s,time_s,distance_mm"));
     EXPECT_EQ(lines.indexOf(QStringLiteral(""), phases) - phases - 2,
               static_cast<qsizetype>(window_->computed().cycle().phases().size()));
     // The same bytes as `probecycle-cli report` writes for the scenario.
     const Computed& c = window_->computed();
-    EXPECT_EQ(csv.toStdString(), csv_report(window_->scenario()));
+    EXPECT_EQ(csv.toStdString(), csv_report(window_->scenario(), window_->report_header()));
     // The sweep has one row per report feed.
     const qsizetype sweep = lines.indexOf(QStringLiteral("# sweep"));
     EXPECT_TRUE(lines[sweep + 1].startsWith(QLatin1String("feed_mm_min,cycle_time_s")));
     qsizetype rows = 0;
     for (qsizetype i = sweep + 2; i < lines.size() && !lines[i].isEmpty(); ++i) ++rows;
     EXPECT_EQ(rows, static_cast<qsizetype>(report_feeds(c.scenario, c.analysis).size()));
+}
+
+// Issue 12: the report says what it is, when, by which version and of which
+// scenario, in comment lines a spreadsheet shows as name and value.
+TEST_F(MainWindowTest, CsvReportOpensWithTitleDateVersionAndTheScenariosName) {
+    QTemporaryDir dir;
+    const QString scenario = dir.filePath(QStringLiteral("bore, left.json"));
+    ASSERT_TRUE(window_->save_scenario(scenario)) << window_->last_error().toStdString();
+    const QString path = dir.filePath(QStringLiteral("report.csv"));
+    for (const QString& name :
+         {QStringLiteral("untitled"), QStringLiteral("\"bore, left.json\"")}) {
+        if (name != QStringLiteral("untitled")) {
+            ASSERT_TRUE(window_->open_scenario(scenario));
+        } else {
+            window_->set_unsaved_answer(UnsavedAnswer::discard);
+            ASSERT_TRUE(window_->new_scenario());
+        }
+        ASSERT_TRUE(window_->export_csv_report(path)) << window_->last_error().toStdString();
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'));
+        ASSERT_GT(lines.size(), 5);
+        EXPECT_EQ(lines[0], QStringLiteral("# ProbeCycle cycle report"));
+        EXPECT_EQ(lines[1], QStringLiteral("# date,") + QString::fromStdString(report_date()));
+        EXPECT_TRUE(QDate::fromString(lines[1].mid(7), Qt::ISODate).isValid())
+            << lines[1].toStdString();
+        EXPECT_EQ(lines[2],
+                  QStringLiteral("# version,") + QString::fromStdString(program_version()));
+        EXPECT_EQ(lines[3], QStringLiteral("# scenario,") + name);
+        EXPECT_EQ(lines[4], QString());
+        EXPECT_EQ(lines[5], QStringLiteral("# scenario"));
+    }
 }
 
 TEST_F(MainWindowTest, ChartsExportAsPng) {
