@@ -221,11 +221,13 @@ TEST_F(MainWindowTest, FeedSliderIsLogarithmicFrom10To10000) {
     EXPECT_DOUBLE_EQ(window_->scenario().cycle.probe_feed_mm_min, 10.0);
     drag_to_fraction(s, 1.0);
     EXPECT_DOUBLE_EQ(window_->scenario().cycle.probe_feed_mm_min, 10000.0);
-    drag_to_fraction(s, 0.5);  // the geometric middle of 10..10000
-    EXPECT_NEAR(window_->scenario().cycle.probe_feed_mm_min, 316.0, 1.0);
+    // The geometric middle of 10..10000 (316), to a round stop within 10 %.
+    drag_to_fraction(s, 0.5);
+    const double middle = window_->scenario().cycle.probe_feed_mm_min;
+    EXPECT_NEAR(std::log(middle / 316.0), 0.0, std::log(1.1)) << middle;
     const QList<QPointF> marker = window_->series_points(QStringLiteral("cycle_time.feed"));
     ASSERT_EQ(marker.size(), 2);
-    EXPECT_NEAR(marker[0].x(), 316.0, 1.0);
+    EXPECT_EQ(marker[0].x(), middle);
 }
 
 TEST_F(MainWindowTest, ScanPeriodSliderSpans1usTo20ms) {
@@ -361,6 +363,74 @@ TEST_F(MainWindowTest, CsvExportWritesTheCoreReport) {
     qsizetype rows = 0;
     for (qsizetype i = sweep + 2; i < lines.size() && !lines[i].isEmpty(); ++i) ++rows;
     EXPECT_EQ(rows, static_cast<qsizetype>(report_feeds(c.scenario, c.analysis).size()));
+}
+
+// Issue 12, item 5: every slider stops at round numbers in its unit (the feed
+// went 3000 -> 3220), finely enough to drag, and a round value typed in the
+// spin box puts the slider on it and back.
+TEST_F(MainWindowTest, SlidersStopAtRoundValuesThatRoundTripThroughTheSpinBox) {
+    const QList<QSlider*> sliders = window_->findChildren<QSlider*>();
+    int checked = 0;
+    for (QSlider* s : sliders) {
+        if (!s->objectName().startsWith(QLatin1String("slider:"))) continue;
+        const QString key = s->objectName().mid(7);
+        auto* box = window_->findChild<QDoubleSpinBox*>(QStringLiteral("spin:") + key);
+        ASSERT_NE(box, nullptr) << key.toStdString();
+        std::vector<double> values;
+        for (int p = s->minimum(); p <= s->maximum(); ++p) {
+            s->setValue(p);
+            values.push_back(box->value());
+        }
+        ASSERT_GE(values.size(), 30U) << key.toStdString();
+        const bool log = values.front() > 0.0 && values.back() / values.front() >= 100.0;
+        const double step = values[1] - values[0];
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            const double v = values[i];
+            const std::string what = key.toStdString() + " at " + std::to_string(v);
+            if (i > 0) {
+                EXPECT_GT(v, values[i - 1]) << what;
+            }
+            if (log) {
+                // Two significant digits, each stop at most 10 % past the one below
+                // (or one step of the spin box's last digit where that is coarser).
+                const double m = v / std::pow(10.0, std::floor(std::log10(v)));
+                EXPECT_NEAR(m * 10.0, std::round(m * 10.0), 1e-6) << what;
+                const double last_digit = std::pow(10.0, -box->decimals());
+                if (i > 0 && v - values[i - 1] > 1.5 * last_digit) {
+                    EXPECT_LE(v / values[i - 1], 1.1 + 1e-9) << what;
+                }
+            } else {
+                // A 1-2-5 step, the same all along, from a multiple of it.
+                const double mantissa = step / std::pow(10.0, std::floor(std::log10(step)));
+                EXPECT_TRUE(std::abs(mantissa - 1.0) < 1e-6 || std::abs(mantissa - 2.0) < 1e-6 ||
+                            std::abs(mantissa - 5.0) < 1e-6)
+                    << key.toStdString() << " steps by " << step;
+                EXPECT_NEAR(v / step, std::round(v / step), 1e-6) << what;
+                if (i > 0) {
+                    EXPECT_NEAR(v - values[i - 1], step, 1e-9) << what;
+                }
+            }
+        }
+        // A round value typed in puts the slider on its stop, and the stop gives it back.
+        for (std::size_t i = 0; i < values.size(); i += 7) {
+            box->setValue(values[(i + values.size() / 2) % values.size()]);
+            box->setValue(values[i]);
+            EXPECT_EQ(s->value(), s->minimum() + static_cast<int>(i)) << key.toStdString();
+            s->setValue(s->value() == s->maximum() ? s->minimum() : s->maximum());
+            s->setValue(s->minimum() + static_cast<int>(i));
+            EXPECT_EQ(box->value(), values[i]) << key.toStdString();
+        }
+        ++checked;
+    }
+    EXPECT_GE(checked, 4);  // feed, time constant, scan period, backoff
+    settle();
+    // The feed's next stop after 3000 mm/min is 3200.
+    spin("cycle.probe_feed_mm_min")->setValue(3000.0);
+    QSlider* feed = slider("cycle.probe_feed_mm_min");
+    feed->setValue(feed->value() + 1);
+    EXPECT_EQ(spin("cycle.probe_feed_mm_min")->value(), 3200.0);
+    settle();
+    EXPECT_EQ(window_->scenario().cycle.probe_feed_mm_min, 3200.0);
 }
 
 // Issue 12: the report says what it is, when, by which version and of which
