@@ -1851,10 +1851,6 @@
         <translation>Неопределённость</translation>
     </message>
     <message>
-        <source>The phases of the current cycle in time order, each row with its total time over all touches.</source>
-        <translation>Фазы текущего цикла в порядке времени; в каждой строке — суммарное время фазы по всем касаниям.</translation>
-    </message>
-    <message>
         <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle.</source>
         <translation>Положение вдоль направления измерения для каждого касания (поверхность — штрих) и скорость по траектории в течение всего цикла.</translation>
     </message>
@@ -1883,16 +1879,21 @@
         <translation>Этот цикл (недоп.)</translation>
     </message>
     <message>
-        <source>Phases of an invalid cycle</source>
-        <translation>Фазы недопустимого цикла</translation>
-    </message>
-    <message>
         <source>Invalid</source>
         <translation>Недопустимые</translation>
     </message>
     <message>
         <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
         <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая допустимая подача, время цикла на которой хуже лучшего не более чем на допуск точки перегиба. Серый пунктир: подачи, при которых цикл недопустим (перебег сверх предела, слишком малый отвод). Красная пунктирная линия: этот цикл недопустим и времени цикла не имеет (см. предупреждения).</translation>
+    </message>
+    <message>
+        <source>The phases of the current cycle in time order, each row with its total time over all touches. Grey: the cycle is invalid and cannot run as set (the title and the warnings say why); its phases are what the model computes.</source>
+        <translation>Фазы текущего цикла в порядке времени; в каждой строке — суммарное время фазы по всем касаниям. Серым: цикл недопустим и не может выполняться с заданными параметрами (причину называют заголовок и предупреждения); фазы показаны такими, какими их рассчитывает модель.</translation>
+    </message>
+    <message>
+        <source>Phases of an invalid cycle (grey): %1</source>
+        <extracomment>%1: why the cycle cannot run, e.g. &quot;Backoff too small&quot;</extracomment>
+        <translation>Фазы недопустимого цикла (серым): %1</translation>
     </message>
 </context>
 <context>
