@@ -143,7 +143,7 @@ QWidget* DelayFitPanel::build_results_column() {
     export_button_->setObjectName(QStringLiteral("delay-export"));
     export_button_->setEnabled(false);
     auto* export_row = new QHBoxLayout;
-    export_row->addWidget(export_status_, 1);
+    export_row->addStretch(1);
     export_row->addWidget(export_button_);
     auto* results = new QWidget(this);
     auto* results_column = new QVBoxLayout(results);
@@ -151,6 +151,7 @@ QWidget* DelayFitPanel::build_results_column() {
     results_column->addWidget(tree_, 3);
     results_column->addWidget(warnings_title_);
     results_column->addWidget(warnings_scroll, 2);
+    results_column->addWidget(export_status_);
     results_column->addLayout(export_row);
     results->setFixedWidth(480);
     return results;
