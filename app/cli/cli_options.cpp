@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 #include "core/common/file_io.h"
@@ -102,6 +103,13 @@ Scenario load_scenario(const ScenarioArgs& args) {
     for (const std::string& assignment : args.sets) apply_setting(scenario, assignment);
     validate_or_throw(scenario);
     return scenario;
+}
+
+ReportHeader report_header_of(const std::string& input, const std::string& fallback) {
+    ReportHeader header;
+    header.date = report_date();
+    header.subject = input.empty() ? fallback : std::filesystem::path(input).filename().string();
+    return header;
 }
 
 void write_output(const std::string& path, const std::string& text) {

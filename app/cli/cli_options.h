@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/report_header.h"
 #include "core/cycle/scenario.h"
 
 namespace probecycle::cli {
@@ -66,6 +67,11 @@ void add_scenario_args(CLI::App& app, ScenarioArgs& args);
 // Defaults or the file, then each --set; validated. A bad file throws
 // std::runtime_error starting with its path; a bad --set a ScenarioError.
 Scenario load_scenario(const ScenarioArgs& args);
+
+// A CSV report's header (report_header.h): today, or SOURCE_DATE_EPOCH's
+// day, and the file name of `input` (its folder left out), or `fallback`
+// without one.
+ReportHeader report_header_of(const std::string& input, const std::string& fallback);
 
 // The text to stdout, or atomically to `path` when one is given.
 void write_output(const std::string& path, const std::string& text);

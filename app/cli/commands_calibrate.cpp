@@ -53,8 +53,9 @@ void add_ring(CLI::App& calibrate) {
         });
         if (!args->report.empty()) {
             // The same CSV report as the Calibration tab exports.
-            write_output(args->report, calibration_report_csv(
-                                           RingReportInput{points, options, result}, std::nullopt));
+            write_output(args->report,
+                         calibration_report_csv(RingReportInput{points, options, result},
+                                                std::nullopt, report_header_of(args->file, "")));
         }
         std::cout << ring_calibration_json(result, options).dump(2) << '\n';
     });

@@ -105,7 +105,11 @@ void add_report(CLI::App& app) {
     add_scenario_args(*cmd, args->scenario);
     cmd->add_option("--csv", args->csv, "Write the report to FILE (atomically) instead of stdout")
         ->type_name("FILE");
-    cmd->callback([args] { write_output(args->csv, csv_report(load_scenario(args->scenario))); });
+    cmd->callback([args] {
+        const Scenario scenario = load_scenario(args->scenario);
+        write_output(args->csv,
+                     csv_report(scenario, report_header_of(args->scenario.file, "untitled")));
+    });
 }
 
 void add_montecarlo(CLI::App& app) {

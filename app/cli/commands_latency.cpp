@@ -12,6 +12,7 @@
 #include "core/common/file_io.h"
 #include "core/lab/compensation.h"
 #include "core/lab/delay_fit.h"
+#include "core/lab/delay_fit_report.h"
 #include "core/lab/lab_json.h"
 
 namespace probecycle::cli {
@@ -24,6 +25,7 @@ void add_fit(CLI::App& latency) {
         NumberArg interpolation_period{1e-6, 1.0};
         std::string apply_to;
         std::string group;
+        std::string report;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = latency.add_subcommand(
@@ -41,6 +43,10 @@ void add_fit(CLI::App& latency) {
                     "With --apply-to: the group to apply, e.g. X+ (default: the only group, or "
                     "the longest delay)")
         ->type_name("AXIS+|AXIS-");
+    cmd->add_option("--report", args->report,
+                    "Also write the Latency tab's CSV report (the delay per group, its stability "
+                    "per feed, every touch's residual) to FILE (atomically)")
+        ->type_name("FILE");
     cmd->callback([args] {
         if (!args->group.empty() && args->apply_to.empty()) {
             throw UsageError(
@@ -48,9 +54,16 @@ void add_fit(CLI::App& latency) {
         }
         DelayFitOptions options;
         options.interpolation_period_s = args->interpolation_period.optional();
+        std::vector<DelayTouch> touches;
         const DelayFit fit = read_lab_csv(args->file, [&](const std::string& text) {
-            return fit_delay(parse_delay_csv(text), options);
+            touches = parse_delay_csv(text);
+            return fit_delay(touches, options);
         });
+        if (!args->report.empty()) {
+            // The same CSV report as the Latency tab exports.
+            write_output(args->report, delay_fit_report_csv(touches, options, fit,
+                                                            report_header_of(args->file, "")));
+        }
         nlohmann::ordered_json out = delay_fit_json(fit, options);
         if (!args->apply_to.empty()) {
             Scenario scenario;

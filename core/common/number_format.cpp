@@ -14,6 +14,26 @@ std::string format_number(double value, int significant) {
     return buffer;
 }
 
+std::string format_fixed(double value, int decimals) {
+    if (!std::isfinite(value)) return format_number(value);
+    char buffer[352];  // DBL_MAX in %f is 309 digits
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    std::string text = buffer;
+    if (text.find('.') != std::string::npos) {
+        while (text.back() == '0') text.pop_back();
+        if (text.back() == '.') text.pop_back();
+    }
+    if (text == "-0") text = "0";
+    return text;
+}
+
+std::string format_exact(double value) {
+    if (!std::isfinite(value)) return format_number(value);
+    char buffer[40];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return ec == std::errc() ? std::string(buffer, end) : format_number(value, 17);
+}
+
 std::optional<double> parse_decimal(std::string_view text) {
     const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
     while (!text.empty() && space(text.front())) text.remove_prefix(1);

@@ -13,6 +13,14 @@ namespace probecycle {
 
 std::string format_number(double value, int significant = 6);
 
+// `value` rounded to `decimals` decimals, trailing zeros dropped ("0.36",
+// "15"), never "-0"; NaN and infinities as format_number(). The reports give
+// each quantity the digits the model supports (csv_writer.h).
+std::string format_fixed(double value, int decimals);
+// The shortest text that reads back as exactly `value` ("0.06", "1e-06"): an
+// input echoed as the user gave it.
+std::string format_exact(double value);
+
 // The whole text as a decimal number, as a user types one: no hex, no inf or
 // nan, nothing a double cannot hold; white space around it is ignored. The
 // scenario's --set and the CLI's number options read numbers with it.

@@ -8,6 +8,7 @@
 
 #include "core/common/csv_writer.h"
 #include "core/common/message_json.h"
+#include "core/common/report_header.h"
 #include "core/common/units.h"
 
 namespace probecycle {
@@ -15,10 +16,6 @@ namespace probecycle {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string number(double value) {
-    return csv_number_text(value);
-}
 
 Json warnings_json(const std::vector<Warning>& warnings) {
     Json list = Json::array();
@@ -101,11 +98,11 @@ std::string sweep_to_csv(const SweepResult& sweep, const SweepResult* optimised)
     csv += optimised != nullptr ? ",cycle_time_recommended_backoff_s\n" : "\n";
     for (std::size_t i = 0; i < sweep.points.size(); ++i) {
         const SweepPoint& p = sweep.points[i];
-        csv += number(p.feed_mm_min) + ',' + number(p.cycle_time_s) + ',' +
-               number(p.overtravel_mm) + ',' + number(p.uncertainty_mm);
-        for (double t : p.phase_time_s) csv += ',' + number(t);
+        csv += csv_feed_mm_min(p.feed_mm_min) + ',' + csv_time_s(p.cycle_time_s) + ',' +
+               csv_length_mm(p.overtravel_mm) + ',' + csv_length_mm(p.uncertainty_mm);
+        for (double t : p.phase_time_s) csv += ',' + csv_time_s(t);
         csv += p.valid() ? ",true," : ",false," + invalid_codes_text(p.invalid_codes, ";");
-        if (optimised != nullptr) csv += ',' + number(optimised->points[i].cycle_time_s);
+        if (optimised != nullptr) csv += ',' + csv_time_s(optimised->points[i].cycle_time_s);
         csv += '\n';
     }
     return csv;
@@ -130,8 +127,8 @@ std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario) {
     } else {
         const KneeSearch knee =
             find_knee(scenario, from, std::max(from, to), {.recommended_backoff = true});
-        line += " from " + number(from) + " to " + number(to) + " mm/min: ";
-        line += knee.knee_feed_mm_min ? number(*knee.knee_feed_mm_min) + " mm/min"
+        line += " from " + csv_feed_mm_min(from) + " to " + csv_feed_mm_min(to) + " mm/min: ";
+        line += knee.knee_feed_mm_min ? csv_feed_mm_min(*knee.knee_feed_mm_min) + " mm/min"
                                       : "none (no feed within the probe's overtravel limit)";
         range_end = knee.range_end_warning;
     }
@@ -139,9 +136,9 @@ std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario) {
     if (scenario.cycle.target_uncertainty_mm <= 0.0) {
         line += ": no target set";
     } else {
-        line += " (" + number(scenario.cycle.target_uncertainty_mm) + " mm): ";
+        line += " (" + csv_exact(scenario.cycle.target_uncertainty_mm) + " mm): ";
         line += sweep.max_feed_meeting_target_mm_min
-                    ? number(*sweep.max_feed_meeting_target_mm_min) + " mm/min"
+                    ? csv_feed_mm_min(*sweep.max_feed_meeting_target_mm_min) + " mm/min"
                     : "none in the range";
     }
     if (range_end) {
@@ -151,49 +148,55 @@ std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario) {
 }
 
 std::string csv_report(const Scenario& scenario, const Analysis& analysis,
-                       std::span<const double> feeds_mm_min) {
+                       std::span<const double> feeds_mm_min, const ReportHeader& header) {
     const SweepResult sweep = sweep_feeds(scenario, feeds_mm_min);
     std::optional<SweepResult> optimised;
     if (scenario.cycle.strategy == Strategy::two_touch) {
         optimised = sweep_feeds(scenario, feeds_mm_min, {.recommended_backoff = true});
     }
     const CycleResult& r = analysis.cycle;
-    std::string csv = "# scenario\nkey,value,unit\n";
+    std::string csv = report_header_csv("cycle report", "scenario", header);
+    csv += "# scenario\nkey,value,unit\n";
     // The words and flags first, then the numbers, each in the key table's order.
     for (const KeyInfo& key : scenario_keys()) {
         if (key.kind != KeyKind::number) {
             csv += std::string(key.key) + ',' + value_text(scenario, key) + ",\n";
         }
     }
+    // The user's values as given, not rounded: the report reproduces the scenario.
     for (const KeyInfo& key : numeric_keys()) {
-        csv += std::string(key.key) + ',' + number(*get_number(scenario, key.key)) + ',' +
+        csv += std::string(key.key) + ',' + csv_exact(*get_number(scenario, key.key)) + ',' +
                key.unit + '\n';
     }
-    csv += "\n# summary\nquantity,value,unit\n";
-    csv += "cycle_time," + number(r.total()) + ",s\n";
-    csv += std::string("valid,") + (r.valid() ? "true" : "false") + ",\n";
-    if (!r.valid()) csv += "invalid_reasons," + invalid_codes_text(r.invalid_codes(), ";") + ",\n";
-    csv += "overtravel," + number(r.overtravel_mm()) + ",mm\n";
-    csv += "overtravel_limit," + number(scenario.probe.overtravel_limit_mm) + ",mm\n";
-    csv += "trigger_speed," + number(mm_s_to_mm_min(r.trigger_speed_mm_s())) + ",mm/min\n";
-    csv += "scan_range," + number(r.scan_range_mm()) + ",mm\n";
-    csv += "uncertainty_k2," + number(r.uncertainty_mm()) + ",mm\n";
-    csv += "recommended_backoff," + number(r.recommended_backoff_mm()) + ",mm\n";
-    csv += "knee_feed," +
-           (analysis.knee_feed_mm_min ? number(*analysis.knee_feed_mm_min) : std::string()) +
-           ",mm/min\n";
-    csv += "knee_cycle_time," +
-           (analysis.knee_cycle_time_s ? number(*analysis.knee_cycle_time_s) : std::string()) +
-           ",s\n";
-    csv += "\n# phases\ntouch,phase,start_s,time_s,distance_mm\n";
+    // The keys of `probecycle-cli evaluate` (README), with their units.
+    const auto row = [&csv](const char* key, const std::string& value, const char* unit) {
+        csv += csv_line({key, value, unit});
+    };
+    csv += "\n# summary\nkey,value,unit\n";
+    row("cycle_time_s", csv_time_s(r.total()), "s");
+    row("valid", r.valid() ? "true" : "false", "");
+    row("invalid_reasons", invalid_codes_text(r.invalid_codes(), ";"), "");
+    row("overtravel_mm", csv_length_mm(r.overtravel_mm()), "mm");
+    row("overtravel_touch", r.overtravel_touch() == 2 ? "second" : "first", "");
+    row("trigger_speed_mm_min", csv_feed_mm_min(mm_s_to_mm_min(r.trigger_speed_mm_s())), "mm/min");
+    row("uncertainty_mm", csv_length_mm(r.uncertainty_mm()), "mm");
+    row("scan_range_mm", csv_length_mm(r.scan_range_mm()), "mm");
+    row("recommended_backoff_mm", csv_length_mm(r.recommended_backoff_mm()), "mm");
+    row("knee_feed_mm_min",
+        analysis.knee_feed_mm_min ? csv_feed_mm_min(*analysis.knee_feed_mm_min) : std::string(),
+        "mm/min");
+    row("knee_cycle_time_s", csv_time_s(analysis.knee_cycle_time_s), "s");
+    // touch counts from 1 here (evaluate's JSON counts from 0).
+    csv += "\n# phases\ntouch,name,start_s,time_s,distance_mm\n";
     for (const PhaseRecord& p : r.phases()) {
-        csv += std::to_string(p.touch + 1) + ',' + to_string(p.phase) + ',' + number(p.start_s) +
-               ',' + number(p.time_s) + ',' + number(p.distance_mm) + '\n';
+        csv += std::to_string(p.touch + 1) + ',' + to_string(p.phase) + ',' +
+               csv_time_s(p.start_s) + ',' + csv_time_s(p.time_s) + ',' +
+               csv_length_mm(p.distance_mm) + '\n';
     }
-    csv += "\n# warnings\ncode,severity,message\n";
+    csv += '\n';
+    csv += csv_warnings_header();
     for (const Warning& w : r.warnings()) {
-        csv += std::string(to_string(w.code)) + ',' + to_string(w.severity) + ',' +
-               csv_quote(w.message()) + '\n';
+        csv += csv_warning_row(to_string(w.code), to_string(w.severity), w.message());
     }
     csv += "\n# sweep\n" + sweep_to_csv(sweep, optimised ? &*optimised : nullptr);
     return csv;
@@ -210,9 +213,9 @@ std::vector<double> report_feeds(const Scenario& scenario, const Analysis& analy
     return feeds;
 }
 
-std::string csv_report(const Scenario& scenario) {
+std::string csv_report(const Scenario& scenario, const ReportHeader& header) {
     const Analysis analysis = analyse(scenario);
-    return csv_report(scenario, analysis, report_feeds(scenario, analysis));
+    return csv_report(scenario, analysis, report_feeds(scenario, analysis), header);
 }
 
 }  // namespace probecycle

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/common/report_header.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/monte_carlo.h"
 #include "core/cycle/scenario.h"
@@ -42,14 +43,17 @@ std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario);
 // summary's knee_cycle_time).
 std::vector<double> report_feeds(const Scenario& scenario, const Analysis& analysis);
 
-// Sections "# scenario", "# summary", "# phases", "# warnings", "# sweep",
-// each a CSV table, for the report an engineer hands over. The sweep varies
-// the probe feed over `feeds` with the rest as in the scenario (and, for
-// two-touch, also with the recommended backoff: sweep_to_csv's last column).
+// The report an engineer hands over: the header (report_header.h: title,
+// date, version, the scenario's file name), then sections "# scenario" (the
+// values as given), "# summary" (evaluate's keys, README), "# phases",
+// "# warnings", "# sweep", each a CSV table, numbers to the digits the model
+// supports (csv_writer.h). The sweep varies the probe feed over `feeds` with
+// the rest as in the scenario (and, for two-touch, also with the recommended
+// backoff: sweep_to_csv's last column).
 std::string csv_report(const Scenario& scenario, const Analysis& analysis,
-                       std::span<const double> feeds_mm_min);
+                       std::span<const double> feeds_mm_min, const ReportHeader& header);
 // The same, analysed and swept over report_feeds(): what the window exports
 // and `probecycle-cli report` writes.
-std::string csv_report(const Scenario& scenario);
+std::string csv_report(const Scenario& scenario, const ReportHeader& header);
 
 }  // namespace probecycle

@@ -10,15 +10,16 @@ namespace probecycle {
 
 namespace {
 
+// Lengths to 0.1 um (csv_writer.h); the user's inputs exactly as given.
 std::string number(double value) {
-    return csv_number_text(value);
+    return csv_length_mm(value);
 }
 std::string number(const std::optional<double>& value) {
-    return csv_number_text(value);
+    return csv_length_mm(value);
 }
 
 std::string row(const char* quantity, const std::string& value, const char* unit) {
-    return std::string(quantity) + ',' + value + ',' + unit + '\n';
+    return csv_line({quantity, value, unit});
 }
 
 constexpr const char* kDirectionNames[] = {"X+", "X-", "Y+", "Y-"};
@@ -26,14 +27,15 @@ constexpr const char* kDirectionNames[] = {"X+", "X-", "Y+", "Y-"};
 }  // namespace
 
 std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
-                                   const std::optional<LengthReportInput>& length) {
-    std::string csv;
+                                   const std::optional<LengthReportInput>& length,
+                                   const ReportHeader& header) {
+    std::string csv = report_header_csv("calibration report", "points", header);
     std::vector<CalibrationWarning> warnings;
     if (ring) {
         const RingCalibration& r = ring->result;
         const double gauge_radius_mm = ring->options.gauge_diameter_mm / 2.0;
         csv += "# ring\nquantity,value,unit\n";
-        csv += row("gauge_diameter", number(ring->options.gauge_diameter_mm), "mm");
+        csv += row("gauge_diameter", csv_exact(ring->options.gauge_diameter_mm), "mm");
         csv += row("center_x", number(r.center_x_mm), "mm");
         csv += row("center_y", number(r.center_y_mm), "mm");
         csv += row("runout_x", number(r.runout_x_mm), "mm");
@@ -47,8 +49,8 @@ std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
         csv += row("radius_y_plus", number(r.radius_by_direction.y_plus_mm), "mm");
         csv += row("radius_y_minus", number(r.radius_by_direction.y_minus_mm), "mm");
         csv += row("residual_max", number(r.residual_max_mm), "mm");
-        csv += row("runout_limit", number(ring->options.runout_limit_mm), "mm");
-        csv += row("residual_limit", number(ring->options.residual_limit_mm), "mm");
+        csv += row("runout_limit", csv_exact(ring->options.runout_limit_mm), "mm");
+        csv += row("residual_limit", csv_exact(ring->options.residual_limit_mm), "mm");
 
         csv += "\n# fits\norientation_deg,center_x_mm,center_y_mm,radius_mm,residual_max_mm\n";
         for (std::size_t o = 0; o < r.fits.size(); ++o) {
@@ -67,7 +69,8 @@ std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
         for (const RingPoint& p : ring->points) {
             const std::size_t o = orientation_index(p.orientation_deg).value_or(0);
             csv += (p.line > 0 ? std::to_string(p.line) : std::string()) + ',' +
-                   number(p.orientation_deg) + ',' + number(p.x_mm) + ',' + number(p.y_mm) + ',';
+                   csv_exact(p.orientation_deg) + ',' + csv_exact(p.x_mm) + ',' +
+                   csv_exact(p.y_mm) + ',';
             if (const auto& fit = r.fits[o]) {
                 const double dx = p.x_mm - fit->center_x_mm;
                 const double dy = p.y_mm - fit->center_y_mm;
@@ -87,11 +90,12 @@ std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
     if (length) {
         const LengthCalibrationInput& in = length->input;
         const LengthCalibration& l = length->result;
-        if (!csv.empty()) csv += '\n';
+        if (ring) csv += '\n';
         csv += "# length\nquantity,value,unit\n";
-        csv += row("surface_z", number(in.surface_z_mm), "mm");
-        csv += row("active_length", number(in.active_length_mm), "mm");
-        csv += row("nominal_length", number(in.nominal_length_mm), "mm");
+        csv += row("surface_z", csv_exact(in.surface_z_mm), "mm");
+        csv += row("active_length", csv_exact(in.active_length_mm), "mm");
+        csv += row("nominal_length",
+                   in.nominal_length_mm ? csv_exact(*in.nominal_length_mm) : std::string(), "mm");
         csv += row("touches", std::to_string(l.touches), "");
         csv += row("trigger_z_mean", number(l.trigger_z_mean_mm), "mm");
         csv += row("trigger_z_range", number(l.trigger_z_range_mm), "mm");
@@ -99,11 +103,10 @@ std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
         csv += row("wear", number(l.wear_mm), "mm");
         warnings.insert(warnings.end(), l.warnings.begin(), l.warnings.end());
     }
-    if (!csv.empty()) csv += '\n';
-    csv += "# warnings\ncode,severity,message\n";
+    if (ring || length) csv += '\n';
+    csv += csv_warnings_header();
     for (const CalibrationWarning& w : warnings) {
-        csv += std::string(to_string(w.code)) + ',' + to_string(w.severity) + ',' +
-               csv_quote(w.text()) + '\n';
+        csv += csv_warning_row(to_string(w.code), to_string(w.severity), w.text());
     }
     return csv;
 }

@@ -2,12 +2,13 @@
 
 // The calibration report, as CSV text: the sections an engineer files with the
 // probe's calibration record, each a CSV table, in the style of csv_report
-// (report.h). The Calibration tab exports it; `calibrate ring --report` writes it.
+// (cycle_report.h). The Calibration tab exports it; `calibrate ring --report` writes it.
 
 #include <optional>
 #include <span>
 #include <string>
 
+#include "core/common/report_header.h"
 #include "core/lab/calibration.h"
 
 namespace probecycle {
@@ -23,10 +24,13 @@ struct LengthReportInput {
     LengthCalibration result;
 };
 
-// Sections "# ring", "# fits", "# points", "# length", "# warnings"; the ring
-// sections without a ring result and "# length" without a length result are
-// left out. Numbers in C locale, 9 significant digits; unknowns empty.
+// The header (report_header.h; subject "points": the ring points' file name,
+// or "pasted"), then sections "# ring", "# fits", "# points", "# length",
+// "# warnings"; the ring sections without a ring result and "# length"
+// without a length result are left out. Results to 0.1 um, inputs as given
+// (csv_writer.h); unknowns empty.
 std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
-                                   const std::optional<LengthReportInput>& length);
+                                   const std::optional<LengthReportInput>& length,
+                                   const ReportHeader& header);
 
 }  // namespace probecycle

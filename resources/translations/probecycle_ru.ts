@@ -1273,10 +1273,6 @@
         <translation>Экспорт отчёта о калибровке</translation>
     </message>
     <message>
-        <source>CSV files (*.csv)</source>
-        <translation>Файлы CSV (*.csv)</translation>
-    </message>
-    <message>
         <source>Spindle at 0°</source>
         <translation>Шпиндель на 0°</translation>
     </message>
@@ -1871,10 +1867,6 @@
         <translation>Неопределённость</translation>
     </message>
     <message>
-        <source>The phases of the current cycle in time order, each row with its total time over all touches.</source>
-        <translation>Фазы текущего цикла в порядке времени; в каждой строке — суммарное время фазы по всем касаниям.</translation>
-    </message>
-    <message>
         <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle.</source>
         <translation>Положение вдоль направления измерения для каждого касания (поверхность — штрих) и скорость по траектории в течение всего цикла.</translation>
     </message>
@@ -1903,16 +1895,21 @@
         <translation>Этот цикл (недоп.)</translation>
     </message>
     <message>
-        <source>Phases of an invalid cycle</source>
-        <translation>Фазы недопустимого цикла</translation>
-    </message>
-    <message>
         <source>Invalid</source>
         <translation>Недопустимые</translation>
     </message>
     <message>
         <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
         <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая допустимая подача, время цикла на которой хуже лучшего не более чем на допуск точки перегиба. Серый пунктир: подачи, при которых цикл недопустим (перебег сверх предела, слишком малый отвод). Красная пунктирная линия: этот цикл недопустим и времени цикла не имеет (см. предупреждения).</translation>
+    </message>
+    <message>
+        <source>The phases of the current cycle in time order, each row with its total time over all touches. Grey: the cycle is invalid and cannot run as set (the title and the warnings say why); its phases are what the model computes.</source>
+        <translation>Фазы текущего цикла в порядке времени; в каждой строке — суммарное время фазы по всем касаниям. Серым: цикл недопустим и не может выполняться с заданными параметрами (причину называют заголовок и предупреждения); фазы показаны такими, какими их рассчитывает модель.</translation>
+    </message>
+    <message>
+        <source>Phases of an invalid cycle (grey): %1</source>
+        <extracomment>%1: why the cycle cannot run, e.g. &quot;Backoff too small&quot;</extracomment>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2067,6 +2064,22 @@
         <extracomment>%1 group, %2 its delay (the result), %3 the interface delay now</extracomment>
         <translation>Вход с защёлкой: задержка интерфейса = %1 задержка &lt;b&gt;%2&lt;/b&gt; (сейчас %3); задержка ЧПУ не меняется</translation>
     </message>
+    <message>
+        <source>Export CSV report…</source>
+        <translation>Экспорт отчёта CSV…</translation>
+    </message>
+    <message>
+        <source>The delay per group, its stability per feed, every touch&apos;s residual and the warnings as CSV: the same file as probecycle-cli latency fit --report.</source>
+        <translation>Задержка по группам, её стабильность по подачам, остаток каждого касания и предупреждения в CSV: тот же файл, что probecycle-cli latency fit --report.</translation>
+    </message>
+    <message>
+        <source>Nothing to export: fit the touches first.</source>
+        <translation>Нечего экспортировать: сначала выполните подгонку по касаниям.</translation>
+    </message>
+    <message>
+        <source>Export delay fit report</source>
+        <translation>Экспорт отчёта о задержке</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::HelpGuide</name>
@@ -2186,6 +2199,14 @@
     <message>
         <source>Saved %1</source>
         <translation>Сохранено: %1</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Файлы CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>Не удалось записать %1: %2</translation>
     </message>
 </context>
 <context>

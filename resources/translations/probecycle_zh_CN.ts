@@ -1273,10 +1273,6 @@
         <translation>导出标定报告</translation>
     </message>
     <message>
-        <source>CSV files (*.csv)</source>
-        <translation>CSV 文件 (*.csv)</translation>
-    </message>
-    <message>
         <source>Spindle at 0°</source>
         <translation>主轴 0°</translation>
     </message>
@@ -1871,10 +1867,6 @@
         <translation>不确定度</translation>
     </message>
     <message>
-        <source>The phases of the current cycle in time order, each row with its total time over all touches.</source>
-        <translation>当前循环按时间顺序排列的各阶段，每行给出其在所有触测中的总时间。</translation>
-    </message>
-    <message>
         <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle.</source>
         <translation>每次触测沿测量方向的位置（虚线为表面）以及整个循环中的轨迹速度。</translation>
     </message>
@@ -1903,16 +1895,21 @@
         <translation>当前循环（无效）</translation>
     </message>
     <message>
-        <source>Phases of an invalid cycle</source>
-        <translation>无效循环的各阶段</translation>
-    </message>
-    <message>
         <source>Invalid</source>
         <translation>无效</translation>
     </message>
     <message>
         <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
         <translation>整个循环的时间与探测进给率的关系，分一次触发和二次触发，其余参数按当前设置。竖线：当前进给率。圆点：拐点，即循环时间与最佳时间相差不超过拐点容差的最低有效进给率。灰色虚线：循环无效的进给率（过行程超过极限、回退距离过小）。红色虚线：当前循环无效，没有循环时间（见警告）。</translation>
+    </message>
+    <message>
+        <source>The phases of the current cycle in time order, each row with its total time over all touches. Grey: the cycle is invalid and cannot run as set (the title and the warnings say why); its phases are what the model computes.</source>
+        <translation>当前循环按时间顺序排列的各阶段，每行给出其在所有触测中的总时间。灰色：循环无效，按当前设置无法运行（原因见标题和警告）；各阶段为模型的计算结果。</translation>
+    </message>
+    <message>
+        <source>Phases of an invalid cycle (grey): %1</source>
+        <extracomment>%1: why the cycle cannot run, e.g. &quot;Backoff too small&quot;</extracomment>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2067,6 +2064,22 @@
         <extracomment>%1 group, %2 its delay (the result), %3 the interface delay now</extracomment>
         <translation>锁存输入：接口延迟 = %1 延迟 &lt;b&gt;%2&lt;/b&gt;（当前 %3）；控制器延迟保持不变</translation>
     </message>
+    <message>
+        <source>Export CSV report…</source>
+        <translation>导出 CSV 报告…</translation>
+    </message>
+    <message>
+        <source>The delay per group, its stability per feed, every touch&apos;s residual and the warnings as CSV: the same file as probecycle-cli latency fit --report.</source>
+        <translation>各组的延迟、各进给率下的延迟稳定性、每次触测的残差和警告，导出为 CSV：与 probecycle-cli latency fit --report 生成的文件相同。</translation>
+    </message>
+    <message>
+        <source>Nothing to export: fit the touches first.</source>
+        <translation>没有可导出的内容：请先拟合触测数据。</translation>
+    </message>
+    <message>
+        <source>Export delay fit report</source>
+        <translation>导出延迟拟合报告</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::HelpGuide</name>
@@ -2186,6 +2199,14 @@
     <message>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>无法写入 %1：%2</translation>
     </message>
 </context>
 <context>

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/cycle/cycle_report.h"
@@ -461,6 +462,8 @@ TEST_F(CycleCli, SweepCsvWritesTheFile) {
 
 // `report` writes the window's CSV report: the core's csv_report of the scenario.
 TEST_F(CycleCli, ReportIsTheCoreCsvReportOnStdoutOrInAFile) {
+    // The golden file's day (golden_test.cpp).
+    ::setenv("SOURCE_DATE_EPOCH", "1764115200", 1);
     const CliRun printed = run({"report", "--set", "cycle.feature=bore"});
     ASSERT_EQ(printed.exit_code, 0) << printed;
     EXPECT_EQ(printed.out, slurp(data_file("golden/report_feature_bore.csv")));
@@ -470,6 +473,25 @@ TEST_F(CycleCli, ReportIsTheCoreCsvReportOnStdoutOrInAFile) {
     EXPECT_TRUE(written.out.empty()) << written;
     EXPECT_EQ(slurp(file), printed.out);
     EXPECT_EQ(run({"report", "--set", "cycle.feature=sphere"}).exit_code, 2);
+    ::unsetenv("SOURCE_DATE_EPOCH");
+}
+
+// Issue 12: the report opens with its title, today's date, the version and
+// the scenario's file name ("untitled" for the defaults).
+TEST_F(CycleCli, ReportHeaderNamesTheDateVersionAndScenarioFile) {
+    const std::string file = data_file("scenario_single_touch_3000.json");
+    for (const auto& [arguments, name] :
+         {std::pair<std::vector<std::string>, std::string>{{"report"}, "untitled"},
+          {{"report", file}, "scenario_single_touch_3000.json"}}) {
+        const CliRun r = run(arguments);
+        ASSERT_EQ(r.exit_code, 0) << r;
+        EXPECT_EQ(r.out.rfind("# ProbeCycle cycle report\n# date," + report_date() +
+                                  "\n# version," + program_version() + "\n# scenario," + name +
+                                  "\n\n# scenario\nkey,value,unit\n",
+                              0),
+                  0U)
+            << r.out.substr(0, 200);
+    }
 }
 
 TEST_F(CycleCli, FailedSweepLeavesAnExistingFileUntouched) {

@@ -75,8 +75,10 @@ TEST_P(GoldenOutput, MatchesTheGoldenFileByteForByte) {
     const std::size_t at = arguments.find(report_marker);
     if (at != std::string::npos)
         arguments.replace(at, report_marker.size(), (dir / "report.csv").string());
-    // Run from tests/data so that relative input paths are the same everywhere.
-    const std::string command = "cd '" + kData.string() + "' && '" PROBECYCLE_CLI_PATH "' " +
+    // Run from tests/data so that relative input paths are the same everywhere,
+    // on a fixed day: the reports' date is SOURCE_DATE_EPOCH's (2025-11-26).
+    const std::string command = "cd '" + kData.string() +
+                                "' && SOURCE_DATE_EPOCH=1764115200 '" PROBECYCLE_CLI_PATH "' " +
                                 arguments + " >'" + out.string() + "' 2>'" + err.string() + "'";
     const int status = std::system(command.c_str());
     ASSERT_TRUE(WIFEXITED(status));
@@ -108,6 +110,7 @@ INSTANTIATE_TEST_SUITE_P(Cli, GoldenOutput, testing::Values(
     Golden{"calibrate_ring.json",     "calibrate ring lab_ring.csv --gauge-diameter 50 --report REPORT"},
     Golden{"calibrate_length.json",   "calibrate length --surface-z 10 --trigger-z 112.3456 --trigger-z 112.3461 --active-length 0 --nominal-length 102.34"},
     Golden{"latency_fit.json",        "latency fit lab_delay.csv --interpolation-period-s 0.001"},
+    Golden{"latency_fit_scatter.json", "latency fit lab_delay_report.csv --interpolation-period-s 0.001 --report REPORT"},
     Golden{"latency_compensate.json", "latency compensate --touch braking --speed-fraction 0.3 --sweep 4"},
     Golden{"compare_run.json",        "compare run --plan comparison/plan.csv --reference-cmm comparison/reference_cmm.csv --test-omm comparison/test_omm.csv --reference-omm comparison/reference_omm.csv --c-axis 200,100 --block-c0 comparison/block_c0.csv --block-c180 comparison/block_c180.csv --tolerance 0.01 --report REPORT"},
     Golden{"compare_cerrors.json",    "compare cerrors --block-c0 comparison/block_c0.csv --block-c180 comparison/block_c180.csv --c-axis 200,100"}),

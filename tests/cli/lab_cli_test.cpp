@@ -144,17 +144,44 @@ TEST(LabCalibrateRing, ExactFileGivesTheKnownAnswers) {
     EXPECT_TRUE(out.at("warnings").empty());
 }
 
+// Runs a command with --report FILE on the golden files' day (golden_test.cpp)
+// and returns the report ("" when the command failed).
+std::string report_on_golden_day(const std::string& arguments, const fs::path& report) {
+    ::setenv("SOURCE_DATE_EPOCH", "1764115200", 1);
+    const LabRun run = run_lab_cli(arguments + " --report " + lab_quote(report.string()));
+    ::unsetenv("SOURCE_DATE_EPOCH");
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return run.exit_code == 0 ? lab_read(report) : std::string();
+}
+
 // --report writes the Calibration tab's CSV report: the core's text for the same fit.
 TEST(LabCalibrateRing, ReportFileIsTheCalibrationReport) {
     const LabTempDir dir;
-    const fs::path report = dir / "ring_report.csv";
-    const auto run = run_lab_cli("calibrate ring " + lab_quote(lab_data("lab_ring.csv")) +
-                                 " --gauge-diameter 50 --report " + lab_quote(report.string()));
-    ASSERT_EQ(run.exit_code, 0) << run.err;
-    using namespace probecycle;
-    const std::string text = read_text_file(report.string());
-    EXPECT_EQ(text, read_text_file(lab_data("golden/calibrate_ring_report.csv")));
-    EXPECT_EQ(text.rfind("# ring\n", 0), 0u) << text;
+    const std::string text = report_on_golden_day(
+        "calibrate ring " + lab_quote(lab_data("lab_ring.csv")) + " --gauge-diameter 50",
+        dir / "ring_report.csv");
+    EXPECT_EQ(text, lab_read(lab_data("golden/calibrate_ring_report.csv")));
+    EXPECT_EQ(text.rfind("# ProbeCycle calibration report\n# date,2025-11-26\n", 0), 0u) << text;
+    EXPECT_NE(text.find("\n# points,lab_ring.csv\n\n# ring\n"), std::string::npos) << text;
+}
+
+// Issue 12: `latency fit --report` writes the Latency tab's report, the
+// golden file of its example (golden_test.cpp) with its header.
+TEST(LabLatencyFit, ReportFileIsTheDelayFitReport) {
+    const LabTempDir dir;
+    const std::string text =
+        report_on_golden_day("latency fit " + lab_quote(lab_data("lab_delay_report.csv")) +
+                                 " --interpolation-period-s 0.001",
+                             dir / "delay_report.csv");
+    EXPECT_EQ(text, lab_read(lab_data("golden/latency_fit_scatter_report.csv")));
+    EXPECT_EQ(text.rfind("# ProbeCycle delay fit report\n# date,2025-11-26\n", 0), 0u) << text;
+    EXPECT_NE(text.find("\n# touches,lab_delay_report.csv\n\n# fit\n"), std::string::npos) << text;
+    // A bad file writes no report.
+    const fs::path none = dir / "none.csv";
+    const auto bad = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay_one_feed.csv")) +
+                                 " --report " + lab_quote(none.string()));
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_FALSE(fs::exists(none));
 }
 
 TEST(LabCalibrateRing, OneOrientationSaysThereIsNoRunout) {

@@ -776,6 +776,28 @@ void PlotView::set_visible(CurveId curve, bool visible) {
     impl_->refresh_legend();
 }
 
+void PlotView::set_fill(CurveId curve, const QColor& color) {
+    Impl::Curve* c = impl_->find(curve);
+    if (c == nullptr || fill(curve) == color) return;
+    if (c->area != nullptr) {
+        c->area->setBrush(color);
+        QPen pen = c->area->pen();
+        if (pen.style() != Qt::NoPen) {
+            pen.setColor(color);
+            c->area->setPen(pen);
+        }
+        return;
+    }
+    c->series->setColor(color);
+    for (std::size_t k = 1; k < c->pieces.size(); ++k) c->pieces[k].series->setColor(color);
+}
+
+QColor PlotView::fill(CurveId curve) const {
+    const Impl::Curve* c = impl_->find(curve);
+    if (c == nullptr) return {};
+    return c->area != nullptr ? c->area->brush().color() : c->series->color();
+}
+
 QList<QPointF> PlotView::points(CurveId curve) const {
     const Impl::Curve* c = impl_->find(curve);
     if (c == nullptr) return {};

@@ -85,6 +85,10 @@ class PlotView : public QWidget {
     void set_area(CurveId curve, const QList<QPointF>& upper, const QList<QPointF>& lower);
     void set_name(CurveId curve, const QString& name);
     void set_visible(CurveId curve, bool visible);
+    // An area's fill (its outline, if it has one, too); a line's or markers'
+    // colour. fill() reads it back.
+    void set_fill(CurveId curve, const QColor& color);
+    QColor fill(CurveId curve) const;
 
     // What is drawn: for tests and for the compare feature. points() are the
     // points handed over (with their breaks; a rule's x).

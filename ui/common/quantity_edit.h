@@ -2,9 +2,11 @@
 
 // A typed editor for one quantity: label, value with unit and range, and for
 // the quantities engineers sweep by hand a slider (log scale where the range
-// spans decades). It shows display units and speaks internal units.
+// spans decades), stopping at round numbers in the display unit. It shows
+// display units and speaks internal units.
 
 #include <QWidget>
+#include <vector>
 
 #include "ui/common/parameter_info.h"
 
@@ -47,6 +49,9 @@ class QuantityEdit : public QWidget {
     QLabel* label_{nullptr};
     QDoubleSpinBox* spin_{nullptr};
     QSlider* slider_{nullptr};
+    // The round values the slider stops at, display units, ascending; the
+    // slider's position is an index into them.
+    std::vector<double> stops_;
 };
 
 }  // namespace probecycle::ui

@@ -384,7 +384,8 @@ void CycleCharts::retranslate() {
         "cycle is invalid and has no cycle time (see the warnings)."));
     phases_->setToolTip(
         tr("The phases of the current cycle in time order, each row with its total "
-           "time over all touches."));
+           "time over all touches. Grey: the cycle is invalid and cannot run as set (the "
+           "title and the warnings say why); its phases are what the model computes."));
     overtravel_->setToolTip(tr(
         "Red: overtravel of a touch at each feed against the probe's limit (dashed); the "
         "shaded feeds overtravel beyond it. Two-touch: the first touch solid, the second "
@@ -407,7 +408,12 @@ void CycleCharts::set_phases_title() {
     if (!has_result_) {
         phases_->set_title(tr("Phases"));
     } else if (!cycle_valid_) {
-        phases_->set_title(tr("Phases of an invalid cycle"));
+        // As the cycle-time readout: what makes it invalid, in place of a total.
+        QStringList why;
+        for (const WarningCode code : invalid_reasons_) why << warning_title(code);
+        //: %1: why the cycle cannot run, e.g. "Backoff too small"
+        phases_->set_title(
+            tr("Phases of an invalid cycle (grey): %1").arg(why.join(QStringLiteral("; "))));
     } else {
         phases_->set_title(tr("Phases: total %1").arg(format_seconds(total_s_)));
     }
@@ -493,6 +499,10 @@ void CycleCharts::draw_phases(const Computed& c) {
     const CycleResult& cycle = c.cycle();
     total_s_ = cycle.total();
     cycle_valid_ = cycle.valid();
+    invalid_reasons_.clear();
+    for (const Warning& w : cycle.warnings()) {
+        if (w.severity == Severity::error) invalid_reasons_.push_back(w.code);
+    }
     set_phases_title();
 
     // Rows in the order the phases first happen, the first at the top.
@@ -553,6 +563,9 @@ void CycleCharts::draw_phases(const Computed& c) {
         const std::size_t k = static_cast<std::size_t>(phase);
         const Ref& ref = phase_areas_[k];
         ref.plot->set_area(ref.curve, phase_upper_[k], phase_lower_[k]);
+        // Issue 12: an invalid cycle's phases are grey, as the cycle-time
+        // chart's invalid stretches: no bar of it looks like a cycle that runs.
+        ref.plot->set_fill(ref.curve, cycle_valid_ ? phase_colour(phase) : kInvalidStretchColour);
         ref.plot->set_visible(ref.curve, phase_present_[k]);
     }
 }
@@ -727,6 +740,11 @@ QStringList CycleCharts::series_ids() const {
 bool CycleCharts::series_visible(const QString& id) const {
     const auto it = refs_.find(id);
     return it != refs_.end() && it->second.plot->is_visible(it->second.curve);
+}
+
+QColor CycleCharts::series_color(const QString& id) const {
+    const auto it = refs_.find(id);
+    return it != refs_.end() ? it->second.plot->fill(it->second.curve) : QColor();
 }
 
 }  // namespace probecycle::ui

@@ -11,6 +11,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include "ui/common/plot_view.h"
 #include "ui/cycle/computation.h"
@@ -41,6 +42,8 @@ class CycleCharts : public QWidget {
     QList<QPointF> series_points(const QString& id) const;
     QStringList series_ids() const;
     bool series_visible(const QString& id) const;
+    // An area's fill, a line's colour (grey where a cycle is invalid).
+    QColor series_color(const QString& id) const;
 
   protected:
     void changeEvent(QEvent* event) override;
@@ -127,7 +130,8 @@ class CycleCharts : public QWidget {
     std::optional<Baseline> baseline_;
     bool has_result_{false};
     double total_s_{0.0};
-    bool cycle_valid_{true};  // an invalid cycle's phases are titled as such, without a total
+    bool cycle_valid_{true};  // an invalid cycle's phases are grey, titled with why, no total
+    std::vector<WarningCode> invalid_reasons_;
     std::array<bool, kPhaseCount> phase_present_{};
     StableRange phases_x_, motion_x_, motion_y_;
 };

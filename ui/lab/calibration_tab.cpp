@@ -397,6 +397,7 @@ bool CalibrationTab::import_file(const QString& path) {
         return false;
     }
     remember_folder_of(path);
+    imported_ = ImportedText{QFileInfo(path).fileName(), *text};
     return fit_text(*text, QFileInfo(path).fileName());
 }
 
@@ -417,6 +418,7 @@ bool CalibrationTab::fit_text(const QString& text, const QString& source) {
         return false;
     }
     points_ = std::move(points);
+    points_from_ = data_source_name(imported_, text);
     options_ = options;
     result_ = std::move(result);
     fitted_text_ = text;
@@ -783,17 +785,11 @@ bool CalibrationTab::export_report(const QString& path) {
     std::optional<LengthReportInput> length;
     if (length_result_ && length_input_)
         length = LengthReportInput{*length_input_, *length_result_};
-    try {
-        write_file_atomically(QFile::encodeName(path).toStdString(),
-                              calibration_report_csv(ring, length));
-    } catch (const std::exception&) {
-        show_live_error(export_status_,
-                        [this, error = current_error_text()] { return last_error_ = error(); });
-        return false;
-    }
-    remember_folder_of(path);
-    show_saved(export_status_, path);
-    return true;
+    ReportHeader header;
+    header.date = report_date();
+    header.subject = result_ ? points_from_ : "none";
+    return write_report(path, calibration_report_csv(ring, length, header), export_status_,
+                        last_error_);
 }
 
 void CalibrationTab::import_dialog() {
@@ -804,8 +800,8 @@ void CalibrationTab::import_dialog() {
 }
 
 void CalibrationTab::export_dialog() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export calibration report"),
-                                                      dialog_start(), tr("CSV files (*.csv)"));
+    const QString path = ask_report_path(this, tr("Export calibration report"),
+                                         QStringLiteral("calibration-report.csv"));
     if (!path.isEmpty()) export_report(path);
 }
 

@@ -19,10 +19,12 @@
 #include <QWidget>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/lab/calibration.h"
 #include "core/project/project_file.h"
+#include "ui/lab/lab_widgets.h"
 
 class QComboBox;
 class QFormLayout;
@@ -174,8 +176,10 @@ class CalibrationTab : public QWidget {
     QLabel* export_status_{nullptr};
 
     std::vector<RingPoint> points_;
-    QString fitted_text_;             // the CSV behind result_
-    RingCalibrationOptions options_;  // of result_
+    QString fitted_text_;  // the CSV behind result_
+    std::optional<ImportedText> imported_;
+    std::string points_from_{"pasted"};  // the report's subject: points_' file, or "pasted"
+    RingCalibrationOptions options_;     // of result_
     std::optional<RingCalibration> result_;
     QString last_error_;
 

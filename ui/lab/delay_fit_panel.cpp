@@ -19,6 +19,7 @@
 #include <stdexcept>
 
 #include "core/lab/compensation.h"  // lag_cycles_for_delay
+#include "core/lab/delay_fit_report.h"
 #include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
@@ -55,6 +56,7 @@ DelayFitPanel::DelayFitPanel(QWidget* parent) : QGroupBox(parent) {
     connect(period_, &QDoubleSpinBox::valueChanged, this, &DelayFitPanel::apply_period);
     connect(apply_group_, &QComboBox::currentIndexChanged, this, [this] { update_apply(); });
     connect(apply_button_, &QPushButton::clicked, this, [this] { apply_to_scenario(); });
+    connect(export_button_, &QPushButton::clicked, this, &DelayFitPanel::export_dialog);
     retranslate();
 }
 
@@ -129,12 +131,24 @@ QWidget* DelayFitPanel::build_results_column() {
     warnings_scroll->setWidgetResizable(true);
     warnings_scroll->setFrameShape(QFrame::NoFrame);
     warnings_scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    export_status_ = new QLabel(this);
+    export_status_->setObjectName(QStringLiteral("delay-export-status"));
+    export_status_->setWordWrap(true);
+    export_status_->hide();
+    export_button_ = new QPushButton(this);
+    export_button_->setObjectName(QStringLiteral("delay-export"));
+    export_button_->setEnabled(false);
+    auto* export_row = new QHBoxLayout;
+    export_row->addStretch(1);
+    export_row->addWidget(export_button_);
     auto* results = new QWidget(this);
     auto* results_column = new QVBoxLayout(results);
     results_column->setContentsMargins(0, 0, 0, 0);
     results_column->addWidget(tree_, 3);
     results_column->addWidget(warnings_title_);
     results_column->addWidget(warnings_scroll, 2);
+    results_column->addWidget(export_status_);
+    results_column->addLayout(export_row);
     results->setFixedWidth(480);
     return results;
 }
@@ -199,6 +213,10 @@ void DelayFitPanel::retranslate() {
     header->setToolTip(col_n, tr("Touches"));
     warnings_title_->setText(tr("Warnings"));
     warnings_->set_empty_text(tr("No warnings."));
+    export_button_->setText(tr("Export CSV report…"));
+    export_button_->setToolTip(
+        tr("The delay per group, its stability per feed, every touch's residual and the "
+           "warnings as CSV: the same file as probecycle-cli latency fit --report."));
     apply_label_->setText(tr("Delay to apply:"));
     apply_button_->setText(tr("Apply to scenario"));
     apply_button_->setToolTip(
@@ -268,7 +286,27 @@ bool DelayFitPanel::import_file(const QString& path) {
         return false;
     }
     remember_folder_of(path);
+    imported_ = ImportedText{QFileInfo(path).fileName(), *text};
     return fit_text(*text, QFileInfo(path).fileName());
+}
+
+bool DelayFitPanel::export_report(const QString& path) {
+    if (!fit_) {
+        last_error_ = tr("Nothing to export: fit the touches first.");
+        show_error(export_status_, last_error_);
+        return false;
+    }
+    ReportHeader header;
+    header.date = report_date();
+    header.subject = touches_from_;
+    return write_report(path, delay_fit_report_csv(touches_, fit_options_, *fit_, header),
+                        export_status_, last_error_);
+}
+
+void DelayFitPanel::export_dialog() {
+    const QString path =
+        ask_report_path(this, tr("Export delay fit report"), QStringLiteral("delay-report.csv"));
+    if (!path.isEmpty()) export_report(path);
 }
 
 bool DelayFitPanel::fit_text(const QString& text, const QString& source) {
@@ -290,6 +328,7 @@ bool DelayFitPanel::fit_text(const QString& text, const QString& source) {
         return false;
     }
     touches_ = std::move(touches);
+    touches_from_ = data_source_name(imported_, text);
     fit_options_ = options;
     fit_ = std::move(fit);
     fitted_text_ = text;
@@ -379,6 +418,8 @@ void DelayFitPanel::show_fit() {
         tree_->expandAll();
     }
     warnings_->show_items(items);
+    export_button_->setEnabled(fit_.has_value());
+    export_status_->hide();
 
     // The group choice for "Apply": the CLI's rule first, then each group.
     const QString chosen = apply_group_->currentData().toString();

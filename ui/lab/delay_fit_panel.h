@@ -24,6 +24,7 @@
 #include "core/cycle/scenario.h"
 #include "core/lab/delay_fit.h"
 #include "core/project/project_file.h"
+#include "ui/lab/lab_widgets.h"
 
 class QComboBox;
 class QLabel;
@@ -57,6 +58,10 @@ class DelayFitPanel : public QGroupBox {
     bool fit();
     // Reads a CSV file into the paste box and fits it.
     bool import_file(const QString& path);
+    // The fit and stability report (core delay_fit_report.h, the bytes of
+    // `latency fit --report`), written atomically; false with last_error()
+    // without a fit or when the file cannot be written.
+    bool export_report(const QString& path);
 
     const std::optional<DelayFit>& delay_fit() const { return fit_; }
     QString last_error() const { return last_error_; }
@@ -120,6 +125,7 @@ class DelayFitPanel : public QGroupBox {
     void update_apply();
     void retranslate();
     void import_dialog();
+    void export_dialog();
     std::optional<std::string> chosen_group() const;
     struct ApplyState {
         std::optional<AppliedDelay> applied;
@@ -149,9 +155,13 @@ class DelayFitPanel : public QGroupBox {
     QComboBox* apply_group_{nullptr};
     QLabel* apply_breakdown_{nullptr};
     QPushButton* apply_button_{nullptr};
+    QLabel* export_status_{nullptr};
+    QPushButton* export_button_{nullptr};
 
     std::vector<DelayTouch> touches_;
     QString fitted_text_;  // the CSV behind fit_
+    std::optional<ImportedText> imported_;
+    std::string touches_from_{"pasted"};  // the report's subject: touches_' file, or "pasted"
     DelayFitOptions fit_options_;
     std::optional<DelayFit> fit_;
     QString last_error_;

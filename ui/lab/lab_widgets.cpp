@@ -1,7 +1,9 @@
 #include "ui/lab/lab_widgets.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QFile>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QFontDatabase>
 #include <QLabel>
@@ -15,6 +17,7 @@
 #include "core/common/file_io.h"
 #include "core/common/input_error.h"
 #include "core/cycle/scenario.h"
+#include "ui/common/file_write.h"
 #include "ui/common/language.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/text_format.h"
@@ -207,6 +210,35 @@ QPlainTextEdit* make_csv_editor(QWidget* parent) {
     edit->setLineWrapMode(QPlainTextEdit::NoWrap);
     edit->setTabChangesFocus(true);
     return edit;
+}
+
+std::string data_source_name(const std::optional<ImportedText>& imported, const QString& text) {
+    return imported && imported->text == text ? imported->file_name.toStdString() : "pasted";
+}
+
+QString ask_report_path(QWidget* parent, const QString& title, const QString& file_name) {
+    QString path = QFileDialog::getSaveFileName(
+        parent, title, dialog_start(file_name),
+        tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "CSV files (*.csv)")));
+    if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".csv");
+    return path;
+}
+
+bool write_report(const QString& path, const std::string& csv, QLabel* status, QString& error) {
+    QString reason;
+    if (!write_file(path, QByteArray::fromStdString(csv), reason)) {
+        // Said again in the new language after a switch (issue 12).
+        const auto message = [path, reason] {
+            return tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "%1 could not be written: %2"))
+                .arg(QDir::toNativeSeparators(path), reason);
+        };
+        error = message();
+        show_live_error(status, message);
+        return false;
+    }
+    remember_folder_of(path);
+    show_saved(status, path);
+    return true;
 }
 
 void show_error(QLabel* label, const QString& text) {

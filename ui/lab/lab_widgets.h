@@ -12,6 +12,7 @@
 #include <exception>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/lab/calibration.h"
@@ -84,6 +85,23 @@ using LiveText = std::function<QString()>;
 // Returns the text, or nullopt with `error` saying why the file was unreadable.
 std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& path,
                                        LiveText& error);
+
+// Where a lab tab's data came from, for its report's header (report_header.h):
+// the file it was imported from while the text is still that file's, else
+// "pasted".
+struct ImportedText {
+    QString file_name;  // without its folder
+    QString text;
+};
+std::string data_source_name(const std::optional<ImportedText>& imported, const QString& text);
+
+// A lab tab's report export (issue 12): the save dialog, starting in the last
+// folder used (dialog_start) with `file_name`, ".csv" added; empty when the
+// user cancels.
+QString ask_report_path(QWidget* parent, const QString& title, const QString& file_name);
+// Writes the report atomically (write_file) and says where in `status`, or
+// why not (then false, with `error`); remembers the folder.
+bool write_report(const QString& path, const std::string& csv, QLabel* status, QString& error);
 
 // A message in the error colour.
 void show_error(QLabel* label, const QString& text);

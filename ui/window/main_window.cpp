@@ -848,7 +848,7 @@ bool MainWindow::export_csv_report(const QString& path) {
         return false;
     }
     const std::vector<double> feeds = report_feeds(c.scenario, c.analysis);
-    const std::string csv = csv_report(c.scenario, c.analysis, feeds);
+    const std::string csv = csv_report(c.scenario, c.analysis, feeds, report_header());
     QString error;
     if (!write_file(path, QByteArray::fromStdString(csv), error)) {
         report_error(QT_TR_NOOP("Could not export the report"),
@@ -859,6 +859,17 @@ bool MainWindow::export_csv_report(const QString& path) {
     show_status([path] { return tr("Report written to %1").arg(QDir::toNativeSeparators(path)); },
                 4000);
     return true;
+}
+
+// The reports' header: today (as the CLI: SOURCE_DATE_EPOCH's day when set)
+// and the scenario's file name, as the CLI names it.
+ReportHeader MainWindow::report_header() const {
+    ReportHeader header;
+    header.date = report_date();
+    if (!current_file_.isEmpty()) {
+        header.subject = QFileInfo(current_file_).fileName().toStdString();
+    }
+    return header;
 }
 
 // Issue 12: the current tab (the Cycle tab's charts, or the whole lab or

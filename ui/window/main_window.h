@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 
+#include "core/common/report_header.h"
 #include "core/project/project_file.h"
 #include "ui/cycle/computation.h"
 #include "ui/cycle/readouts.h"
@@ -91,6 +92,9 @@ class MainWindow : public QMainWindow {
     // lab's and the comparison's too.
     bool has_unsaved_changes() const;
     bool export_csv_report(const QString& path);
+    // The header of the cycle report: today's date (SOURCE_DATE_EPOCH's when
+    // set, as the CLI) and the scenario's file name, or "untitled".
+    ReportHeader report_header() const;
     // The current tab's charts at `width` pixels under a title line (issue 12).
     bool export_charts_png(const QString& path, int width = 1920);
     QImage export_image(int width);

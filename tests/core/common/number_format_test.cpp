@@ -27,6 +27,26 @@ TEST(FormatNumber, ShortestTextToTheDigitsAsked) {
     EXPECT_EQ(format_number(-INFINITY), "-inf");
 }
 
+TEST(FormatFixed, RoundedToTheDecimalsWithoutTrailingZeros) {
+    EXPECT_EQ(format_fixed(13.11179578, 6), "13.111796");
+    EXPECT_EQ(format_fixed(0.36, 6), "0.36");
+    EXPECT_EQ(format_fixed(15.0, 4), "15");
+    EXPECT_EQ(format_fixed(3986.09153, 1), "3986.1");
+    EXPECT_EQ(format_fixed(0.00152752523, 4), "0.0015");
+    EXPECT_EQ(format_fixed(-1e-9, 4), "0");  // no "-0"
+    EXPECT_EQ(format_fixed(-2.5, 0), "-2");  // round half to even, as printf
+    EXPECT_EQ(format_fixed(std::nan(""), 3), "NaN");
+}
+
+TEST(FormatExact, ShortestTextThatReadsBackAsTheValue) {
+    EXPECT_EQ(format_exact(0.06), "0.06");
+    EXPECT_EQ(format_exact(40000.0), "40000");
+    EXPECT_EQ(format_exact(2.1050000000000004), "2.1050000000000004");
+    for (const double v : {0.1, 1.0 / 3.0, 1e-6, 123456.789, -0.004}) {
+        EXPECT_EQ(parse_decimal(format_exact(v)), v) << v;
+    }
+}
+
 TEST(RoundTo, UpAndDownToTheStepWithoutMovingAValueOnIt) {
     EXPECT_DOUBLE_EQ(round_up_to(1.4716667, 0.001), 1.472);
     EXPECT_DOUBLE_EQ(round_down_to(3580.9, 1.0), 3580.0);

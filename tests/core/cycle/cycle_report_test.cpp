@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/common/csv_writer.h"
+#include "core/common/report_header.h"
 #include "core/common/units.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/scenario.h"
@@ -142,7 +143,7 @@ TEST(EvaluationJson, ValidAndTheReasonsWhenNot) {
     EXPECT_EQ(j["invalid_reasons"], nlohmann::json::array({"backoff_too_small"}));
     // The time is still given (what the model computes), but flagged.
     EXPECT_TRUE(j["cycle_time_s"].is_number());
-    const std::string report = csv_report(s);
+    const std::string report = csv_report(s, ReportHeader{});
     EXPECT_NE(report.find("\nvalid,false,\ninvalid_reasons,backoff_too_small,\n"),
               std::string::npos);
 }
@@ -176,13 +177,16 @@ TEST(SweepCsv, HeaderThenOneRowPerFeed) {
         const std::vector<std::string> fields = fields_of(lines[i + 1]);
         ASSERT_EQ(fields.size(), header.size()) << lines[i + 1];
         const SweepPoint& p = sweep.points[i];
-        EXPECT_NEAR(to_number(fields[0]), p.feed_mm_min, 1e-9 * p.feed_mm_min);
-        EXPECT_NEAR(to_number(fields[1]), p.cycle_time_s, 1e-6 * p.cycle_time_s);
-        EXPECT_NEAR(to_number(fields[2]), p.overtravel_mm, 1e-6 * p.overtravel_mm + 1e-9);
-        EXPECT_NEAR(to_number(fields[3]), p.uncertainty_mm, 1e-6 * p.uncertainty_mm + 1e-12);
+        // Rounded to the reports' resolution (csv_writer.h): 0.1 mm/min, 1 us, 0.1 um.
+        constexpr double half_feed = 0.05 + 1e-9;
+        constexpr double half_time = 0.5e-6 + 1e-12;
+        constexpr double half_length = 0.5e-4 + 1e-12;
+        EXPECT_NEAR(to_number(fields[0]), p.feed_mm_min, half_feed);
+        EXPECT_NEAR(to_number(fields[1]), p.cycle_time_s, half_time);
+        EXPECT_NEAR(to_number(fields[2]), p.overtravel_mm, half_length);
+        EXPECT_NEAR(to_number(fields[3]), p.uncertainty_mm, half_length);
         for (std::size_t k = 0; k < kPhaseCount; ++k) {
-            EXPECT_NEAR(to_number(fields[4 + k]), p.phase_time_s[k],
-                        1e-6 * p.phase_time_s[k] + 1e-9);
+            EXPECT_NEAR(to_number(fields[4 + k]), p.phase_time_s[k], half_time);
         }
         EXPECT_EQ(fields[4 + kPhaseCount], p.valid() ? "true" : "false");
         EXPECT_EQ(fields[5 + kPhaseCount], invalid_codes_text(p.invalid_codes, ";"));
@@ -225,7 +229,9 @@ TEST(CsvReport, SectionsInOrder) {
     const Analysis a = analyse(s);
     const std::vector<double> feeds = linear_feeds(100.0, 3000.0, 100.0);
     const SweepResult sweep = sweep_feeds(s, feeds);
-    const std::string report = csv_report(s, a, feeds);
+    const std::string report = csv_report(s, a, feeds, ReportHeader{.date = "2026-11-26"});
+    EXPECT_EQ(report.rfind("# ProbeCycle cycle report\n# date,2026-11-26\n# version,", 0), 0U)
+        << report.substr(0, 200);
     std::size_t at = 0;
     for (const char* section : {"# scenario", "# summary", "# phases", "# warnings", "# sweep"}) {
         const std::size_t found = report.find(section, at);
@@ -239,6 +245,56 @@ TEST(CsvReport, SectionsInOrder) {
     EXPECT_NE(report.find(sweep_to_csv(sweep, &optimised)), std::string::npos);
     EXPECT_NE(report.find("backoff_excess"), std::string::npos);
     EXPECT_NE(report.find("machine.scan_period_s"), std::string::npos);
+}
+
+// Issue 12: the summary speaks evaluate's keys (the README documents them),
+// each value evaluate's rounded to the digits its unit gets in the reports.
+TEST(CsvReport, SummaryHasEvaluatesKeysRoundedToTheModelsDigits) {
+    for (Scenario s : {two_touch_with_warnings(), Scenario{}}) {
+        if (s.cycle.backoff_mm < 3.0) s.cycle.backoff_mm = 0.5;  // invalid: backoff_too_small
+        const Analysis a = analyse(s);
+        const nlohmann::json j = nlohmann::json::parse(evaluation_to_json(a));
+        const std::string report = csv_report(s, a, std::vector<double>{1000.0}, ReportHeader{});
+        const std::size_t begin = report.find("# summary\nkey,value,unit\n");
+        ASSERT_NE(begin, std::string::npos);
+        const std::size_t end = report.find("\n\n", begin);
+        const std::vector<std::string> rows = split(report.substr(begin, end - begin), '\n');
+        std::set<std::string> keys;
+        for (std::size_t i = 2; i < rows.size(); ++i) {
+            const std::vector<std::string> f = fields_of(rows[i]);
+            ASSERT_EQ(f.size(), 3U) << rows[i];
+            keys.insert(f[0]);
+            ASSERT_TRUE(j.contains(f[0])) << f[0] << " is not a key of evaluate";
+            const nlohmann::json& v = j[f[0]];
+            if (v.is_null()) {
+                EXPECT_EQ(f[1], "") << f[0];
+            } else if (v.is_boolean()) {
+                EXPECT_EQ(f[1], v.get<bool>() ? "true" : "false") << f[0];
+            } else if (v.is_string()) {
+                EXPECT_EQ(f[1], v.get<std::string>()) << f[0];
+            } else if (v.is_array()) {
+                std::string joined;
+                for (const auto& code : v)
+                    joined += (joined.empty() ? "" : ";") + code.get<std::string>();
+                EXPECT_EQ(f[1], joined) << f[0];
+            } else {
+                const double value = v.get<double>();
+                const std::string want = f[2] == "s"    ? csv_time_s(value)
+                                         : f[2] == "mm" ? csv_length_mm(value)
+                                                        : csv_feed_mm_min(value);
+                EXPECT_EQ(f[1], want) << f[0];
+                // No more digits than the unit's resolution.
+                const std::size_t dot = f[1].find('.');
+                const std::size_t decimals = dot == std::string::npos ? 0 : f[1].size() - dot - 1;
+                EXPECT_LE(decimals, f[2] == "s" ? 6U : f[2] == "mm" ? 4U : 1U) << f[0];
+            }
+        }
+        std::set<std::string> want;
+        for (const auto& [key, value] : j.items()) {
+            if (key != "phases" && key != "warnings") want.insert(key);
+        }
+        EXPECT_EQ(keys, want);
+    }
 }
 
 // ---------------------------------------------------------------------------

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/common/report_header.h"
 #include "tests/ui/lab/lab_test_data.h"
 
 namespace probecycle::ui {
@@ -230,6 +231,11 @@ TEST_F(LabCalibrationTab, ExportWritesTheReportRows) {
     const QString path = dir.filePath(QStringLiteral("calibration.csv"));
     ASSERT_TRUE(tab_.export_report(path)) << tab_.last_error().toStdString();
     const QString csv = read_file(path);
+    // The header of every report (issue 12), naming the imported file.
+    EXPECT_TRUE(csv.startsWith(QStringLiteral("# ProbeCycle calibration report\n# date,") +
+                               QString::fromStdString(report_date())))
+        << csv.toStdString();
+    EXPECT_TRUE(csv.contains(QStringLiteral("\n# points,lab_ring.csv\n\n# ring\n")));
 
     const auto ring = section_values(csv, QStringLiteral("ring"));
     ASSERT_EQ(ring.count(QStringLiteral("center_x")), 1u) << csv.toStdString();

@@ -5,15 +5,18 @@
 #include <gtest/gtest.h>
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QImage>
 #include <QLabel>
 #include <QPixmap>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QTemporaryDir>
 #include <cmath>
 #include <cstdlib>
 
+#include "core/lab/delay_fit_report.h"
 #include "tests/ui/lab/lab_test_data.h"
 
 namespace probecycle::ui {
@@ -119,6 +122,46 @@ TEST_F(LabLatencyTab, BadFilesNameTheLineAndKeepThePreviousFit) {
     EXPECT_TRUE(tab_.last_error().contains(QStringLiteral("direction")))
         << tab_.last_error().toStdString();
     EXPECT_EQ(tab_.results_text(), shown);
+}
+
+// Issue 12: the tab exports its fit and stability results, the bytes of
+// `latency fit --report` (core delay_fit_report.h), under a header naming the
+// touches' file while they are that file's, and "pasted" once edited.
+TEST_F(LabLatencyTab, ExportWritesTheCoresFitAndStabilityReport) {
+    const QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("delay.csv"));
+    auto* button = tab_.findChild<QPushButton*>(QStringLiteral("delay-export"));
+    ASSERT_NE(button, nullptr);
+    EXPECT_FALSE(button->isEnabled());
+    EXPECT_FALSE(tab_.export_report(path));  // nothing fitted yet
+    EXPECT_FALSE(tab_.last_error().isEmpty());
+    EXPECT_FALSE(QFile::exists(path));
+
+    ASSERT_TRUE(import_delay()) << tab_.last_error().toStdString();
+    EXPECT_TRUE(button->isEnabled());
+    ASSERT_TRUE(tab_.export_report(path)) << tab_.last_error().toStdString();
+    const auto read = [&path] {
+        QFile file(path);
+        return file.open(QIODevice::ReadOnly) ? file.readAll().toStdString() : std::string();
+    };
+    const std::vector<DelayTouch> touches = parse_delay_csv(tab_.touches_text().toStdString());
+    DelayFitOptions options;
+    options.interpolation_period_s = 0.001;
+    ReportHeader header{.date = report_date(), .subject = "lab_delay.csv"};
+    EXPECT_EQ(read(), delay_fit_report_csv(touches, options, *tab_.delay_fit(), header));
+    EXPECT_NE(read().find("\n# touches,lab_delay.csv\n"), std::string::npos);
+    EXPECT_NE(read().find("\nX+,X,1,0.0085,10,8.5,8,0,15\n"), std::string::npos) << read();
+
+    // Edited in the paste box and fitted again: no longer the file's.
+    tab_.set_touches_text(tab_.touches_text() + QStringLiteral("X,+1,1500,10.2125\n"));
+    ASSERT_TRUE(tab_.fit()) << tab_.last_error().toStdString();
+    ASSERT_TRUE(tab_.export_report(path));
+    EXPECT_NE(read().find("\n# touches,pasted\n"), std::string::npos) << read();
+    EXPECT_NE(read().find("\nX+,1500,0.2125,"), std::string::npos) << read();
+
+    // A folder cannot be written: false, the reason, and the status says so.
+    EXPECT_FALSE(tab_.export_report(dir.path()));
+    EXPECT_FALSE(tab_.last_error().isEmpty());
 }
 
 TEST_F(LabLatencyTab, FewFeedsWarn) {

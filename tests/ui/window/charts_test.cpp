@@ -17,6 +17,7 @@
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
 #include "ui/common/plot_view.h"
+#include "ui/common/text_format.h"
 #include "ui/cycle/computation.h"
 
 namespace probecycle::ui {
@@ -137,6 +138,49 @@ TEST_F(ChartsTest, AnInvalidCycleIsMarkedAtItsFeedAndHasNoDot) {
     EXPECT_FALSE(visible("cycle_time.current_invalid"));
     EXPECT_FALSE(cycle_time_->legend_texts().contains(QStringLiteral("This cycle (invalid)")));
     EXPECT_TRUE(cycle_time_->legend_texts().contains(QStringLiteral("This cycle")));
+}
+
+// Item 5: the phases of an invalid cycle are grey, as the cycle-time chart's
+// invalid stretches, and the title says why instead of giving a total.
+TEST_F(ChartsTest, AnInvalidCyclesPhasesAreGreyAndTitledWithTheReason) {
+    auto* phases = charts_.findChild<PlotView*>(QStringLiteral("chart:phases"));
+    ASSERT_NE(phases, nullptr);
+    const QColor grey = charts_.series_color(QStringLiteral("cycle_time.two_touch_invalid"));
+    const auto shown_phases = [&] {
+        QStringList ids;
+        for (const QString& id : charts_.series_ids()) {
+            if (id.startsWith(QLatin1String("phases.")) && charts_.series_visible(id)) ids << id;
+        }
+        return ids;
+    };
+
+    const Computed& invalid = draw(over_the_limit());
+    ASSERT_FALSE(invalid.cycle().valid());
+    const QStringList invalid_ids = shown_phases();
+    ASSERT_GE(invalid_ids.size(), 5) << joined(invalid_ids);
+    for (const QString& id : invalid_ids) {
+        EXPECT_EQ(charts_.series_color(id), grey) << id.toStdString();
+    }
+    EXPECT_TRUE(phases->title().contains(QLatin1String("invalid")))
+        << phases->title().toStdString();
+    EXPECT_TRUE(phases->title().contains(warning_title(WarningCode::overtravel_limit)))
+        << phases->title().toStdString();
+    EXPECT_FALSE(phases->title().contains(QLatin1String("total")));
+
+    const Computed& valid = draw(all_valid());
+    ASSERT_TRUE(valid.cycle().valid());
+    const QStringList valid_ids = shown_phases();
+    ASSERT_GE(valid_ids.size(), 5);
+    QStringList colours;
+    for (const QString& id : valid_ids) {
+        const QColor colour = charts_.series_color(id);
+        EXPECT_NE(colour, grey) << id.toStdString();
+        colours << colour.name();
+    }
+    colours.removeDuplicates();
+    EXPECT_EQ(colours.size(), valid_ids.size()) << joined(colours);  // one colour a phase
+    EXPECT_TRUE(phases->title().startsWith(QLatin1String("Phases: total")))
+        << phases->title().toStdString();
 }
 
 // Item 2: each curve is drawn exactly where its cycles are valid, and grey at

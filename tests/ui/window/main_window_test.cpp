@@ -8,6 +8,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDate>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -220,11 +221,13 @@ TEST_F(MainWindowTest, FeedSliderIsLogarithmicFrom10To10000) {
     EXPECT_DOUBLE_EQ(window_->scenario().cycle.probe_feed_mm_min, 10.0);
     drag_to_fraction(s, 1.0);
     EXPECT_DOUBLE_EQ(window_->scenario().cycle.probe_feed_mm_min, 10000.0);
-    drag_to_fraction(s, 0.5);  // the geometric middle of 10..10000
-    EXPECT_NEAR(window_->scenario().cycle.probe_feed_mm_min, 316.0, 1.0);
+    // The geometric middle of 10..10000 (316), to a round stop within 10 %.
+    drag_to_fraction(s, 0.5);
+    const double middle = window_->scenario().cycle.probe_feed_mm_min;
+    EXPECT_NEAR(std::log(middle / 316.0), 0.0, std::log(1.1)) << middle;
     const QList<QPointF> marker = window_->series_points(QStringLiteral("cycle_time.feed"));
     ASSERT_EQ(marker.size(), 2);
-    EXPECT_NEAR(marker[0].x(), 316.0, 1.0);
+    EXPECT_EQ(marker[0].x(), middle);
 }
 
 TEST_F(MainWindowTest, ScanPeriodSliderSpans1usTo20ms) {
@@ -348,18 +351,118 @@ TEST_F(MainWindowTest, CsvExportWritesTheCoreReport) {
     // One row per phase of the current cycle, after the header.
     const qsizetype phases = lines.indexOf(QStringLiteral("# phases"));
     ASSERT_GE(phases, 0);
-    EXPECT_EQ(lines[phases + 1], QStringLiteral("touch,phase,start_s,time_s,distance_mm"));
+    EXPECT_EQ(lines[phases + 1], QStringLiteral("touch,name,start_s,time_s,distance_mm"));
     EXPECT_EQ(lines.indexOf(QStringLiteral(""), phases) - phases - 2,
               static_cast<qsizetype>(window_->computed().cycle().phases().size()));
     // The same bytes as `probecycle-cli report` writes for the scenario.
     const Computed& c = window_->computed();
-    EXPECT_EQ(csv.toStdString(), csv_report(window_->scenario()));
+    EXPECT_EQ(csv.toStdString(), csv_report(window_->scenario(), window_->report_header()));
     // The sweep has one row per report feed.
     const qsizetype sweep = lines.indexOf(QStringLiteral("# sweep"));
     EXPECT_TRUE(lines[sweep + 1].startsWith(QLatin1String("feed_mm_min,cycle_time_s")));
     qsizetype rows = 0;
     for (qsizetype i = sweep + 2; i < lines.size() && !lines[i].isEmpty(); ++i) ++rows;
     EXPECT_EQ(rows, static_cast<qsizetype>(report_feeds(c.scenario, c.analysis).size()));
+}
+
+// Issue 12, item 5: every slider stops at round numbers in its unit (the feed
+// went 3000 -> 3220), finely enough to drag, and a round value typed in the
+// spin box puts the slider on it and back.
+TEST_F(MainWindowTest, SlidersStopAtRoundValuesThatRoundTripThroughTheSpinBox) {
+    const QList<QSlider*> sliders = window_->findChildren<QSlider*>();
+    int checked = 0;
+    for (QSlider* s : sliders) {
+        if (!s->objectName().startsWith(QLatin1String("slider:"))) continue;
+        const QString key = s->objectName().mid(7);
+        auto* box = window_->findChild<QDoubleSpinBox*>(QStringLiteral("spin:") + key);
+        ASSERT_NE(box, nullptr) << key.toStdString();
+        std::vector<double> values;
+        for (int p = s->minimum(); p <= s->maximum(); ++p) {
+            s->setValue(p);
+            values.push_back(box->value());
+        }
+        ASSERT_GE(values.size(), 30U) << key.toStdString();
+        const bool log = values.front() > 0.0 && values.back() / values.front() >= 100.0;
+        const double step = values[1] - values[0];
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            const double v = values[i];
+            const std::string what = key.toStdString() + " at " + std::to_string(v);
+            if (i > 0) {
+                EXPECT_GT(v, values[i - 1]) << what;
+            }
+            if (log) {
+                // Two significant digits, each stop at most 10 % past the one below
+                // (or one step of the spin box's last digit where that is coarser).
+                const double m = v / std::pow(10.0, std::floor(std::log10(v)));
+                EXPECT_NEAR(m * 10.0, std::round(m * 10.0), 1e-6) << what;
+                const double last_digit = std::pow(10.0, -box->decimals());
+                if (i > 0 && v - values[i - 1] > 1.5 * last_digit) {
+                    EXPECT_LE(v / values[i - 1], 1.1 + 1e-9) << what;
+                }
+            } else {
+                // A 1-2-5 step, the same all along, from a multiple of it.
+                const double mantissa = step / std::pow(10.0, std::floor(std::log10(step)));
+                EXPECT_TRUE(std::abs(mantissa - 1.0) < 1e-6 || std::abs(mantissa - 2.0) < 1e-6 ||
+                            std::abs(mantissa - 5.0) < 1e-6)
+                    << key.toStdString() << " steps by " << step;
+                EXPECT_NEAR(v / step, std::round(v / step), 1e-6) << what;
+                if (i > 0) {
+                    EXPECT_NEAR(v - values[i - 1], step, 1e-9) << what;
+                }
+            }
+        }
+        // A round value typed in puts the slider on its stop, and the stop gives it back.
+        for (std::size_t i = 0; i < values.size(); i += 7) {
+            box->setValue(values[(i + values.size() / 2) % values.size()]);
+            box->setValue(values[i]);
+            EXPECT_EQ(s->value(), s->minimum() + static_cast<int>(i)) << key.toStdString();
+            s->setValue(s->value() == s->maximum() ? s->minimum() : s->maximum());
+            s->setValue(s->minimum() + static_cast<int>(i));
+            EXPECT_EQ(box->value(), values[i]) << key.toStdString();
+        }
+        ++checked;
+    }
+    EXPECT_GE(checked, 4);  // feed, time constant, scan period, backoff
+    settle();
+    // The feed's next stop after 3000 mm/min is 3200.
+    spin("cycle.probe_feed_mm_min")->setValue(3000.0);
+    QSlider* feed = slider("cycle.probe_feed_mm_min");
+    feed->setValue(feed->value() + 1);
+    EXPECT_EQ(spin("cycle.probe_feed_mm_min")->value(), 3200.0);
+    settle();
+    EXPECT_EQ(window_->scenario().cycle.probe_feed_mm_min, 3200.0);
+}
+
+// Issue 12: the report says what it is, when, by which version and of which
+// scenario, in comment lines a spreadsheet shows as name and value.
+TEST_F(MainWindowTest, CsvReportOpensWithTitleDateVersionAndTheScenariosName) {
+    QTemporaryDir dir;
+    const QString scenario = dir.filePath(QStringLiteral("bore, left.json"));
+    ASSERT_TRUE(window_->save_scenario(scenario)) << window_->last_error().toStdString();
+    const QString path = dir.filePath(QStringLiteral("report.csv"));
+    for (const QString& name :
+         {QStringLiteral("untitled"), QStringLiteral("\"bore, left.json\"")}) {
+        if (name != QStringLiteral("untitled")) {
+            ASSERT_TRUE(window_->open_scenario(scenario));
+        } else {
+            window_->set_unsaved_answer(UnsavedAnswer::discard);
+            ASSERT_TRUE(window_->new_scenario());
+        }
+        ASSERT_TRUE(window_->export_csv_report(path)) << window_->last_error().toStdString();
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'));
+        ASSERT_GT(lines.size(), 5);
+        EXPECT_EQ(lines[0], QStringLiteral("# ProbeCycle cycle report"));
+        EXPECT_EQ(lines[1], QStringLiteral("# date,") + QString::fromStdString(report_date()));
+        EXPECT_TRUE(QDate::fromString(lines[1].mid(7), Qt::ISODate).isValid())
+            << lines[1].toStdString();
+        EXPECT_EQ(lines[2],
+                  QStringLiteral("# version,") + QString::fromStdString(program_version()));
+        EXPECT_EQ(lines[3], QStringLiteral("# scenario,") + name);
+        EXPECT_EQ(lines[4], QString());
+        EXPECT_EQ(lines[5], QStringLiteral("# scenario"));
+    }
 }
 
 TEST_F(MainWindowTest, ChartsExportAsPng) {
@@ -795,7 +898,11 @@ TEST_F(MainWindowTest, AnInvalidCycleShowsNoTimeButWhy) {
     EXPECT_FALSE(window_->series_visible(QStringLiteral("cycle_time.current")));
     const auto* phases = window_->findChild<PlotView*>(QStringLiteral("chart:phases"));
     ASSERT_NE(phases, nullptr);
-    EXPECT_EQ(phases->title(), QStringLiteral("Phases of an invalid cycle"));
+    // Grey phases, titled with what the readout gives as the reason.
+    EXPECT_TRUE(phases->title().startsWith(QLatin1String("Phases of an invalid cycle (grey): ")))
+        << phases->title().toStdString();
+    EXPECT_TRUE(phases->title().endsWith(window_->readout_detail(Readout::cycle_time)))
+        << phases->title().toStdString();
 
     ASSERT_TRUE(window_->apply_fix_for(QStringLiteral("backoff_too_small")));
     settle();

@@ -1,0 +1,24 @@
+#pragma once
+
+// The delay fit's report, as CSV text (issue 12): the Latency tab's export
+// and `latency fit --report`, the same bytes. The header and the number
+// formats of every report (report_header.h, csv_writer.h).
+
+#include <span>
+#include <string>
+
+#include "core/common/report_header.h"
+#include "core/lab/delay_fit.h"
+
+namespace probecycle {
+
+// The header (subject "touches": the touches' file name, or "pasted"), then
+// sections "# fit" (the interpolation period), "# groups" (per axis and
+// direction: the delay, p0, the lag in cycles, the residual), "# feeds" (the
+// delay's stability: each feed's mean deviation from p0 and its range),
+// "# touches" (each touch's residual from its line) and "# warnings".
+std::string delay_fit_report_csv(std::span<const DelayTouch> touches,
+                                 const DelayFitOptions& options, const DelayFit& fit,
+                                 const ReportHeader& header);
+
+}  // namespace probecycle
