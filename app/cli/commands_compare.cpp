@@ -128,7 +128,11 @@ void add_run(CLI::App& compare) {
             input.block_turned = read_block(args->block_c180);
         }
         const ComparisonResult result = run_comparison(input);
-        if (!args->report.empty()) write_output(args->report, comparison_report_csv(input, result));
+        if (!args->report.empty()) {
+            write_output(
+                args->report,
+                comparison_report_csv(input, result, report_header_of(args->test_omm, "untitled")));
+        }
         std::cout << comparison_json(result).dump(2) << '\n';
     });
 }

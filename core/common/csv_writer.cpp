@@ -30,16 +30,6 @@ std::string csv_length_mm(const std::optional<double>& value) {
     return value ? csv_length_mm(*value) : std::string();
 }
 
-std::string csv_number_text(double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.9g", value);
-    return buffer;
-}
-
-std::string csv_number_text(const std::optional<double>& value) {
-    return value ? csv_number_text(*value) : std::string();
-}
-
 std::string csv_quote(const std::string& text) {
     std::string out = "\"";
     for (const char ch : text) {

@@ -13,7 +13,6 @@
 // - Feeds and speeds to 0.1 mm/min: a control takes feeds in 0.1 or 1 mm/min;
 //   a knee feed finer than that cannot be programmed.
 // - Inputs (the scenario's values, the user's data) exactly as given.
-// Comparison reports (comparison_report.h) still use csv_number_text.
 
 #include <initializer_list>
 #include <optional>
@@ -35,10 +34,6 @@ std::string csv_exact(double value);
 std::string csv_time_s(const std::optional<double>& value);
 std::string csv_length_mm(const std::optional<double>& value);
 
-// 9 significant digits.
-std::string csv_number_text(double value);
-// Empty for an unknown value.
-std::string csv_number_text(const std::optional<double>& value);
 std::string csv_quote(const std::string& text);
 // The fields joined by commas, and a line end (fields as given: quote them first).
 std::string csv_line(std::initializer_list<std::string> fields);

@@ -1,9 +1,11 @@
 #include "core/comparison/comparison_report.h"
 
+#include <cstdio>
 #include <sstream>
 
 #include "core/common/csv_writer.h"
 #include "core/common/message_json.h"
+#include "core/common/number_format.h"
 
 namespace probecycle {
 
@@ -46,8 +48,34 @@ std::string row(std::initializer_list<std::string> fields) {
     return out + "\n";
 }
 
+// Issue 12: the digits the method supports (csv_writer.h). Lengths and
+// deviations to 0.1 um; the C axis's angles to 0.01 urad (its uncertainty on
+// a part is tens of urad); the inputs (the plan's points and normals, the
+// C axis's position, the angle, the tolerance) exactly as given.
+std::string mm(double value) {
+    return csv_length_mm(value);
+}
+std::string mm(const std::optional<double>& value) {
+    return csv_length_mm(value);
+}
+std::string rad(double value) {
+    return format_fixed(value, 8);
+}
+std::string rad(const std::optional<double>& value) {
+    return value ? rad(*value) : std::string();
+}
+std::string exact(double value) {
+    return csv_exact(value);
+}
+std::string exact(const std::optional<double>& value) {
+    return value ? csv_exact(*value) : std::string();
+}
+
+// The simulator's data files: 9 significant digits, as a CMM's export.
 std::string n(double value) {
-    return csv_number_text(value);
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);
+    return buffer;
 }
 
 }  // namespace
@@ -120,20 +148,25 @@ Json c_axis_identification_json(const CAxisIdentification& result, const CAxisSe
     return out;
 }
 
-std::string comparison_report_csv(const ComparisonInput& input, const ComparisonResult& result) {
+std::string comparison_report_csv(const ComparisonInput& input, const ComparisonResult& result,
+                                  const ReportHeader& header) {
     std::ostringstream out;
+    out << report_header_csv("comparison report", "test_omm", header);
     out << "# c_axis\nquantity,value,uncertainty,unit\n";
     const CAxisErrors& e = result.c_axis.errors;
     const std::optional<CAxisErrors>& u = result.c_axis.uncertainty;
     const auto err = [&](const char* name, double value, double CAxisErrors::*member,
                          const char* unit) {
-        out << row({name, n(value),
-                    csv_number_text(u ? std::optional<double>((*u).*member) : std::nullopt), unit});
+        const std::optional<double> uncertainty =
+            u ? std::optional<double>((*u).*member) : std::nullopt;
+        const bool angle = std::string_view(unit) == "rad";
+        out << row({name, angle ? rad(value) : mm(value),
+                    angle ? rad(uncertainty) : mm(uncertainty), unit});
     };
     out << row({"identified", result.c_axis_identified ? "yes" : "no", "", ""});
-    out << row({"axis_x", n(input.c_axis.x_mm), "", "mm"});
-    out << row({"axis_y", n(input.c_axis.y_mm), "", "mm"});
-    out << row({"angle", n(input.c_axis.angle_deg), "", "deg"});
+    out << row({"axis_x", exact(input.c_axis.x_mm), "", "mm"});
+    out << row({"axis_y", exact(input.c_axis.y_mm), "", "mm"});
+    out << row({"angle", exact(input.c_axis.angle_deg), "", "deg"});
     err("ex", e.ex_rad, &CAxisErrors::ex_rad, "rad");
     err("ey", e.ey_rad, &CAxisErrors::ey_rad, "rad");
     err("ez", e.ez_rad, &CAxisErrors::ez_rad, "rad");
@@ -147,22 +180,22 @@ std::string comparison_report_csv(const ComparisonInput& input, const Comparison
     };
     const auto summary = [&](const char* name, const DeviationSummary& s,
                              const std::string& beyond) {
-        out << row({name, n(s.min_mm), n(s.max_mm), n(s.mean_mm), n(s.rms_mm), beyond});
+        out << row({name, mm(s.min_mm), mm(s.max_mm), mm(s.mean_mm), mm(s.rms_mm), beyond});
     };
     summary("deviation", result.deviation, count(result.out_of_tolerance));
     summary("direct", result.direct, count(result.direct_out_of_tolerance));
     summary("system_error", result.system_error, "");
-    out << row({"tolerance", csv_number_text(input.tolerance_mm), "", "", "", ""});
+    out << row({"tolerance", exact(input.tolerance_mm), "", "", "", ""});
 
     out << "\n# points\n"
            "point,x_mm,y_mm,z_mm,i,j,k,deviation_mm,direct_deviation_mm,system_error_mm,"
            "c_axis_uncertainty_mm\n";
     for (std::size_t k = 0; k < result.points.size(); ++k) {
         const ComparisonPoint& p = result.points[k];
-        out << row({std::to_string(k + 1), n(p.nominal.x()), n(p.nominal.y()), n(p.nominal.z()),
-                    n(p.normal.x()), n(p.normal.y()), n(p.normal.z()), n(p.deviation_mm),
-                    n(p.direct_deviation_mm), n(p.system_error_mm),
-                    csv_number_text(p.c_axis_uncertainty_mm)});
+        out << row({std::to_string(k + 1), exact(p.nominal.x()), exact(p.nominal.y()),
+                    exact(p.nominal.z()), exact(p.normal.x()), exact(p.normal.y()),
+                    exact(p.normal.z()), mm(p.deviation_mm), mm(p.direct_deviation_mm),
+                    mm(p.system_error_mm), mm(p.c_axis_uncertainty_mm)});
     }
     out << "\n# warnings\ncode,severity,message\n";
     for (const ComparisonWarning& w : result.warnings) {

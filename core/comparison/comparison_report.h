@@ -8,13 +8,16 @@
 #include <string>
 #include <vector>
 
+#include "core/common/report_header.h"
 #include "core/comparison/comparison.h"
 #include "core/comparison/comparison_simulator.h"
 
 namespace probecycle {
 
-// Sections "# c_axis", "# summary", "# points" (plan order), "# warnings".
-std::string comparison_report_csv(const ComparisonInput& input, const ComparisonResult& result);
+// The report header (report_header.h; its subject the test part's OMM file),
+// then sections "# c_axis", "# summary", "# points" (plan order), "# warnings".
+std::string comparison_report_csv(const ComparisonInput& input, const ComparisonResult& result,
+                                  const ReportHeader& header);
 
 // {"ex_rad", ..., "dz_mm", "uncertainty": {...}}: uncertainties null when
 // unknown.

@@ -519,9 +519,12 @@ bool ComparisonTab::export_report(const QString& path) {
         });
         return false;
     }
+    ReportHeader header;
+    header.date = report_date();
+    header.subject = QFileInfo(file(InputFile::test_omm)).fileName().toStdString();
     try {
         write_file_atomically(QFile::encodeName(path).toStdString(),
-                              comparison_report_csv(input_, *result_));
+                              comparison_report_csv(input_, *result_, header));
     } catch (const std::exception&) {
         show_live_error(export_status_,
                         [this, error = current_error_text()] { return last_error_ = error(); });

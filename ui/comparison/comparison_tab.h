@@ -63,6 +63,9 @@ class ComparisonTab : public QWidget {
     bool simulate_example(const QString& folder = {});
     // The CSV report, the same bytes as `probecycle-cli compare run --report`.
     bool export_report(const QString& path);
+    // The report's save dialog, then export_report() (the tab's button and
+    // the window's "Export CSV Report" on this tab).
+    void export_dialog();
     // The project file: the paths (relative to its folder) and settings.
     bool save_project(const QString& path);
     // Loads a project; on a bad file false with last_error(), and the inputs
@@ -107,7 +110,6 @@ class ComparisonTab : public QWidget {
     void choose_file(InputFile which);
     void open_project_dialog();
     void save_project_dialog();
-    void export_dialog();
     void simulate_dialog();
     // Rerun with the current inputs when a result is on screen.
     void rerun_if_shown();

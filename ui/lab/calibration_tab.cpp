@@ -458,7 +458,9 @@ void CalibrationTab::show_result() {
     std::vector<LabWarningList::Item> items;
     if (result_) {
         const RingCalibration& r = *result_;
-        const QString gap = QStringLiteral("   ");
+        // One coordinate a line: a narrow column (and a long translation)
+        // never parts a name from its value.
+        const QChar gap = QLatin1Char('\n');
         result_values_[row_centre]->setText(tr("X %1").arg(lab_mm(r.center_x_mm)) + gap +
                                             tr("Y %1").arg(lab_mm(r.center_y_mm)));
         if (r.runout_x_mm && r.runout_y_mm) {

@@ -64,6 +64,9 @@ class CalibrationTab : public QWidget {
     // The CSV report (calibration_report.h), written atomically; false with
     // last_error() when there is nothing to export or the file cannot be written.
     bool export_report(const QString& path);
+    // The report's save dialog, then export_report() (the tab's button and
+    // the window's "Export CSV Report" on this tab).
+    void export_dialog();
 
     const std::optional<RingCalibration>& result() const { return result_; }
     // The points behind result().
@@ -128,7 +131,6 @@ class CalibrationTab : public QWidget {
     void compute_length();
     void retranslate();
     void import_dialog();
-    void export_dialog();
 
     // Input
     QGroupBox* ring_group_{nullptr};

@@ -292,8 +292,9 @@ bool DelayFitPanel::import_file(const QString& path) {
 
 bool DelayFitPanel::export_report(const QString& path) {
     if (!fit_) {
-        last_error_ = tr("Nothing to export: fit the touches first.");
-        show_error(export_status_, last_error_);
+        show_live_error(export_status_, [this] {
+            return last_error_ = tr("Nothing to export: fit the touches first.");
+        });
         return false;
     }
     ReportHeader header;

@@ -62,6 +62,9 @@ class DelayFitPanel : public QGroupBox {
     // `latency fit --report`), written atomically; false with last_error()
     // without a fit or when the file cannot be written.
     bool export_report(const QString& path);
+    // The report's save dialog, then export_report() (the tab's button and
+    // the window's "Export CSV Report" on this tab).
+    void export_dialog();
 
     const std::optional<DelayFit>& delay_fit() const { return fit_; }
     QString last_error() const { return last_error_; }
@@ -125,7 +128,6 @@ class DelayFitPanel : public QGroupBox {
     void update_apply();
     void retranslate();
     void import_dialog();
-    void export_dialog();
     std::optional<std::string> chosen_group() const;
     struct ApplyState {
         std::optional<AppliedDelay> applied;

@@ -52,6 +52,7 @@ class LatencyTab : public QWidget {
     bool fit() { return delay_->fit(); }
     bool import_file(const QString& path) { return delay_->import_file(path); }
     bool export_report(const QString& path) { return delay_->export_report(path); }
+    void export_dialog() { delay_->export_dialog(); }
     const std::optional<DelayFit>& delay_fit() const { return delay_->delay_fit(); }
     QString last_error() const { return delay_->last_error(); }
     QStringList warning_codes() const { return delay_->warning_codes(); }

@@ -91,6 +91,8 @@ class MainWindow : public QMainWindow {
     // Edits not in the current file: the scenario's, and for a project the
     // lab's and the comparison's too.
     bool has_unsaved_changes() const;
+    // The current tab's CSV report: the cycle's, or the Calibration, Latency
+    // or Comparison tab's own (issue 12).
     bool export_csv_report(const QString& path);
     // The header of the cycle report: today's date (SOURCE_DATE_EPOCH's when
     // set, as the CLI) and the scenario's file name, or "untitled".

@@ -105,8 +105,12 @@ TEST_F(ComparisonTabTest, TheExportIsTheCoresReport) {
     input.block_turned = parse_block(read(path(QStringLiteral("block_c180.csv"))));
     input.c_axis = {200.0, 100.0, 180.0};
     input.tolerance_mm = tab_.tolerance_mm();
-    EXPECT_EQ(read(path(QStringLiteral("report.csv"))),
-              comparison_report_csv(input, run_comparison(input)));
+    ReportHeader header;
+    header.date = report_date();
+    header.subject = "test_omm.csv";
+    const std::string report = read(path(QStringLiteral("report.csv")));
+    EXPECT_EQ(report, comparison_report_csv(input, run_comparison(input), header));
+    EXPECT_EQ(report.rfind("# ProbeCycle comparison report\n# date,", 0), 0u) << report;
 }
 
 TEST_F(ComparisonTabTest, ABadFileIsNamedWithItsLineAndThePreviousResultStays) {

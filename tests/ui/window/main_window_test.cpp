@@ -30,6 +30,7 @@
 #include "core/cycle/scenario.h"
 #include "ui/common/language.h"
 #include "ui/common/plot_view.h"
+#include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
 #include "ui/window/help_guide.h"
 
@@ -363,6 +364,47 @@ TEST_F(MainWindowTest, CsvExportWritesTheCoreReport) {
     qsizetype rows = 0;
     for (qsizetype i = sweep + 2; i < lines.size() && !lines[i].isEmpty(); ++i) ++rows;
     EXPECT_EQ(rows, static_cast<qsizetype>(report_feeds(c.scenario, c.analysis).size()));
+}
+
+// Issue 12, item 6: the toolbar's CSV report is the current tab's: the
+// cycle's, or the Calibration and Latency tabs' own reports, which say
+// nothing was fitted rather than write an empty file.
+TEST_F(MainWindowTest, CsvExportWritesTheCurrentTabsReport) {
+    QTemporaryDir dir;
+    auto* tabs = window_->findChild<QTabWidget*>(QStringLiteral("tabs"));
+    ASSERT_NE(tabs, nullptr);
+    const auto first_line = [](const QString& path) {
+        QFile file(path);
+        return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readLine()).trimmed()
+                                              : QString();
+    };
+    auto* ring = window_->findChild<CalibrationTab*>();
+    auto* lab = window_->findChild<LatencyTab*>();
+    ASSERT_NE(ring, nullptr);
+    ASSERT_NE(lab, nullptr);
+
+    tabs->setCurrentWidget(lab);
+    const QString nothing = dir.filePath(QStringLiteral("nothing.csv"));
+    EXPECT_FALSE(window_->export_csv_report(nothing));
+    EXPECT_TRUE(window_->last_error().contains(QLatin1String("fit the touches first")))
+        << window_->last_error().toStdString();
+    EXPECT_FALSE(QFileInfo::exists(nothing));
+
+    ASSERT_TRUE(lab->import_file(QStringLiteral(PROBECYCLE_LAB_DATA_DIR "/lab_delay.csv")));
+    const QString delay = dir.filePath(QStringLiteral("delay.csv"));
+    ASSERT_TRUE(window_->export_csv_report(delay)) << window_->last_error().toStdString();
+    EXPECT_EQ(first_line(delay), QStringLiteral("# ProbeCycle delay fit report"));
+
+    tabs->setCurrentWidget(ring);
+    ASSERT_TRUE(ring->import_file(QStringLiteral(PROBECYCLE_LAB_DATA_DIR "/lab_ring.csv")));
+    const QString calibration = dir.filePath(QStringLiteral("ring.csv"));
+    ASSERT_TRUE(window_->export_csv_report(calibration)) << window_->last_error().toStdString();
+    EXPECT_EQ(first_line(calibration), QStringLiteral("# ProbeCycle calibration report"));
+
+    tabs->setCurrentIndex(0);
+    const QString cycle = dir.filePath(QStringLiteral("cycle.csv"));
+    ASSERT_TRUE(window_->export_csv_report(cycle));
+    EXPECT_EQ(first_line(cycle), QStringLiteral("# ProbeCycle cycle report"));
 }
 
 // Issue 12, item 5: every slider stops at round numbers in its unit (the feed
