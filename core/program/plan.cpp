@@ -253,8 +253,9 @@ ProbingPlan make_delay_plan(const Scenario& scenario, const DelayPlanOptions& op
         Message allowed = allowed_text(
             "feed_count", QT_TRANSLATE_NOOP("FieldError", "from 2 to %1 different feeds"));
         allowed.args = {arg("max", ArgKind::integer, static_cast<double>(kMaxPlanFeeds))};
-        throw InputError(
-            FieldError{"feeds", std::to_string(feeds.size()), std::move(allowed)}.to_message());
+        std::string given;
+        for (double feed : feeds) given += (given.empty() ? "" : ", ") + format_number(feed);
+        throw InputError(FieldError{"feeds", given, std::move(allowed)}.to_message());
     }
     for (double feed : feeds) {
         check_range(feed, kMinPlanFeed_mm_min, kMaxPlanFeed_mm_min, "feeds", "mm/min");
