@@ -553,18 +553,9 @@ std::string probing_plan_json(const ProbingPlan& plan) {
 }
 
 ProbingPlan parse_probing_plan(std::string_view text) {
-    if (std::optional<FieldError> error = check_json_text(text, kMaxDepth)) {
-        throw ScenarioError({std::move(*error)});
-    }
     Json root;
-    try {
-        root = Json::parse(text.begin(), text.end());
-    } catch (const nlohmann::json::exception& e) {
-        throw ScenarioError({{"file", "",
-                              Message{"malformed_json",
-                                      "FieldError",
-                                      QT_TRANSLATE_NOOP("FieldError", "malformed JSON: %1"),
-                                      {text_arg("detail", e.what())}}}});
+    if (std::optional<FieldError> error = parse_checked_json(text, kMaxDepth, root)) {
+        throw ScenarioError({std::move(*error)});
     }
     if (!root.is_object() || !root.contains("format") || root["format"] != kFormat) {
         throw ScenarioError(
