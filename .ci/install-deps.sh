@@ -9,6 +9,7 @@ packages=(
   libgl1-mesa-dev libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   xvfb xauth fonts-dejavu-core fonts-noto-cjk
   clang clang-format clang-tidy libclang-rt-14-dev
+  linuxcnc-uspace  # rs274, LinuxCNC's stand-alone interpreter, checks the generated programs (about 3 min to install)
 )
 missing=()
 for p in "${packages[@]}"; do

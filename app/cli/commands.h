@@ -17,5 +17,7 @@ void add_calibrate_commands(CLI::App& app);
 void add_latency_commands(CLI::App& app);
 // compare run, compare cerrors, compare simulate (commands_compare.cpp)
 void add_compare_commands(CLI::App& app);
+// program delay|ring|cycle, import (commands_program.cpp)
+void add_program_commands(CLI::App& app);
 
 }  // namespace probecycle::cli

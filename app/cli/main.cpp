@@ -68,6 +68,7 @@ int run(int argc, char** argv) {
     cli::add_calibrate_commands(app);
     cli::add_latency_commands(app);
     cli::add_compare_commands(app);
+    cli::add_program_commands(app);
 
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
@@ -86,7 +87,8 @@ int run(int argc, char** argv) {
                   << "'; allowed: " << joined(commands) << '\n';
         return 2;
     }
-    if (command == "calibrate" || command == "latency" || command == "compare") {
+    if (command == "calibrate" || command == "latency" || command == "compare" ||
+        command == "program") {
         const std::vector<std::string> verbs = subcommand_names(*app.get_subcommand(command));
         if (args.size() == 1) {
             std::cerr << "probecycle-cli " << command
@@ -97,6 +99,7 @@ int run(int argc, char** argv) {
             std::cerr << "probecycle-cli " << command << ": unknown "
                       << (command == "calibrate" ? "calibration"
                           : command == "latency" ? "latency command"
+                          : command == "program" ? "program"
                                                  : "comparison command")
                       << " '" << args[1] << "'; allowed: " << joined(verbs) << '\n';
             return 2;

@@ -183,4 +183,19 @@ std::optional<FieldError> check_json_text(std::string_view text, std::size_t max
     return Scanner(text, max_depth).run();
 }
 
+std::optional<FieldError> parse_checked_json(std::string_view text, std::size_t max_depth,
+                                             nlohmann::ordered_json& root) {
+    if (std::optional<FieldError> error = check_json_text(text, max_depth)) return error;
+    try {
+        root = nlohmann::ordered_json::parse(text.begin(), text.end());
+    } catch (const nlohmann::json::exception& e) {
+        return FieldError{"file", "",
+                          Message{"malformed_json",
+                                  "FieldError",
+                                  QT_TRANSLATE_NOOP("FieldError", "malformed JSON: %1"),
+                                  {text_arg("detail", e.what())}}};
+    }
+    return std::nullopt;
+}
+
 }  // namespace probecycle

@@ -11,6 +11,7 @@
 // the dotted key it belongs to and its line and column.
 
 #include <cstddef>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string_view>
 
@@ -21,5 +22,10 @@ namespace probecycle {
 // Nothing when the text passes; else the problem, keyed by the dotted path of
 // the object keys around it ("machine.time_constant_s"), or "file" at the top.
 std::optional<FieldError> check_json_text(std::string_view text, std::size_t max_depth);
+
+// check_json_text, then nlohmann's parse into `root`: nothing when both pass,
+// else the problem ("file: malformed JSON: ..." with the parser's words).
+std::optional<FieldError> parse_checked_json(std::string_view text, std::size_t max_depth,
+                                             nlohmann::ordered_json& root);
 
 }  // namespace probecycle

@@ -251,18 +251,9 @@ std::string project_json(const Project& project) {
 }
 
 Project parse_project(std::string_view text) {
-    if (std::optional<FieldError> error = check_json_text(text, kMaxDepth)) {
-        throw ScenarioError({std::move(*error)});
-    }
     Json root;
-    try {
-        root = Json::parse(text.begin(), text.end());
-    } catch (const nlohmann::json::exception& e) {
-        throw ScenarioError({{"file", "",
-                              Message{"malformed_json",
-                                      "FieldError",
-                                      QT_TRANSLATE_NOOP("FieldError", "malformed JSON: %1"),
-                                      {text_arg("detail", e.what())}}}});
+    if (std::optional<FieldError> error = parse_checked_json(text, kMaxDepth, root)) {
+        throw ScenarioError({std::move(*error)});
     }
     if (!root.is_object() || !root.contains("format") || root["format"] != kFormat) {
         throw ScenarioError(

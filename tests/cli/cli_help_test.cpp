@@ -61,7 +61,12 @@ const std::vector<std::string> kCommands = {"",
                                             "compare",
                                             "compare run",
                                             "compare cerrors",
-                                            "compare simulate"};
+                                            "compare simulate",
+                                            "program",
+                                            "program delay",
+                                            "program ring",
+                                            "program cycle",
+                                            "import"};
 
 TEST(CliHelp, EveryCommandHasHelpOnStdoutAndExitsZero) {
     for (const std::string& command : kCommands) {

@@ -1,0 +1,302 @@
+#include "core/program/machine_log.h"
+
+#include <cmath>
+#include <optional>
+
+#include "core/common/csv_reader.h"
+#include "core/common/input_error.h"
+#include "core/common/number_format.h"
+
+namespace probecycle {
+
+namespace {
+
+// Between two probes that only one axis moved between, the other axes stay
+// put: more than this (a jog, another setup) means the log is not this plan's.
+constexpr double kStillAxisTolerance_mm = 0.05;
+
+Message log_message(const char* code, const char* text, std::vector<MessageArg> args = {}) {
+    return Message{code, "MachineLog", text, std::move(args)};
+}
+
+std::vector<std::pair<std::size_t, std::string_view>> lines_of(std::string_view text) {
+    std::vector<std::pair<std::size_t, std::string_view>> lines;
+    std::size_t number = 0;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view line = text.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        lines.emplace_back(++number, line);
+        start = end + 1;
+    }
+    return lines;
+}
+
+std::vector<std::string_view> words_of(std::string_view line, char separator) {
+    std::vector<std::string_view> words;
+    std::size_t start = 0;
+    while (start <= line.size()) {
+        std::size_t end = line.find(separator, start);
+        if (end == std::string_view::npos) end = line.size();
+        std::string_view word = line.substr(start, end - start);
+        if (separator != ' ' || !word.empty()) words.push_back(word);
+        start = end + 1;
+    }
+    return words;
+}
+
+std::string_view trimmed(std::string_view text) {
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+    while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
+    return text;
+}
+
+[[noreturn]] void bad_line(std::size_t line, std::string_view content, const char* expected) {
+    throw CsvError(line, "",
+                   log_message("log_unreadable_line",
+                               QT_TRANSLATE_NOOP("MachineLog", "cannot read '%1'; expected %2"),
+                               {text_arg("content", std::string(content.substr(0, 80))),
+                                text_arg("expected", expected)}));
+}
+
+// Three coordinates from words; nullopt when one is not a number within reach.
+std::optional<std::array<double, 3>> coordinates(const std::vector<std::string_view>& words,
+                                                 std::size_t first) {
+    if (words.size() < first + 3) return std::nullopt;
+    std::array<double, 3> xyz{};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const std::optional<double> value = parse_decimal(words[first + i]);
+        if (!value || std::abs(*value) > kMaxCoordinate_mm) return std::nullopt;
+        xyz[i] = *value;
+    }
+    return xyz;
+}
+
+std::size_t axis_index(char axis) {
+    return axis == 'X' ? 0 : axis == 'Y' ? 1 : 2;
+}
+
+// Probes in the order the positions stand for.
+std::vector<const ProgramStep*> probes_of(const ProbingPlan& plan, bool every_probe) {
+    std::vector<const ProgramStep*> probes;
+    for (const ProgramStep& step : plan.steps) {
+        if (step.kind == StepKind::probe && (every_probe || step.recorded)) {
+            probes.push_back(&step);
+        }
+    }
+    return probes;
+}
+
+// The one axis every move between two probes runs along (pauses: none, the
+// operator may move anything), or nullopt.
+std::optional<char> only_axis_between(const ProgramStep* from, const ProgramStep* to) {
+    std::optional<char> axis;
+    for (const ProgramStep* step = from; step <= to; ++step) {
+        if (step->kind == StepKind::pause) return std::nullopt;
+        if (axis && *axis != step->axis) return std::nullopt;
+        axis = step->axis;
+    }
+    return axis;
+}
+
+void check_matches_plan(const std::vector<const ProgramStep*>& probes,
+                        const std::vector<RecordedPosition>& positions) {
+    if (positions.size() < probes.size()) {
+        const std::size_t last_line = positions.empty() ? 0 : positions.back().line;
+        throw CsvError(
+            last_line, "",
+            log_message("log_missing_touches",
+                        QT_TRANSLATE_NOOP("MachineLog",
+                                          "the log ends after %1 of the plan's %2 probe "
+                                          "positions: the program stopped early, a position was "
+                                          "not recorded, or the log is from another plan; "
+                                          "nothing imported"),
+                        {arg("found", ArgKind::integer, static_cast<double>(positions.size())),
+                         arg("expected", ArgKind::integer, static_cast<double>(probes.size()))}));
+    }
+    if (positions.size() > probes.size()) {
+        throw CsvError(
+            positions[probes.size()].line, "",
+            log_message("log_extra_touch",
+                        QT_TRANSLATE_NOOP("MachineLog",
+                                          "a probe position more than the plan's %1: the program "
+                                          "ran twice into one log, or the log is from another "
+                                          "plan; nothing imported"),
+                        {arg("expected", ArgKind::integer, static_cast<double>(probes.size()))}));
+    }
+    for (std::size_t i = 1; i < probes.size(); ++i) {
+        const std::optional<char> axis = only_axis_between(probes[i - 1], probes[i]);
+        if (!axis) continue;
+        for (std::size_t a = 0; a < 3; ++a) {
+            if (a == axis_index(*axis)) continue;
+            const double moved = positions[i].xyz[a] - positions[i - 1].xyz[a];
+            if (std::abs(moved) > kStillAxisTolerance_mm) {
+                throw CsvError(
+                    positions[i].line, "",
+                    log_message(
+                        "log_other_plan",
+                        QT_TRANSLATE_NOOP("MachineLog",
+                                          "%1 moved %2 since line %3, but the plan moves only %4 "
+                                          "between these probes: is the log from another plan? "
+                                          "Nothing imported"),
+                        {text_arg("axis", std::string(1, "XYZ"[a])),
+                         significant_arg("moved_mm", ArgKind::length_mm, moved, 4),
+                         arg("line", ArgKind::integer, static_cast<double>(positions[i - 1].line)),
+                         text_arg("moving_axis", std::string(1, *axis))}));
+            }
+        }
+    }
+}
+
+std::string csv_value(double value) {
+    return format_exact(value);
+}
+
+}  // namespace
+
+std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
+                                                      const ProbingPlan& plan) {
+    std::vector<RecordedPosition> positions;
+    bool log_file = false;
+    bool probe_file = false;
+    for (const auto& [number, raw] : lines_of(text)) {
+        const std::string_view line = trimmed(raw);
+        if (line.empty()) continue;
+        const std::vector<std::string_view> words = words_of(line, ' ');
+        if (words[0] == "probecycle") {
+            log_file = true;
+            if (words.size() >= 3 && words[1] == "plan") {
+                const std::string expected = plan_id(plan);
+                if (words[2] != expected) {
+                    throw CsvError(
+                        number, "",
+                        log_message("log_plan_mismatch",
+                                    QT_TRANSLATE_NOOP("MachineLog",
+                                                      "the log is from plan %1, the plan file is "
+                                                      "plan %2: give the plan the program was "
+                                                      "made from; nothing imported"),
+                                    {text_arg("log_plan", std::string(words[2])),
+                                     text_arg("plan", expected)}));
+                }
+                continue;
+            }
+            const std::optional<std::array<double, 3>> xyz = coordinates(words, 3);
+            const std::optional<double> n =
+                words.size() == 6 ? parse_decimal(words[2]) : std::nullopt;
+            if (words[1] != "touch" || !xyz || !n) {
+                bad_line(number, line, "'probecycle touch N X Y Z'");
+            }
+            if (*n != static_cast<double>(positions.size() + 1)) {
+                throw CsvError(
+                    number, "",
+                    log_message(
+                        "log_touch_order",
+                        QT_TRANSLATE_NOOP("MachineLog",
+                                          "touch %1 where touch %2 was due: the log "
+                                          "holds more than one run; nothing imported"),
+                        {text_arg("touch", std::string(words[2])),
+                         arg("due", ArgKind::integer, static_cast<double>(positions.size() + 1))}));
+            }
+            positions.push_back({number, *xyz});
+            continue;
+        }
+        const std::optional<std::array<double, 3>> xyz = coordinates(words, 0);
+        if (words.size() != 9 || !xyz || log_file) {
+            bad_line(number, line,
+                     log_file ? "'probecycle touch N X Y Z' (the program's LOG file)"
+                              : "9 numbers X Y Z A B C U V W (a PROBEOPEN file) or the "
+                                "program's LOG file");
+        }
+        probe_file = true;
+        positions.push_back({number, *xyz});
+    }
+    if (log_file && probe_file) {
+        bad_line(positions.front().line, "", "one file: the LOG file or the PROBEOPEN file");
+    }
+    return positions;
+}
+
+std::vector<RecordedPosition> read_grbl_positions(std::string_view text) {
+    std::vector<RecordedPosition> positions;
+    for (const auto& [number, line] : lines_of(text)) {
+        if (const std::size_t alarm = line.find("ALARM:"); alarm != std::string_view::npos) {
+            throw CsvError(
+                number, "",
+                log_message("log_alarm",
+                            QT_TRANSLATE_NOOP("MachineLog",
+                                              "grbl raised '%1' (ALARM:5: the probe did not "
+                                              "touch; ALARM:4: it was triggered before the move): "
+                                              "the program stopped there; nothing imported"),
+                            {text_arg("alarm", std::string(trimmed(line.substr(alarm, 12))))}));
+        }
+        const std::size_t at = line.find("[PRB:");
+        if (at == std::string_view::npos) continue;
+        const std::size_t end = line.find(']', at);
+        if (end == std::string_view::npos) bad_line(number, line, "[PRB:x,y,z:1]");
+        const std::string_view body = line.substr(at + 5, end - at - 5);
+        const std::size_t colon = body.rfind(':');
+        if (colon == std::string_view::npos) bad_line(number, line, "[PRB:x,y,z:1]");
+        const std::optional<std::array<double, 3>> xyz =
+            coordinates(words_of(body.substr(0, colon), ','), 0);
+        const std::string_view success = body.substr(colon + 1);
+        if (!xyz || (success != "0" && success != "1")) {
+            bad_line(number, line, "[PRB:x,y,z:1]");
+        }
+        if (success == "0") {
+            throw CsvError(
+                number, "",
+                log_message("log_no_trigger",
+                            QT_TRANSLATE_NOOP("MachineLog",
+                                              "the probe did not trigger (%1); "
+                                              "nothing imported"),
+                            {text_arg("report", std::string(line.substr(at, end - at + 1)))}));
+        }
+        positions.push_back({number, *xyz});
+    }
+    return positions;
+}
+
+std::string lab_csv_from_positions(const ProbingPlan& plan,
+                                   const std::vector<RecordedPosition>& positions,
+                                   bool every_probe) {
+    if (plan.kind == ProgramKind::cycle) {
+        throw InputError(log_message(
+            "log_cycle_plan",
+            QT_TRANSLATE_NOOP("MachineLog",
+                              "a cycle plan's positions have no table in the lab; import the log "
+                              "of a delay or a ring program")));
+    }
+    const std::vector<const ProgramStep*> probes = probes_of(plan, every_probe);
+    check_matches_plan(probes, positions);
+    std::string csv =
+        "# ProbeCycle: imported for plan " + plan_id(plan) + " (" + to_string(plan.kind) + ")\n";
+    csv += plan.kind == ProgramKind::delay ? "axis,direction,feed_mm_min,measured_mm\n"
+                                           : "orientation_deg,x_mm,y_mm\n";
+    for (std::size_t i = 0; i < probes.size(); ++i) {
+        const ProgramStep& probe = *probes[i];
+        if (!probe.recorded) continue;
+        const std::array<double, 3>& xyz = positions[i].xyz;
+        if (plan.kind == ProgramKind::delay) {
+            csv += std::string(1, probe.axis) + "," + (probe.direction > 0 ? "+1" : "-1") + "," +
+                   csv_value(probe.feed_mm_min) + "," + csv_value(xyz[axis_index(probe.axis)]) +
+                   "\n";
+        } else {
+            csv += csv_value(probe.orientation_deg) + "," + csv_value(xyz[0]) + "," +
+                   csv_value(xyz[1]) + "\n";
+        }
+    }
+    return csv;
+}
+
+std::string import_machine_log(const ProbingPlan& plan, DialectId dialect, std::string_view text) {
+    if (dialect == DialectId::grbl) {
+        return lab_csv_from_positions(plan, read_grbl_positions(text), true);
+    }
+    const std::vector<RecordedPosition> positions = read_linuxcnc_positions(text, plan);
+    const bool log_file = trimmed(text).substr(0, 10) == "probecycle";
+    return lab_csv_from_positions(plan, positions, !log_file);
+}
+
+}  // namespace probecycle

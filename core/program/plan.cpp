@@ -1,0 +1,638 @@
+#include "core/program/plan.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "core/common/input_error.h"
+#include "core/common/json_guard.h"
+#include "core/common/number_format.h"
+#include "core/cycle/cycle.h"
+
+namespace probecycle {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kFormat = "probecycle-probing-plan";
+constexpr int kVersion = 1;
+constexpr std::size_t kMaxDepth = 3;  // root > steps > step
+// Distances in a program are written to 1 µm; the plan holds them so rounded
+// (up, where more room is the safe side), so that the program and the plan
+// agree to the digit.
+constexpr double kStep_mm = 0.001;
+// How far a probing move may go past where the surface is expected before
+// the control gives up with an alarm: a little, and never more than half the
+// stylus's overtravel range.
+constexpr double kMaxSearchBeyond_mm = 1.0;
+
+Message program_message(const char* code, const char* text, std::vector<MessageArg> args) {
+    return Message{code, "Program", text, std::move(args)};
+}
+
+double search_beyond_mm(const Scenario& scenario) {
+    return round_up_to(std::min(kMaxSearchBeyond_mm, 0.5 * scenario.probe.overtravel_limit_mm),
+                       kStep_mm);
+}
+
+// The model's single touch at `feed_mm_min` from `approach_mm`.
+CycleResult single_touch(const Scenario& scenario, double feed_mm_min, double approach_mm) {
+    Scenario s = scenario;
+    s.cycle.strategy = Strategy::single_touch;
+    s.cycle.feature = Feature::surface;
+    s.cycle.probe_feed_mm_min = feed_mm_min;
+    s.cycle.approach_mm = approach_mm;
+    return evaluate(s);
+}
+
+// The overtravel the model predicts at a feed; InputError when it reaches
+// the probe's limit (the stylus would be overrun).
+double checked_overtravel_mm(const Scenario& scenario, double feed_mm_min, double approach_mm) {
+    const double overtravel = single_touch(scenario, feed_mm_min, approach_mm).overtravel_mm();
+    if (overtravel >= scenario.probe.overtravel_limit_mm) {
+        throw InputError(program_message(
+            "program_overtravel",
+            QT_TRANSLATE_NOOP("Program",
+                              "at %1 the model's overtravel is %2, at or over the probe's limit "
+                              "%3: lower the feed or check the scenario"),
+            {arg("feed_mm_min", ArgKind::feed_mm_min, feed_mm_min),
+             significant_arg("overtravel_mm", ArgKind::length_mm, overtravel, 4),
+             arg("limit_mm", ArgKind::length_mm, scenario.probe.overtravel_limit_mm)}));
+    }
+    return overtravel;
+}
+
+void add_values(ProbingPlan& plan, const Scenario& scenario,
+                std::initializer_list<const char*> keys) {
+    for (const char* key : keys) {
+        if (const KeyInfo* info = find_any_key(key)) {
+            plan.values.push_back({key, value_text(scenario, *info)});
+        }
+    }
+}
+
+void add_value(ProbingPlan& plan, const char* key, double value) {
+    plan.values.push_back({key, format_exact(value)});
+}
+
+// Keys every plan names: what decides the start distances and the overtravel.
+void add_machine_values(ProbingPlan& plan, const Scenario& scenario) {
+    add_values(
+        plan, scenario,
+        {"machine.accel_model", "machine.time_constant_s", "machine.max_accel_mm_s2",
+         "machine.max_jerk_mm_s3", "machine.filter", "machine.filter_time_s",
+         "machine.servo_time_constant_s", "machine.scan_period_s", "machine.controller_latency_s",
+         "probe.interface_delay_s", "probe.pretravel_mm", "probe.overtravel_limit_mm"});
+}
+
+ProgramStep probe_step(const AxisDirection& at, double distance_mm, double feed_mm_min,
+                       bool recorded, std::string text) {
+    ProgramStep step;
+    step.kind = StepKind::probe;
+    step.axis = at.axis;
+    step.direction = at.direction;
+    step.distance_mm = round_up_to(distance_mm, kStep_mm);
+    step.feed_mm_min = feed_mm_min;
+    step.recorded = recorded;
+    step.text = std::move(text);
+    return step;
+}
+
+// A move away from the surface touched from `at` (feed 0: rapid).
+ProgramStep move_back(const AxisDirection& at, double distance_mm, double feed_mm_min,
+                      std::string text) {
+    ProgramStep step;
+    step.kind = StepKind::move;
+    step.axis = at.axis;
+    step.direction = -at.direction;
+    step.distance_mm = round_up_to(distance_mm, kStep_mm);
+    step.feed_mm_min = feed_mm_min;
+    step.text = std::move(text);
+    return step;
+}
+
+ProgramStep pause_step(std::string text) {
+    ProgramStep step;
+    step.kind = StepKind::pause;
+    step.text = std::move(text);
+    return step;
+}
+
+std::string mm_text(double value) {
+    return format_fixed(value, 3) + " mm";
+}
+
+std::string feed_text(double feed_mm_min) {
+    return format_number(feed_mm_min) + " mm/min";
+}
+
+// One point touched with the scenario's strategy from `distance_mm` before the
+// surface (the first move may need `extra_mm` more), then back to
+// `distance_mm` before it (its recorded probe carries `orientation_deg`).
+// Single-touch: one recorded touch at the probing feed. Two-touch: a fast
+// touch, the backoff, the measuring touch (recorded).
+void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection& at,
+               double distance_mm, double extra_mm, double orientation_deg,
+               const std::string& back_to) {
+    const Cycle& c = scenario.cycle;
+    const double beyond = search_beyond_mm(scenario);
+    const std::string name = to_string(at);
+    if (c.strategy == Strategy::single_touch) {
+        const double overtravel = checked_overtravel_mm(scenario, c.probe_feed_mm_min, distance_mm);
+        plan.steps.push_back(probe_step(at, distance_mm + extra_mm + beyond, c.probe_feed_mm_min,
+                                        true, name + " at " + feed_text(c.probe_feed_mm_min)));
+        plan.steps.back().orientation_deg = orientation_deg;
+        plan.steps.push_back(move_back(at, distance_mm + overtravel, c.return_feed_mm_min,
+                                       "back to the " + back_to));
+        return;
+    }
+    Scenario s = scenario;
+    s.cycle.feature = Feature::surface;
+    s.cycle.approach_mm = distance_mm;
+    const CycleResult result = evaluate(s);
+    const double limit = scenario.probe.overtravel_limit_mm;
+    for (const TouchResult* touch : {&result.first_touch(), &result.measuring_touch()}) {
+        if (touch->overtravel_mm >= limit) {
+            checked_overtravel_mm(scenario, touch->programmed_feed_mm_s * 60.0, distance_mm);
+        }
+    }
+    const double first_overtravel = result.first_touch().overtravel_mm;
+    // G38.2 leaves the probe where it stopped. A backoff measured from the
+    // recorded trigger (cycle.backoff_from) is longer by the stop's distance
+    // from it, which the model predicts.
+    double backoff = c.backoff_mm;
+    if (c.backoff_from == BackoffFrom::trigger) {
+        backoff += std::max(0.0, first_overtravel - result.first_touch().recorded_mm);
+    }
+    if (backoff <= first_overtravel) {
+        throw InputError(program_message(
+            "program_backoff",
+            QT_TRANSLATE_NOOP("Program",
+                              "the backoff %1 does not clear the first touch's overtravel %2: set "
+                              "cycle.backoff_mm to at least %3 (the recommended backoff)"),
+            {arg("backoff_mm", ArgKind::length_mm, backoff),
+             significant_arg("overtravel_mm", ArgKind::length_mm, first_overtravel, 4),
+             arg("recommended_mm", ArgKind::length_mm, result.recommended_backoff_mm())}));
+    }
+    plan.steps.push_back(probe_step(at, distance_mm + extra_mm + beyond, c.probe_feed_mm_min, false,
+                                    name + " first touch at " + feed_text(c.probe_feed_mm_min)));
+    plan.steps.push_back(move_back(at, backoff, c.return_feed_mm_min, "backoff"));
+    plan.steps.push_back(
+        probe_step(at, backoff - first_overtravel + beyond, c.measure_feed_mm_min, true,
+                   name + " measuring touch at " + feed_text(c.measure_feed_mm_min)));
+    plan.steps.back().orientation_deg = orientation_deg;
+    plan.steps.push_back(move_back(at, distance_mm + result.measuring_touch().overtravel_mm,
+                                   c.return_feed_mm_min, "back to the " + back_to));
+}
+
+void check_range(double value, double min, double max, const char* key, const char* unit) {
+    if (!(value >= min && value <= max)) {
+        throw InputError(
+            FieldError{key, format_number(value), range_allowed(min, max, unit)}.to_message());
+    }
+}
+
+}  // namespace
+
+const char* to_string(ProgramKind kind) {
+    switch (kind) {
+        case ProgramKind::delay:
+            return "delay";
+        case ProgramKind::ring:
+            return "ring";
+        case ProgramKind::cycle:
+            return "cycle";
+    }
+    return "delay";
+}
+
+std::optional<ProgramKind> program_kind_from_string(std::string_view word) {
+    for (ProgramKind kind : {ProgramKind::delay, ProgramKind::ring, ProgramKind::cycle}) {
+        if (word == to_string(kind)) return kind;
+    }
+    return std::nullopt;
+}
+
+std::vector<const ProgramStep*> ProbingPlan::recorded() const {
+    std::vector<const ProgramStep*> out;
+    for (const ProgramStep& step : steps) {
+        if (step.kind == StepKind::probe && step.recorded) out.push_back(&step);
+    }
+    return out;
+}
+
+std::optional<AxisDirection> axis_direction_from_string(std::string_view text) {
+    if (text.size() != 2) return std::nullopt;
+    const char axis = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+    if (axis != 'X' && axis != 'Y' && axis != 'Z') return std::nullopt;
+    if (text[1] != '+' && text[1] != '-') return std::nullopt;
+    return AxisDirection{axis, text[1] == '+' ? 1 : -1};
+}
+
+std::string to_string(const AxisDirection& group) {
+    return std::string(1, group.axis) + (group.direction > 0 ? "+" : "-");
+}
+
+std::vector<double> default_delay_feeds(const Scenario& scenario) {
+    std::vector<double> feeds = {30.0, 100.0, 300.0, 1000.0, 2000.0};
+    const double own = scenario.cycle.probe_feed_mm_min;
+    if (std::find(feeds.begin(), feeds.end(), own) == feeds.end()) feeds.push_back(own);
+    std::sort(feeds.begin(), feeds.end());
+    return feeds;
+}
+
+ProbingPlan make_delay_plan(const Scenario& scenario, const DelayPlanOptions& options) {
+    std::vector<double> feeds =
+        options.feeds_mm_min.empty() ? default_delay_feeds(scenario) : options.feeds_mm_min;
+    std::sort(feeds.begin(), feeds.end());
+    feeds.erase(std::unique(feeds.begin(), feeds.end()), feeds.end());
+    if (feeds.size() < 2 || feeds.size() > kMaxPlanFeeds) {
+        Message allowed = allowed_text(
+            "feed_count", QT_TRANSLATE_NOOP("FieldError", "from 2 to %1 different feeds"));
+        allowed.args = {arg("max", ArgKind::integer, static_cast<double>(kMaxPlanFeeds))};
+        std::string given;
+        for (double feed : feeds) given += (given.empty() ? "" : ", ") + format_number(feed);
+        throw InputError(FieldError{"feeds", given, std::move(allowed)}.to_message());
+    }
+    for (double feed : feeds) {
+        check_range(feed, kMinPlanFeed_mm_min, kMaxPlanFeed_mm_min, "feeds", "mm/min");
+    }
+    check_range(options.repeats, 1, kMaxRepeats, "repeats", "");
+    check_range(options.margin_mm, 0.0, 100.0, "margin_mm", "mm");
+    check_range(options.placement_mm, 0.1, kMaxPlanDistance_mm, "placement_mm", "mm");
+    ProbingPlan plan;
+    plan.kind = ProgramKind::delay;
+    add_machine_values(plan, scenario);
+    add_values(plan, scenario, {"cycle.probe_feed_mm_min"});
+    add_value(plan, "repeats", options.repeats);
+    add_value(plan, "margin_mm", options.margin_mm);
+    add_value(plan, "placement_mm", options.placement_mm);
+
+    // Start distance per feed: the room to reach it, plus the margin.
+    std::vector<double> start_mm;
+    std::vector<double> overtravel_mm;
+    for (double feed : feeds) {
+        start_mm.push_back(
+            round_up_to(approach_room_mm(scenario, feed / 60.0) + options.margin_mm, kStep_mm));
+        overtravel_mm.push_back(checked_overtravel_mm(scenario, feed, start_mm.back()));
+    }
+    const double beyond = search_beyond_mm(scenario);
+    {
+        const AxisDirection& group = options.touch;
+        const std::string name = to_string(group);
+        plan.steps.push_back(
+            pause_step("check: the probe stands in front of the surface, at most " +
+                       mm_text(options.placement_mm) + " from it, touching along " + name +
+                       "; resume to start"));
+        const double locate_overtravel =
+            checked_overtravel_mm(scenario, feeds.front(), options.placement_mm);
+        plan.steps.push_back(probe_step(group, options.placement_mm, feeds.front(), false,
+                                        "locate the surface at " + feed_text(feeds.front())));
+        double stop_beyond = locate_overtravel;  // where the previous touch left the probe
+        for (std::size_t f = 0; f < feeds.size(); ++f) {
+            for (int r = 0; r < options.repeats; ++r) {
+                plan.steps.push_back(move_back(group, start_mm[f] + stop_beyond, 0.0,
+                                               "to " + mm_text(start_mm[f]) +
+                                                   " before the surface: room to reach " +
+                                                   feed_text(feeds[f]) + " plus the margin"));
+                plan.steps.push_back(probe_step(group, start_mm[f] + beyond, feeds[f], true,
+                                                name + " at " + feed_text(feeds[f]) + ", " +
+                                                    std::to_string(r + 1) + " of " +
+                                                    std::to_string(options.repeats)));
+                stop_beyond = overtravel_mm[f];
+            }
+        }
+        plan.steps.push_back(
+            move_back(group, options.placement_mm + stop_beyond, 0.0, "clear of the surface"));
+    }
+    return plan;
+}
+
+ProbingPlan make_ring_plan(const Scenario& scenario, const RingPlanOptions& options) {
+    check_range(options.gauge_diameter_mm, 0.1, 2000.0, "gauge_diameter_mm", "mm");
+    check_range(options.ball_diameter_mm, 0.1, 100.0, "ball_diameter_mm", "mm");
+    check_range(options.centre_tolerance_mm, 0.0, 100.0, "centre_tolerance_mm", "mm");
+    const double to_wall = 0.5 * (options.gauge_diameter_mm - options.ball_diameter_mm);
+    if (to_wall <= options.centre_tolerance_mm) {
+        throw InputError(program_message(
+            "program_gauge_small",
+            QT_TRANSLATE_NOOP("Program",
+                              "the gauge (%1) leaves the ball (%2) no more room than the centre "
+                              "tolerance %3: a larger gauge or a smaller ball"),
+            {arg("gauge_diameter_mm", ArgKind::length_mm, options.gauge_diameter_mm),
+             arg("ball_diameter_mm", ArgKind::length_mm, options.ball_diameter_mm),
+             arg("tolerance_mm", ArgKind::length_mm, options.centre_tolerance_mm)}));
+    }
+    ProbingPlan plan;
+    plan.kind = ProgramKind::ring;
+    add_machine_values(plan, scenario);
+    add_values(plan, scenario,
+               {"cycle.strategy", "cycle.probe_feed_mm_min", "cycle.measure_feed_mm_min",
+                "cycle.backoff_mm", "cycle.backoff_from", "cycle.return_feed_mm_min"});
+    add_value(plan, "gauge_diameter_mm", options.gauge_diameter_mm);
+    add_value(plan, "ball_diameter_mm", options.ball_diameter_mm);
+    add_value(plan, "centre_tolerance_mm", options.centre_tolerance_mm);
+    for (double orientation : {0.0, 180.0}) {
+        plan.steps.push_back(pause_step(
+            orientation == 0.0
+                ? "check: the spindle is oriented to 0 deg and the probe ball stands at the gauge "
+                  "centre (within " +
+                      mm_text(options.centre_tolerance_mm) +
+                      ") at the measuring depth; resume to start"
+                : std::string("turn the spindle to 180 deg; the probe stays at the gauge centre; "
+                              "resume")));
+        for (const AxisDirection at : {AxisDirection{'X', 1}, AxisDirection{'X', -1},
+                                       AxisDirection{'Y', 1}, AxisDirection{'Y', -1}}) {
+            // The probe may stand the tolerance off centre, so a touch may
+            // need that much more; the return is measured from the wall, so
+            // it lands on the centre whatever the start.
+            add_point(plan, scenario, at, to_wall, options.centre_tolerance_mm, orientation,
+                      "centre");
+        }
+    }
+    return plan;
+}
+
+ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& options) {
+    if (scenario.cycle.feature != Feature::surface) {
+        Message allowed = allowed_text(
+            "program_feature",
+            QT_TRANSLATE_NOOP("FieldError",
+                              "surface (a program for a feature's touches is not written yet)"));
+        throw InputError(
+            FieldError{"cycle.feature", to_string(scenario.cycle.feature), std::move(allowed)}
+                .to_message());
+    }
+    ProbingPlan plan;
+    plan.kind = ProgramKind::cycle;
+    add_machine_values(plan, scenario);
+    add_values(plan, scenario,
+               {"cycle.strategy", "cycle.approach_mm", "cycle.probe_feed_mm_min",
+                "cycle.measure_feed_mm_min", "cycle.backoff_mm", "cycle.backoff_from",
+                "cycle.return_feed_mm_min"});
+    plan.steps.push_back(pause_step("check: the probe stands " +
+                                    mm_text(scenario.cycle.approach_mm) +
+                                    " in front of the surface, touching along " +
+                                    to_string(options.touch) + "; resume to start"));
+    add_point(plan, scenario, options.touch, scenario.cycle.approach_mm, 0.0, 0.0, "start");
+    return plan;
+}
+
+// --- The plan file ---
+
+namespace {
+
+const char* to_word(StepKind kind) {
+    switch (kind) {
+        case StepKind::pause:
+            return "pause";
+        case StepKind::probe:
+            return "probe";
+        case StepKind::move:
+            return "move";
+    }
+    return "probe";
+}
+
+class PlanReader {
+  public:
+    std::vector<FieldError> errors;
+
+    void fail(std::string key, const Json& value, Message allowed) {
+        errors.push_back({std::move(key), value.is_null() ? "" : value.dump(), std::move(allowed)});
+    }
+
+    double number(const Json& object, const std::string& where, const char* name, double min,
+                  double max, const char* unit) {
+        const std::string key = where + "." + name;
+        if (!object.contains(name)) {
+            fail(key, nullptr, range_allowed(min, max, unit));
+            return min;
+        }
+        const Json& value = object[name];
+        const double number = value.is_number() ? value.get<double>() : std::nan("");
+        if (!(number >= min && number <= max)) {
+            fail(key, value, range_allowed(min, max, unit));
+            return min;
+        }
+        return number == 0.0 ? 0.0 : number;
+    }
+
+    std::string text(const Json& object, const std::string& where, const char* name,
+                     std::size_t max_chars) {
+        if (!object.contains(name)) return {};
+        const Json& value = object[name];
+        if (!value.is_string() || value.get<std::string>().size() > max_chars ||
+            value.get<std::string>().find_first_of("\r\n") != std::string::npos) {
+            Message allowed = allowed_text(
+                "one_line_text",
+                QT_TRANSLATE_NOOP("FieldError", "one line of text, at most %1 characters"));
+            allowed.args = {arg("max", ArgKind::integer, static_cast<double>(max_chars))};
+            fail(where + "." + name, value, std::move(allowed));
+            return {};
+        }
+        return value.get<std::string>();
+    }
+
+    ProgramStep step(const Json& body, const std::string& where) {
+        ProgramStep step;
+        if (!body.is_object()) {
+            fail(where, body,
+                 allowed_text("not_an_object",
+                              QT_TRANSLATE_NOOP("FieldError", "an object of keys")));
+            return step;
+        }
+        static const char* const kKeys[] = {
+            "step",        "axis",     "direction",       "distance_mm",
+            "feed_mm_min", "recorded", "orientation_deg", "text"};
+        for (const auto& item : body.items()) {
+            const std::string& name = item.key();
+            if (std::find_if(std::begin(kKeys), std::end(kKeys),
+                             [&name](const char* k) { return name == k; }) == std::end(kKeys)) {
+                Message allowed =
+                    allowed_text("unknown_key",
+                                 QT_TRANSLATE_NOOP("FieldError", "unknown key; allowed in %1: %2"));
+                allowed.args = {text_arg("section", "a step"),
+                                text_arg("allowed_keys",
+                                         "step, axis, direction, distance_mm, feed_mm_min, "
+                                         "recorded, orientation_deg, text")};
+                std::string key = where;
+                key += '.';
+                key += name;
+                fail(std::move(key), nullptr, std::move(allowed));
+            }
+        }
+        const Json kind = body.contains("step") ? body["step"] : Json();
+        if (kind == "pause") {
+            step.kind = StepKind::pause;
+        } else if (kind == "probe") {
+            step.kind = StepKind::probe;
+        } else if (kind == "move") {
+            step.kind = StepKind::move;
+        } else {
+            Message allowed =
+                allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
+            allowed.args = {text_arg("allowed_words", "pause, probe, move")};
+            fail(where + ".step", kind, std::move(allowed));
+            return step;
+        }
+        step.text = text(body, where, "text", kMaxPauseTextChars);
+        if (step.kind == StepKind::pause) return step;
+        const Json axis = body.contains("axis") ? body["axis"] : Json();
+        if (axis == "X" || axis == "Y" || axis == "Z") {
+            step.axis = axis.get<std::string>()[0];
+        } else {
+            Message allowed =
+                allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
+            allowed.args = {text_arg("allowed_words", "X, Y, Z")};
+            fail(where + ".axis", axis, std::move(allowed));
+        }
+        const Json direction = body.contains("direction") ? body["direction"] : Json();
+        if (direction == 1 || direction == -1) {
+            step.direction = direction.get<int>();
+        } else {
+            Message allowed =
+                allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
+            allowed.args = {text_arg("allowed_words", "1, -1")};
+            fail(where + ".direction", direction, std::move(allowed));
+        }
+        step.distance_mm = number(body, where, "distance_mm", kStep_mm, kMaxPlanDistance_mm, "mm");
+        const double min_feed = step.kind == StepKind::move ? 0.0 : kMinPlanFeed_mm_min;
+        step.feed_mm_min =
+            number(body, where, "feed_mm_min", min_feed, kMaxPlanFeed_mm_min * 2.0, "mm/min");
+        if (body.contains("recorded")) {
+            const Json& recorded = body["recorded"];
+            if (recorded.is_boolean() && (step.kind == StepKind::probe || !recorded.get<bool>())) {
+                step.recorded = recorded.get<bool>();
+            } else {
+                fail(where + ".recorded", recorded,
+                     allowed_text(
+                         "recorded_flag",
+                         QT_TRANSLATE_NOOP("FieldError", "true or false (true on a probe only)")));
+            }
+        }
+        if (body.contains("orientation_deg")) {
+            step.orientation_deg = number(body, where, "orientation_deg", 0.0, 360.0, "deg");
+        }
+        return step;
+    }
+};
+
+}  // namespace
+
+std::string probing_plan_json(const ProbingPlan& plan) {
+    Json root = Json::object();
+    root["format"] = kFormat;
+    root["version"] = kVersion;
+    root["kind"] = to_string(plan.kind);
+    Json values = Json::object();
+    for (const PlanValue& v : plan.values) values[v.key] = v.text;
+    root["values"] = values;
+    Json steps = Json::array();
+    for (const ProgramStep& step : plan.steps) {
+        Json s = Json::object();
+        s["step"] = to_word(step.kind);
+        if (step.kind != StepKind::pause) {
+            s["axis"] = std::string(1, step.axis);
+            s["direction"] = step.direction;
+            s["distance_mm"] = step.distance_mm;
+            s["feed_mm_min"] = step.feed_mm_min;
+        }
+        if (step.kind == StepKind::probe) {
+            s["recorded"] = step.recorded;
+            s["orientation_deg"] = step.orientation_deg;
+        }
+        s["text"] = step.text;
+        steps.push_back(std::move(s));
+    }
+    root["steps"] = std::move(steps);
+    return root.dump(2) + "\n";
+}
+
+ProbingPlan parse_probing_plan(std::string_view text) {
+    Json root;
+    if (std::optional<FieldError> error = parse_checked_json(text, kMaxDepth, root)) {
+        throw ScenarioError({std::move(*error)});
+    }
+    if (!root.is_object() || !root.contains("format") || root["format"] != kFormat) {
+        throw ScenarioError(
+            {{"format", root.is_object() && root.contains("format") ? root["format"].dump() : "",
+              allowed_text("plan_file_format",
+                           QT_TRANSLATE_NOOP("FieldError",
+                                             "\"probecycle-probing-plan\" (a plan that "
+                                             "probecycle-cli program wrote)"))}});
+    }
+    if (!root.contains("version") || root["version"] != kVersion) {
+        throw ScenarioError(
+            {{"version", root.contains("version") ? root["version"].dump() : "",
+              allowed_text(
+                  "plan_file_version",
+                  QT_TRANSLATE_NOOP("FieldError", "1 (a newer ProbeCycle wrote this file)"))}});
+    }
+    PlanReader reader;
+    ProbingPlan plan;
+    for (const auto& item : root.items()) {
+        const std::string& key = item.key();
+        const Json& value = item.value();
+        if (key == "format" || key == "version") continue;
+        if (key == "kind") {
+            const std::optional<ProgramKind> kind =
+                value.is_string() ? program_kind_from_string(value.get<std::string>())
+                                  : std::nullopt;
+            if (kind) {
+                plan.kind = *kind;
+            } else {
+                Message allowed =
+                    allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
+                allowed.args = {text_arg("allowed_words", "delay, ring, cycle")};
+                reader.fail(key, value, std::move(allowed));
+            }
+        } else if (key == "values" && value.is_object()) {
+            for (const auto& v : value.items()) {
+                const std::string shown = reader.text(value, key, v.key().c_str(), 100);
+                plan.values.push_back({v.key(), shown});
+            }
+        } else if (key == "steps" && value.is_array() && value.size() <= kMaxPlanSteps) {
+            for (std::size_t i = 0; i < value.size(); ++i) {
+                plan.steps.push_back(reader.step(value[i], "steps." + std::to_string(i + 1)));
+            }
+        } else if (key == "values" || key == "steps") {
+            Message allowed = allowed_text(
+                key == "values" ? "plan_values" : "plan_steps",
+                key == "values" ? QT_TRANSLATE_NOOP("FieldError", "an object of keys")
+                                : QT_TRANSLATE_NOOP("FieldError", "a list of at most 20000 steps"));
+            reader.fail(key, value.size() > 3 ? Json(nullptr) : value, std::move(allowed));
+        } else {
+            Message allowed = allowed_text(
+                "unknown_key", QT_TRANSLATE_NOOP("FieldError", "unknown key; allowed in %1: %2"));
+            allowed.args = {text_arg("section", "the plan"),
+                            text_arg("allowed_keys", "format, version, kind, values, steps")};
+            reader.fail(key, nullptr, std::move(allowed));
+        }
+    }
+    if (reader.errors.empty() && plan.recorded().empty()) {
+        reader.fail("steps", nullptr,
+                    allowed_text("plan_no_touch",
+                                 QT_TRANSLATE_NOOP("FieldError",
+                                                   "no recorded probe; a plan needs one or more")));
+    }
+    if (!reader.errors.empty()) throw ScenarioError(std::move(reader.errors));
+    return plan;
+}
+
+std::string plan_id(const ProbingPlan& plan) {
+    // FNV-1a, 64 bits: a name for the plan, not a protection.
+    std::uint64_t hash = 0xcbf29ce484222325ULL;
+    for (const char c : probing_plan_json(plan)) {
+        hash ^= static_cast<unsigned char>(c);
+        hash *= 0x100000001b3ULL;
+    }
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
+}  // namespace probecycle

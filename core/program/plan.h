@@ -1,0 +1,140 @@
+#pragma once
+
+// What a probing program does, before it is written in a control's dialect
+// (issue 13): the delay-stability test, the ring-gauge calibration and the
+// tuned cycle as a list of steps, each an incremental move from where the
+// previous one left the probe. The generator (program_writer.h) writes the
+// steps in a dialect; the importer (machine_log.h) matches what the control
+// recorded to the plan's recorded touches. The plan is a file of its own
+// (probing_plan_json / parse_probing_plan) so that the import, days later, knows which touch
+// was which.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/cycle/scenario.h"
+
+namespace probecycle {
+
+enum class ProgramKind { delay, ring, cycle };
+const char* to_string(ProgramKind kind);
+std::optional<ProgramKind> program_kind_from_string(std::string_view word);
+
+enum class StepKind {
+    pause,  // the operator does what `text` says, then resumes (cycle start)
+    probe,  // a probing move: stops at the trigger, an alarm when none comes
+    move,   // a plain move: rapid (feed 0) or at a feed
+};
+
+struct ProgramStep {
+    StepKind kind{StepKind::probe};
+    char axis{'X'};           // 'X', 'Y' or 'Z'
+    int direction{-1};        // +1 or -1, the direction of travel
+    double distance_mm{0.0};  // the length of the move (probe: the farthest it may go)
+    double feed_mm_min{0.0};  // 0: rapid (a move only)
+    // A probe whose trigger position the lab uses; the others locate the
+    // surface or make the first touch of a two-touch point.
+    bool recorded{false};
+    double orientation_deg{0.0};  // ring: the spindle orientation of the touch
+    std::string text;             // pause: what the operator does; probe/move: a note
+};
+
+// A scenario value the plan was made from, shown in the program's header.
+struct PlanValue {
+    std::string key;   // "cycle.probe_feed_mm_min", or a program option ("gauge_diameter_mm")
+    std::string text;  // as the scenario file writes it
+};
+
+struct ProbingPlan {
+    ProgramKind kind{ProgramKind::delay};
+    std::vector<PlanValue> values;
+    std::vector<ProgramStep> steps;
+
+    // The recorded probes, in order.
+    std::vector<const ProgramStep*> recorded() const;
+};
+
+// One axis and direction of the delay test ("X-").
+struct AxisDirection {
+    char axis{'Z'};
+    int direction{-1};
+};
+// "X+", "z-" (case-insensitive); nullopt otherwise.
+std::optional<AxisDirection> axis_direction_from_string(std::string_view text);
+std::string to_string(const AxisDirection& group);
+
+// The allowed ranges of the options, shared by the CLI and the plan file.
+constexpr double kMinPlanFeed_mm_min = 1.0;
+constexpr double kMaxPlanFeed_mm_min = 100000.0;
+constexpr double kMaxPlanDistance_mm = 1000.0;
+constexpr int kMaxRepeats = 100;
+constexpr std::size_t kMaxPlanSteps = 20000;
+constexpr std::size_t kMaxPlanFeeds = 20;
+constexpr std::size_t kMaxPauseTextChars = 200;
+
+// The delay-stability test (domain.md, "Latency"; ISO 230-10) along one axis
+// and direction: `repeats` touches at each feed, each from the distance the axis needs to
+// reach that feed (approach_room_mm) plus `margin_mm`, so every touch is at
+// full speed. The program opens with a pause (the operator checks that the
+// probe stands in front of the surface, at most `placement_mm` away) and a
+// locating touch at the slowest feed that is not recorded. One axis and
+// direction per program: neither LinuxCNC (M0 stays in Auto mode, m-code.adoc)
+// nor grbl (jogging only when Idle, jogging.md) lets the operator jog the
+// probe to another surface at a pause; the lab fits the groups of several
+// imports pasted together. After each touch a rapid retract puts the
+// probe at the next touch's start distance: the retract is that distance plus
+// the overtravel the model predicts at the touch's feed (G38.2 stops where the
+// axis stopped, not at the trigger).
+struct DelayPlanOptions {
+    AxisDirection touch{'Z', -1};
+    // Empty: 30, 100, 300, 1000, 2000 mm/min and the scenario's probing feed.
+    std::vector<double> feeds_mm_min;
+    int repeats{5};
+    double margin_mm{1.0};
+    double placement_mm{10.0};
+};
+// The default feeds of the test (issue 13).
+std::vector<double> default_delay_feeds(const Scenario& scenario);
+
+// The ring-gauge calibration (domain.md, "Calibration"): from the gauge
+// centre, touches at X+, X-, Y+, Y- with the spindle at 0 deg, then the same
+// four at 180 deg (the operator turns the spindle at a pause; every return is
+// measured from the wall, so the probe is back at the centre), each point the scenario's
+// strategy (two-touch: a fast touch, the backoff, the measuring touch).
+struct RingPlanOptions {
+    double gauge_diameter_mm{50.0};
+    double ball_diameter_mm{6.0};
+    // How far off the gauge centre the operator may leave the probe.
+    double centre_tolerance_mm{1.0};
+};
+
+// The tuned cycle: the scenario's strategy, feeds, backoff and start distance
+// on a surface, along `axis` (the probe stands approach_mm in front of it).
+struct CyclePlanOptions {
+    AxisDirection touch{'Z', -1};
+};
+
+// Throw InputError naming the option and what is allowed.
+ProbingPlan make_delay_plan(const Scenario& scenario, const DelayPlanOptions& options);
+ProbingPlan make_ring_plan(const Scenario& scenario, const RingPlanOptions& options);
+ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& options);
+
+// The plan file (2-space JSON, "\n" at the end):
+//   {"format": "probecycle-probing-plan", "version": 1, "kind": "delay",
+//    "values": {"cycle.probe_feed_mm_min": "2000", ...},
+//    "steps": [{"step": "pause", "text": "..."},
+//              {"step": "probe", "axis": "Z", "direction": -1, "distance_mm": 3.1,
+//               "feed_mm_min": 30, "recorded": true, "orientation_deg": 0, "text": ""}, ...]}
+std::string probing_plan_json(const ProbingPlan& plan);
+// Throws ScenarioError listing every problem, keyed by its dotted path
+// ("steps.3.feed_mm_min").
+ProbingPlan parse_probing_plan(std::string_view text);
+// 16 hex digits naming the plan (a hash of probing_plan_json): the program and the
+// LinuxCNC log carry it, so that a log from another plan is told apart.
+std::string plan_id(const ProbingPlan& plan);
+
+}  // namespace probecycle

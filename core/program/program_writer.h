@@ -1,0 +1,26 @@
+#pragma once
+
+// A probing plan as a program in a control's dialect (issue 13). The program
+// opens with a header of comments: what it does, the plan's id, the date, the
+// scenario values the plan used, the warning to prove it out at reduced rapid
+// override with the probe clear of the part, and where the control puts the
+// positions. Every move is incremental (G91) from where the probe stands, so
+// the program never drives to a coordinate the user did not choose.
+
+#include <string>
+
+#include "core/program/dialect.h"
+#include "core/program/plan.h"
+
+namespace probecycle {
+
+// `date` as YYYY-MM-DD (report_date(): today, or SOURCE_DATE_EPOCH's day).
+std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const std::string& date);
+
+// A distance or coordinate as the programs write it: 3 decimals, '.' whatever
+// the locale ("-10.500").
+std::string program_number(double value);
+// A feed as the programs write it: up to one decimal ("30", "1500.5").
+std::string program_feed(double feed_mm_min);
+
+}  // namespace probecycle

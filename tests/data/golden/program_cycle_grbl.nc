@@ -1,0 +1,44 @@
+; ProbeCycle program for grbl: the tuned cycle.
+; One surface touched with the scenario's strategy, feeds, backoff and start
+; distance: a plain skip sequence, no macro call.
+; Plan f2830e022a6309c3 (keep the plan file: the import matches the positions to it).
+; Date 2026-01-15.
+; Scenario values and options used:
+;   machine.accel_model = time_constant
+;   machine.time_constant_s = 0.06
+;   machine.max_accel_mm_s2 = 2000
+;   machine.max_jerk_mm_s3 = 40000
+;   machine.filter = none
+;   machine.filter_time_s = 0.03
+;   machine.servo_time_constant_s = 0
+;   machine.scan_period_s = 0.004
+;   machine.controller_latency_s = 0.002
+;   probe.interface_delay_s = 0.002
+;   probe.pretravel_mm = 0.005
+;   probe.overtravel_limit_mm = 5
+;   cycle.strategy = two_touch
+;   cycle.approach_mm = 5
+;   cycle.probe_feed_mm_min = 2000
+;   cycle.measure_feed_mm_min = 30
+;   cycle.backoff_mm = 2
+;   cycle.backoff_from = stop
+;   cycle.return_feed_mm_min = 10000
+; WARNING: prove this program out first at reduced rapid override, with the probe
+; clear of the part, and check every move against your machine before a touch.
+; Every move is incremental (G91) from where the probe stands when the program
+; starts or a pause ends. A probing move that does not trigger stops the program
+; with an alarm.
+; Positions: grbl answers [PRB:x,y,z:1] after each probe (machine
+; positions; set $13=0 for mm). Save the sender's console to a file and
+; import that file.
+G21 G91 G94
+; check: the probe stands 5 mm in front of the surface, touching along Z-; resume to start
+M0
+; Z- first touch at 2000 mm/min
+G38.2 Z-6.000 F2000
+G1 Z2.000 F10000 ; backoff
+; touch 1: Z- measuring touch at 30 mm/min
+G38.2 Z-1.729 F30
+G1 Z5.024 F10000 ; back to the start
+G90
+M2
