@@ -464,6 +464,34 @@
         <source>missing; a project holds a scenario</source>
         <translation>отсутствует; проект содержит сценарий</translation>
     </message>
+    <message>
+        <source>from 2 to %1 different feeds</source>
+        <translation>от 2 до %1 различных подач</translation>
+    </message>
+    <message>
+        <source>surface (a program for a feature&apos;s touches is not written yet)</source>
+        <translation>surface (программа для касаний элемента пока не пишется)</translation>
+    </message>
+    <message>
+        <source>one line of text, at most %1 characters</source>
+        <translation>одна строка текста, не более %1 символов</translation>
+    </message>
+    <message>
+        <source>true or false (true on a probe only)</source>
+        <translation>true или false (true только для касания)</translation>
+    </message>
+    <message>
+        <source>&quot;probecycle-probing-plan&quot; (a plan that probecycle-cli program wrote)</source>
+        <translation>&quot;probecycle-probing-plan&quot; (план, записанный probecycle-cli program)</translation>
+    </message>
+    <message>
+        <source>a list of at most 20000 steps</source>
+        <translation>список не более чем из 20000 шагов</translation>
+    </message>
+    <message>
+        <source>no recorded probe; a plan needs one or more</source>
+        <translation>нет записываемых касаний; плану нужно одно или больше</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -490,6 +518,45 @@
     <message>
         <source>it is a symbolic link to a folder that does not exist</source>
         <translation>это символическая ссылка на несуществующую папку</translation>
+    </message>
+</context>
+<context>
+    <name>MachineLog</name>
+    <message>
+        <source>cannot read &apos;%1&apos;; expected %2</source>
+        <translation>не удаётся прочитать «%1»; ожидалось %2</translation>
+    </message>
+    <message>
+        <source>the log ends after %1 of the plan&apos;s %2 probe positions: the program stopped early, a position was not recorded, or the log is from another plan; nothing imported</source>
+        <translation>журнал заканчивается после %1 из %2 положений касания плана: программа остановилась раньше, положение не записано или журнал от другого плана; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>a probe position more than the plan&apos;s %1: the program ran twice into one log, or the log is from another plan; nothing imported</source>
+        <translation>положений касания больше, чем %1 в плане: программа выполнена дважды в один журнал или журнал от другого плана; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>%1 moved %2 since line %3, but the plan moves only %4 between these probes: is the log from another plan? Nothing imported</source>
+        <translation>%1 переместилась на %2 после строки %3, а план перемещает только %4 между этими касаниями: журнал от другого плана? Ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>the log is from plan %1, the plan file is plan %2: give the plan the program was made from; nothing imported</source>
+        <translation>журнал от плана %1, файл плана — план %2: укажите план, по которому создана программа; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>touch %1 where touch %2 was due: the log holds more than one run; nothing imported</source>
+        <translation>касание %1 там, где ожидалось касание %2: в журнале больше одного прогона; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>grbl raised &apos;%1&apos; (ALARM:5: the probe did not touch; ALARM:4: it was triggered before the move): the program stopped there; nothing imported</source>
+        <translation>grbl выдал «%1» (ALARM:5: датчик не коснулся; ALARM:4: датчик сработал до движения): программа остановилась там; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>the probe did not trigger (%1); nothing imported</source>
+        <translation>датчик не сработал (%1); ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>a cycle plan&apos;s positions have no table in the lab; import the log of a delay or a ring program</source>
+        <translation>для положений плана цикла в лаборатории нет таблицы; импортируйте журнал программы задержки или кольца</translation>
     </message>
 </context>
 <context>
@@ -940,6 +1007,21 @@
     <message>
         <source>Lower</source>
         <translation>Опускание</translation>
+    </message>
+</context>
+<context>
+    <name>Program</name>
+    <message>
+        <source>at %1 the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed or check the scenario</source>
+        <translation>при %1 перебег по модели %2, не меньше предела датчика %3: уменьшите подачу или проверьте сценарий</translation>
+    </message>
+    <message>
+        <source>the backoff %1 does not clear the first touch&apos;s overtravel %2: set cycle.backoff_mm to at least %3 (the recommended backoff)</source>
+        <translation>отвод %1 не покрывает перебег первого касания %2: задайте cycle.backoff_mm не меньше %3 (рекомендуемый отвод)</translation>
+    </message>
+    <message>
+        <source>the gauge (%1) leaves the ball (%2) no more room than the centre tolerance %3: a larger gauge or a smaller ball</source>
+        <translation>кольцо (%1) оставляет шарику (%2) не больше места, чем допуск центра %3: нужно кольцо больше или шарик меньше</translation>
     </message>
 </context>
 <context>
@@ -1909,7 +1991,7 @@
     <message>
         <source>Phases of an invalid cycle (grey): %1</source>
         <extracomment>%1: why the cycle cannot run, e.g. &quot;Backoff too small&quot;</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>Фазы недопустимого цикла (серые): %1</translation>
     </message>
 </context>
 <context>

@@ -464,6 +464,34 @@
         <source>missing; a project holds a scenario</source>
         <translation>缺失；项目必须包含场景</translation>
     </message>
+    <message>
+        <source>from 2 to %1 different feeds</source>
+        <translation>2 到 %1 个不同的进给率</translation>
+    </message>
+    <message>
+        <source>surface (a program for a feature&apos;s touches is not written yet)</source>
+        <translation>surface（尚不生成特征触测的程序）</translation>
+    </message>
+    <message>
+        <source>one line of text, at most %1 characters</source>
+        <translation>一行文本，最多 %1 个字符</translation>
+    </message>
+    <message>
+        <source>true or false (true on a probe only)</source>
+        <translation>true 或 false（仅触测可为 true）</translation>
+    </message>
+    <message>
+        <source>&quot;probecycle-probing-plan&quot; (a plan that probecycle-cli program wrote)</source>
+        <translation>&quot;probecycle-probing-plan&quot;（由 probecycle-cli program 写出的计划）</translation>
+    </message>
+    <message>
+        <source>a list of at most 20000 steps</source>
+        <translation>最多 20000 步的列表</translation>
+    </message>
+    <message>
+        <source>no recorded probe; a plan needs one or more</source>
+        <translation>没有记录的触测；计划至少需要一次</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -490,6 +518,45 @@
     <message>
         <source>it is a symbolic link to a folder that does not exist</source>
         <translation>它是指向不存在的文件夹的符号链接</translation>
+    </message>
+</context>
+<context>
+    <name>MachineLog</name>
+    <message>
+        <source>cannot read &apos;%1&apos;; expected %2</source>
+        <translation>无法读取“%1”；应为 %2</translation>
+    </message>
+    <message>
+        <source>the log ends after %1 of the plan&apos;s %2 probe positions: the program stopped early, a position was not recorded, or the log is from another plan; nothing imported</source>
+        <translation>日志在计划的 %2 个触测位置中的第 %1 个之后结束：程序提前停止、某个位置未记录，或日志来自另一计划；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>a probe position more than the plan&apos;s %1: the program ran twice into one log, or the log is from another plan; nothing imported</source>
+        <translation>触测位置多于计划的 %1 个：程序在同一日志中运行了两次，或日志来自另一计划；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>%1 moved %2 since line %3, but the plan moves only %4 between these probes: is the log from another plan? Nothing imported</source>
+        <translation>%1 自第 %3 行起移动了 %2，但计划在这两次触测之间只移动 %4：日志是否来自另一计划？未导入任何内容</translation>
+    </message>
+    <message>
+        <source>the log is from plan %1, the plan file is plan %2: give the plan the program was made from; nothing imported</source>
+        <translation>日志来自计划 %1，计划文件为计划 %2：请提供生成该程序的计划；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>touch %1 where touch %2 was due: the log holds more than one run; nothing imported</source>
+        <translation>应为第 %2 次触测处出现第 %1 次触测：日志包含多次运行；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>grbl raised &apos;%1&apos; (ALARM:5: the probe did not touch; ALARM:4: it was triggered before the move): the program stopped there; nothing imported</source>
+        <translation>grbl 报出“%1”（ALARM:5：测头未触碰；ALARM:4：移动前已触发）：程序在此停止；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>the probe did not trigger (%1); nothing imported</source>
+        <translation>测头未触发（%1）；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>a cycle plan&apos;s positions have no table in the lab; import the log of a delay or a ring program</source>
+        <translation>循环计划的位置在实验室中没有对应表格；请导入延迟或环规程序的日志</translation>
     </message>
 </context>
 <context>
@@ -940,6 +1007,21 @@
     <message>
         <source>Lower</source>
         <translation>下降</translation>
+    </message>
+</context>
+<context>
+    <name>Program</name>
+    <message>
+        <source>at %1 the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed or check the scenario</source>
+        <translation>在 %1 时模型过行程为 %2，达到或超过测头极限 %3：请降低进给率或检查场景</translation>
+    </message>
+    <message>
+        <source>the backoff %1 does not clear the first touch&apos;s overtravel %2: set cycle.backoff_mm to at least %3 (the recommended backoff)</source>
+        <translation>回退距离 %1 不足以覆盖第一次触测的过行程 %2：请将 cycle.backoff_mm 设为至少 %3（推荐回退距离）</translation>
+    </message>
+    <message>
+        <source>the gauge (%1) leaves the ball (%2) no more room than the centre tolerance %3: a larger gauge or a smaller ball</source>
+        <translation>环规（%1）给测球（%2）留出的空间不大于中心公差 %3：需要更大的环规或更小的测球</translation>
     </message>
 </context>
 <context>
@@ -1909,7 +1991,7 @@
     <message>
         <source>Phases of an invalid cycle (grey): %1</source>
         <extracomment>%1: why the cycle cannot run, e.g. &quot;Backoff too small&quot;</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>无效循环的各阶段（灰色）：%1</translation>
     </message>
 </context>
 <context>

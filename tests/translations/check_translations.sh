@@ -18,7 +18,10 @@ for ts in "$@"; do
   copy="$work/$(basename "$ts")"
   cp "$ts" "$copy"
   "$lupdate" -silent -project "$work/project.json" -no-obsolete -locations none -ts "$copy"
-  missing=$(grep -B1 'type="unfinished"' "$copy" | sed -n 's/^ *<source>\(.*\)<\/source>$/\1/p' || true)
+  # The source of each unfinished message (a translator's comment may stand
+  # between the two lines).
+  missing=$(awk '/<source>/ { source = $0 } /type="unfinished"/ { print source }' "$copy" |
+    sed -n 's/^ *<source>\(.*\)<\/source>$/\1/p' || true)
   if [ -n "$missing" ]; then
     echo "$(basename "$ts"): $(printf '%s\n' "$missing" | wc -l) text(s) without a finished translation:"
     printf '  %s\n' "$missing"
