@@ -32,26 +32,32 @@ namespace probecycle {
 // stand-alone interpreter, rs274 (tests/core/program/rs274_check_test.cpp).
 const Dialect& linuxcnc_dialect() {
     static const Dialect dialect{
-        DialectId::linuxcnc,
-        "linuxcnc",
-        "LinuxCNC",
-        "ngc",
-        ";",
-        "G21 G91 G94",
-        "G38.2",
-        "G0",
-        "G1",
-        "(MSG,{text})",
-        "M0",
-        {"(PROBEOPEN probecycle_probes.txt)", "(LOGOPEN,probecycle_log.txt)",
-         "(LOG,probecycle plan {id} {kind})"},
-        "(LOG,probecycle touch {n} %.6f#5061 #5062 #5063)",
-        {"(LOGCLOSE)", "(PROBECLOSE)"},
-        {"G90", "M2"},
-        {"Positions: LinuxCNC writes probecycle_log.txt (one line per recorded touch)",
-         "and probecycle_probes.txt (PROBEOPEN: 9 numbers per probe) in its working",
-         "directory. Import the log: the probe file drops a touch that trips at the",
-         "same position as the one before it."},
+        .id = DialectId::linuxcnc,
+        .name = "linuxcnc",
+        .title = "LinuxCNC",
+        .extension = "ngc",
+        .comment_open = ";",
+        .comment_close = "",
+        .program_start = {},
+        .modes = "G21 G91 G94",
+        .probe_word = "G38.2",
+        .rapid_word = "G0",
+        .feed_word = "G1",
+        .pause_message = "(MSG,{text})",
+        .pause_word = "M0",
+        .open_record = {"(PROBEOPEN probecycle_probes.txt)", "(LOGOPEN,probecycle_log.txt)",
+                        "(LOG,probecycle plan {id} {kind})"},
+        .before_probe = "",
+        .after_probe = "",
+        .after_recorded_probe = {"(LOG,probecycle touch {n} %.6f#5061 #5062 #5063)"},
+        .close_record = {"(LOGCLOSE)", "(PROBECLOSE)"},
+        .end = {"G90", "M2"},
+        .after_end = {},
+        .record_notes =
+            {"Positions: LinuxCNC writes probecycle_log.txt (one line per recorded touch)",
+             "and probecycle_probes.txt (PROBEOPEN: 9 numbers per probe) in its working",
+             "directory. Import the log: the probe file drops a touch that trips at the",
+             "same position as the one before it."},
     };
     return dialect;
 }
@@ -80,41 +86,170 @@ const Dialect& linuxcnc_dialect() {
 // (the import takes the first three numbers, X Y Z).
 const Dialect& grbl_dialect() {
     static const Dialect dialect{
-        DialectId::grbl,
-        "grbl",
-        "grbl",
-        "nc",
-        ";",
-        "G21 G91 G94",
-        "G38.2",
-        "G0",
-        "G1",
-        "",
-        "M0",
-        {},
-        "",
-        {},
-        {"G90", "M2"},
-        {"Positions: grbl answers [PRB:x,y,z:1] after each probe (machine",
-         "positions; set $13=0 for mm). Save the sender's console to a file and",
-         "import that file."},
+        .id = DialectId::grbl,
+        .name = "grbl",
+        .title = "grbl",
+        .extension = "nc",
+        .comment_open = ";",
+        .comment_close = "",
+        .program_start = {},
+        .modes = "G21 G91 G94",
+        .probe_word = "G38.2",
+        .rapid_word = "G0",
+        .feed_word = "G1",
+        .pause_message = "",
+        .pause_word = "M0",
+        .open_record = {},
+        .before_probe = "",
+        .after_probe = "",
+        .after_recorded_probe = {},
+        .close_record = {},
+        .end = {"G90", "M2"},
+        .after_end = {},
+        .record_notes = {"Positions: grbl answers [PRB:x,y,z:1] after each probe (machine",
+                         "positions; set $13=0 for mm). Save the sender's console to a file and",
+                         "import that file."},
+    };
+    return dialect;
+}
+
+// Fanuc-type macro B: Fanuc, and Haas with the macro option. Checked against
+// (re-read with the search tool; quotes in /tmp/notes of issue 13):
+// - G31: Fanuc Series 15i/150i-MA Operator's Manual p.564 ("G31 IP_ ;
+//   One-shot G code ... If an external skip signal is input during the
+//   execution of this command, execution of the command is interrupted and
+//   the next block is executed"; the coordinates at the skip in "#5061 to
+//   #5080 ... #5061 1st axis coordinate value"; the feed is F or parameter
+//   1428 "depending on the setting of the bit3 (SKF) in parameter No. 1400";
+//   "Servo delay compensation": the stored position can have the servo
+//   system's delay taken out). Haas Mill Operator's Manual, "G31 Feed Until
+//   Skip" (#5061-#5066; "If the probe does not receive a skip signal ... the
+//   skip signal position will be recorded at the end of the programmed move.
+//   The program will continue."; "The G31 line must have a Feed command";
+//   "Do not use Cutter Compensation (G41, G42) with a G31"). NCT 2000M/99M
+//   manual s.18.1 and p.183 (Fanuc-compatible: #5061 is in the work
+//   coordinate system, "Unless the skip signal has arrived, the above
+//   variables will assume the end-point position programmed in block G31";
+//   without P the first skip signal) and Yaskawa YASNAC LX3 (same: "When the
+//   skip signal is not turned on in G 31 block, the skip signal position is
+//   at the end of G 31 block"; its #5041 read during a move waits for the
+//   move's end). Mitsubishi M700V s.15.2/15.4: G31 follows G90/G91, no alarm
+//   without a trigger, and P is a bit mask of skip signals there while NCT
+//   and Fanuc give P other meanings: so no P word.
+// - So the program checks every probe itself: it keeps the probing axis's
+//   programmed end point (the current position #5041-#5043 read in the
+//   block before the G31, plus the move) and alarms when the skip position
+//   is that end point. The tolerance, 0.05 mm: at rest the current position
+//   stands within the in-position width of the commanded one; a touch that
+//   triggers within 0.05 mm of the end of its search (which goes 1 mm, or half
+//   the stylus's overtravel, past the expected surface) is taken for none,
+//   the safe side. Not confirmed: that every control reads #5041 only after
+//   the previous move ended (Fanuc buffers the next block during a move,
+//   FS16i/18i/21i-TB "Notes on using custom macros"; Yaskawa waits). A read
+//   taken early can only miss this alarm, never raise a false one. The skip
+//   position is read right after the G31 as working Fanuc probing programs
+//   do (mojimould/mould_moji O919100.nc: IF[#5063LE...]GOTO800, #3000=141).
+// - #3000=n (TEXT) stops with alarm n (cncci.com, "Generating alarms for
+//   dangerous situations": "for most control models, must range between 100
+//   and 255"): 101, upper-case text. IF[...]GOTOn and the N label after M30:
+//   the same working program.
+// - POPEN, DPRNT[...], PCLOS: Haas 96-8000 Rev AC p.116 ("DPRNT must be the
+//   only command in the block"; text "any character from A to Z or the
+//   letters (+,-,/,*, and the space). When an asterisk is output, it is
+//   converted to a space"; #nnnn[wf]: whole and fractional places, "The total
+//   places reserved for output cannot be equal to zero or greater tha[n]
+//   eight"; "leading spaces are output"; "A carriage return is sent out after
+//   every DPRNT block"). So the text is letters and * only (the plan's id in
+//   letters, touch numbers from a variable) and the positions #5061[44]: 4
+//   decimals (0.1 um, finer than the 1 um of most skip positions), 4 whole
+//   digits (9999.9999 mm, more than any travel; Haas widens a longer field),
+//   4 + 4 = 8, Haas's maximum. Fanuc ends an output line with LF or LF CR CR
+//   (parameter 0100#3 NCR, FS16i/18i-TB p.649); Haas's POPEN/PCLOS send DC2
+//   and DC4 on its serial port (Haas 96-8000, 1999, p.115): the import takes
+//   every ending and drops control bytes and '%'.
+// - "%" starts and ends the file, O-number, "(...)" comments, M00, M30, G21,
+//   G40, G80, G90/G91, G94: Fanuc memory-card format (FS16i/18i-TB p.649: "A
+//   file starts with % or LF ... A file always ends with %"), the Rockwell
+//   8520 example "POPEN; BPRNT[...]; PCLOS; M30;".
+// Not confirmed, so not relied on: where DPRNT output goes (a Fanuc's I/O
+// channel, a Haas's serial port or a file: the user captures it); the sign
+// and leading zeros of a printed number (Fanuc parameter PRT): the import
+// reads any; spindle orientation to an angle (M19 differs by maker and
+// builder): the ring program takes the user's command; Mitsubishi's skip
+// variables, DPRNT and #3000 (only its G31 was found).
+const Dialect& fanuc_dialect() {
+    static const Dialect dialect{
+        .id = DialectId::fanuc,
+        .name = "fanuc",
+        .title = "Fanuc-type macro B, Fanuc and Haas",
+        .extension = "nc",
+        .comment_open = "(",
+        .comment_close = ")",
+        .plain_comments = true,
+        .program_start = {"%", "O1300 (PROBECYCLE)"},
+        .modes = "G21 G40 G80 G91 G94",
+        .probe_word = "G31",
+        .rapid_word = "G0",
+        .feed_word = "G1",
+        .pause_message = "",
+        .pause_word = "M00",
+        .open_record = {"POPEN", "DPRNT[PROBECYCLE*PLAN*{id_letters}*{KIND}]"},
+        .before_probe = "#101={current}{distance}",
+        .after_probe = "IF[ABS[{skip}-#101]LT0.050]GOTO9001",
+        .after_recorded_probe = {"#102={n}",
+                                 "DPRNT[TOUCH#102[40]*X#5061[44]*Y#5062[44]*Z#5063[44]]"},
+        .close_record = {"DPRNT[PROBECYCLE*END]", "PCLOS"},
+        .end = {"G90", "M30"},
+        .after_end = {"N9001", "DPRNT[PROBECYCLE*NO*TRIGGER]", "PCLOS",
+                      "#3000=101(PROBE DID NOT TRIGGER)", "%"},
+        .record_notes =
+            {"Positions: DPRNT prints a line PROBECYCLE PLAN, one line TOUCH n X x Y y Z z",
+             "per recorded touch (skip positions #5061-#5063, work coordinates) and",
+             "PROBECYCLE END. Capture that output (your control's DPRNT channel: a serial",
+             "terminal, a memory card or a file) and import it.",
+             "Uses the common variables #101 and #102. Program number O1300: renumber it if",
+             "your control has one.",
+             "A probe that does not trigger stops with alarm 101 PROBE DID NOT TRIGGER.",
+             "CHECK on Fanuc before the delay test: SKF, parameter 1400#3 on the 15i, makes",
+             "G31 use a fixed skip feed instead of F; the servo delay compensation of the skip",
+             "position takes the servo lag out of #5061, so the fitted delay comes out",
+             "smaller than the real one."},
+        .orient_from_user = true,
     };
     return dialect;
 }
 
 const Dialect& dialect(DialectId id) {
-    return id == DialectId::grbl ? grbl_dialect() : linuxcnc_dialect();
+    switch (id) {
+        case DialectId::linuxcnc:
+            return linuxcnc_dialect();
+        case DialectId::grbl:
+            return grbl_dialect();
+        case DialectId::fanuc:
+            return fanuc_dialect();
+    }
+    return linuxcnc_dialect();
 }
 
 std::optional<DialectId> dialect_from_string(std::string_view word) {
-    for (DialectId id : {DialectId::linuxcnc, DialectId::grbl}) {
+    for (DialectId id : {DialectId::linuxcnc, DialectId::grbl, DialectId::fanuc}) {
         if (word == dialect(id).name) return id;
     }
     return std::nullopt;
 }
 
 std::string dialect_names() {
-    return std::string(linuxcnc_dialect().name) + ", " + grbl_dialect().name;
+    return std::string(linuxcnc_dialect().name) + ", " + grbl_dialect().name + ", " +
+           fanuc_dialect().name;
+}
+
+std::string id_letters(std::string_view hex_id) {
+    std::string letters;
+    for (const char c : hex_id) {
+        const int digit = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+        letters += digit < 0 ? '?' : static_cast<char>('A' + digit);
+    }
+    return letters;
 }
 
 }  // namespace probecycle

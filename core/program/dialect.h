@@ -14,18 +14,25 @@
 
 namespace probecycle {
 
-enum class DialectId { linuxcnc, grbl };
+enum class DialectId { linuxcnc, grbl, fanuc };
 
 struct Dialect {
     DialectId id{DialectId::linuxcnc};
     const char* name;       // the CLI's word: "linuxcnc"
     const char* title;      // "LinuxCNC"
     const char* extension;  // of the program file: "ngc"
-    // Starts a comment to the end of the line that the control never acts on.
-    const char* comment;
+    // A comment that the control never acts on: comment_open, the text,
+    // comment_close ("; text", "(TEXT)").
+    const char* comment_open;
+    const char* comment_close;
+    // Comments in upper case, with letters, digits, spaces and . , - + / * = #
+    // only (the rest becomes a space): what every Fanuc-type control reads.
+    bool plain_comments{false};
+    // Lines before the header (the file's start, a program number).
+    std::vector<const char*> program_start;
     // The modes every program sets first: mm, incremental, feed per minute.
     const char* modes;
-    const char* probe_word;  // a probing move toward the part that alarms without a trigger
+    const char* probe_word;  // a probing move toward the part
     const char* rapid_word;
     const char* feed_word;
     // A pause: the message line ({text}; empty: the message is a comment),
@@ -33,24 +40,41 @@ struct Dialect {
     const char* pause_message;
     const char* pause_word;
     // Lines after the modes that open the control's record ({id}: the plan's
-    // id, {kind}: delay, ring or cycle).
+    // id, {id_letters}: the id in the letters of id_letters(), {kind}: delay,
+    // ring or cycle, {KIND}: the same in upper case).
     std::vector<const char*> open_record;
-    // A line after each recorded probe ({n}: its number, from 1); empty: none.
-    const char* after_recorded_probe;
+    // A line before and after every probing move ({current}: the variable of
+    // the probing axis's current position, {skip}: of its skip position,
+    // {distance}: the signed move, "+12.000"); empty: none. A control that
+    // goes on without an alarm when the probe does not trigger checks here.
+    const char* before_probe;
+    const char* after_probe;
+    // Lines after each recorded probe ({n}: its number, from 1).
+    std::vector<const char*> after_recorded_probe;
     // Lines before the end that close the record.
     std::vector<const char*> close_record;
     // Back to absolute distances, and the end of the program.
     std::vector<const char*> end;
+    // Lines after the end (reached by a jump only), and the file's end.
+    std::vector<const char*> after_end;
     // Header lines: where the positions go and what the import reads.
     std::vector<const char*> record_notes;
+    // No portable word turns the spindle to an angle: the ring program
+    // needs the user's command for 180 deg (ProgramOptions).
+    bool orient_from_user{false};
 };
 
 const Dialect& linuxcnc_dialect();
 const Dialect& grbl_dialect();
+const Dialect& fanuc_dialect();
 const Dialect& dialect(DialectId id);
 // By the CLI's word; nullopt when unknown.
 std::optional<DialectId> dialect_from_string(std::string_view word);
-// "linuxcnc, grbl"
+// "linuxcnc, grbl, fanuc"
 std::string dialect_names();
+
+// The plan's id (16 hex digits) in letters, 0 -> A ... f -> P: a DPRNT text
+// holds letters only (Haas: "any character from A to Z" and + - / * space).
+std::string id_letters(std::string_view hex_id);
 
 }  // namespace probecycle

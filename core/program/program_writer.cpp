@@ -1,8 +1,13 @@
 #include "core/program/program_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <string_view>
+
+#include "core/common/input_error.h"
+#include "core/common/number_format.h"
 
 namespace probecycle {
 
@@ -23,6 +28,32 @@ std::string replaced(std::string text, std::string_view name, const std::string&
         text.replace(at, name.size(), value);
     }
     return text;
+}
+
+Message program_message(const char* code, const char* text, std::vector<MessageArg> args = {}) {
+    return Message{code, "Program", text, std::move(args)};
+}
+
+// Text of a Fanuc-type comment: upper case; letters, digits, spaces and
+// . , - + / * = # (":" and ";" read as ","); anything else (parentheses, "%",
+// which ends the file, "_", non-ASCII) becomes a space.
+std::string plain_comment(std::string_view text) {
+    std::string out;
+    for (const char c : text) {
+        const char upper = c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+        if ((upper >= 'A' && upper <= 'Z') || (upper >= '0' && upper <= '9') ||
+            std::string_view(" .,-+/*=#").find(upper) != std::string_view::npos) {
+            out += upper;
+        } else {
+            out += c == ':' || c == ';' ? ',' : ' ';
+        }
+    }
+    return out;
+}
+
+bool is_orient_command_char(char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+           std::string_view(" .+-#[]=").find(c) != std::string_view::npos;
 }
 
 // Text inside a "(...)" comment: no parentheses (they would end or nest it).
@@ -54,12 +85,32 @@ const char* description(ProgramKind kind) {
     return "";
 }
 
+std::size_t axis_index(char axis) {
+    return axis == 'X' ? 0 : axis == 'Y' ? 1 : 2;
+}
+
+// The orientation of the next recorded probe after `at` (the plan sets it on
+// those), or nullopt.
+std::optional<double> next_orientation(const ProbingPlan& plan, std::size_t at) {
+    for (std::size_t i = at + 1; i < plan.steps.size(); ++i) {
+        const ProgramStep& step = plan.steps[i];
+        if (step.kind == StepKind::probe && step.recorded) return step.orientation_deg;
+    }
+    return std::nullopt;
+}
+
 class Writer {
   public:
     explicit Writer(const Dialect& dialect) : d_(dialect) {}
 
     void line(const std::string& text) { out_ += text + "\n"; }
-    void comment(const std::string& text) { line(std::string(d_.comment) + " " + text); }
+    std::string comment_text(const std::string& text) const {
+        if (d_.plain_comments) {
+            return std::string(d_.comment_open) + plain_comment(text) + d_.comment_close;
+        }
+        return std::string(d_.comment_open) + " " + text + d_.comment_close;
+    }
+    void comment(const std::string& text) { line(comment_text(text)); }
     void comment_block(const std::string& text) {
         std::size_t start = 0;
         while (start <= text.size()) {
@@ -72,6 +123,16 @@ class Writer {
         std::string words = program_number(step.direction * step.distance_mm);
         words.insert(words.begin(), step.axis);
         return words;
+    }
+    // A probe's check line ({current}, {skip}, {distance}).
+    void probe_check(const char* pattern, const ProgramStep& step) {
+        if (*pattern == '\0') return;
+        const std::string axis = std::to_string(static_cast<int>(axis_index(step.axis)) + 1);
+        std::string distance = program_number(step.direction * step.distance_mm);
+        if (distance[0] != '-') distance.insert(distance.begin(), '+');
+        line(replaced(
+            replaced(replaced(pattern, "{current}", "#504" + axis), "{skip}", "#506" + axis),
+            "{distance}", distance));
     }
     const std::string& text() const { return out_; }
 
@@ -93,10 +154,55 @@ std::string program_feed(double feed_mm_min) {
     return text;
 }
 
-std::string write_program(const ProbingPlan& plan, const Dialect& dialect,
-                          const std::string& date) {
+void check_program_options(const ProbingPlan& plan, const Dialect& dialect,
+                           const ProgramOptions& options) {
+    if (!dialect.orient_from_user) return;
+    double orientation = 0.0;
+    bool turns = false;
+    for (const ProgramStep* step_ptr : plan.recorded()) {
+        const ProgramStep& step = *step_ptr;
+        if (step.orientation_deg == orientation) continue;
+        if (step.orientation_deg != 180.0) {
+            throw InputError(program_message(
+                "program_orient_angle",
+                QT_TRANSLATE_NOOP("Program",
+                                  "the plan turns the spindle to %1 deg; a %2 program turns it "
+                                  "to 180 deg only, with the command given as --orient-180"),
+                {text_arg("angle", format_number(step.orientation_deg)),
+                 text_arg("dialect", dialect.name)}));
+        }
+        orientation = step.orientation_deg;
+        turns = true;
+    }
+    const std::string& command = options.orient_180_command;
+    if (turns && command.empty()) {
+        throw InputError(program_message(
+            "program_orient_missing",
+            QT_TRANSLATE_NOOP("Program",
+                              "--orient-180: the ring program turns the spindle to 180 deg, and "
+                              "%1 controls have no common word for that (M19 with an angle "
+                              "differs by maker and machine): give your control's command, e.g. "
+                              "--orient-180 \"M19 R180.\" if your manual says so; ProbeCycle "
+                              "does not guess it"),
+            {text_arg("dialect", dialect.name)}));
+    }
+    if (turns && (command.size() > 60 || command.find_first_not_of(' ') == std::string::npos ||
+                  !std::all_of(command.begin(), command.end(), is_orient_command_char))) {
+        throw InputError(program_message(
+            "program_orient_text",
+            QT_TRANSLATE_NOOP("Program",
+                              "--orient-180: got '%1'; allowed: one block of at most 60 upper-case "
+                              "letters, digits, spaces and . + - # [ ] ="),
+            {text_arg("command", command.substr(0, 80))}));
+    }
+}
+
+std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const std::string& date,
+                          const ProgramOptions& options) {
+    check_program_options(plan, dialect, options);
     Writer w(dialect);
     const std::string id = plan_id(plan);
+    for (const char* start : dialect.program_start) w.line(start);
     w.comment_block(std::string("ProbeCycle program for ") + dialect.title + ": " +
                     description(plan.kind));
     w.comment("Plan " + id + " (keep the plan file: the import matches the positions to it).");
@@ -111,13 +217,30 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect,
         "with an alarm.");
     for (const char* note : dialect.record_notes) w.comment(note);
     w.line(dialect.modes);
+    std::string kind_upper = to_string(plan.kind);
+    for (char& c : kind_upper) c = static_cast<char>(c - 'a' + 'A');
     for (const char* open : dialect.open_record) {
-        w.line(replaced(replaced(open, "{id}", id), "{kind}", to_string(plan.kind)));
+        w.line(
+            replaced(replaced(replaced(replaced(open, "{id}", id), "{id_letters}", id_letters(id)),
+                              "{kind}", to_string(plan.kind)),
+                     "{KIND}", kind_upper));
     }
     std::size_t recorded = 0;
-    for (const ProgramStep& step : plan.steps) {
+    double orientation = 0.0;
+    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+        const ProgramStep& step = plan.steps[i];
         switch (step.kind) {
             case StepKind::pause:
+                if (const std::optional<double> next = next_orientation(plan, i);
+                    dialect.orient_from_user && next && *next != orientation) {
+                    // The program turns the spindle (check_program_options).
+                    orientation = *next;
+                    w.comment(
+                        "orient the spindle to 180 deg, the probe at the gauge centre: the "
+                        "command given with --orient-180");
+                    w.line(options.orient_180_command);
+                    break;
+                }
                 w.comment(step.text);
                 if (*dialect.pause_message != '\0') {
                     w.line(replaced(dialect.pause_message, "{text}", comment_safe(step.text)));
@@ -131,26 +254,30 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect,
                 } else {
                     w.comment(step.text);
                 }
+                w.probe_check(dialect.before_probe, step);
                 w.line(std::string(dialect.probe_word) + " " + w.move_words(step) + " F" +
                        program_feed(step.feed_mm_min));
-                if (step.recorded && *dialect.after_recorded_probe != '\0') {
-                    w.line(replaced(dialect.after_recorded_probe, "{n}", std::to_string(recorded)));
+                w.probe_check(dialect.after_probe, step);
+                if (step.recorded) {
+                    for (const char* after : dialect.after_recorded_probe) {
+                        w.line(replaced(after, "{n}", std::to_string(recorded)));
+                    }
                 }
                 break;
             case StepKind::move:
                 if (step.feed_mm_min > 0.0) {
                     w.line(std::string(dialect.feed_word) + " " + w.move_words(step) + " F" +
-                           program_feed(step.feed_mm_min) + " " + dialect.comment + " " +
-                           step.text);
+                           program_feed(step.feed_mm_min) + " " + w.comment_text(step.text));
                 } else {
                     w.line(std::string(dialect.rapid_word) + " " + w.move_words(step) + " " +
-                           dialect.comment + " " + step.text);
+                           w.comment_text(step.text));
                 }
                 break;
         }
     }
     for (const char* close : dialect.close_record) w.line(close);
     for (const char* end : dialect.end) w.line(end);
+    for (const char* after : dialect.after_end) w.line(after);
     return w.text();
 }
 

@@ -14,8 +14,25 @@
 
 namespace probecycle {
 
+// What a program needs beyond the plan in some dialects.
+struct ProgramOptions {
+    // The control's command that turns the spindle to 180 deg ("M19 R180."):
+    // the ring program of a dialect with orient_from_user needs it, since no
+    // word does that on every control of the dialect. One line of upper-case
+    // letters, digits, spaces and . + - # [ ] =.
+    std::string orient_180_command;
+};
+
+// Throws InputError (naming the option) when `options` cannot serve the plan
+// in the dialect: the ring program without the orient command, or a command
+// with other characters.
+void check_program_options(const ProbingPlan& plan, const Dialect& dialect,
+                           const ProgramOptions& options);
+
 // `date` as YYYY-MM-DD (report_date(): today, or SOURCE_DATE_EPOCH's day).
-std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const std::string& date);
+// Throws InputError as check_program_options does.
+std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const std::string& date,
+                          const ProgramOptions& options = {});
 
 // A distance or coordinate as the programs write it: 3 decimals, '.' whatever
 // the locale ("-10.500").

@@ -74,7 +74,8 @@ TEST(ProgramCli, BadInputIsNamedWithWhatIsAllowed) {
         std::string arguments;
         std::string message;
     } cases[] = {
-        {"program delay --dialect fanuc", "--dialect: got 'fanuc'; allowed: linuxcnc, grbl"},
+        {"program delay --dialect siemens",
+         "--dialect: got 'siemens'; allowed: linuxcnc, grbl, fanuc"},
         {"program delay --dialect grbl --axis A+", "--axis: got 'A+'; allowed: X+, X-, Y+"},
         {"program delay --dialect grbl --feeds 30,abc", "--feeds: got 'abc'; allowed: a number"},
         {"program delay --dialect grbl --feeds 100,100",

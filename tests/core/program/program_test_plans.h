@@ -8,6 +8,7 @@
 
 #include "core/cycle/scenario.h"
 #include "core/program/plan.h"
+#include "core/program/program_writer.h"
 
 namespace probecycle::program_test {
 
@@ -20,6 +21,12 @@ inline DelayPlanOptions golden_delay_options() {
     options.feeds_mm_min = {30.0, 300.0, 2000.0};
     options.repeats = 2;
     return options;
+}
+
+// The Fanuc-type ring program's spindle command (Haas's M19 with an angle
+// option, as an example of what a user gives).
+inline ProgramOptions golden_options() {
+    return ProgramOptions{"M19 R180."};
 }
 
 struct NamedPlan {

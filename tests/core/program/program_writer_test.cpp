@@ -10,6 +10,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <vector>
+
+#include "core/common/input_error.h"
 
 #include "tests/core/program/program_test_plans.h"
 
@@ -29,9 +32,10 @@ std::string read_file(const std::string& path) {
 
 TEST(ProgramGolden, EveryProgramInEveryDialect) {
     for (const auto& [name, plan] : program_test::golden_plans()) {
-        for (const Dialect* d : {&linuxcnc_dialect(), &grbl_dialect()}) {
+        for (const Dialect* d : {&linuxcnc_dialect(), &grbl_dialect(), &fanuc_dialect()}) {
             const std::string file = "program_" + name + "_" + d->name + "." + d->extension;
-            const std::string text = write_program(plan, *d, program_test::kDate);
+            const std::string text =
+                write_program(plan, *d, program_test::kDate, program_test::golden_options());
             if (std::getenv("PROBECYCLE_UPDATE_GOLDEN") != nullptr) {
                 std::ofstream(golden_path(file), std::ios::binary) << text;
             }
@@ -77,6 +81,78 @@ TEST(ProgramWriter, GrblHasNoActiveCommentsAndNoParameters) {
         EXPECT_EQ(text.find('#'), std::string::npos) << name;
         EXPECT_EQ(text.find("(MSG"), std::string::npos) << name;
         EXPECT_EQ(text.find("(LOG"), std::string::npos) << name;
+    }
+}
+
+// Fanuc-type: every G31 keeps its programmed end just before and alarms just
+// after when the skip position is that end; DPRNT texts are letters and '*'
+// only (Haas); no lower case anywhere (comments included).
+TEST(ProgramWriter, FanucChecksEveryProbeAndPrintsLettersOnly) {
+    for (const auto& [name, plan] : program_test::golden_plans()) {
+        const std::string text = write_program(plan, fanuc_dialect(), program_test::kDate,
+                                               program_test::golden_options());
+        std::istringstream lines(text);
+        std::vector<std::string> all;
+        for (std::string line; std::getline(lines, line);) all.push_back(line);
+        std::size_t probes = 0;
+        for (std::size_t i = 0; i < all.size(); ++i) {
+            const std::string& line = all[i];
+            for (const char c : line) EXPECT_FALSE(c >= 'a' && c <= 'z') << name << ": " << line;
+            if (line.rfind("G31 ", 0) == 0) {
+                ++probes;
+                const char axis = line[4];
+                const std::string n = std::to_string(axis - 'X' + 1);
+                ASSERT_GT(i, 0u);
+                ASSERT_LT(i + 1, all.size());
+                EXPECT_EQ(all[i - 1].rfind("#101=#504" + n, 0), 0u) << all[i - 1];
+                EXPECT_EQ(all[i + 1], "IF[ABS[#506" + n + "-#101]LT0.050]GOTO9001");
+                // The programmed end is the move's own distance.
+                EXPECT_EQ(all[i - 1].substr(10),
+                          (line[5] == '-' ? "" : "+") + line.substr(5, line.find(" F") - 5));
+                EXPECT_EQ(line.find(" P"), std::string::npos);
+            }
+            if (line.rfind("DPRNT[", 0) == 0) {
+                const std::string body = line.substr(6, line.size() - 7);
+                std::string outside_variables;
+                bool in_variable = false;
+                for (const char c : body) {
+                    if (c == '#') in_variable = true;
+                    if (!in_variable) outside_variables += c;
+                    if (c == ']') in_variable = false;
+                }
+                for (const char c : outside_variables) {
+                    EXPECT_TRUE((c >= 'A' && c <= 'Z') || c == '*') << line;
+                }
+            }
+        }
+        std::size_t all_probes = 0;
+        for (const ProgramStep& step : plan.steps) all_probes += step.kind == StepKind::probe;
+        EXPECT_EQ(probes, all_probes) << name;
+        EXPECT_EQ(text.rfind("%\nO1300 (PROBECYCLE)\n", 0), 0u);
+        EXPECT_LT(text.find("\nM30\nN9001\n"), text.find("#3000=101(PROBE DID NOT TRIGGER)"));
+        EXPECT_EQ(text.substr(text.size() - 2), "%\n");
+    }
+}
+
+TEST(ProgramWriter, FanucRingNeedsTheUsersOrientCommand) {
+    const ProbingPlan ring = program_test::golden_plans()[1].plan;
+    EXPECT_THROW(write_program(ring, fanuc_dialect(), program_test::kDate), InputError);
+    EXPECT_THROW(write_program(ring, fanuc_dialect(), program_test::kDate,
+                               ProgramOptions{"M19 R180.\nG0 X100."}),
+                 InputError);
+    EXPECT_THROW(
+        write_program(ring, fanuc_dialect(), program_test::kDate, ProgramOptions{"m19 r180."}),
+        InputError);
+    // The delay and cycle programs turn no spindle; the other dialects leave it
+    // to the operator at a pause.
+    EXPECT_NO_THROW(
+        write_program(program_test::golden_plans()[0].plan, fanuc_dialect(), program_test::kDate));
+    EXPECT_NO_THROW(write_program(ring, grbl_dialect(), program_test::kDate));
+    try {
+        write_program(ring, fanuc_dialect(), program_test::kDate);
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("--orient-180: the ring program turns", 0), 0u)
+            << e.what();
     }
 }
 
