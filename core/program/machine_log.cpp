@@ -258,6 +258,166 @@ std::vector<RecordedPosition> read_grbl_positions(std::string_view text) {
     return positions;
 }
 
+namespace {
+
+// Lines ending with LF, CR, CR LF or LF CR CR (Fanuc's NCR output): a LF
+// takes the CRs that follow it, a CR the LF that follows it.
+std::vector<std::pair<std::size_t, std::string_view>> dprnt_lines_of(std::string_view text) {
+    std::vector<std::pair<std::size_t, std::string_view>> lines;
+    std::size_t number = 0;
+    std::size_t start = 0;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const char c = text[at];
+        if (c != '\n' && c != '\r') {
+            ++at;
+            continue;
+        }
+        lines.emplace_back(++number, text.substr(start, at - start));
+        ++at;
+        if (c == '\n') {
+            while (at < text.size() && text[at] == '\r') ++at;
+        } else if (at < text.size() && text[at] == '\n') {
+            ++at;
+            while (at < text.size() && text[at] == '\r') ++at;
+        }
+        start = at;
+    }
+    if (start < text.size()) lines.emplace_back(++number, text.substr(start));
+    return lines;
+}
+
+// The line without control bytes (DC2, DC4, NUL, tabs ...) and '%', trimmed.
+std::string dprnt_text(std::string_view line) {
+    std::string text;
+    for (const char c : line) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte != 0x7f && c != '%') text += c;
+    }
+    return std::string(trimmed(text));
+}
+
+// Reads "<sign><spaces><digits>[.<digits>]" after spaces from `at`.
+std::optional<double> dprnt_number(std::string_view text, std::size_t& at) {
+    while (at < text.size() && text[at] == ' ') ++at;
+    std::string number;
+    if (at < text.size() && (text[at] == '-' || text[at] == '+')) {
+        if (text[at] == '-') number += '-';
+        ++at;
+        while (at < text.size() && text[at] == ' ') ++at;
+    }
+    const std::size_t digits = at;
+    while (at < text.size() && ((text[at] >= '0' && text[at] <= '9') || text[at] == '.')) ++at;
+    if (at == digits) return std::nullopt;
+    number += text.substr(digits, at - digits);
+    const std::optional<double> value = parse_decimal(number);
+    if (!value || std::abs(*value) > kMaxCoordinate_mm) return std::nullopt;
+    return value;
+}
+
+bool dprnt_word(std::string_view text, std::size_t& at, char letter) {
+    while (at < text.size() && text[at] == ' ') ++at;
+    if (at >= text.size() || text[at] != letter) return false;
+    ++at;
+    return true;
+}
+
+// The plan id that letters stand for (id_letters() backwards), or the letters.
+std::string plan_from_letters(std::string_view letters) {
+    std::string hex;
+    for (const char c : letters) {
+        if (c < 'A' || c > 'P') return std::string(letters);
+        hex += "0123456789abcdef"[c - 'A'];
+    }
+    return hex;
+}
+
+}  // namespace
+
+std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan) {
+    constexpr const char* kTouchLine = "'TOUCH n X x Y y Z z'";
+    std::vector<RecordedPosition> positions;
+    bool plan_line = false;
+    for (const auto& [number, raw] : dprnt_lines_of(text)) {
+        const std::string line = dprnt_text(raw);
+        const std::vector<std::string_view> words = words_of(line, ' ');
+        if (words.empty()) continue;
+        if (words[0] == "PROBECYCLE") {
+            if (words.size() >= 3 && words[1] == "PLAN") {
+                const std::string expected = plan_id(plan);
+                if (words[2] != id_letters(expected)) {
+                    throw CsvError(
+                        number, "",
+                        log_message("log_plan_mismatch",
+                                    QT_TRANSLATE_NOOP("MachineLog",
+                                                      "the log is from plan %1, the plan file is "
+                                                      "plan %2: give the plan the program was "
+                                                      "made from; nothing imported"),
+                                    {text_arg("log_plan", plan_from_letters(words[2])),
+                                     text_arg("plan", expected)}));
+                }
+                plan_line = true;
+            } else if (words.size() == 3 && words[1] == "NO" && words[2] == "TRIGGER") {
+                throw CsvError(
+                    number, "",
+                    log_message("log_dprnt_no_trigger",
+                                QT_TRANSLATE_NOOP("MachineLog",
+                                                  "the program printed PROBECYCLE NO TRIGGER: a "
+                                                  "probe did not trigger and the control stopped "
+                                                  "with alarm 101; nothing imported")));
+            } else if (words.size() != 2 || words[1] != "END") {
+                bad_line(number, line,
+                         "'PROBECYCLE PLAN ...', 'PROBECYCLE END' or 'PROBECYCLE NO TRIGGER'");
+            }
+            continue;
+        }
+        if (words[0].substr(0, 5) != "TOUCH") continue;
+        if (!plan_line) {
+            throw CsvError(
+                number, "",
+                log_message("log_dprnt_no_plan",
+                            QT_TRANSLATE_NOOP("MachineLog",
+                                              "a touch before the line PROBECYCLE PLAN that the "
+                                              "program prints first: capture its output from the "
+                                              "start; nothing imported")));
+        }
+        std::size_t at = 5;
+        const std::optional<double> n = dprnt_number(line, at);
+        std::array<double, 3> xyz{};
+        bool readable = n && *n == std::floor(*n);
+        for (std::size_t a = 0; a < 3 && readable; ++a) {
+            const std::optional<double> value =
+                dprnt_word(line, at, "XYZ"[a]) ? dprnt_number(line, at) : std::nullopt;
+            readable = value.has_value();
+            xyz[a] = value.value_or(0.0);
+        }
+        if (!readable || trimmed(std::string_view(line).substr(at)).size() != 0) {
+            bad_line(number, line, kTouchLine);
+        }
+        if (*n != static_cast<double>(positions.size() + 1)) {
+            throw CsvError(
+                number, "",
+                log_message(
+                    "log_touch_order",
+                    QT_TRANSLATE_NOOP("MachineLog",
+                                      "touch %1 where touch %2 was due: the log "
+                                      "holds more than one run; nothing imported"),
+                    {text_arg("touch", format_number(*n)),
+                     arg("due", ArgKind::integer, static_cast<double>(positions.size() + 1))}));
+        }
+        positions.push_back({number, xyz});
+    }
+    if (!plan_line) {
+        throw CsvError(
+            0, "",
+            log_message("log_dprnt_no_plan_line",
+                        QT_TRANSLATE_NOOP("MachineLog",
+                                          "no line PROBECYCLE PLAN: is this the DPRNT output of a "
+                                          "ProbeCycle program? Nothing imported")));
+    }
+    return positions;
+}
+
 std::string lab_csv_from_positions(const ProbingPlan& plan,
                                    const std::vector<RecordedPosition>& positions,
                                    bool every_probe) {
@@ -293,6 +453,9 @@ std::string lab_csv_from_positions(const ProbingPlan& plan,
 std::string import_machine_log(const ProbingPlan& plan, DialectId dialect, std::string_view text) {
     if (dialect == DialectId::grbl) {
         return lab_csv_from_positions(plan, read_grbl_positions(text), true);
+    }
+    if (dialect == DialectId::fanuc) {
+        return lab_csv_from_positions(plan, read_fanuc_positions(text, plan), false);
     }
     const std::vector<RecordedPosition> positions = read_linuxcnc_positions(text, plan);
     const bool log_file = trimmed(text).substr(0, 10) == "probecycle";

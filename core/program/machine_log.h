@@ -35,6 +35,17 @@ std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
 // line a probe that did not trigger; every other line is ignored.
 std::vector<RecordedPosition> read_grbl_positions(std::string_view text);
 
+// Fanuc-type: the DPRNT output of the program, as a serial terminal, a
+// memory card or a file caught it: "PROBECYCLE PLAN <id in letters> <KIND>",
+// then "TOUCH <n> X <x> Y <y> Z <z>" per recorded touch (the plan's id must
+// be `plan`'s; touches numbered from 1); "PROBECYCLE NO TRIGGER" (the
+// program's alarm branch) is a probe that did not trigger. Lines end with
+// CR, LF, CR LF or LF CR CR; control bytes (DC2/DC4 of POPEN/PCLOS, NUL)
+// and '%' are dropped; a number may have leading spaces, a sign and spaces
+// between its sign and its digits. Other lines (another program's output on
+// the same channel) are ignored.
+std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan);
+
 // The lab's CSV for the plan's recorded touches: `axis,direction,feed_mm_min,
 // measured_mm` for a delay plan, `orientation_deg,x_mm,y_mm` for a ring plan.
 // `positions` are every probe of the plan in order (`every_probe`) or its

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -89,6 +90,75 @@ TEST(MachineLog, GrblBrokenLogsNameTheLine) {
     EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, other); }), 9);
     // An unreadable report.
     EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, "[PRB:1,2:1]\n"); }), 1);
+}
+
+std::string linuxcnc_log(const ProbingPlan& plan, const std::vector<double>& zs);
+
+// The DPRNT output of the small plan's program: 4 touches, lines ending in
+// `ending`, numbers as DPRNT pads them.
+std::string fanuc_log(const ProbingPlan& plan, const std::string& ending) {
+    std::string log = "PROBECYCLE PLAN " + id_letters(plan_id(plan)) + " DELAY" + ending;
+    const double zs[] = {-20.0171, -20.0172, -20.1501, -20.1502};
+    for (int i = 0; i < 4; ++i) {
+        log += "TOUCH   " + std::to_string(i + 1) + " X   1.0000 Y   2.0000 Z" +
+               (i % 2 == 0 ? " -20." : "-  20.") + std::to_string(zs[i]).substr(4, 4) + ending;
+    }
+    return log + "PROBECYCLE END" + ending;
+}
+
+TEST(MachineLog, FanucDprntOutputInEveryLineEnding) {
+    const ProbingPlan plan = small_delay_plan();
+    const std::string expected = import_machine_log(
+        plan, DialectId::linuxcnc, linuxcnc_log(plan, {-20.0171, -20.0172, -20.1501, -20.1502}));
+    for (const std::string ending : {"\n", "\r", "\r\n", "\n\r\r"}) {
+        EXPECT_EQ(import_machine_log(plan, DialectId::fanuc, fanuc_log(plan, ending)), expected)
+            << ending.size();
+    }
+    // A Haas serial port's DC2 ... DC4, a '%' leader, leading spaces, a plus
+    // sign, blank lines and another program's output on the same channel.
+    std::string framed = "%\n\x12  " + fanuc_log(plan, "\n\r\r") + "\x14\n%\n";
+    framed.insert(framed.find("TOUCH   2"), "\n\nSPINDLE WARM UP DONE\n   ");
+    framed.replace(framed.find("X   1.0000", framed.find("TOUCH   3")), 10, "X  +1.0000");
+    EXPECT_EQ(import_machine_log(plan, DialectId::fanuc, framed), expected);
+}
+
+TEST(MachineLog, FanucBrokenLogsNameTheLine) {
+    const ProbingPlan plan = small_delay_plan();
+    const std::string good = fanuc_log(plan, "\n");
+    const auto import = [&plan](const std::string& log) {
+        import_machine_log(plan, DialectId::fanuc, log);
+    };
+    // A missing touch (the log ends after touch 3, line 4).
+    std::string missing = good.substr(0, good.find("TOUCH   4"));
+    EXPECT_EQ(line_of([&] { import(missing); }), 4);
+    // An extra touch: a fifth, or a second run (touch 1 where 5 was due).
+    EXPECT_EQ(line_of([&] { import(good + "TOUCH   5 X 1.0 Y 2.0 Z -20.0\n"); }), 7);
+    EXPECT_EQ(line_of([&] { import(good + good); }), 8);
+    // Another plan's id (line 1), and the same in CR endings.
+    std::string other = good;
+    other.replace(16, 16, "AAAAAAAAAAAAAAAA");
+    EXPECT_EQ(line_of([&] { import(other); }), 1);
+    try {
+        import(other);
+    } catch (const CsvError& e) {
+        EXPECT_NE(std::string(e.what()).find("plan 0000000000000000"), std::string::npos)
+            << e.what();
+    }
+    // The alarm branch's marker (a probe did not trigger) on line 3.
+    std::string no_trigger = good.substr(0, good.find("TOUCH   2")) + "PROBECYCLE NO TRIGGER\r";
+    EXPECT_EQ(line_of([&] { import(no_trigger); }), 3);
+    // A garbled touch, a touch before the plan line, no plan line at all.
+    EXPECT_EQ(
+        line_of([&] {
+            import("PROBECYCLE PLAN " + id_letters(plan_id(plan)) + " DELAY\nTOUCH   1 X 1.0 Y\n");
+        }),
+        2);
+    EXPECT_EQ(line_of([&] { import("\nTOUCH   1 X 1.0 Y 2.0 Z -20.0\n"); }), 2);
+    EXPECT_EQ(line_of([&] { import("HELLO\n"); }), 0);
+    // Y moved between two touches along Z: another plan's log.
+    std::string moved = good;
+    moved.replace(moved.find("Y   2.0000", moved.find("TOUCH   3")), 10, "Y   7.0000");
+    EXPECT_EQ(line_of([&] { import(moved); }), 4);
 }
 
 std::string linuxcnc_log(const ProbingPlan& plan, const std::vector<double>& zs) {
@@ -224,6 +294,105 @@ std::string simulate_grbl(const std::string& program, const Scenario& scenario, 
     return console;
 }
 
+// A number as DPRNT prints #v[ab] by Haas's rules (96-8000 p.116): b
+// decimals, the whole part padded with leading spaces to a places (the sign
+// counted in it: how a Fanuc places the sign is not confirmed, and the
+// import reads either).
+std::string dprnt_number(double value, int whole, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    std::string out = text;
+    const std::size_t point = out.find('.');
+    const std::size_t whole_chars = point == std::string::npos ? out.size() : point;
+    if (whole_chars < static_cast<std::size_t>(whole)) out.insert(0, whole - whole_chars, ' ');
+    return out;
+}
+
+// A DPRNT line: text, '*' as a space, #v[ab] from `variables`.
+std::string dprnt(const std::string& body, const std::map<int, double>& variables) {
+    std::string out;
+    for (std::size_t i = 0; i < body.size(); ++i) {
+        if (body[i] == '*') {
+            out += ' ';
+        } else if (body[i] == '#') {
+            const std::size_t open = body.find('[', i);
+            const int variable = std::stoi(body.substr(i + 1, open - i - 1));
+            out += dprnt_number(variables.at(variable), body[open + 1] - '0', body[open + 2] - '0');
+            i = open + 3;
+        } else {
+            out += body[i];
+        }
+    }
+    return out;
+}
+
+// The Fanuc-type program on the simulated machine of simulate_grbl: G31
+// records the skip position (or, without a trigger, the programmed end),
+// #101=, IF[...]GOTO9001, #102= and DPRNT run as the control runs them; the
+// output goes out as a Haas serial port sends it (DC2 at POPEN, DC4 at PCLOS)
+// with `ending` after each line.
+std::string simulate_fanuc(const std::string& program, const Scenario& scenario, double surface_mm,
+                           double start_mm, unsigned seed, bool noise, const std::string& ending) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> scan(0.0, 1.0);
+    std::normal_distribution<double> repeatability(0.0, scenario.probe.repeatability_2sigma_mm / 2);
+    const Machine& m = scenario.machine;
+    const Probe& p = scenario.probe;
+    std::vector<std::string> lines;
+    std::istringstream in(program);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    // Along Z only (the delay plan's axis); X and Y stay at 0.
+    double position = start_mm;
+    std::map<int, double> variables = {{5061, 0.0}, {5062, 0.0}, {5063, 0.0}};
+    std::string output;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string& line = lines[i];
+        if (line == "POPEN") output += '\x12';
+        if (line == "PCLOS") output += '\x14';
+        if (line == "M30" || line.rfind("#3000=", 0) == 0) break;
+        if (line.rfind("DPRNT[", 0) == 0) {
+            output += dprnt(line.substr(6, line.size() - 7), variables) + ending;
+        } else if (line.rfind("#101=#5043", 0) == 0) {
+            variables[101] = position + std::stod(line.substr(10));
+        } else if (line.rfind("#102=", 0) == 0) {
+            variables[102] = std::stod(line.substr(5));
+        } else if (line.rfind("IF[ABS[#5063-#101]LT0.050]GOTO9001", 0) == 0) {
+            if (std::abs(variables[5063] - variables[101]) < 0.05) {
+                while (lines[i] != "N9001") ++i;
+            }
+        } else if (line.rfind("G0 Z", 0) == 0 || line.rfind("G1 Z", 0) == 0) {
+            position += std::stod(line.substr(4));
+        } else if (line.rfind("G31 Z", 0) == 0) {
+            const double move = std::stod(line.substr(5));
+            const double feed = std::stod(line.substr(line.find(" F") + 2));
+            const double direction = move > 0 ? 1.0 : -1.0;
+            const double room = (surface_mm - position) * direction;
+            if (room + p.pretravel_mm > std::abs(move)) {
+                position += move;
+                variables[5063] = position;
+                continue;
+            }
+            Scenario s = scenario;
+            s.cycle.strategy = Strategy::single_touch;
+            s.cycle.probe_feed_mm_min = feed;
+            s.cycle.approach_mm = room;
+            const CycleResult touch = evaluate(s);
+            const double wait = noise ? scan(random) : 0.5;
+            const double delay =
+                p.interface_delay_s + m.controller_latency_s + wait * m.scan_period_s;
+            const double scatter = noise ? repeatability(random) : 0.0;
+            variables[5063] =
+                surface_mm + direction * (p.pretravel_mm +
+                                          touch.first_touch().trigger_speed_mm_s * delay + scatter);
+            position = surface_mm + direction * touch.overtravel_mm();
+        } else if (line.rfind("G31", 0) == 0 || line.rfind("G0 ", 0) == 0 ||
+                   line.rfind("G1 ", 0) == 0) {
+            ADD_FAILURE() << "the simulator moves Z only: " << line;
+        }
+    }
+    return output;
+}
+
 DelayGroup round_trip(int repeats, bool noise) {
     const Scenario scenario;  // t_i 2 ms, t_c 2 ms, scan 4 ms: 6 ms on average
     DelayPlanOptions options;
@@ -239,6 +408,46 @@ DelayGroup round_trip(int repeats, bool noise) {
     const DelayFit fit = fit_delay(touches);
     EXPECT_EQ(fit.groups.size(), 1u);
     return fit.groups.at(0);
+}
+
+DelayGroup fanuc_round_trip(int repeats, bool noise, const std::string& ending) {
+    const Scenario scenario;
+    DelayPlanOptions options;
+    options.touch = {'Z', -1};
+    options.repeats = repeats;
+    const ProbingPlan plan = make_delay_plan(scenario, options);
+    const std::string program = write_program(plan, fanuc_dialect(), program_test::kDate);
+    const std::string output = simulate_fanuc(program, scenario, -50.0, -43.0, 42, noise, ending);
+    const std::vector<DelayTouch> touches =
+        parse_delay_csv(import_machine_log(plan, DialectId::fanuc, output));
+    EXPECT_EQ(touches.size(), static_cast<std::size_t>(5 * repeats));
+    const DelayFit fit = fit_delay(touches);
+    EXPECT_EQ(fit.groups.size(), 1u);
+    return fit.groups.at(0);
+}
+
+TEST(MachineLog, FanucRoundTripGivesBackTheKnownDelay) {
+    const Scenario scenario;
+    const double delay_s = measurement_delay_s(scenario.machine, scenario.probe);
+    // DPRNT's 4 decimals leave the delay to well under a microsecond... of
+    // travel: 0.1 um at 30 mm/min is 0.2 ms, and the fit averages.
+    const DelayGroup exact = fanuc_round_trip(5, false, "\r");
+    EXPECT_NEAR(exact.delay_s, delay_s, 5e-6);
+    EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
+    const DelayGroup noisy = fanuc_round_trip(20, true, "\n\r\r");
+    EXPECT_NEAR(noisy.delay_s, delay_s, 5e-4);
+}
+
+TEST(MachineLog, FanucProbeThatDoesNotTriggerStopsTheProgramAndTheImport) {
+    const Scenario scenario;
+    const ProbingPlan plan = small_delay_plan();
+    const std::string program = write_program(plan, fanuc_dialect(), program_test::kDate);
+    // The surface 30 mm away: the locating touch (10 mm) finds nothing, the
+    // check jumps to the alarm branch, which prints the marker.
+    const std::string output = simulate_fanuc(program, scenario, -80.0, -50.0, 42, false, "\n");
+    EXPECT_NE(output.find("PROBECYCLE NO TRIGGER\n"), std::string::npos) << output;
+    EXPECT_EQ(output.find("TOUCH"), std::string::npos);
+    EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::fanuc, output); }), 2);
 }
 
 TEST(MachineLog, RoundTripGivesBackTheKnownDelay) {
