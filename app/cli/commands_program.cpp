@@ -47,7 +47,7 @@ CLI::Validator axis_check() {
 void add_common(CLI::App& cmd, ProgramArgs& args) {
     add_scenario_args(cmd, args.scenario);
     cmd.add_option("--dialect", args.dialect, "The control's G-code: " + dialect_names())
-        ->type_name("linuxcnc|grbl")
+        ->type_name("linuxcnc|grbl|fanuc")
         ->required()
         ->check(dialect_check());
     cmd.add_option("--out", args.out, "Write the program to FILE (atomically; default stdout)")
@@ -73,16 +73,18 @@ std::string in_option_words(std::string text) {
 
 // Runs `make` on the scenario; an option the plan refuses is a usage error.
 template <typename Make>
-void write_plan_and_program(const ProgramArgs& args, Make make) {
+void write_plan_and_program(const ProgramArgs& args, Make make,
+                            const ProgramOptions& options = {}) {
     const Scenario scenario = load_scenario(args.scenario);
     ProbingPlan plan;
+    std::string program;
     try {
         plan = make(scenario);
+        program = write_program(plan, dialect(*dialect_from_string(args.dialect)), report_date(),
+                                options);
     } catch (const InputError& e) {
         throw UsageError(in_option_words(e.what()));
     }
-    const std::string program =
-        write_program(plan, dialect(*dialect_from_string(args.dialect)), report_date());
     if (!args.plan.empty()) write_file_atomically(args.plan, probing_plan_json(plan));
     write_output(args.out, program);
 }
@@ -137,6 +139,7 @@ void add_ring(CLI::App& program) {
         NumberArg gauge{0.1, 2000.0};
         NumberArg ball{0.1, 100.0};
         NumberArg tolerance{0.0, 100.0};
+        std::string orient_180;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = program.add_subcommand(
@@ -146,13 +149,19 @@ void add_ring(CLI::App& program) {
     add_number(*cmd, "--ball-diameter-mm", args->ball, "Stylus ball diameter (default 6)", "MM");
     add_number(*cmd, "--centre-tolerance-mm", args->tolerance,
                "How far off the gauge centre the probe may start (default 1)", "MM");
+    cmd->add_option("--orient-180", args->orient_180,
+                    "fanuc: your control's command that turns the spindle to 180 deg, as your "
+                    "manual gives it (e.g. \"M19 R180.\"); required there, ProbeCycle does not "
+                    "guess it. Other dialects: the operator turns the spindle at a pause")
+        ->type_name("\"BLOCK\"");
     cmd->callback([args] {
         RingPlanOptions options;
         options.gauge_diameter_mm = args->gauge.value_or(options.gauge_diameter_mm);
         options.ball_diameter_mm = args->ball.value_or(options.ball_diameter_mm);
         options.centre_tolerance_mm = args->tolerance.value_or(options.centre_tolerance_mm);
-        write_plan_and_program(args->common,
-                               [&](const Scenario& s) { return make_ring_plan(s, options); });
+        write_plan_and_program(
+            args->common, [&](const Scenario& s) { return make_ring_plan(s, options); },
+            ProgramOptions{args->orient_180});
     });
 }
 
@@ -190,10 +199,10 @@ void add_import(CLI::App& app) {
         "'latency fit' or the ring CSV of 'calibrate ring')");
     cmd->add_option("LOG", args->log,
                     "LinuxCNC: probecycle_log.txt (or the PROBEOPEN file); grbl: the sender's "
-                    "console saved to a file")
+                    "console saved to a file; fanuc: the program's DPRNT output as captured")
         ->required();
     cmd->add_option("--dialect", args->dialect, "The control: " + dialect_names())
-        ->type_name("linuxcnc|grbl")
+        ->type_name("linuxcnc|grbl|fanuc")
         ->required()
         ->check(dialect_check());
     cmd->add_option("--plan", args->plan, "The plan file 'program --plan' wrote with the program")
@@ -219,7 +228,8 @@ void add_import(CLI::App& app) {
 
 void add_program_commands(CLI::App& app) {
     CLI::App* program = app.add_subcommand(
-        "program", "A probing program for your control (LinuxCNC, grbl) and its plan");
+        "program",
+        "A probing program for your control (LinuxCNC, grbl, Fanuc-type macro B) and its plan");
     program->require_subcommand(1);
     add_delay(*program);
     add_ring(*program);

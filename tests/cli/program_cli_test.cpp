@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 
 #include "tests/cli/cli_run.h"
@@ -21,8 +22,8 @@ CliRun run_on_golden_day(const std::string& arguments) {
 
 TEST(ProgramCli, WritesTheGoldenProgramAndItsPlan) {
     const TempDir dir;
-    for (const std::string dialect : {"linuxcnc", "grbl"}) {
-        const std::string suffix = "_" + dialect + (dialect == "grbl" ? ".nc" : ".ngc");
+    for (const std::string dialect : {"linuxcnc", "grbl", "fanuc"}) {
+        const std::string suffix = "_" + dialect + (dialect == "linuxcnc" ? ".ngc" : ".nc");
         const CliRun r = run_on_golden_day("program delay --dialect " + dialect +
                                            " --axis X+ --feeds 30,300,2000 --repeats 2 --plan " +
                                            quote((dir / "plan.json").string()) + " --out " +
@@ -31,7 +32,9 @@ TEST(ProgramCli, WritesTheGoldenProgramAndItsPlan) {
         EXPECT_EQ(read(dir / "program"), read(data("golden/program_delay" + suffix)));
         EXPECT_NE(read(dir / "plan.json").find("\"format\": \"probecycle-probing-plan\""),
                   std::string::npos);
-        const CliRun ring = run_on_golden_day("program ring --dialect " + dialect);
+        // The orient command serves the fanuc program; the others ignore it.
+        const CliRun ring =
+            run_on_golden_day("program ring --dialect " + dialect + " --orient-180 'M19 R180.'");
         EXPECT_EQ(ring.out, read(data("golden/program_ring" + suffix)));
         const CliRun cycle = run_on_golden_day("program cycle --dialect " + dialect);
         EXPECT_EQ(cycle.out, read(data("golden/program_cycle" + suffix)));
@@ -69,6 +72,47 @@ TEST(ProgramCli, ImportGivesTheCsvThatLatencyFitReads) {
         << bad.err;
 }
 
+TEST(ProgramCli, FanucImportGivesTheRingCsvThatCalibrateRingReads) {
+    const TempDir dir;
+    const std::string plan = quote((dir / "plan.json").string());
+    const CliRun program = run("program ring --dialect fanuc --orient-180 'M19 R180.' --plan " +
+                               plan + " --out " + quote((dir / "ring.nc").string()));
+    ASSERT_EQ(program.exit_code, 0) << program.err;
+    const std::string text = read(dir / "ring.nc");
+    const std::size_t at = text.find("DPRNT[PROBECYCLE*PLAN*") + 22;
+    const std::string letters = text.substr(at, 16);
+    // The output as a Haas serial port sends it: DC2, CR after every line, DC4.
+    std::string output = "\x12PROBECYCLE PLAN " + letters + " RING\r";
+    const double r = 21.997;
+    const double points[4][2] = {{r, 0}, {-r, 0}, {0, r}, {0, -r}};
+    for (int i = 0; i < 8; ++i) {
+        char line[128];
+        std::snprintf(line, sizeof line, "TOUCH   %d X%9.4f Y%9.4f Z   0.0000\r", i + 1,
+                      points[i % 4][0] + (i < 4 ? 0.002 : -0.002), points[i % 4][1]);
+        output += line;
+    }
+    write(dir / "dprnt.txt", output + "PROBECYCLE END\r\x14");
+    const CliRun imported =
+        run("import --dialect fanuc --plan " + plan + " " + quote((dir / "dprnt.txt").string()) +
+            " --out " + quote((dir / "ring.csv").string()));
+    ASSERT_EQ(imported.exit_code, 0) << imported.err;
+    EXPECT_NE(read(dir / "ring.csv").find("180,21.995,0\n"), std::string::npos)
+        << read(dir / "ring.csv");
+    const CliRun calibrate =
+        run("calibrate ring " + quote((dir / "ring.csv").string()) + " --gauge-diameter 50");
+    EXPECT_EQ(calibrate.exit_code, 0) << calibrate.err;
+
+    // The program stopped at a probe that did not trigger: the marker's line.
+    write(dir / "stopped.txt", "PROBECYCLE PLAN " + letters + " RING\nPROBECYCLE NO TRIGGER\n");
+    const CliRun stopped =
+        run("import --dialect fanuc --plan " + plan + " " + quote((dir / "stopped.txt").string()));
+    EXPECT_EQ(stopped.exit_code, 2);
+    EXPECT_EQ(stopped.out, "");
+    EXPECT_NE(stopped.err.find("stopped.txt: line 2: the program printed PROBECYCLE NO TRIGGER"),
+              std::string::npos)
+        << stopped.err;
+}
+
 TEST(ProgramCli, BadInputIsNamedWithWhatIsAllowed) {
     const struct {
         std::string arguments;
@@ -85,6 +129,11 @@ TEST(ProgramCli, BadInputIsNamedWithWhatIsAllowed) {
          "cycle.feature: got bore; allowed: surface"},
         {"program ring --dialect grbl --gauge-diameter-mm 6.5",
          "the gauge (6.5 mm) leaves the ball"},
+        {"program ring --dialect fanuc",
+         "--orient-180: the ring program turns the spindle to 180 deg, and fanuc controls have no "
+         "common word for that"},
+        {"program ring --dialect fanuc --orient-180 'm19 r180.'",
+         "--orient-180: got 'm19 r180.'; allowed: one block of at most 60 upper-case letters"},
         {"program frobnicate", "unknown program 'frobnicate'; allowed: delay, ring, cycle"},
         {"import --dialect grbl LOG", "missing required option --plan"},
     };
