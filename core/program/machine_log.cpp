@@ -61,6 +61,27 @@ std::string_view trimmed(std::string_view text) {
                                 text_arg("expected", expected)}));
 }
 
+[[noreturn]] void plan_mismatch(std::size_t line, std::string log_plan, const std::string& plan) {
+    throw CsvError(
+        line, "",
+        log_message("log_plan_mismatch",
+                    QT_TRANSLATE_NOOP("MachineLog",
+                                      "the log is from plan %1, the plan file is "
+                                      "plan %2: give the plan the program was "
+                                      "made from; nothing imported"),
+                    {text_arg("log_plan", std::move(log_plan)), text_arg("plan", plan)}));
+}
+
+[[noreturn]] void touch_out_of_order(std::size_t line, std::string touch, std::size_t due) {
+    throw CsvError(line, "",
+                   log_message("log_touch_order",
+                               QT_TRANSLATE_NOOP("MachineLog",
+                                                 "touch %1 where touch %2 was due: the log "
+                                                 "holds more than one run; nothing imported"),
+                               {text_arg("touch", std::move(touch)),
+                                arg("due", ArgKind::integer, static_cast<double>(due))}));
+}
+
 // Three coordinates from words; nullopt when one is not a number within reach.
 std::optional<std::array<double, 3>> coordinates(const std::vector<std::string_view>& words,
                                                  std::size_t first) {
@@ -170,15 +191,7 @@ std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
             if (words.size() >= 3 && words[1] == "plan") {
                 const std::string expected = plan_id(plan);
                 if (words[2] != expected) {
-                    throw CsvError(
-                        number, "",
-                        log_message("log_plan_mismatch",
-                                    QT_TRANSLATE_NOOP("MachineLog",
-                                                      "the log is from plan %1, the plan file is "
-                                                      "plan %2: give the plan the program was "
-                                                      "made from; nothing imported"),
-                                    {text_arg("log_plan", std::string(words[2])),
-                                     text_arg("plan", expected)}));
+                    plan_mismatch(number, std::string(words[2]), expected);
                 }
                 continue;
             }
@@ -189,15 +202,7 @@ std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
                 bad_line(number, line, "'probecycle touch N X Y Z'");
             }
             if (*n != static_cast<double>(positions.size() + 1)) {
-                throw CsvError(
-                    number, "",
-                    log_message(
-                        "log_touch_order",
-                        QT_TRANSLATE_NOOP("MachineLog",
-                                          "touch %1 where touch %2 was due: the log "
-                                          "holds more than one run; nothing imported"),
-                        {text_arg("touch", std::string(words[2])),
-                         arg("due", ArgKind::integer, static_cast<double>(positions.size() + 1))}));
+                touch_out_of_order(number, std::string(words[2]), positions.size() + 1);
             }
             positions.push_back({number, *xyz});
             continue;
@@ -346,15 +351,7 @@ std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const 
             if (words.size() >= 3 && words[1] == "PLAN") {
                 const std::string expected = plan_id(plan);
                 if (words[2] != id_letters(expected)) {
-                    throw CsvError(
-                        number, "",
-                        log_message("log_plan_mismatch",
-                                    QT_TRANSLATE_NOOP("MachineLog",
-                                                      "the log is from plan %1, the plan file is "
-                                                      "plan %2: give the plan the program was "
-                                                      "made from; nothing imported"),
-                                    {text_arg("log_plan", plan_from_letters(words[2])),
-                                     text_arg("plan", expected)}));
+                    plan_mismatch(number, plan_from_letters(words[2]), expected);
                 }
                 plan_line = true;
             } else if (words.size() == 3 && words[1] == "NO" && words[2] == "TRIGGER") {
@@ -395,15 +392,7 @@ std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const 
             bad_line(number, line, kTouchLine);
         }
         if (*n != static_cast<double>(positions.size() + 1)) {
-            throw CsvError(
-                number, "",
-                log_message(
-                    "log_touch_order",
-                    QT_TRANSLATE_NOOP("MachineLog",
-                                      "touch %1 where touch %2 was due: the log "
-                                      "holds more than one run; nothing imported"),
-                    {text_arg("touch", format_number(*n)),
-                     arg("due", ArgKind::integer, static_cast<double>(positions.size() + 1))}));
+            touch_out_of_order(number, format_number(*n), positions.size() + 1);
         }
         positions.push_back({number, xyz});
     }

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -242,19 +243,60 @@ TEST(MachineLog, RingLogGivesTheRingCsvAndACyclePlanHasNoTable) {
     EXPECT_THROW(import_machine_log(cycle, DialectId::grbl, prb(0, 0, -5)), InputError);
 }
 
-// A machine running the program's lines: a surface `surface_mm` along the
-// plan's axis; each probe triggers after the pretravel, the control records
-// the position a total delay later (the interface and controller delays and a
-// uniform wait for the next scan), plus the probe's repeatability; the axis
-// stops where the cycle model says. It answers as grbl does.
-// With `noise` false the wait is half a scan and the repeatability 0.
+// One probing move on the simulated machine: the surface `surface_mm` along
+// the move's axis; the probe triggers after the pretravel, the control
+// records the position a total delay later (the interface and controller
+// delays and a uniform wait for the next scan), plus the probe's
+// repeatability; the axis stops where the cycle model says. nullopt: the
+// move ends before the surface. With `noise` false the wait is half a scan
+// and the repeatability 0.
+class SimulatedProbe {
+  public:
+    SimulatedProbe(const Scenario& scenario, double surface_mm, unsigned seed, bool noise)
+        : scenario_(scenario),
+          surface_mm_(surface_mm),
+          noise_(noise),
+          random_(seed),
+          repeatability_(0.0, scenario.probe.repeatability_2sigma_mm / 2) {}
+
+    struct Touch {
+        double recorded_mm;
+        double stop_mm;
+    };
+    std::optional<Touch> probe(double position_mm, double move_mm, double feed_mm_min) {
+        const Machine& m = scenario_.machine;
+        const Probe& p = scenario_.probe;
+        const double direction = move_mm > 0 ? 1.0 : -1.0;
+        const double room = (surface_mm_ - position_mm) * direction;
+        if (room + p.pretravel_mm > std::abs(move_mm)) return std::nullopt;
+        Scenario s = scenario_;
+        s.cycle.strategy = Strategy::single_touch;
+        s.cycle.probe_feed_mm_min = feed_mm_min;
+        s.cycle.approach_mm = room;
+        const CycleResult touch = evaluate(s);
+        const double wait = noise_ ? scan_(random_) : 0.5;
+        const double delay = p.interface_delay_s + m.controller_latency_s + wait * m.scan_period_s;
+        const double scatter = noise_ ? repeatability_(random_) : 0.0;
+        return Touch{
+            surface_mm_ + direction * (p.pretravel_mm +
+                                       touch.first_touch().trigger_speed_mm_s * delay + scatter),
+            surface_mm_ + direction * touch.overtravel_mm()};
+    }
+
+  private:
+    Scenario scenario_;
+    double surface_mm_;
+    bool noise_;
+    std::mt19937 random_;
+    std::uniform_real_distribution<double> scan_{0.0, 1.0};
+    std::normal_distribution<double> repeatability_;
+};
+
+// A machine running the grbl program's lines (SimulatedProbe); it answers as
+// grbl does.
 std::string simulate_grbl(const std::string& program, const Scenario& scenario, double surface_mm,
                           double start_mm, unsigned seed, bool noise) {
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<double> scan(0.0, 1.0);
-    std::normal_distribution<double> repeatability(0.0, scenario.probe.repeatability_2sigma_mm / 2);
-    const Machine& m = scenario.machine;
-    const Probe& p = scenario.probe;
+    SimulatedProbe machine(scenario, surface_mm, seed, noise);
     double position = start_mm;
     std::string console;
     std::istringstream lines(program);
@@ -272,24 +314,10 @@ std::string simulate_grbl(const std::string& program, const Scenario& scenario, 
             continue;
         }
         const double feed = std::stod(line.substr(line.find(" F") + 2));
-        const double direction = move > 0 ? 1.0 : -1.0;
-        const double room = (surface_mm - position) * direction;
-        if (room + p.pretravel_mm > std::abs(move)) {
-            return console + "ALARM:5\n";
-        }
-        Scenario s = scenario;
-        s.cycle.strategy = Strategy::single_touch;
-        s.cycle.probe_feed_mm_min = feed;
-        s.cycle.approach_mm = room;
-        const CycleResult touch = evaluate(s);
-        const double wait = noise ? scan(random) : 0.5;
-        const double delay = p.interface_delay_s + m.controller_latency_s + wait * m.scan_period_s;
-        const double scatter = noise ? repeatability(random) : 0.0;
-        const double recorded =
-            surface_mm +
-            direction * (p.pretravel_mm + touch.first_touch().trigger_speed_mm_s * delay + scatter);
-        position = surface_mm + direction * touch.overtravel_mm();
-        console += prb(0.0, 0.0, recorded) + "ok\n";
+        const std::optional<SimulatedProbe::Touch> touch = machine.probe(position, move, feed);
+        if (!touch) return console + "ALARM:5\n";
+        position = touch->stop_mm;
+        console += prb(0.0, 0.0, touch->recorded_mm) + "ok\n";
     }
     return console;
 }
@@ -333,11 +361,7 @@ std::string dprnt(const std::string& body, const std::map<int, double>& variable
 // with `ending` after each line.
 std::string simulate_fanuc(const std::string& program, const Scenario& scenario, double surface_mm,
                            double start_mm, unsigned seed, bool noise, const std::string& ending) {
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<double> scan(0.0, 1.0);
-    std::normal_distribution<double> repeatability(0.0, scenario.probe.repeatability_2sigma_mm / 2);
-    const Machine& m = scenario.machine;
-    const Probe& p = scenario.probe;
+    SimulatedProbe machine(scenario, surface_mm, seed, noise);
     std::vector<std::string> lines;
     std::istringstream in(program);
     for (std::string line; std::getline(in, line);) lines.push_back(line);
@@ -365,26 +389,10 @@ std::string simulate_fanuc(const std::string& program, const Scenario& scenario,
         } else if (line.rfind("G31 Z", 0) == 0) {
             const double move = std::stod(line.substr(5));
             const double feed = std::stod(line.substr(line.find(" F") + 2));
-            const double direction = move > 0 ? 1.0 : -1.0;
-            const double room = (surface_mm - position) * direction;
-            if (room + p.pretravel_mm > std::abs(move)) {
-                position += move;
-                variables[5063] = position;
-                continue;
-            }
-            Scenario s = scenario;
-            s.cycle.strategy = Strategy::single_touch;
-            s.cycle.probe_feed_mm_min = feed;
-            s.cycle.approach_mm = room;
-            const CycleResult touch = evaluate(s);
-            const double wait = noise ? scan(random) : 0.5;
-            const double delay =
-                p.interface_delay_s + m.controller_latency_s + wait * m.scan_period_s;
-            const double scatter = noise ? repeatability(random) : 0.0;
-            variables[5063] =
-                surface_mm + direction * (p.pretravel_mm +
-                                          touch.first_touch().trigger_speed_mm_s * delay + scatter);
-            position = surface_mm + direction * touch.overtravel_mm();
+            const std::optional<SimulatedProbe::Touch> touch = machine.probe(position, move, feed);
+            // Without a trigger the skip position is the programmed end.
+            position = touch ? touch->stop_mm : position + move;
+            variables[5063] = touch ? touch->recorded_mm : position;
         } else if (line.rfind("G31", 0) == 0 || line.rfind("G0 ", 0) == 0 ||
                    line.rfind("G1 ", 0) == 0) {
             ADD_FAILURE() << "the simulator moves Z only: " << line;
@@ -393,33 +401,22 @@ std::string simulate_fanuc(const std::string& program, const Scenario& scenario,
     return output;
 }
 
-DelayGroup round_trip(int repeats, bool noise) {
+// Plan, program, the simulated machine, import, fit; `ending` ends each
+// DPRNT line of the fanuc output.
+DelayGroup round_trip(int repeats, bool noise, DialectId dialect_id = DialectId::grbl,
+                      const std::string& ending = "\n") {
     const Scenario scenario;  // t_i 2 ms, t_c 2 ms, scan 4 ms: 6 ms on average
     DelayPlanOptions options;
     options.touch = {'Z', -1};
     options.repeats = repeats;
     const ProbingPlan plan = make_delay_plan(scenario, options);
-    const std::string program = write_program(plan, grbl_dialect(), program_test::kDate);
-    const std::string console = simulate_grbl(program, scenario, -50.0, -43.0, 42, noise);
-    const std::string csv = import_machine_log(plan, DialectId::grbl, console);
-    const std::vector<DelayTouch> touches = parse_delay_csv(csv);
-    // 30, 100, 300, 1000 and 2000 mm/min (the scenario's feed is among them).
-    EXPECT_EQ(touches.size(), static_cast<std::size_t>(5 * repeats));
-    const DelayFit fit = fit_delay(touches);
-    EXPECT_EQ(fit.groups.size(), 1u);
-    return fit.groups.at(0);
-}
-
-DelayGroup fanuc_round_trip(int repeats, bool noise, const std::string& ending) {
-    const Scenario scenario;
-    DelayPlanOptions options;
-    options.touch = {'Z', -1};
-    options.repeats = repeats;
-    const ProbingPlan plan = make_delay_plan(scenario, options);
-    const std::string program = write_program(plan, fanuc_dialect(), program_test::kDate);
-    const std::string output = simulate_fanuc(program, scenario, -50.0, -43.0, 42, noise, ending);
+    const std::string program = write_program(plan, dialect(dialect_id), program_test::kDate);
+    const std::string log = dialect_id == DialectId::fanuc
+                                ? simulate_fanuc(program, scenario, -50.0, -43.0, 42, noise, ending)
+                                : simulate_grbl(program, scenario, -50.0, -43.0, 42, noise);
     const std::vector<DelayTouch> touches =
-        parse_delay_csv(import_machine_log(plan, DialectId::fanuc, output));
+        parse_delay_csv(import_machine_log(plan, dialect_id, log));
+    // 30, 100, 300, 1000 and 2000 mm/min (the scenario's feed is among them).
     EXPECT_EQ(touches.size(), static_cast<std::size_t>(5 * repeats));
     const DelayFit fit = fit_delay(touches);
     EXPECT_EQ(fit.groups.size(), 1u);
@@ -429,12 +426,12 @@ DelayGroup fanuc_round_trip(int repeats, bool noise, const std::string& ending) 
 TEST(MachineLog, FanucRoundTripGivesBackTheKnownDelay) {
     const Scenario scenario;
     const double delay_s = measurement_delay_s(scenario.machine, scenario.probe);
-    // DPRNT's 4 decimals leave the delay to well under a microsecond... of
-    // travel: 0.1 um at 30 mm/min is 0.2 ms, and the fit averages.
-    const DelayGroup exact = fanuc_round_trip(5, false, "\r");
+    // Without noise only DPRNT's 4 decimals (0.1 um) stand between the delay
+    // and the fit: finer than grbl's 1 um, so a tighter bound.
+    const DelayGroup exact = round_trip(5, false, DialectId::fanuc, "\r");
     EXPECT_NEAR(exact.delay_s, delay_s, 5e-6);
     EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
-    const DelayGroup noisy = fanuc_round_trip(20, true, "\n\r\r");
+    const DelayGroup noisy = round_trip(20, true, DialectId::fanuc, "\n\r\r");
     EXPECT_NEAR(noisy.delay_s, delay_s, 5e-4);
 }
 
