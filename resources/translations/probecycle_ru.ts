@@ -558,6 +558,18 @@
         <source>a cycle plan&apos;s positions have no table in the lab; import the log of a delay or a ring program</source>
         <translation>для положений плана цикла в лаборатории нет таблицы; импортируйте журнал программы задержки или кольца</translation>
     </message>
+    <message>
+        <source>the program printed PROBECYCLE NO TRIGGER: a probe did not trigger and the control stopped with alarm 101; nothing imported</source>
+        <translation>программа вывела PROBECYCLE NO TRIGGER: датчик не сработал, и система ЧПУ остановилась с аварией 101; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>a touch before the line PROBECYCLE PLAN that the program prints first: capture its output from the start; nothing imported</source>
+        <translation>касание до строки PROBECYCLE PLAN, которую программа выводит первой: записывайте вывод с самого начала; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>no line PROBECYCLE PLAN: is this the DPRNT output of a ProbeCycle program? Nothing imported</source>
+        <translation>нет строки PROBECYCLE PLAN: это вывод DPRNT программы ProbeCycle? Ничего не импортировано</translation>
+    </message>
 </context>
 <context>
     <name>Parameter</name>
@@ -1022,6 +1034,18 @@
     <message>
         <source>the gauge (%1) leaves the ball (%2) no more room than the centre tolerance %3: a larger gauge or a smaller ball</source>
         <translation>кольцо (%1) оставляет шарику (%2) не больше места, чем допуск центра %3: нужно кольцо больше или шарик меньше</translation>
+    </message>
+    <message>
+        <source>the plan turns the spindle to %1 deg; a %2 program turns it to 180 deg only, with the command given as --orient-180</source>
+        <translation>план поворачивает шпиндель на %1°; программа %2 поворачивает его только на 180° командой, заданной в --orient-180</translation>
+    </message>
+    <message>
+        <source>--orient-180: the ring program turns the spindle to 180 deg, and %1 controls have no common word for that (M19 with an angle differs by maker and machine): give your control&apos;s command, e.g. --orient-180 &quot;M19 R180.&quot; if your manual says so; ProbeCycle does not guess it</source>
+        <translation>--orient-180: программа кольца поворачивает шпиндель на 180°, а у систем ЧПУ %1 нет общей команды для этого (M19 с углом различается у производителей и станков): укажите команду вашей системы ЧПУ, например --orient-180 &quot;M19 R180.&quot;, если так сказано в вашем руководстве; ProbeCycle её не угадывает</translation>
+    </message>
+    <message>
+        <source>--orient-180: got &apos;%1&apos;; allowed: one block of at most 60 upper-case letters, digits, spaces and . + - # [ ] =</source>
+        <translation>--orient-180: получено «%1»; допустимо: один кадр не длиннее 60 знаков из заглавных букв, цифр, пробелов и . + - # [ ] =</translation>
     </message>
 </context>
 <context>

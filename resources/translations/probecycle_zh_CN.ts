@@ -558,6 +558,18 @@
         <source>a cycle plan&apos;s positions have no table in the lab; import the log of a delay or a ring program</source>
         <translation>循环计划的位置在实验室中没有对应表格；请导入延迟或环规程序的日志</translation>
     </message>
+    <message>
+        <source>the program printed PROBECYCLE NO TRIGGER: a probe did not trigger and the control stopped with alarm 101; nothing imported</source>
+        <translation>程序输出了 PROBECYCLE NO TRIGGER：测头未触发，系统以报警 101 停止；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>a touch before the line PROBECYCLE PLAN that the program prints first: capture its output from the start; nothing imported</source>
+        <translation>在程序首先输出的 PROBECYCLE PLAN 行之前出现了触测：请从头开始捕获其输出；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>no line PROBECYCLE PLAN: is this the DPRNT output of a ProbeCycle program? Nothing imported</source>
+        <translation>没有 PROBECYCLE PLAN 行：这是 ProbeCycle 程序的 DPRNT 输出吗？未导入任何内容</translation>
+    </message>
 </context>
 <context>
     <name>Parameter</name>
@@ -1022,6 +1034,18 @@
     <message>
         <source>the gauge (%1) leaves the ball (%2) no more room than the centre tolerance %3: a larger gauge or a smaller ball</source>
         <translation>环规（%1）给测球（%2）留出的空间不大于中心公差 %3：需要更大的环规或更小的测球</translation>
+    </message>
+    <message>
+        <source>the plan turns the spindle to %1 deg; a %2 program turns it to 180 deg only, with the command given as --orient-180</source>
+        <translation>计划将主轴转到 %1°；%2 程序只能用 --orient-180 给出的指令将其转到 180°</translation>
+    </message>
+    <message>
+        <source>--orient-180: the ring program turns the spindle to 180 deg, and %1 controls have no common word for that (M19 with an angle differs by maker and machine): give your control&apos;s command, e.g. --orient-180 &quot;M19 R180.&quot; if your manual says so; ProbeCycle does not guess it</source>
+        <translation>--orient-180：环规程序需将主轴转到 180°，而 %1 系统没有通用的指令（带角度的 M19 因厂商和机床而异）：请给出您的系统的指令，例如手册如此规定时用 --orient-180 &quot;M19 R180.&quot;；ProbeCycle 不会猜测</translation>
+    </message>
+    <message>
+        <source>--orient-180: got &apos;%1&apos;; allowed: one block of at most 60 upper-case letters, digits, spaces and . + - # [ ] =</source>
+        <translation>--orient-180：得到“%1”；允许：一个程序段，最多 60 个大写字母、数字、空格及 . + - # [ ] =</translation>
     </message>
 </context>
 <context>
