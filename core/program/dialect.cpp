@@ -114,7 +114,7 @@ const Dialect& grbl_dialect() {
 }
 
 // Fanuc-type macro B: Fanuc, and Haas with the macro option. Checked against
-// (re-read with the search tool; quotes in /tmp/notes of issue 13):
+// (each re-read with the search tool for issue 13):
 // - G31: Fanuc Series 15i/150i-MA Operator's Manual p.564 ("G31 IP_ ;
 //   One-shot G code ... If an external skip signal is input during the
 //   execution of this command, execution of the command is interrupted and
@@ -196,6 +196,8 @@ const Dialect& fanuc_dialect() {
         .open_record = {"POPEN", "DPRNT[PROBECYCLE*PLAN*{id_letters}*{KIND}]"},
         .before_probe = "#101={current}{distance}",
         .after_probe = "IF[ABS[{skip}-#101]LT0.050]GOTO9001",
+        .current_position = {"#5041", "#5042", "#5043"},
+        .skip_position = {"#5061", "#5062", "#5063"},
         .after_recorded_probe = {"#102={n}",
                                  "DPRNT[TOUCH#102[40]*X#5061[44]*Y#5062[44]*Z#5063[44]]"},
         .close_record = {"DPRNT[PROBECYCLE*END]", "PCLOS"},

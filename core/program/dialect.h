@@ -7,6 +7,7 @@
 // it was checked against in dialect.cpp; a detail that could not be checked
 // is left out (README, "Programs for your control").
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -49,6 +50,9 @@ struct Dialect {
     // goes on without an alarm when the probe does not trigger checks here.
     const char* before_probe;
     const char* after_probe;
+    // The variables {current} and {skip} stand for, per axis X, Y, Z.
+    std::array<const char*, 3> current_position{};
+    std::array<const char*, 3> skip_position{};
     // Lines after each recorded probe ({n}: its number, from 1).
     std::vector<const char*> after_recorded_probe;
     // Lines before the end that close the record.

@@ -127,12 +127,12 @@ class Writer {
     // A probe's check line ({current}, {skip}, {distance}).
     void probe_check(const char* pattern, const ProgramStep& step) {
         if (*pattern == '\0') return;
-        const std::string axis = std::to_string(static_cast<int>(axis_index(step.axis)) + 1);
+        const std::size_t axis = axis_index(step.axis);
         std::string distance = program_number(step.direction * step.distance_mm);
         if (distance[0] != '-') distance.insert(distance.begin(), '+');
-        line(replaced(
-            replaced(replaced(pattern, "{current}", "#504" + axis), "{skip}", "#506" + axis),
-            "{distance}", distance));
+        line(replaced(replaced(replaced(pattern, "{current}", d_.current_position.at(axis)),
+                               "{skip}", d_.skip_position.at(axis)),
+                      "{distance}", distance));
     }
     const std::string& text() const { return out_; }
 
