@@ -1394,6 +1394,22 @@
         <source>Touches: %1, spread %2</source>
         <translation>Касаний: %1, разброс %2</translation>
     </message>
+    <message>
+        <source>Program…</source>
+        <translation>Программа…</translation>
+    </message>
+    <message>
+        <source>The ring-gauge calibration as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
+        <translation>Калибровка по установочному кольцу как программа для вашей ЧПУ (LinuxCNC, grbl) вместе с планом, который нужен для импорта её журнала.</translation>
+    </message>
+    <message>
+        <source>Import machine log…</source>
+        <translation>Импорт журнала ЧПУ…</translation>
+    </message>
+    <message>
+        <source>What the control recorded while it ran the program, read with the program&apos;s plan into the points and fitted.</source>
+        <translation>То, что ЧПУ записала при выполнении программы: читается вместе с планом программы в точки и подбирается.</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ComparisonTab</name>
@@ -2186,6 +2202,22 @@
         <source>Export delay fit report</source>
         <translation>Экспорт отчёта о задержке</translation>
     </message>
+    <message>
+        <source>Program…</source>
+        <translation>Программа…</translation>
+    </message>
+    <message>
+        <source>The delay-stability test as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
+        <translation>Испытание стабильности задержки как программа для вашей ЧПУ (LinuxCNC, grbl) вместе с планом, который нужен для импорта её журнала.</translation>
+    </message>
+    <message>
+        <source>Import machine log…</source>
+        <translation>Импорт журнала ЧПУ…</translation>
+    </message>
+    <message>
+        <source>What the control recorded while it ran the program, read with the program&apos;s plan into the touches and fitted.</source>
+        <translation>То, что ЧПУ записала при выполнении программы: читается вместе с планом программы в касания и подбирается.</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::HelpGuide</name>
@@ -2313,6 +2345,99 @@
     <message>
         <source>%1 could not be written: %2</source>
         <translation>Не удалось записать %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::MachineLogDialog</name>
+    <message>
+        <source>delay-stability test</source>
+        <translation>испытание стабильности задержки</translation>
+    </message>
+    <message>
+        <source>ring-gauge calibration</source>
+        <translation>калибровка по установочному кольцу</translation>
+    </message>
+    <message>
+        <source>tuned cycle</source>
+        <translation>настроенный цикл</translation>
+    </message>
+    <message>
+        <source>%1 is not a probing plan:
+%2</source>
+        <extracomment>%1 the plan file, %2 what is wrong in it (one problem a line)</extracomment>
+        <translation>%1 — не план измерения:
+%2</translation>
+    </message>
+    <message>
+        <source>%1 is the plan of a %2 program; this tab reads the log of a %3 program.</source>
+        <extracomment>%1 the plan file, %2 its program (&quot;ring-gauge calibration&quot;), %3 this tab&apos;s</extracomment>
+        <translation>%1 — план программы «%2»; эта вкладка читает журнал программы «%3».</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the machine log&apos;s file, %2 the problem with its line</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Import machine log</source>
+        <translation>Импорт журнала ЧПУ</translation>
+    </message>
+    <message>
+        <source>What the control recorded while it ran a %1 program of ProbeCycle&apos;s, with the plan saved beside the program. The positions fill the paste box and are fitted; on any problem nothing changes.</source>
+        <extracomment>%1 the program (&quot;delay-stability test&quot;)</extracomment>
+        <translation>То, что ЧПУ записала при выполнении программы ProbeCycle «%1», вместе с планом, сохранённым рядом с программой. Положения попадают в поле ввода и подбираются; при любой ошибке ничего не меняется.</translation>
+    </message>
+    <message>
+        <source>Control</source>
+        <translation>ЧПУ</translation>
+    </message>
+    <message>
+        <source>The log the program writes: probecycle_log.txt in LinuxCNC&apos;s working directory.</source>
+        <translation>Журнал, который пишет программа: probecycle_log.txt в рабочем каталоге LinuxCNC.</translation>
+    </message>
+    <message>
+        <source>The sender&apos;s console saved to a file: grbl answers [PRB:x,y,z:1] after each probe (set $13=0 for mm).</source>
+        <translation>Консоль программы-отправителя, сохранённая в файл: grbl отвечает [PRB:x,y,z:1] после каждого касания (для мм задайте $13=0).</translation>
+    </message>
+    <message>
+        <source>Plan</source>
+        <translation>План</translation>
+    </message>
+    <message>
+        <source>NAME.plan.json, saved with the program</source>
+        <translation>ИМЯ.plan.json, сохранённый вместе с программой</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Обзор…</translation>
+    </message>
+    <message>
+        <source>Log</source>
+        <translation>Журнал</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Импортировать</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Choose the plan</source>
+        <translation>Выбор плана</translation>
+    </message>
+    <message>
+        <source>Probing plans (*.plan.json *.json);;All files (*)</source>
+        <translation>Планы измерения (*.plan.json *.json);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Choose the machine log</source>
+        <translation>Выбор журнала ЧПУ</translation>
+    </message>
+    <message>
+        <source>Logs (*.txt *.log);;All files (*)</source>
+        <translation>Журналы (*.txt *.log);;Все файлы (*)</translation>
     </message>
 </context>
 <context>
@@ -2779,6 +2904,136 @@
     <message>
         <source>The defaults and the presets are typical values for a machining centre and its probe. Replace them with the ones measured on your machine.</source>
         <translation>Значения по умолчанию и предустановки — типовые для обрабатывающего центра и его датчика. Замените их измеренными на вашем станке.</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::ProgramDialog</name>
+    <message>
+        <source>Ring-gauge calibration program</source>
+        <translation>Программа калибровки по установочному кольцу</translation>
+    </message>
+    <message>
+        <source>From the gauge centre: X+, X−, Y+, Y− with the spindle at 0°, a pause to turn it to 180°, the same four, each point with the scenario&apos;s strategy and feeds. Every move is incremental from where the probe stands. Save the plan with the program: &quot;Import machine log…&quot; needs it.</source>
+        <translation>От центра кольца: X+, X−, Y+, Y− при шпинделе в 0°, пауза для поворота на 180°, те же четыре точки; каждая точка — со стратегией и подачами сценария. Все перемещения в приращениях от текущего положения датчика. Сохраните план вместе с программой: он нужен для «Импорт журнала ЧПУ…».</translation>
+    </message>
+    <message>
+        <source>Gauge diameter</source>
+        <translation>Диаметр кольца</translation>
+    </message>
+    <message>
+        <source>The calibrated diameter of the ring gauge, from its certificate.</source>
+        <translation>Аттестованный диаметр установочного кольца по его сертификату.</translation>
+    </message>
+    <message>
+        <source>Ball diameter</source>
+        <translation>Диаметр шарика</translation>
+    </message>
+    <message>
+        <source>The stylus ball&apos;s diameter: the room to the wall is the gauge&apos;s radius less the ball&apos;s.</source>
+        <translation>Диаметр шарика наконечника: расстояние до стенки — радиус кольца минус радиус шарика.</translation>
+    </message>
+    <message>
+        <source>Centre tolerance</source>
+        <translation>Допуск центра</translation>
+    </message>
+    <message>
+        <source>How far off the gauge centre the probe may start: each first touch searches this much further.</source>
+        <translation>Насколько далеко от центра кольца может стоять датчик в начале: каждое первое касание ищет на столько дальше.</translation>
+    </message>
+    <message>
+        <source>Delay-stability test program</source>
+        <translation>Программа испытания стабильности задержки</translation>
+    </message>
+    <message>
+        <source>Along one axis and direction: a locating touch, then the repeats at each feed, each from far enough out to touch at full speed, with a rapid retract between touches. Every move is incremental from where the probe stands. Save the plan with the program: &quot;Import machine log…&quot; needs it.</source>
+        <translation>Вдоль одной оси в одном направлении: касание для поиска поверхности, затем повторы на каждой подаче, каждое с достаточного расстояния, чтобы касаться на полной скорости, с ускоренным отводом между касаниями. Все перемещения в приращениях от текущего положения датчика. Сохраните план вместе с программой: он нужен для «Импорт журнала ЧПУ…».</translation>
+    </message>
+    <message>
+        <source>Axis and direction</source>
+        <translation>Ось и направление</translation>
+    </message>
+    <message>
+        <source>The direction of travel of the touches. One per program: the control cannot jog to another surface at a pause; paste the imports of several programs together.</source>
+        <translation>Направление движения при касаниях. Одно на программу: на паузе ЧПУ не позволяет переместиться к другой поверхности; вставьте импорт нескольких программ вместе.</translation>
+    </message>
+    <message>
+        <source>Feeds</source>
+        <translation>Подачи</translation>
+    </message>
+    <message>
+        <source>The feeds of the touches, %1, separated by semicolons or spaces; at least two.</source>
+        <translation>Подачи касаний, %1, через точку с запятой или пробел; не меньше двух.</translation>
+    </message>
+    <message>
+        <source>Touches per feed</source>
+        <translation>Касаний на подачу</translation>
+    </message>
+    <message>
+        <source>Start margin</source>
+        <translation>Запас до старта</translation>
+    </message>
+    <message>
+        <source>Each touch starts this much farther out than the distance the axis needs to reach its feed.</source>
+        <translation>Каждое касание начинается на столько дальше расстояния, нужного оси для разгона до его подачи.</translation>
+    </message>
+    <message>
+        <source>Start at most</source>
+        <translation>Старт не дальше</translation>
+    </message>
+    <message>
+        <source>The probe stands at most this far from the surface when the program starts; the locating touch searches this far.</source>
+        <translation>При запуске программы датчик стоит от поверхности не дальше этого; касание поиска ищет на это расстояние.</translation>
+    </message>
+    <message>
+        <source>Control</source>
+        <translation>ЧПУ</translation>
+    </message>
+    <message>
+        <source>The control&apos;s G-code dialect.</source>
+        <translation>Диалект G-кода ЧПУ.</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>Save program…</source>
+        <translation>Сохранить программу…</translation>
+    </message>
+    <message>
+        <source>Writes the program and, beside it, its plan (NAME.plan.json), which the import of the machine&apos;s log needs.</source>
+        <translation>Записывает программу и рядом с ней её план (ИМЯ.plan.json), который нужен для импорта журнала ЧПУ.</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Закрыть</translation>
+    </message>
+    <message>
+        <source>%1: “%2” are not numbers separated by semicolons or spaces</source>
+        <extracomment>%1 the label of the feeds box, %2 what it holds</extracomment>
+        <translation>%1: «%2» — не числа через точку с запятой или пробел</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>Не удалось записать %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved %1 and its plan %2</source>
+        <extracomment>%1 the program&apos;s file, %2 its plan&apos;s</extracomment>
+        <translation>Сохранено: %1 и его план %2</translation>
+    </message>
+    <message>
+        <source>%1 programs (*.%2);;All files (*)</source>
+        <extracomment>%1 the control (&quot;LinuxCNC&quot;), %2 the program&apos;s extension (&quot;ngc&quot;)</extracomment>
+        <translation>Программы %1 (*.%2);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Save program</source>
+        <translation>Сохранение программы</translation>
+    </message>
+    <message>
+        <source>No program: the options are refused (see the message).</source>
+        <translation>Программы нет: параметры отклонены (см. сообщение).</translation>
     </message>
 </context>
 <context>

@@ -1394,6 +1394,22 @@
         <source>Touches: %1, spread %2</source>
         <translation>触测：%1 次，分散 %2</translation>
     </message>
+    <message>
+        <source>Program…</source>
+        <translation>程序…</translation>
+    </message>
+    <message>
+        <source>The ring-gauge calibration as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
+        <translation>将环规标定生成为适用于您的数控系统（LinuxCNC、grbl）的程序，并附带导入其日志所需的计划。</translation>
+    </message>
+    <message>
+        <source>Import machine log…</source>
+        <translation>导入数控日志…</translation>
+    </message>
+    <message>
+        <source>What the control recorded while it ran the program, read with the program&apos;s plan into the points and fitted.</source>
+        <translation>数控系统运行程序时记录的内容，按程序的计划读入测点并拟合。</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ComparisonTab</name>
@@ -2186,6 +2202,22 @@
         <source>Export delay fit report</source>
         <translation>导出延迟拟合报告</translation>
     </message>
+    <message>
+        <source>Program…</source>
+        <translation>程序…</translation>
+    </message>
+    <message>
+        <source>The delay-stability test as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
+        <translation>将延迟稳定性测试生成为适用于您的数控系统（LinuxCNC、grbl）的程序，并附带导入其日志所需的计划。</translation>
+    </message>
+    <message>
+        <source>Import machine log…</source>
+        <translation>导入数控日志…</translation>
+    </message>
+    <message>
+        <source>What the control recorded while it ran the program, read with the program&apos;s plan into the touches and fitted.</source>
+        <translation>数控系统运行程序时记录的内容，按程序的计划读入触测并拟合。</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::HelpGuide</name>
@@ -2313,6 +2345,99 @@
     <message>
         <source>%1 could not be written: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::MachineLogDialog</name>
+    <message>
+        <source>delay-stability test</source>
+        <translation>延迟稳定性测试</translation>
+    </message>
+    <message>
+        <source>ring-gauge calibration</source>
+        <translation>环规标定</translation>
+    </message>
+    <message>
+        <source>tuned cycle</source>
+        <translation>优化后的循环</translation>
+    </message>
+    <message>
+        <source>%1 is not a probing plan:
+%2</source>
+        <extracomment>%1 the plan file, %2 what is wrong in it (one problem a line)</extracomment>
+        <translation>%1 不是测量计划：
+%2</translation>
+    </message>
+    <message>
+        <source>%1 is the plan of a %2 program; this tab reads the log of a %3 program.</source>
+        <extracomment>%1 the plan file, %2 its program (&quot;ring-gauge calibration&quot;), %3 this tab&apos;s</extracomment>
+        <translation>%1 是“%2”程序的计划；此选项卡读取“%3”程序的日志。</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the machine log&apos;s file, %2 the problem with its line</extracomment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Import machine log</source>
+        <translation>导入数控日志</translation>
+    </message>
+    <message>
+        <source>What the control recorded while it ran a %1 program of ProbeCycle&apos;s, with the plan saved beside the program. The positions fill the paste box and are fitted; on any problem nothing changes.</source>
+        <extracomment>%1 the program (&quot;delay-stability test&quot;)</extracomment>
+        <translation>数控系统运行 ProbeCycle 的“%1”程序时记录的内容，以及与程序一同保存的计划。位置填入粘贴框并进行拟合；出现任何问题时不作任何更改。</translation>
+    </message>
+    <message>
+        <source>Control</source>
+        <translation>数控系统</translation>
+    </message>
+    <message>
+        <source>The log the program writes: probecycle_log.txt in LinuxCNC&apos;s working directory.</source>
+        <translation>程序写出的日志：LinuxCNC 工作目录中的 probecycle_log.txt。</translation>
+    </message>
+    <message>
+        <source>The sender&apos;s console saved to a file: grbl answers [PRB:x,y,z:1] after each probe (set $13=0 for mm).</source>
+        <translation>发送软件的控制台保存为文件：grbl 在每次触测后回复 [PRB:x,y,z:1]（设置 $13=0 以使用 mm）。</translation>
+    </message>
+    <message>
+        <source>Plan</source>
+        <translation>计划</translation>
+    </message>
+    <message>
+        <source>NAME.plan.json, saved with the program</source>
+        <translation>名称.plan.json，与程序一同保存</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <source>Log</source>
+        <translation>日志</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>导入</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Choose the plan</source>
+        <translation>选择计划</translation>
+    </message>
+    <message>
+        <source>Probing plans (*.plan.json *.json);;All files (*)</source>
+        <translation>测量计划 (*.plan.json *.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Choose the machine log</source>
+        <translation>选择数控日志</translation>
+    </message>
+    <message>
+        <source>Logs (*.txt *.log);;All files (*)</source>
+        <translation>日志 (*.txt *.log);;所有文件 (*)</translation>
     </message>
 </context>
 <context>
@@ -2779,6 +2904,136 @@
     <message>
         <source>The defaults and the presets are typical values for a machining centre and its probe. Replace them with the ones measured on your machine.</source>
         <translation>默认值和预设是加工中心及其测头的典型值。请替换为在您机床上测得的值。</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::ProgramDialog</name>
+    <message>
+        <source>Ring-gauge calibration program</source>
+        <translation>环规标定程序</translation>
+    </message>
+    <message>
+        <source>From the gauge centre: X+, X−, Y+, Y− with the spindle at 0°, a pause to turn it to 180°, the same four, each point with the scenario&apos;s strategy and feeds. Every move is incremental from where the probe stands. Save the plan with the program: &quot;Import machine log…&quot; needs it.</source>
+        <translation>从环规中心出发：主轴在 0° 时触测 X+、X−、Y+、Y−，暂停以将主轴转到 180°，再触测同样四点；每个点采用场景的策略和进给率。所有移动均为从测头当前位置起的增量移动。请将计划与程序一同保存：“导入数控日志…”需要它。</translation>
+    </message>
+    <message>
+        <source>Gauge diameter</source>
+        <translation>环规直径</translation>
+    </message>
+    <message>
+        <source>The calibrated diameter of the ring gauge, from its certificate.</source>
+        <translation>环规的校准直径，取自其证书。</translation>
+    </message>
+    <message>
+        <source>Ball diameter</source>
+        <translation>测球直径</translation>
+    </message>
+    <message>
+        <source>The stylus ball&apos;s diameter: the room to the wall is the gauge&apos;s radius less the ball&apos;s.</source>
+        <translation>测针测球的直径：到侧壁的距离为环规半径减去测球半径。</translation>
+    </message>
+    <message>
+        <source>Centre tolerance</source>
+        <translation>中心容差</translation>
+    </message>
+    <message>
+        <source>How far off the gauge centre the probe may start: each first touch searches this much further.</source>
+        <translation>测头起始位置可偏离环规中心的距离：每次第一次触测都会多搜索这么远。</translation>
+    </message>
+    <message>
+        <source>Delay-stability test program</source>
+        <translation>延迟稳定性测试程序</translation>
+    </message>
+    <message>
+        <source>Along one axis and direction: a locating touch, then the repeats at each feed, each from far enough out to touch at full speed, with a rapid retract between touches. Every move is incremental from where the probe stands. Save the plan with the program: &quot;Import machine log…&quot; needs it.</source>
+        <translation>沿一个轴和方向：先一次定位触测，然后在每个进给率下重复触测，每次都从足够远处开始以便全速触测，触测之间快速退回。所有移动均为从测头当前位置起的增量移动。请将计划与程序一同保存：“导入数控日志…”需要它。</translation>
+    </message>
+    <message>
+        <source>Axis and direction</source>
+        <translation>轴和方向</translation>
+    </message>
+    <message>
+        <source>The direction of travel of the touches. One per program: the control cannot jog to another surface at a pause; paste the imports of several programs together.</source>
+        <translation>触测的行程方向。每个程序一个：数控系统在暂停时无法点动到另一个表面；请将多个程序的导入结果粘贴在一起。</translation>
+    </message>
+    <message>
+        <source>Feeds</source>
+        <translation>进给率列表</translation>
+    </message>
+    <message>
+        <source>The feeds of the touches, %1, separated by semicolons or spaces; at least two.</source>
+        <translation>触测的进给率，%1，用分号或空格分隔；至少两个。</translation>
+    </message>
+    <message>
+        <source>Touches per feed</source>
+        <translation>每个进给率的触测次数</translation>
+    </message>
+    <message>
+        <source>Start margin</source>
+        <translation>起点余量</translation>
+    </message>
+    <message>
+        <source>Each touch starts this much farther out than the distance the axis needs to reach its feed.</source>
+        <translation>每次触测的起点比轴达到其进给率所需的距离再远这么多。</translation>
+    </message>
+    <message>
+        <source>Start at most</source>
+        <translation>起点最远距离</translation>
+    </message>
+    <message>
+        <source>The probe stands at most this far from the surface when the program starts; the locating touch searches this far.</source>
+        <translation>程序开始时测头距表面最多这么远；定位触测搜索这么远。</translation>
+    </message>
+    <message>
+        <source>Control</source>
+        <translation>数控系统</translation>
+    </message>
+    <message>
+        <source>The control&apos;s G-code dialect.</source>
+        <translation>数控系统的 G 代码方言。</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>程序</translation>
+    </message>
+    <message>
+        <source>Save program…</source>
+        <translation>保存程序…</translation>
+    </message>
+    <message>
+        <source>Writes the program and, beside it, its plan (NAME.plan.json), which the import of the machine&apos;s log needs.</source>
+        <translation>写出程序，并在其旁边写出其计划（名称.plan.json），导入数控日志时需要它。</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>%1: “%2” are not numbers separated by semicolons or spaces</source>
+        <extracomment>%1 the label of the feeds box, %2 what it holds</extracomment>
+        <translation>%1：“%2”不是用分号或空格分隔的数字</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Saved %1 and its plan %2</source>
+        <extracomment>%1 the program&apos;s file, %2 its plan&apos;s</extracomment>
+        <translation>已保存 %1 及其计划 %2</translation>
+    </message>
+    <message>
+        <source>%1 programs (*.%2);;All files (*)</source>
+        <extracomment>%1 the control (&quot;LinuxCNC&quot;), %2 the program&apos;s extension (&quot;ngc&quot;)</extracomment>
+        <translation>%1 程序 (*.%2);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Save program</source>
+        <translation>保存程序</translation>
+    </message>
+    <message>
+        <source>No program: the options are refused (see the message).</source>
+        <translation>没有程序：选项被拒绝（见提示信息）。</translation>
     </message>
 </context>
 <context>

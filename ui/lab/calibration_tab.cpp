@@ -27,6 +27,7 @@
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
 #include "ui/lab/lab_widgets.h"
+#include "ui/lab/program_dialog.h"
 
 namespace probecycle::ui {
 
@@ -121,6 +122,10 @@ QGroupBox* CalibrationTab::build_ring_group() {
     import_button_ = new QPushButton(ring_group_);
     fit_button_ = new QPushButton(ring_group_);
     fit_button_->setDefault(true);
+    program_button_ = new QPushButton(ring_group_);
+    program_button_->setObjectName(QStringLiteral("ring-program"));
+    log_button_ = new QPushButton(ring_group_);
+    log_button_->setObjectName(QStringLiteral("ring-import-log"));
     error_label_ = new QLabel(ring_group_);
     error_label_->setObjectName(QStringLiteral("ring-error"));
     error_label_->setWordWrap(true);
@@ -136,11 +141,16 @@ QGroupBox* CalibrationTab::build_ring_group() {
     buttons->addWidget(import_button_);
     buttons->addStretch(1);
     buttons->addWidget(fit_button_);
+    auto* machine_buttons = new QHBoxLayout;
+    machine_buttons->addWidget(program_button_);
+    machine_buttons->addWidget(log_button_);
+    machine_buttons->addStretch(1);
     auto* ring_column = new QVBoxLayout(ring_group_);
     ring_column->addWidget(format_hint_);
     ring_column->addWidget(points_edit_, 1);
     ring_column->addLayout(ring_form);
     ring_column->addLayout(buttons);
+    ring_column->addLayout(machine_buttons);
     ring_column->addWidget(error_label_);
     return ring_group_;
 }
@@ -255,6 +265,8 @@ QGroupBox* CalibrationTab::build_result_group() {
 void CalibrationTab::connect_inputs() {
     connect(fit_button_, &QPushButton::clicked, this, [this] { fit(); });
     connect(import_button_, &QPushButton::clicked, this, &CalibrationTab::import_dialog);
+    connect(program_button_, &QPushButton::clicked, this, [this] { open_program_dialog(); });
+    connect(log_button_, &QPushButton::clicked, this, &CalibrationTab::import_machine_log_dialog);
     connect(export_button_, &QPushButton::clicked, this, &CalibrationTab::export_dialog);
     for (UnitSpinBox* box : {diameter_, runout_limit_, residual_limit_}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] {
@@ -290,6 +302,14 @@ void CalibrationTab::retranslate() {
            "or a loose gauge."));
     import_button_->setText(tr("Import CSV…"));
     fit_button_->setText(tr("Fit"));
+    program_button_->setText(tr("Program…"));
+    program_button_->setToolTip(
+        tr("The ring-gauge calibration as a program for your control (LinuxCNC, grbl), with the "
+           "plan that the import of its log needs."));
+    log_button_->setText(tr("Import machine log…"));
+    log_button_->setToolTip(
+        tr("What the control recorded while it ran the program, read with the program's plan "
+           "into the points and fitted."));
 
     length_group_->setTitle(tr("Length from a surface of known Z"));
     const auto set_label = [this](QWidget* field, const QString& text, const QString& tip) {
@@ -357,6 +377,10 @@ void CalibrationTab::changeEvent(QEvent* event) {
 bool CalibrationTab::eventFilter(QObject* watched, QEvent* event) {
     if (watched == plot_ && event->type() == QEvent::Resize) update_plot_ranges();
     return QWidget::eventFilter(watched, event);
+}
+
+void CalibrationTab::set_scenario(const probecycle::Scenario& scenario) {
+    scenario_ = scenario;
 }
 
 // --- Ring gauge ---
@@ -799,6 +823,29 @@ void CalibrationTab::import_dialog() {
         QFileDialog::getOpenFileName(this, tr("Import ring gauge points"), dialog_start(),
                                      tr("CSV files (*.csv);;All files (*)"));
     if (!path.isEmpty()) import_file(path);
+}
+
+ProgramDialog* CalibrationTab::open_program_dialog() {
+    ProgramDialog* dialog =
+        ui::open_program_dialog(this, ProgramKind::ring, scenario_, log_choice_);
+    RingPlanOptions options;
+    options.gauge_diameter_mm = diameter_->internal_value();
+    dialog->set_ring_options(options);
+    return dialog;
+}
+
+bool CalibrationTab::import_machine_log(const MachineLogChoice& choice) {
+    log_choice_ = choice;
+    return import_machine_log_into(
+        points_edit_, choice, ProgramKind::ring, imported_,
+        [this](const QString& text, const QString& source) { return fit_text(text, source); },
+        [this](LiveText error) { set_error(std::move(error)); });
+}
+
+void CalibrationTab::import_machine_log_dialog() {
+    open_machine_log_dialog(
+        this, ProgramKind::ring, log_choice_,
+        [this](const MachineLogChoice& choice) { return import_machine_log(choice); });
 }
 
 void CalibrationTab::export_dialog() {

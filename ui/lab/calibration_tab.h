@@ -22,9 +22,11 @@
 #include <string>
 #include <vector>
 
+#include "core/cycle/scenario.h"
 #include "core/lab/calibration.h"
 #include "core/project/project_file.h"
 #include "ui/lab/lab_widgets.h"
+#include "ui/lab/machine_log_import.h"
 
 class QComboBox;
 class QFormLayout;
@@ -39,6 +41,7 @@ namespace probecycle::ui {
 
 class LabWarningList;
 class PlotView;
+class ProgramDialog;
 class UnitSpinBox;
 
 class CalibrationTab : public QWidget {
@@ -47,6 +50,10 @@ class CalibrationTab : public QWidget {
   public:
     explicit CalibrationTab(QWidget* parent = nullptr);
     ~CalibrationTab() override;
+
+    // The window's current scenario: the strategy and feeds of the ring
+    // gauge's program.
+    void set_scenario(const probecycle::Scenario& scenario);
 
     // --- Ring gauge ---
     // The paste box: CSV `orientation_deg,x_mm,y_mm`.
@@ -61,6 +68,13 @@ class CalibrationTab : public QWidget {
     // Reads a CSV file into the paste box and fits it; false as fit(), or when
     // the file cannot be read.
     bool import_file(const QString& path);
+    // "Program…": the ring-gauge calibration's program for the scenario set
+    // and this tab's gauge, in a window-modal dialog.
+    ProgramDialog* open_program_dialog();
+    // "Import machine log…": the control's record of a ring program, read
+    // with its plan into the paste box and fitted. False with last_error()
+    // (the file and line named) and the paste box and the result as they were.
+    bool import_machine_log(const MachineLogChoice& choice);
     // The CSV report (calibration_report.h), written atomically; false with
     // last_error() when there is nothing to export or the file cannot be written.
     bool export_report(const QString& path);
@@ -131,6 +145,9 @@ class CalibrationTab : public QWidget {
     void compute_length();
     void retranslate();
     void import_dialog();
+    void import_machine_log_dialog();
+
+    Scenario scenario_;
 
     // Input
     QGroupBox* ring_group_{nullptr};
@@ -144,6 +161,8 @@ class CalibrationTab : public QWidget {
     UnitSpinBox* residual_limit_{nullptr};
     QPushButton* import_button_{nullptr};
     QPushButton* fit_button_{nullptr};
+    QPushButton* program_button_{nullptr};
+    QPushButton* log_button_{nullptr};
     QLabel* error_label_{nullptr};
 
     // Length
@@ -180,6 +199,7 @@ class CalibrationTab : public QWidget {
     std::vector<RingPoint> points_;
     QString fitted_text_;  // the CSV behind result_
     std::optional<ImportedText> imported_;
+    MachineLogChoice log_choice_;        // the last import's, or the last program saved
     std::string points_from_{"pasted"};  // the report's subject: points_' file, or "pasted"
     RingCalibrationOptions options_;     // of result_
     std::optional<RingCalibration> result_;

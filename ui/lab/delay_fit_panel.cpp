@@ -25,6 +25,7 @@
 #include "ui/common/plot_view.h"
 #include "ui/common/text_format.h"
 #include "ui/lab/lab_widgets.h"
+#include "ui/lab/program_dialog.h"
 
 namespace probecycle::ui {
 
@@ -53,6 +54,8 @@ DelayFitPanel::DelayFitPanel(QWidget* parent) : QGroupBox(parent) {
 
     connect(fit_button_, &QPushButton::clicked, this, [this] { fit(); });
     connect(import_button_, &QPushButton::clicked, this, &DelayFitPanel::import_dialog);
+    connect(program_button_, &QPushButton::clicked, this, [this] { open_program_dialog(); });
+    connect(log_button_, &QPushButton::clicked, this, &DelayFitPanel::import_machine_log_dialog);
     connect(period_, &QDoubleSpinBox::valueChanged, this, &DelayFitPanel::apply_period);
     connect(apply_group_, &QComboBox::currentIndexChanged, this, [this] { update_apply(); });
     connect(apply_button_, &QPushButton::clicked, this, [this] { apply_to_scenario(); });
@@ -75,6 +78,10 @@ QWidget* DelayFitPanel::build_input_column() {
     period_label_->setBuddy(period_);
     import_button_ = new QPushButton(this);
     fit_button_ = new QPushButton(this);
+    program_button_ = new QPushButton(this);
+    program_button_->setObjectName(QStringLiteral("delay-program"));
+    log_button_ = new QPushButton(this);
+    log_button_->setObjectName(QStringLiteral("delay-import-log"));
     error_label_ = new QLabel(this);
     error_label_->setObjectName(QStringLiteral("delay-error"));
     error_label_->setWordWrap(true);
@@ -87,6 +94,10 @@ QWidget* DelayFitPanel::build_input_column() {
     buttons->addWidget(import_button_);
     buttons->addStretch(1);
     buttons->addWidget(fit_button_);
+    auto* machine_buttons = new QHBoxLayout;
+    machine_buttons->addWidget(program_button_);
+    machine_buttons->addWidget(log_button_);
+    machine_buttons->addStretch(1);
     auto* input = new QWidget(this);
     auto* input_column = new QVBoxLayout(input);
     input_column->setContentsMargins(0, 0, 0, 0);
@@ -94,6 +105,7 @@ QWidget* DelayFitPanel::build_input_column() {
     input_column->addWidget(touches_edit_, 1);
     input_column->addLayout(period_row);
     input_column->addLayout(buttons);
+    input_column->addLayout(machine_buttons);
     input_column->addWidget(error_label_);
     input->setFixedWidth(320);
     return input;
@@ -194,6 +206,14 @@ void DelayFitPanel::retranslate() {
     period_->setSpecialValueText(tr("none"));
     import_button_->setText(tr("Import CSV…"));
     fit_button_->setText(tr("Fit"));
+    program_button_->setText(tr("Program…"));
+    program_button_->setToolTip(
+        tr("The delay-stability test as a program for your control (LinuxCNC, grbl), with the "
+           "plan that the import of its log needs."));
+    log_button_->setText(tr("Import machine log…"));
+    log_button_->setToolTip(
+        tr("What the control recorded while it ran the program, read with the program's plan "
+           "into the touches and fitted."));
     delay_plot_->set_title(tr("Measured minus zero-speed position, against feed"));
     delay_plot_->set_x_axis(
         {PlotView::Scale::linear, tr("Feed [%1]").arg(unit_mm_min()), QStringLiteral("%g"), {}});
@@ -520,6 +540,25 @@ void DelayFitPanel::import_dialog() {
     const QString path = QFileDialog::getOpenFileName(this, tr("Import touches"), dialog_start(),
                                                       tr("CSV files (*.csv);;All files (*)"));
     if (!path.isEmpty()) import_file(path);
+}
+
+ProgramDialog* DelayFitPanel::open_program_dialog() {
+    return ui::open_program_dialog(this, ProgramKind::delay, scenario_.value_or(Scenario{}),
+                                   log_choice_);
+}
+
+bool DelayFitPanel::import_machine_log(const MachineLogChoice& choice) {
+    log_choice_ = choice;
+    return import_machine_log_into(
+        touches_edit_, choice, ProgramKind::delay, imported_,
+        [this](const QString& text, const QString& source) { return fit_text(text, source); },
+        [this](LiveText error) { set_error(std::move(error)); });
+}
+
+void DelayFitPanel::import_machine_log_dialog() {
+    open_machine_log_dialog(
+        this, ProgramKind::delay, log_choice_,
+        [this](const MachineLogChoice& choice) { return import_machine_log(choice); });
 }
 
 void DelayFitPanel::set_applied_group(const QString& name) {

@@ -25,6 +25,7 @@
 #include "core/lab/delay_fit.h"
 #include "core/project/project_file.h"
 #include "ui/lab/lab_widgets.h"
+#include "ui/lab/machine_log_import.h"
 
 class QComboBox;
 class QLabel;
@@ -36,6 +37,7 @@ namespace probecycle::ui {
 
 class LabWarningList;
 class PlotView;
+class ProgramDialog;
 class UnitSpinBox;
 
 class DelayFitPanel : public QGroupBox {
@@ -58,6 +60,13 @@ class DelayFitPanel : public QGroupBox {
     bool fit();
     // Reads a CSV file into the paste box and fits it.
     bool import_file(const QString& path);
+    // "Program…": the delay-stability test's program for the scenario set
+    // (the default scenario before one is set), in a window-modal dialog.
+    ProgramDialog* open_program_dialog();
+    // "Import machine log…": the control's record of a delay program, read
+    // with its plan into the paste box and fitted. False with last_error()
+    // (the file and line named) and the paste box and the fit as they were.
+    bool import_machine_log(const MachineLogChoice& choice);
     // The fit and stability report (core delay_fit_report.h, the bytes of
     // `latency fit --report`), written atomically; false with last_error()
     // without a fit or when the file cannot be written.
@@ -128,6 +137,7 @@ class DelayFitPanel : public QGroupBox {
     void update_apply();
     void retranslate();
     void import_dialog();
+    void import_machine_log_dialog();
     std::optional<std::string> chosen_group() const;
     struct ApplyState {
         std::optional<AppliedDelay> applied;
@@ -143,6 +153,8 @@ class DelayFitPanel : public QGroupBox {
     UnitSpinBox* period_{nullptr};
     QPushButton* import_button_{nullptr};
     QPushButton* fit_button_{nullptr};
+    QPushButton* program_button_{nullptr};
+    QPushButton* log_button_{nullptr};
     QLabel* error_label_{nullptr};
     PlotView* delay_plot_{nullptr};
     struct GroupCurves {
@@ -163,6 +175,7 @@ class DelayFitPanel : public QGroupBox {
     std::vector<DelayTouch> touches_;
     QString fitted_text_;  // the CSV behind fit_
     std::optional<ImportedText> imported_;
+    MachineLogChoice log_choice_;         // the last import's, or the last program saved
     std::string touches_from_{"pasted"};  // the report's subject: touches_' file, or "pasted"
     DelayFitOptions fit_options_;
     std::optional<DelayFit> fit_;

@@ -51,6 +51,10 @@ class LatencyTab : public QWidget {
     }
     bool fit() { return delay_->fit(); }
     bool import_file(const QString& path) { return delay_->import_file(path); }
+    ProgramDialog* open_program_dialog() { return delay_->open_program_dialog(); }
+    bool import_machine_log(const MachineLogChoice& choice) {
+        return delay_->import_machine_log(choice);
+    }
     bool export_report(const QString& path) { return delay_->export_report(path); }
     void export_dialog() { delay_->export_dialog(); }
     const std::optional<DelayFit>& delay_fit() const { return delay_->delay_fit(); }

@@ -175,6 +175,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
     if (options_.persistent) restore_settings();
     panel_->set_scenario(scenario_);
     latency_tab_->set_scenario(scenario_);
+    calibration_tab_->set_scenario(scenario_);
     update_title();
     schedule_recompute();
 }
@@ -662,6 +663,7 @@ void MainWindow::apply_scenario(const Scenario& scenario) {
     scenario_ = scenario;
     panel_->set_scenario(scenario_);
     latency_tab_->set_scenario(scenario_);
+    calibration_tab_->set_scenario(scenario_);
     schedule_recompute();
 }
 

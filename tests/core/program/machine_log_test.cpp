@@ -26,27 +26,9 @@
 namespace probecycle {
 namespace {
 
-ProbingPlan small_delay_plan() {
-    DelayPlanOptions options;
-    options.touch = {'Z', -1};
-    options.feeds_mm_min = {100.0, 1000.0};
-    options.repeats = 2;
-    return make_delay_plan(Scenario{}, options);
-}
-
-std::string prb(double x, double y, double z, int ok = 1) {
-    char line[128];
-    std::snprintf(line, sizeof line, "[PRB:%.3f,%.3f,%.3f:%d]\n", x, y, z, ok);
-    return line;
-}
-
-// A grbl console for the small plan: the locating touch, then 4 recorded.
-std::string grbl_console() {
-    std::string log = "Grbl 1.1h ['$' for help]\nok\n";
-    log += prb(0, 0, -20.0) + "ok\n";
-    for (double z : {-20.017, -20.018, -20.150, -20.151}) log += prb(0, 0, z) + "ok\n";
-    return log;
-}
+using program_test::grbl_console;
+using program_test::prb;
+using program_test::small_delay_plan;
 
 int line_of(const std::function<void()>& f) {
     try {
@@ -93,7 +75,7 @@ TEST(MachineLog, GrblBrokenLogsNameTheLine) {
     EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, "[PRB:1,2:1]\n"); }), 1);
 }
 
-std::string linuxcnc_log(const ProbingPlan& plan, const std::vector<double>& zs);
+using program_test::linuxcnc_log;
 
 // The DPRNT output of the small plan's program: 4 touches, lines ending in
 // `ending`, numbers as DPRNT pads them.
@@ -162,16 +144,6 @@ TEST(MachineLog, FanucBrokenLogsNameTheLine) {
     EXPECT_EQ(line_of([&] { import(moved); }), 4);
 }
 
-std::string linuxcnc_log(const ProbingPlan& plan, const std::vector<double>& zs) {
-    std::string log = "probecycle plan " + plan_id(plan) + " delay\n";
-    for (std::size_t i = 0; i < zs.size(); ++i) {
-        char line[128];
-        std::snprintf(line, sizeof line, "probecycle touch %zu 1.000000 2.000000 %.6f\n", i + 1,
-                      zs[i]);
-        log += line;
-    }
-    return log;
-}
 
 TEST(MachineLog, LinuxCncLogAndProbeFileGiveTheSameTable) {
     const ProbingPlan plan = small_delay_plan();
@@ -220,16 +192,8 @@ TEST(MachineLog, LinuxCncBrokenLogsNameTheLine) {
 
 TEST(MachineLog, RingLogGivesTheRingCsvAndACyclePlanHasNoTable) {
     const ProbingPlan ring = make_ring_plan(Scenario{}, RingPlanOptions{});
-    std::string log = "probecycle plan " + plan_id(ring) + " ring\n";
-    const double r = 21.997;
-    const double points[4][2] = {{r, 0}, {-r, 0}, {0, r}, {0, -r}};
-    for (int i = 0; i < 8; ++i) {
-        const double runout = i < 4 ? 0.002 : -0.002;
-        char line[128];
-        std::snprintf(line, sizeof line, "probecycle touch %d %.6f %.6f 0.000000\n", i + 1,
-                      points[i % 4][0] + runout, points[i % 4][1]);
-        log += line;
-    }
+    const double r = program_test::kRingLogRadius_mm;
+    const std::string log = program_test::linuxcnc_ring_log(ring);
     const std::string csv = import_machine_log(ring, DialectId::linuxcnc, log);
     const std::vector<RingPoint> parsed = parse_ring_csv(csv);
     ASSERT_EQ(parsed.size(), 8u);

@@ -1,8 +1,10 @@
 #pragma once
 
 // The plans the program tests share: the golden files, the importers' logs
-// and the rs274 check are made from these.
+// and the rs274 check are made from these; and small logs in each control's
+// format (the core's importer tests and the window's).
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -46,6 +48,62 @@ inline std::vector<NamedPlan> golden_plans() {
         {"cycle", make_cycle_plan(scenario, CyclePlanOptions{})},
         {"cycle_single", make_cycle_plan(single, CyclePlanOptions{{'X', 1}})},
     };
+}
+
+// Z- at 100 and 1000 mm/min, twice each.
+inline DelayPlanOptions small_delay_options() {
+    DelayPlanOptions options;
+    options.touch = {'Z', -1};
+    options.feeds_mm_min = {100.0, 1000.0};
+    options.repeats = 2;
+    return options;
+}
+inline ProbingPlan small_delay_plan() {
+    return make_delay_plan(Scenario{}, small_delay_options());
+}
+
+// grbl's report of a probe: "[PRB:x,y,z:1]" (0: no trigger).
+inline std::string prb(double x, double y, double z, int ok = 1) {
+    char line[128];
+    std::snprintf(line, sizeof line, "[PRB:%.3f,%.3f,%.3f:%d]\n", x, y, z, ok);
+    return line;
+}
+
+// A grbl console for small_delay_plan(): the locating touch, then 4 recorded.
+inline std::string grbl_console() {
+    std::string log = "Grbl 1.1h ['$' for help]\nok\n";
+    log += prb(0, 0, -20.0) + "ok\n";
+    for (double z : {-20.017, -20.018, -20.150, -20.151}) log += prb(0, 0, z) + "ok\n";
+    return log;
+}
+
+// A LinuxCNC LOG file of a delay plan: a recorded touch at each Z.
+inline std::string linuxcnc_log(const ProbingPlan& plan, const std::vector<double>& zs) {
+    std::string log = "probecycle plan " + plan_id(plan) + " delay\n";
+    for (std::size_t i = 0; i < zs.size(); ++i) {
+        char line[128];
+        std::snprintf(line, sizeof line, "probecycle touch %zu 1.000000 2.000000 %.6f\n", i + 1,
+                      zs[i]);
+        log += line;
+    }
+    return log;
+}
+
+// A LinuxCNC LOG file of a ring plan: X+, X-, Y+, Y- on a circle of this
+// radius about 0, at 0 deg, then at 180 deg, with 2 µm of runout along X.
+constexpr double kRingLogRadius_mm = 21.997;
+inline std::string linuxcnc_ring_log(const ProbingPlan& plan) {
+    std::string log = "probecycle plan " + plan_id(plan) + " ring\n";
+    const double r = kRingLogRadius_mm;
+    const double points[4][2] = {{r, 0}, {-r, 0}, {0, r}, {0, -r}};
+    for (int i = 0; i < 8; ++i) {
+        const double runout = i < 4 ? 0.002 : -0.002;
+        char line[128];
+        std::snprintf(line, sizeof line, "probecycle touch %d %.6f %.6f 0.000000\n", i + 1,
+                      points[i % 4][0] + runout, points[i % 4][1]);
+        log += line;
+    }
+    return log;
 }
 
 }  // namespace probecycle::program_test
