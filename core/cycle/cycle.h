@@ -216,6 +216,12 @@ double speed_error_mm(const Machine& machine, const Probe& probe, double speed_m
 constexpr double kAccelErrorTolerance_mm = 1e-4;
 // The recommended backoff is rounded up to this (1 µm), the editors' digits.
 constexpr double kBackoffStep_mm = 0.001;
+// Feeds are shown, set and programmed to 1 mm/min from 100 mm/min up and to
+// 0.1 mm/min below: the knee is a feed of these digits (issue 12: the readout,
+// the fix and the report showed 4449, 4448 and 4448.7).
+inline double feed_step_mm_min(double feed_mm_min) {
+    return feed_mm_min >= 100.0 ? 1.0 : 0.1;
+}
 // Overtravel at this fraction of the probe's limit is a warning (at the
 // limit, an error).
 constexpr double kOvertravelWarningFraction = 0.8;

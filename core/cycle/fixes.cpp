@@ -29,7 +29,7 @@ namespace {
 // warning: a backoff or a start distance up, a feed down. Feeds are shown to
 // 1 mm/min from 100 mm/min up, to 0.1 mm/min below.
 double round_feed_down(double feed_mm_min) {
-    return round_down_to(feed_mm_min, feed_mm_min >= 100.0 ? 1.0 : 0.1);
+    return round_down_to(feed_mm_min, feed_step_mm_min(feed_mm_min));
 }
 
 // The highest probing feed, rounded down, under `feed_mm_min` at which the

@@ -5,6 +5,7 @@
 #include <limits>
 #include <utility>
 
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 // domain.md, "Cycle time versus feed": the knee is the lowest feed whose cycle
@@ -245,6 +246,15 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
             (time_at(mid) <= limit ? hi : lo) = mid;
         }
         out.knee_feed_mm_min = hi;
+    }
+    // A feed of the editors' digits (issue 12): rounded up, so that its cycle
+    // stays within the tolerance (the curve falls towards the fastest cycle),
+    // unless that would pass the last valid feed.
+    {
+        const double knee = *out.knee_feed_mm_min;
+        const double step = feed_step_mm_min(knee);
+        const double up = round_up_to(knee, step);
+        out.knee_feed_mm_min = up <= out.valid_to_mm_min ? up : round_down_to(knee, step);
     }
     // At an end of the searched range the fastest cycle may lie beyond it. Not
     // when invalid cycles end the range: that end does not move.

@@ -51,6 +51,10 @@ std::string plain_comment(std::string_view text) {
     return out;
 }
 
+// The option that gives the spindle's 180 deg block, as the CLI names it (the
+// window shows its own field's label in its place).
+constexpr const char* kOrientOption = "--orient-180";
+
 bool is_orient_command_char(char c) {
     return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
            std::string_view(" .+-#[]=").find(c) != std::string_view::npos;
@@ -179,21 +183,21 @@ void check_program_options(const ProbingPlan& plan, const Dialect& dialect,
         throw InputError(program_message(
             "program_orient_missing",
             QT_TRANSLATE_NOOP("Program",
-                              "--orient-180: the ring program turns the spindle to 180 deg, and "
-                              "%1 controls have no common word for that (M19 with an angle "
+                              "%1: the ring program turns the spindle to 180 deg, and "
+                              "%2 controls have no common word for that (M19 with an angle "
                               "differs by maker and machine): give your control's command, e.g. "
-                              "--orient-180 \"M19 R180.\" if your manual says so; ProbeCycle "
-                              "does not guess it"),
-            {text_arg("dialect", dialect.name)}));
+                              "\"M19 R180.\" if your manual says so; ProbeCycle does not guess "
+                              "it"),
+            {text_arg("key", kOrientOption), text_arg("dialect", dialect.name)}));
     }
     if (turns && (command.size() > 60 || command.find_first_not_of(' ') == std::string::npos ||
                   !std::all_of(command.begin(), command.end(), is_orient_command_char))) {
         throw InputError(program_message(
             "program_orient_text",
             QT_TRANSLATE_NOOP("Program",
-                              "--orient-180: got '%1'; allowed: one block of at most 60 upper-case "
+                              "%1: got '%2'; allowed: one block of at most 60 upper-case "
                               "letters, digits, spaces and . + - # [ ] ="),
-            {text_arg("command", command.substr(0, 80))}));
+            {text_arg("key", kOrientOption), text_arg("command", command.substr(0, 80))}));
     }
 }
 

@@ -1040,12 +1040,12 @@
         <translation>план поворачивает шпиндель на %1°; программа %2 поворачивает его только на 180° командой, заданной в --orient-180</translation>
     </message>
     <message>
-        <source>--orient-180: the ring program turns the spindle to 180 deg, and %1 controls have no common word for that (M19 with an angle differs by maker and machine): give your control&apos;s command, e.g. --orient-180 &quot;M19 R180.&quot; if your manual says so; ProbeCycle does not guess it</source>
-        <translation>--orient-180: программа кольца поворачивает шпиндель на 180°, а у систем ЧПУ %1 нет общей команды для этого (M19 с углом различается у производителей и станков): укажите команду вашей системы ЧПУ, например --orient-180 &quot;M19 R180.&quot;, если так сказано в вашем руководстве; ProbeCycle её не угадывает</translation>
+        <source>%1: the ring program turns the spindle to 180 deg, and %2 controls have no common word for that (M19 with an angle differs by maker and machine): give your control&apos;s command, e.g. &quot;M19 R180.&quot; if your manual says so; ProbeCycle does not guess it</source>
+        <translation>%1: программа кольца поворачивает шпиндель на 180°, а у систем ЧПУ %2 нет общей команды для этого (M19 с углом различается у производителей и станков): укажите команду вашей системы ЧПУ, например &quot;M19 R180.&quot;, если так сказано в вашем руководстве; ProbeCycle её не угадывает</translation>
     </message>
     <message>
-        <source>--orient-180: got &apos;%1&apos;; allowed: one block of at most 60 upper-case letters, digits, spaces and . + - # [ ] =</source>
-        <translation>--orient-180: получено «%1»; допустимо: один кадр не длиннее 60 знаков из заглавных букв, цифр, пробелов и . + - # [ ] =</translation>
+        <source>%1: got &apos;%2&apos;; allowed: one block of at most 60 upper-case letters, digits, spaces and . + - # [ ] =</source>
+        <translation>%1: получено «%2»; допустимо: один кадр не длиннее 60 знаков из заглавных букв, цифр, пробелов и . + - # [ ] =</translation>
     </message>
 </context>
 <context>
@@ -3034,6 +3034,18 @@
     <message>
         <source>No program: the options are refused (see the message).</source>
         <translation>Программы нет: параметры отклонены (см. сообщение).</translation>
+    </message>
+    <message>
+        <source>Spindle to 180°</source>
+        <translation>Поворот шпинделя на 180°</translation>
+    </message>
+    <message>
+        <source>your control&apos;s block, from its manual</source>
+        <translation>кадр вашей системы ЧПУ, из её руководства</translation>
+    </message>
+    <message>
+        <source>The block your control turns the spindle to 180° with. The Fanuc-type programs need it: M19 with an angle differs by maker and machine, and ProbeCycle does not guess it (the CLI&apos;s --orient-180).</source>
+        <translation>Кадр, которым ваша система ЧПУ поворачивает шпиндель на 180°. Он нужен программам типа Fanuc: M19 с углом различается у производителей и станков, и ProbeCycle его не угадывает (в CLI — --orient-180).</translation>
     </message>
 </context>
 <context>

@@ -1040,12 +1040,12 @@
         <translation>计划将主轴转到 %1°；%2 程序只能用 --orient-180 给出的指令将其转到 180°</translation>
     </message>
     <message>
-        <source>--orient-180: the ring program turns the spindle to 180 deg, and %1 controls have no common word for that (M19 with an angle differs by maker and machine): give your control&apos;s command, e.g. --orient-180 &quot;M19 R180.&quot; if your manual says so; ProbeCycle does not guess it</source>
-        <translation>--orient-180：环规程序需将主轴转到 180°，而 %1 系统没有通用的指令（带角度的 M19 因厂商和机床而异）：请给出您的系统的指令，例如手册如此规定时用 --orient-180 &quot;M19 R180.&quot;；ProbeCycle 不会猜测</translation>
+        <source>%1: the ring program turns the spindle to 180 deg, and %2 controls have no common word for that (M19 with an angle differs by maker and machine): give your control&apos;s command, e.g. &quot;M19 R180.&quot; if your manual says so; ProbeCycle does not guess it</source>
+        <translation>%1：环规程序需将主轴转到 180°，而 %2 系统没有通用的指令（带角度的 M19 因厂商和机床而异）：请给出您的系统的指令，例如手册如此规定时用 &quot;M19 R180.&quot;；ProbeCycle 不会猜测</translation>
     </message>
     <message>
-        <source>--orient-180: got &apos;%1&apos;; allowed: one block of at most 60 upper-case letters, digits, spaces and . + - # [ ] =</source>
-        <translation>--orient-180：得到“%1”；允许：一个程序段，最多 60 个大写字母、数字、空格及 . + - # [ ] =</translation>
+        <source>%1: got &apos;%2&apos;; allowed: one block of at most 60 upper-case letters, digits, spaces and . + - # [ ] =</source>
+        <translation>%1：得到“%2”；允许：一个程序段，最多 60 个大写字母、数字、空格及 . + - # [ ] =</translation>
     </message>
 </context>
 <context>
@@ -3034,6 +3034,18 @@
     <message>
         <source>No program: the options are refused (see the message).</source>
         <translation>没有程序：选项被拒绝（见提示信息）。</translation>
+    </message>
+    <message>
+        <source>Spindle to 180°</source>
+        <translation>主轴转到 180°</translation>
+    </message>
+    <message>
+        <source>your control&apos;s block, from its manual</source>
+        <translation>您的系统的程序段，见其手册</translation>
+    </message>
+    <message>
+        <source>The block your control turns the spindle to 180° with. The Fanuc-type programs need it: M19 with an angle differs by maker and machine, and ProbeCycle does not guess it (the CLI&apos;s --orient-180).</source>
+        <translation>您的数控系统将主轴转到 180° 所用的程序段。Fanuc 类程序需要它：带角度的 M19 因厂商和机床而异，ProbeCycle 不会猜测（CLI 中为 --orient-180）。</translation>
     </message>
 </context>
 <context>

@@ -205,6 +205,12 @@ void ProgramDialog::build_ring_options(QFormLayout* form) {
     form->addRow(gauge_label_, gauge_);
     form->addRow(ball_label_, ball_);
     form->addRow(tolerance_label_, tolerance_);
+    orient_ = new QLineEdit(this);
+    orient_->setObjectName(QStringLiteral("program-orient-180"));
+    orient_label_ = new QLabel(this);
+    orient_label_->setBuddy(orient_);
+    form->addRow(orient_label_, orient_);
+    connect(orient_, &QLineEdit::textChanged, this, &ProgramDialog::schedule_update);
     gauge_label_->setBuddy(gauge_);
     ball_label_->setBuddy(ball_);
     tolerance_label_->setBuddy(tolerance_);
@@ -227,6 +233,12 @@ void ProgramDialog::retranslate() {
         ball_->setToolTip(
             tr("The stylus ball's diameter: the room to the wall is the gauge's "
                "radius less the ball's."));
+        orient_label_->setText(tr("Spindle to 180°"));
+        orient_->setPlaceholderText(tr("your control's block, from its manual"));
+        orient_->setToolTip(
+            tr("The block your control turns the spindle to 180° with. The Fanuc-type "
+               "programs need it: M19 with an angle differs by maker and machine, and "
+               "ProbeCycle does not guess it (the CLI's --orient-180)."));
         tolerance_label_->setText(tr("Centre tolerance"));
         tolerance_->setToolTip(
             tr("How far off the gauge centre the probe may start: each first touch searches "
@@ -365,8 +377,18 @@ void ProgramDialog::update_now() {
         } else {
             bad_feed_ = feeds_->text();
         }
+        if (orient_ != nullptr) {
+            const bool needed = dialect(dialect_id()).orient_from_user;
+            orient_->setEnabled(needed);
+            orient_label_->setEnabled(needed);
+        }
         if (plan_) {
-            program_ = QString::fromStdString(write_program(*plan_, dialect(dialect_id()), date_));
+            ProgramOptions options;
+            if (orient_ != nullptr && orient_->isEnabled()) {
+                options.orient_180_command = orient_->text().trimmed().toStdString();
+            }
+            program_ = QString::fromStdString(
+                write_program(*plan_, dialect(dialect_id()), date_, options));
         }
     } catch (const InputError& e) {
         plan_.reset();
@@ -394,7 +416,8 @@ QString ProgramDialog::field_label(const std::string& key) const {
                                                       {"placement_mm", placement_label_},
                                                       {"gauge_diameter_mm", gauge_label_},
                                                       {"ball_diameter_mm", ball_label_},
-                                                      {"centre_tolerance_mm", tolerance_label_}};
+                                                      {"centre_tolerance_mm", tolerance_label_},
+                                                      {"--orient-180", orient_label_}};
     for (const auto& [name, label] : labels) {
         if (key == name && label) return label->text();
     }

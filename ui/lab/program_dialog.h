@@ -125,6 +125,10 @@ class ProgramDialog : public QDialog {
     UnitSpinBox* ball_{nullptr};
     QLabel* tolerance_label_{nullptr};
     UnitSpinBox* tolerance_{nullptr};
+    // The block that turns the spindle to 180 deg, for a dialect whose ring
+    // program needs it from the user (the Fanuc type; the CLI's --orient-180).
+    QLabel* orient_label_{nullptr};
+    QLineEdit* orient_{nullptr};
 
     QLabel* preview_label_{nullptr};
     QPlainTextEdit* preview_{nullptr};

@@ -436,8 +436,11 @@ TEST(FindKnee, TheToleranceMovesTheKnee) {
         EXPECT_LE(cycle_time_at(s, *knee.knee_feed_mm_min),
                   knee.best_cycle_time_s * (1.0 + tolerance) * (1.0 + 1e-9));
         knees.push_back(*knee.knee_feed_mm_min);
+        // A feed of the editors' digits (whole mm/min from 100 mm/min up, issue 12) ...
+        EXPECT_EQ(*knee.knee_feed_mm_min, std::round(*knee.knee_feed_mm_min));
         if (tolerance == 0.0) {
-            EXPECT_NEAR(*knee.knee_feed_mm_min, *knee.best_feed_mm_min, 1e-6);
+            // ... so with no tolerance, the fastest feed to within that step.
+            EXPECT_NEAR(*knee.knee_feed_mm_min, *knee.best_feed_mm_min, 1.0);
         }
     }
     // A looser tolerance lets a slower feed count: strictly lower knees.

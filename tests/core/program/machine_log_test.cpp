@@ -144,7 +144,6 @@ TEST(MachineLog, FanucBrokenLogsNameTheLine) {
     EXPECT_EQ(line_of([&] { import(moved); }), 4);
 }
 
-
 TEST(MachineLog, LinuxCncLogAndProbeFileGiveTheSameTable) {
     const ProbingPlan plan = small_delay_plan();
     const std::vector<double> zs = {-20.0171, -20.0172, -20.1501, -20.1502};

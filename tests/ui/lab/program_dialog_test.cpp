@@ -13,6 +13,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -91,9 +92,25 @@ TEST(ProgramDialog, ThePreviewIsTheCoresProgramInEveryDialect) {
 
         ring.set_dialect(id);
         ring.update_now();
+        auto* orient = ring.findChild<QLineEdit*>(QStringLiteral("program-orient-180"));
+        ASSERT_NE(orient, nullptr);
+        EXPECT_EQ(orient->isEnabled(), dialect(id).orient_from_user);
+        ProgramOptions program_options;
+        if (dialect(id).orient_from_user) {
+            // No common word turns the spindle: refused until the user gives the block.
+            EXPECT_FALSE(ring.can_save());
+            // ... naming the field, not the CLI's option.
+            EXPECT_TRUE(ring.problem().startsWith(QStringLiteral("Spindle to 180°:")))
+                << ring.problem().toStdString();
+            orient->setText(QStringLiteral("M19 R180."));
+            ring.update_now();
+            program_options.orient_180_command = "M19 R180.";
+        }
         ASSERT_TRUE(ring.can_save()) << ring.problem().toStdString();
         EXPECT_EQ(ring.program_text().toStdString(),
-                  write_program(make_ring_plan(scenario, ring_options), dialect(id), ring.date()));
+                  write_program(make_ring_plan(scenario, ring_options), dialect(id), ring.date(),
+                                program_options));
+        orient->clear();
     }
 }
 
