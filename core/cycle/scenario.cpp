@@ -246,6 +246,14 @@ const std::vector<KeyEntry>& key_table() {
                     "feed."),
                 QT_TRANSLATE_NOOP("Parameter", "Calibration feed")},
                PC_NUMBER(probe, calibration_feed_mm_min)),
+        number({"probe.max_feed_mm_min", "mm/min", 0.0, 100000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "The probe maker's rated maximum probing speed. A touch faster than it is an "
+                    "error: the probe may not trigger reliably or may be damaged. 0 means no "
+                    "limit."),
+                QT_TRANSLATE_NOOP("Parameter", "Probe's maximum feed")},
+               PC_NUMBER(probe, max_feed_mm_min)),
         word(
             {"cycle.strategy", "", 0.0, 0.0,
              QT_TRANSLATE_NOOP("Parameter",
@@ -287,6 +295,15 @@ const std::vector<KeyEntry>& key_table() {
                  "return feed."),
              QT_TRANSLATE_NOOP("Parameter", "Approach distance")},
             PC_NUMBER(cycle, approach_mm)),
+        number({"cycle.part_position_uncertainty_mm", "mm", 0.0, 100.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "How far the surface may lie from its nominal position (a casting, a part "
+                    "clamped by hand). The start distance must cover it plus the distance to "
+                    "reach the probing feed, so the touch is at full feed wherever the part "
+                    "lies. 0 means a known part."),
+                QT_TRANSLATE_NOOP("Parameter", "Part position uncertainty")},
+               PC_NUMBER(cycle, part_position_uncertainty_mm)),
         number(
             {"cycle.probe_feed_mm_min", "mm/min", 1.0, 100000.0,
              QT_TRANSLATE_NOOP(
@@ -313,6 +330,16 @@ const std::vector<KeyEntry>& key_table() {
                     "feed; any more is approached again at the slow measuring feed and wasted."),
                 QT_TRANSLATE_NOOP("Parameter", "Backoff")},
                PC_NUMBER(cycle, backoff_mm)),
+        number({"cycle.repeats", "", 1.0, 20.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "How many times the measuring touch is made and averaged (two-touch: back "
+                    "off and touch again at the measuring feed; single-touch: back to the start "
+                    "and touch again). The random parts of the uncertainty, scan phase and "
+                    "repeatability, fall by the square root of this; each repeat adds its moves "
+                    "to the cycle. A whole number."),
+                QT_TRANSLATE_NOOP("Parameter", "Measurements")},
+               PC_NUMBER(cycle, repeats)),
         word(
             {"cycle.backoff_from", "", 0.0, 0.0,
              QT_TRANSLATE_NOOP(
@@ -366,6 +393,27 @@ const std::vector<KeyEntry>& key_table() {
                     "uncertainty."),
                 QT_TRANSLATE_NOOP("Parameter", "Knee tolerance")},
                PC_NUMBER(cycle, knee_tolerance)),
+        number({"cycle.parts_per_year", "", 0.0, 1e9,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Parts made per year, for the savings: time saved per part times this. 0 "
+                    "means savings are not shown."),
+                QT_TRANSLATE_NOOP("Parameter", "Parts per year")},
+               PC_NUMBER(cycle, parts_per_year)),
+        number({"cycle.cycles_per_part", "", 0.0, 10000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "How many times this probing cycle runs per part, for the savings. 0 means "
+                    "savings are not shown."),
+                QT_TRANSLATE_NOOP("Parameter", "Cycles per part")},
+               PC_NUMBER(cycle, cycles_per_part)),
+        number({"cycle.machine_rate_per_hour", "", 0.0, 1e6,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "What an hour of the machine costs, in any currency, for the savings per "
+                    "year. 0 means the savings are shown in hours only."),
+                QT_TRANSLATE_NOOP("Parameter", "Machine rate per hour")},
+               PC_NUMBER(cycle, machine_rate_per_hour)),
     };
     return table;
 }
@@ -562,6 +610,15 @@ std::vector<FieldError> validate(const Scenario& scenario) {
         allowed.args = {arg("min_size_mm", ArgKind::length_mm, 2.0 * c.approach_mm),
                         text_arg("feature", to_string(c.feature))};
         errors.push_back({"cycle.feature_size_mm", number_text(c.feature_size_mm), allowed});
+    }
+    // A count of measurements: a whole number (issue 14).
+    if (std::isfinite(c.repeats) && c.repeats != std::floor(c.repeats)) {
+        const KeyInfo& key = *find_key("cycle.repeats");
+        Message allowed = allowed_text(
+            "not_a_whole_number", QT_TRANSLATE_NOOP("FieldError", "a whole number from %1 to %2"));
+        allowed.args = {text_arg("min", number_text(key.min)),
+                        text_arg("max", number_text(key.max))};
+        errors.push_back({key.key, number_text(c.repeats), allowed});
     }
     return errors;
 }

@@ -48,6 +48,8 @@ struct Probe {
     double reseat_mm{0.2};
     // Feed at which the probe was calibrated; 0 = the measuring feed.
     double calibration_feed_mm_min{0.0};
+    // The maker's rated maximum probing speed; 0 = no limit (issue 14).
+    double max_feed_mm_min{0.0};
 };
 
 struct Cycle {
@@ -57,12 +59,18 @@ struct Cycle {
     // bore/boss diameter less the ball diameter); unused for a surface.
     double feature_size_mm{50.0};
     double approach_mm{5.0};
+    // How far the surface may lie from nominal; the start distance must cover
+    // it plus the distance to reach the probing feed (issue 14). 0 = a known part.
+    double part_position_uncertainty_mm{0.0};
     // Feed of the (first) touch; single-touch measures at it.
     double probe_feed_mm_min{2000.0};
     // Feed of the second, measuring touch of two-touch.
     double measure_feed_mm_min{30.0};
     double backoff_mm{2.0};
     BackoffFrom backoff_from{BackoffFrom::stop};
+    // The measuring touch is made this many times and averaged (issue 14): a
+    // whole number, stored as a number as every key of the table is.
+    double repeats{1.0};
     double return_feed_mm_min{10000.0};
     // Protected positioning moves of a feature (probe armed): between touches
     // and from/to the centre (issue 11).
@@ -73,6 +81,10 @@ struct Cycle {
     // The knee is the lowest feed whose cycle time is within this fraction of
     // the best (domain.md, "Cycle time versus feed").
     double knee_tolerance{0.01};
+    // Savings of optimised settings (issue 14); 0 = not shown.
+    double parts_per_year{0.0};
+    double cycles_per_part{0.0};
+    double machine_rate_per_hour{0.0};  // any currency
 };
 
 struct Scenario {
