@@ -87,6 +87,10 @@ const char* to_string(WarningCode code) {
             return "calibration_feed_mismatch";
         case WarningCode::no_valid_feed:
             return "no_valid_feed";
+        case WarningCode::feed_over_probe_limit:
+            return "feed_over_probe_limit";
+        case WarningCode::start_inside_uncertainty:
+            return "start_inside_uncertainty";
     }
     return "?";
 }
@@ -236,6 +240,36 @@ Message Warning::to_message() const {
                 "probe with more overtravel");
             m.args = {arg("from_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 0),
                       arg("to_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 0)};
+            break;
+        case WarningCode::feed_over_probe_limit:
+            m.text = d > 0.5 ? QT_TRANSLATE_NOOP("Warning",
+                                                 "Measuring feed %1 is over the probe's rated "
+                                                 "maximum %2: it may not trigger reliably or may "
+                                                 "be damaged; measure at %2 or slower")
+                             : QT_TRANSLATE_NOOP("Warning",
+                                                 "Probing feed %1 is over the probe's rated "
+                                                 "maximum %2: it may not trigger reliably or may "
+                                                 "be damaged; probe at %2 or slower");
+            m.args = {arg("feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 0),
+                      arg("max_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 0)};
+            break;
+        case WarningCode::start_inside_uncertainty:
+            m.text = d > 0.5
+                         ? QT_TRANSLATE_NOOP(
+                               "Warning",
+                               "Start distance %1 is inside the part's position uncertainty %2: "
+                               "where the part lies nearer, the probe starts in contact with it; "
+                               "start at least %3 out (the uncertainty plus the distance to "
+                               "reach the probing feed)")
+                         : QT_TRANSLATE_NOOP(
+                               "Warning",
+                               "Start distance %1 covers the part's position uncertainty %2 but "
+                               "not the distance to reach the probing feed after it: where the "
+                               "part lies nearer, the touch is made while accelerating; start at "
+                               "least %3 out");
+            m.args = {arg("approach_mm", ArgKind::length_mm, a, 3),
+                      arg("part_position_uncertainty_mm", ArgKind::length_mm, b, 3),
+                      arg("needed_mm", ArgKind::length_mm, b + c, 3)};
             break;
     }
     return m;
@@ -792,17 +826,42 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     // One touch sequence: first touch, (backoff, second touch,) return to start.
     const TouchResult first = b.add_touch(scenario, limits, probe_v, s, kFirstTouch);
     TouchResult measuring = first;
-    if (two_touch) {
-        // domain.md, "Strategies": the second touch starts b - overtravel_1 in
-        // front of the surface (none left if the backoff is too short). From the
-        // recorded trigger position (issue 11), b - recorded_1, and the backoff
-        // move also covers the travel from there to the stop.
-        const double reference = backoff_reference_mm(c, first);
-        b.add_move(Phase::backoff, limits, c.backoff_mm + first.overtravel_mm - reference, return_v,
+    // domain.md, "Strategies": the second touch starts b - overtravel_1 in
+    // front of the surface (none left if the backoff is too short). From the
+    // recorded trigger position (issue 11), b - recorded_1, and the backoff
+    // move also covers the travel from there to the stop.
+    const auto back_off_and_measure = [&](const TouchResult& from) {
+        const double reference = backoff_reference_mm(c, from);
+        b.add_move(Phase::backoff, limits, c.backoff_mm + from.overtravel_mm - reference, return_v,
                    -1.0);
-        const double second_distance = std::max(0.0, c.backoff_mm - reference);
-        measuring = b.add_touch(scenario, limits, measure_v, second_distance, kSecondTouch);
+        const double distance = std::max(0.0, c.backoff_mm - reference);
+        return b.add_touch(scenario, limits, measure_v, distance, kSecondTouch);
+    };
+    if (two_touch) {
+        measuring = back_off_and_measure(first);
         add_touch_warnings(scenario, measuring, 1, r.warnings_);
+    }
+    // Issue 14: the measuring touch made `repeats` times and averaged. Two-touch
+    // backs off from the measuring touch and touches again at the measuring
+    // feed; single-touch returns to the start and touches again. Each repeat
+    // after the first is the first one again (it starts and ends where the
+    // measuring touch stopped), so it is replayed.
+    const int repeats = std::max(1, static_cast<int>(c.repeats));
+    if (repeats > 1) {
+        const std::size_t repeat_first_phase = b.phase_count();
+        const std::size_t repeat_first_segment = b.segment_count();
+        if (two_touch) {
+            back_off_and_measure(measuring);
+        } else {
+            b.add_move(Phase::return_move, limits, b.axis_mm(), return_v, -1.0);
+            b.add_touch(scenario, limits, probe_v, s, kFirstTouch);
+        }
+        const std::size_t repeat_phases = b.phase_count() - repeat_first_phase;
+        const std::size_t repeat_segments = b.segment_count() - repeat_first_segment;
+        for (int k = 2; k < repeats; ++k) {
+            b.replay_sequence(repeat_first_phase, repeat_phases, repeat_first_segment,
+                              repeat_segments);
+        }
     }
     // domain.md, "Return": back to the start position, s + overtravel.
     b.add_move(Phase::return_move, limits, b.axis_mm(), return_v, -1.0);
@@ -838,7 +897,10 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     r.overtravel_mm_ = worst_overtravel;
     r.trigger_speed_mm_s_ = r.measuring_.trigger_speed_mm_s;
     r.scan_range_mm_ = scan_range_mm(m, r.trigger_speed_mm_s_);
-    r.uncertainty_mm_ = expanded_uncertainty_mm(r.scan_range_mm_, p.repeatability_2sigma_mm);
+    // Issue 14: the scan phase and the repeatability are random from touch to
+    // touch, so the mean of N touches has 1/sqrt(N) of their uncertainty.
+    r.uncertainty_mm_ = expanded_uncertainty_mm(r.scan_range_mm_, p.repeatability_2sigma_mm) /
+                        std::sqrt(static_cast<double>(repeats));
     // domain.md, "Strategies": recommended backoff = overtravel at the fast feed + reseat.
     // Issue 11: measured from the backoff's reference, and the second touch
     // also needs room to reach the measuring feed before it touches.
@@ -868,9 +930,14 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
                          0.0, c.backoff_from == BackoffFrom::trigger ? 1.0 : 0.0});
         } else if (c.backoff_mm - recommended > std::max(0.1 * recommended, 0.05)) {
             // Excess beyond 10 % (at least 0.05 mm) of the recommendation is reported.
+            // Every backoff wastes: the first touch's, and each repeat's from
+            // the measuring touch.
+            const auto excess = [&](const TouchResult& from) {
+                return backoff_cost_s(scenario, limits, dynamics, c.backoff_mm, from) -
+                       backoff_cost_s(scenario, limits, dynamics, recommended, from);
+            };
             const double wasted =
-                touches * (backoff_cost_s(scenario, limits, dynamics, c.backoff_mm, r.first_) -
-                           backoff_cost_s(scenario, limits, dynamics, recommended, r.first_));
+                touches * (excess(r.first_) + (repeats - 1) * excess(r.measuring_));
             w.push_back(
                 {WarningCode::backoff_excess, Severity::info, c.backoff_mm, recommended, wasted});
         }
@@ -878,6 +945,26 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     if (c.target_uncertainty_mm > 0.0 && r.uncertainty_mm_ > c.target_uncertainty_mm) {
         w.push_back({WarningCode::uncertainty_over_target, Severity::warning, r.uncertainty_mm_,
                      c.target_uncertainty_mm});
+    }
+    // Issue 14: the probe maker's rated maximum probing speed; beyond it the
+    // probe may not trigger reliably, so the cycle is not one to run.
+    const double max_probe_v = mm_min_to_mm_s(p.max_feed_mm_min);
+    if (max_probe_v > 0.0) {
+        const double fastest = two_touch ? std::max(probe_v, measure_v) : probe_v;
+        if (fastest > max_probe_v) {
+            w.push_back({WarningCode::feed_over_probe_limit, Severity::error, fastest, max_probe_v,
+                         0.0, two_touch && measure_v > probe_v ? 1.0 : 0.0});
+        }
+    }
+    // Issue 14: wherever the part lies within its position uncertainty, the
+    // touch must start outside it and at full feed.
+    const double part_u = c.part_position_uncertainty_mm;
+    if (part_u > 0.0) {
+        const double room = approach_room(scenario, limits, dynamics, probe_v);
+        if (s < part_u + room - 1e-9) {
+            w.push_back({WarningCode::start_inside_uncertainty, Severity::warning, s, part_u, room,
+                         s <= part_u ? 1.0 : 0.0});
+        }
     }
     const double calibration_v = mm_min_to_mm_s(p.calibration_feed_mm_min);
     const double measuring_programmed_v = r.measuring_.programmed_feed_mm_s;

@@ -57,6 +57,8 @@ enum class WarningCode {
     uncertainty_over_target,
     calibration_feed_mismatch,
     no_valid_feed,
+    feed_over_probe_limit,     // issue 14: an error
+    start_inside_uncertainty,  // issue 14
 };
 const char* to_string(WarningCode code);
 
@@ -79,6 +81,11 @@ struct Warning {
     // calibration_feed_mismatch:a = measuring speed, b = calibration speed, c = error
     // no_valid_feed:            a = lowest feed searched, b = highest (analyse(): no
     //                           feed between gives a valid cycle, so there is no knee)
+    // feed_over_probe_limit:    a = the touch's feed, b = the probe's rated maximum,
+    //                           d = the touch (0 the probing feed, 1 the measuring feed)
+    // start_inside_uncertainty: a = start distance, b = part position uncertainty,
+    //                           c = distance to reach the probing feed, d = 1 when the
+    //                           start lies inside the uncertainty itself
     double a{0.0}, b{0.0}, c{0.0}, d{0.0};
     // The message: code, template and the numbers above as named arguments.
     Message to_message() const;
@@ -154,7 +161,8 @@ class CycleResult {
     double trigger_speed_mm_s() const { return trigger_speed_mm_s_; }  // of the measuring touch
     double scan_range_mm() const { return scan_range_mm_; }
     // Expanded (k = 2) uncertainty of the measuring touch: uniform scan phase
-    // combined with the probe's repeatability.
+    // combined with the probe's repeatability, over sqrt(cycle.repeats) for
+    // the mean of the repeated touches (issue 14).
     double uncertainty_mm() const { return uncertainty_mm_; }
     // The backoff the cycle needs, rounded up to kBackoffStep_mm: the value
     // shown is the value that clears backoff_too_small.

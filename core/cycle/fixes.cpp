@@ -84,7 +84,9 @@ std::optional<Scenario> candidate(const Scenario& scenario, const Analysis& anal
         }
         case FixKind::approach_to_reach_feed: {
             const double feed_mm_s = cycle.first_touch().programmed_feed_mm_s;
-            s.cycle.approach_mm = round_up_to(approach_room_mm(s, feed_mm_s), 0.01);
+            // Issue 14: beyond the part's position uncertainty too.
+            s.cycle.approach_mm = round_up_to(
+                s.cycle.part_position_uncertainty_mm + approach_room_mm(s, feed_mm_s), 0.01);
             return s;
         }
         case FixKind::none:
@@ -108,6 +110,8 @@ std::vector<FixKind> kinds_for(const Warning& warning) {
             // the recommended backoff includes.
             return {warning.d < 0.5 ? FixKind::approach_to_reach_feed
                                     : FixKind::backoff_to_recommended};
+        case WarningCode::start_inside_uncertainty:
+            return {FixKind::approach_to_reach_feed};
         default:
             break;
     }

@@ -708,7 +708,13 @@ std::string scenario_to_json(const Scenario& scenario) {
         const std::string name(key.substr(dot + 1));
         auto& s = const_cast<Scenario&>(scenario);  // the accessors only read here
         if (e.number != nullptr) {
-            body[name] = without_negative_zero(e.number(s));
+            const double value = without_negative_zero(e.number(s));
+            // A count is written as one ("repeats": 3), when it is whole.
+            if (key == "cycle.repeats" && value == std::floor(value) && std::abs(value) < 1e9) {
+                body[name] = static_cast<long long>(value);
+            } else {
+                body[name] = value;
+            }
         } else if (e.flag != nullptr) {
             body[name] = e.flag(s);
         } else {

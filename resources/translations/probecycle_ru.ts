@@ -957,6 +957,86 @@
         <source>Bell (two averages)</source>
         <translation>Колокол (2 ср.)</translation>
     </message>
+    <message>
+        <source>The probe maker&apos;s rated maximum probing speed. A touch faster than it is an error: the probe may not trigger reliably or may be damaged. 0 means no limit.</source>
+        <translation>Максимальная скорость ощупывания по паспорту производителя щупа. Касание быстрее неё — ошибка: щуп может срабатывать ненадёжно или повредиться. 0 — без ограничения.</translation>
+    </message>
+    <message>
+        <source>Probe&apos;s maximum feed</source>
+        <translation>Макс. подача щупа</translation>
+    </message>
+    <message>
+        <source>How far the surface may lie from its nominal position (a casting, a part clamped by hand). The start distance must cover it plus the distance to reach the probing feed, so the touch is at full feed wherever the part lies. 0 means a known part.</source>
+        <translation>Насколько поверхность может отстоять от номинального положения (отливка, деталь, закреплённая вручную). Расстояние подхода должно покрывать его и путь разгона до подачи поиска, чтобы касание шло на полной подаче при любом положении детали. 0 — положение детали известно.</translation>
+    </message>
+    <message>
+        <source>Part position uncertainty</source>
+        <translation>Неопределённость положения детали</translation>
+    </message>
+    <message>
+        <source>How many times the measuring touch is made and averaged (two-touch: back off and touch again at the measuring feed; single-touch: back to the start and touch again). The random parts of the uncertainty, scan phase and repeatability, fall by the square root of this; each repeat adds its moves to the cycle. A whole number.</source>
+        <translation>Сколько раз выполняется измерительное касание с усреднением (два касания: отвод и повторное касание на измерительной подаче; одно касание: возврат в начало и повторное касание). Случайные составляющие неопределённости — фаза опроса и повторяемость — уменьшаются в корень из этого числа раз; каждый повтор добавляет свои перемещения к циклу. Целое число.</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>Число измерений</translation>
+    </message>
+    <message>
+        <source>Parts made per year, for the savings: time saved per part times this. 0 means savings are not shown.</source>
+        <translation>Деталей в год, для расчёта экономии: сэкономленное время на деталь, умноженное на это число. 0 — экономия не показывается.</translation>
+    </message>
+    <message>
+        <source>Parts per year</source>
+        <translation>Деталей в год</translation>
+    </message>
+    <message>
+        <source>How many times this probing cycle runs per part, for the savings. 0 means savings are not shown.</source>
+        <translation>Сколько раз этот цикл измерения выполняется на одну деталь, для расчёта экономии. 0 — экономия не показывается.</translation>
+    </message>
+    <message>
+        <source>Cycles per part</source>
+        <translation>Циклов на деталь</translation>
+    </message>
+    <message>
+        <source>What an hour of the machine costs, in any currency, for the savings per year. 0 means the savings are shown in hours only.</source>
+        <translation>Стоимость часа работы станка в любой валюте, для экономии за год. 0 — экономия показывается только в часах.</translation>
+    </message>
+    <message>
+        <source>Machine rate per hour</source>
+        <translation>Стоимость станко-часа</translation>
+    </message>
+    <message>
+        <source>no limit</source>
+        <translation>без ограничения</translation>
+    </message>
+    <message>
+        <source>known part</source>
+        <translation>известна</translation>
+    </message>
+    <message>
+        <source>×</source>
+        <translation>×</translation>
+    </message>
+    <message>
+        <source>/year</source>
+        <translation>/год</translation>
+    </message>
+    <message>
+        <source>not shown</source>
+        <translation>не показывать</translation>
+    </message>
+    <message>
+        <source>/part</source>
+        <translation>/деталь</translation>
+    </message>
+    <message>
+        <source>/h</source>
+        <translation>/ч</translation>
+    </message>
+    <message>
+        <source>hours only</source>
+        <translation>только часы</translation>
+    </message>
 </context>
 <context>
     <name>Phase</name>
@@ -1141,6 +1221,30 @@
     <message>
         <source>No valid feed</source>
         <translation>Нет допустимой подачи</translation>
+    </message>
+    <message>
+        <source>Measuring feed %1 is over the probe&apos;s rated maximum %2: it may not trigger reliably or may be damaged; measure at %2 or slower</source>
+        <translation>Измерительная подача %1 выше паспортного максимума щупа %2: щуп может срабатывать ненадёжно или повредиться; измеряйте на %2 или медленнее</translation>
+    </message>
+    <message>
+        <source>Probing feed %1 is over the probe&apos;s rated maximum %2: it may not trigger reliably or may be damaged; probe at %2 or slower</source>
+        <translation>Подача поиска %1 выше паспортного максимума щупа %2: щуп может срабатывать ненадёжно или повредиться; ищите на %2 или медленнее</translation>
+    </message>
+    <message>
+        <source>Start distance %1 is inside the part&apos;s position uncertainty %2: where the part lies nearer, the probe starts in contact with it; start at least %3 out (the uncertainty plus the distance to reach the probing feed)</source>
+        <translation>Расстояние подхода %1 лежит внутри неопределённости положения детали %2: если деталь ближе, щуп начинает в контакте с ней; начинайте не ближе %3 (неопределённость плюс путь разгона до подачи поиска)</translation>
+    </message>
+    <message>
+        <source>Start distance %1 covers the part&apos;s position uncertainty %2 but not the distance to reach the probing feed after it: where the part lies nearer, the touch is made while accelerating; start at least %3 out</source>
+        <translation>Расстояние подхода %1 покрывает неопределённость положения детали %2, но не путь разгона до подачи поиска после неё: если деталь ближе, касание происходит во время разгона; начинайте не ближе %3</translation>
+    </message>
+    <message>
+        <source>Feed over the probe&apos;s rating</source>
+        <translation>Подача выше паспорта щупа</translation>
+    </message>
+    <message>
+        <source>Start within the part&apos;s position uncertainty</source>
+        <translation>Начало в зоне неопределённости детали</translation>
     </message>
 </context>
 <context>

@@ -957,6 +957,86 @@
         <source>Bell (two averages)</source>
         <translation>铃型（两次平均）</translation>
     </message>
+    <message>
+        <source>The probe maker&apos;s rated maximum probing speed. A touch faster than it is an error: the probe may not trigger reliably or may be damaged. 0 means no limit.</source>
+        <translation>测头厂商给定的最大探测速度。触测快于此值即为错误：测头可能无法可靠触发或损坏。0 表示无限制。</translation>
+    </message>
+    <message>
+        <source>Probe&apos;s maximum feed</source>
+        <translation>测头最大进给率</translation>
+    </message>
+    <message>
+        <source>How far the surface may lie from its nominal position (a casting, a part clamped by hand). The start distance must cover it plus the distance to reach the probing feed, so the touch is at full feed wherever the part lies. 0 means a known part.</source>
+        <translation>表面可能偏离名义位置的距离（铸件、手工装夹的零件）。起始距离必须覆盖它以及达到探测进给率所需的距离，使零件无论在何处都以全速触测。0 表示零件位置已知。</translation>
+    </message>
+    <message>
+        <source>Part position uncertainty</source>
+        <translation>零件位置不确定度</translation>
+    </message>
+    <message>
+        <source>How many times the measuring touch is made and averaged (two-touch: back off and touch again at the measuring feed; single-touch: back to the start and touch again). The random parts of the uncertainty, scan phase and repeatability, fall by the square root of this; each repeat adds its moves to the cycle. A whole number.</source>
+        <translation>测量触测的次数，结果取平均（两次触测：回退后以测量进给率再次触测；单次触测：回到起点再次触测）。不确定度的随机部分（扫描相位和重复性）按此数的平方根减小；每次重复都会在循环中增加相应的移动。须为整数。</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>测量次数</translation>
+    </message>
+    <message>
+        <source>Parts made per year, for the savings: time saved per part times this. 0 means savings are not shown.</source>
+        <translation>每年生产的零件数，用于计算节省：每件节省的时间乘以此数。0 表示不显示节省。</translation>
+    </message>
+    <message>
+        <source>Parts per year</source>
+        <translation>年产零件数</translation>
+    </message>
+    <message>
+        <source>How many times this probing cycle runs per part, for the savings. 0 means savings are not shown.</source>
+        <translation>每个零件运行此测量循环的次数，用于计算节省。0 表示不显示节省。</translation>
+    </message>
+    <message>
+        <source>Cycles per part</source>
+        <translation>每件循环数</translation>
+    </message>
+    <message>
+        <source>What an hour of the machine costs, in any currency, for the savings per year. 0 means the savings are shown in hours only.</source>
+        <translation>机床每小时的费用（任意货币），用于计算每年的节省。0 表示只以小时显示节省。</translation>
+    </message>
+    <message>
+        <source>Machine rate per hour</source>
+        <translation>机床小时费率</translation>
+    </message>
+    <message>
+        <source>no limit</source>
+        <translation>无限制</translation>
+    </message>
+    <message>
+        <source>known part</source>
+        <translation>位置已知</translation>
+    </message>
+    <message>
+        <source>×</source>
+        <translation>×</translation>
+    </message>
+    <message>
+        <source>/year</source>
+        <translation>/年</translation>
+    </message>
+    <message>
+        <source>not shown</source>
+        <translation>不显示</translation>
+    </message>
+    <message>
+        <source>/part</source>
+        <translation>/件</translation>
+    </message>
+    <message>
+        <source>/h</source>
+        <translation>/小时</translation>
+    </message>
+    <message>
+        <source>hours only</source>
+        <translation>仅小时</translation>
+    </message>
 </context>
 <context>
     <name>Phase</name>
@@ -1141,6 +1221,30 @@
     <message>
         <source>No valid feed</source>
         <translation>没有有效进给率</translation>
+    </message>
+    <message>
+        <source>Measuring feed %1 is over the probe&apos;s rated maximum %2: it may not trigger reliably or may be damaged; measure at %2 or slower</source>
+        <translation>测量进给率 %1 超过测头额定最大值 %2：测头可能无法可靠触发或损坏；请以 %2 或更慢的速度测量</translation>
+    </message>
+    <message>
+        <source>Probing feed %1 is over the probe&apos;s rated maximum %2: it may not trigger reliably or may be damaged; probe at %2 or slower</source>
+        <translation>探测进给率 %1 超过测头额定最大值 %2：测头可能无法可靠触发或损坏；请以 %2 或更慢的速度探测</translation>
+    </message>
+    <message>
+        <source>Start distance %1 is inside the part&apos;s position uncertainty %2: where the part lies nearer, the probe starts in contact with it; start at least %3 out (the uncertainty plus the distance to reach the probing feed)</source>
+        <translation>起始距离 %1 位于零件位置不确定度 %2 之内：零件较近时，测头起始即与其接触；起始距离至少为 %3（不确定度加上达到探测进给率所需的距离）</translation>
+    </message>
+    <message>
+        <source>Start distance %1 covers the part&apos;s position uncertainty %2 but not the distance to reach the probing feed after it: where the part lies nearer, the touch is made while accelerating; start at least %3 out</source>
+        <translation>起始距离 %1 覆盖了零件位置不确定度 %2，但不足以在其后达到探测进给率：零件较近时，触测发生在加速过程中；起始距离至少为 %3</translation>
+    </message>
+    <message>
+        <source>Feed over the probe&apos;s rating</source>
+        <translation>进给率超过测头额定值</translation>
+    </message>
+    <message>
+        <source>Start within the part&apos;s position uncertainty</source>
+        <translation>起点位于零件位置不确定度内</translation>
     </message>
 </context>
 <context>

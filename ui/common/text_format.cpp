@@ -125,6 +125,11 @@ QString warning_title(WarningCode code) {
             return tr_warning(QT_TRANSLATE_NOOP("Warning", "Calibration feed differs"));
         case WarningCode::no_valid_feed:
             return tr_warning(QT_TRANSLATE_NOOP("Warning", "No valid feed"));
+        case WarningCode::feed_over_probe_limit:
+            return tr_warning(QT_TRANSLATE_NOOP("Warning", "Feed over the probe's rating"));
+        case WarningCode::start_inside_uncertainty:
+            return tr_warning(
+                QT_TRANSLATE_NOOP("Warning", "Start within the part's position uncertainty"));
     }
     return QString::fromUtf8(to_string(code));
 }

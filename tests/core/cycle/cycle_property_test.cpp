@@ -33,6 +33,7 @@ Scenario random_valid_scenario(std::mt19937_64& rng) {
     for (;;) {
         Scenario s;
         for (const KeyInfo& key : numeric_keys()) set_number(s, key.key, draw(key, rng));
+        s.cycle.repeats = std::round(s.cycle.repeats);  // a whole number
         std::uniform_int_distribution<int> pick(0, 99);
         s.machine.accel_model = static_cast<AccelModel>(pick(rng) % 4);
         // Half without dynamics after interpolation (the servo drawn 0 a

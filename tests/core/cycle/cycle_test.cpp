@@ -6,12 +6,14 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <random>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "core/common/units.h"
+#include "core/cycle/fixes.h"
 #include "core/cycle/motion.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
@@ -160,6 +162,8 @@ TEST(WarningNames, Exact) {
     EXPECT_STREQ(to_string(WarningCode::feed_beyond_knee), "feed_beyond_knee");
     EXPECT_STREQ(to_string(WarningCode::uncertainty_over_target), "uncertainty_over_target");
     EXPECT_STREQ(to_string(WarningCode::calibration_feed_mismatch), "calibration_feed_mismatch");
+    EXPECT_STREQ(to_string(WarningCode::feed_over_probe_limit), "feed_over_probe_limit");
+    EXPECT_STREQ(to_string(WarningCode::start_inside_uncertainty), "start_inside_uncertainty");
     EXPECT_STREQ(to_string(Severity::info), "info");
     EXPECT_STREQ(to_string(Severity::warning), "warning");
     EXPECT_STREQ(to_string(Severity::error), "error");
@@ -948,6 +952,155 @@ TEST(Warnings, UncertaintyOverTarget) {
     EXPECT_EQ(find_warning(evaluate(s), WarningCode::uncertainty_over_target), nullptr);
     s.cycle.target_uncertainty_mm = 0.0;  // no target
     EXPECT_EQ(find_warning(evaluate(s), WarningCode::uncertainty_over_target), nullptr);
+}
+
+// Issue 14: repeated measuring touches.
+TEST(Repeats, SingleTouchReturnsToTheStartAndTouchesAgain) {
+    Scenario s = surface(Strategy::single_touch, 3000.0);
+    const CycleResult once = evaluate(s);
+    s.cycle.repeats = 3.0;
+    const CycleResult thrice = evaluate(s);
+    // Each repeat is the whole single-touch cycle again: touch, back to the start.
+    std::vector<Phase> expected;
+    for (int k = 0; k < 3; ++k) {
+        const std::vector<Phase> one = phases_of(once);
+        expected.insert(expected.end(), one.begin(), one.end());
+    }
+    EXPECT_EQ(phases_of(thrice), expected) << describe(thrice);
+    EXPECT_NEAR(thrice.total(), 3.0 * once.total(), rel_tol(3.0 * once.total()));
+    EXPECT_NEAR(thrice.phase_time(Phase::approach), 3.0 * once.phase_time(Phase::approach),
+                rel_tol(3.0 * once.phase_time(Phase::approach)));
+    // The mean of three: the random parts over sqrt(3); the travel as before.
+    EXPECT_NEAR(thrice.uncertainty_mm(), once.uncertainty_mm() / std::sqrt(3.0), 1e-15);
+    EXPECT_EQ(thrice.overtravel_mm(), once.overtravel_mm());
+    EXPECT_EQ(thrice.scan_range_mm(), once.scan_range_mm());
+}
+
+TEST(Repeats, TwoTouchBacksOffFromTheMeasuringTouchAndMeasuresAgain) {
+    Scenario s = clean_two_touch();
+    const CycleResult once = evaluate(s);
+    s.cycle.repeats = 3.0;
+    const CycleResult r = evaluate(s);
+    ASSERT_TRUE(r.valid()) << describe(r);
+    const std::vector<Phase> second = {Phase::backoff,
+                                       Phase::second_approach,
+                                       Phase::second_pretravel,
+                                       Phase::second_interface_delay,
+                                       Phase::second_controller_delay,
+                                       Phase::second_deceleration};
+    std::vector<Phase> expected = {Phase::approach, Phase::pretravel, Phase::interface_delay,
+                                   Phase::controller_delay, Phase::deceleration};
+    for (int k = 0; k < 3; ++k) expected.insert(expected.end(), second.begin(), second.end());
+    expected.push_back(Phase::return_move);
+    EXPECT_EQ(phases_of(r), expected) << describe(r);
+    // A repeat backs off b from where the measuring touch stopped and
+    // approaches b less that touch's overtravel at the measuring feed.
+    const double b = s.cycle.backoff_mm;
+    const double o2 = once.measuring_touch().overtravel_mm;
+    std::vector<const PhaseRecord*> backoffs;
+    std::vector<const PhaseRecord*> approaches;
+    for (const PhaseRecord& p : r.phases()) {
+        if (p.phase == Phase::backoff) backoffs.push_back(&p);
+        if (p.phase == Phase::second_approach) approaches.push_back(&p);
+    }
+    ASSERT_EQ(backoffs.size(), 3u);
+    ASSERT_EQ(approaches.size(), 3u);
+    for (int k = 1; k < 3; ++k) {
+        EXPECT_NEAR(backoffs[k]->distance_mm, b, 1e-12);
+        EXPECT_NEAR(approaches[k]->distance_mm, b - o2, 1e-9);
+        // At full measuring feed (the recommended backoff leaves room): (b - o2) / v.
+        EXPECT_NEAR(approaches[k]->time_s - approaches[k]->distance_mm / 0.5, 0.5 * 0.06, 1e-9);
+    }
+    // The two repeats are the same moves.
+    EXPECT_EQ(backoffs[1]->time_s, backoffs[2]->time_s);
+    EXPECT_EQ(approaches[1]->time_s, approaches[2]->time_s);
+    double sum = 0.0;
+    for (const PhaseRecord& p : r.phases()) sum += p.time_s;
+    EXPECT_NEAR(r.total(), sum, rel_tol(sum, 1e-12));
+    EXPECT_NEAR(r.uncertainty_mm(), once.uncertainty_mm() / std::sqrt(3.0), 1e-15);
+    EXPECT_GT(r.total(), once.total());
+}
+
+TEST(Repeats, EveryTouchPointOfAFeatureRepeatsAndEveryBackoffCountsAsWasted) {
+    Scenario s = clean_two_touch();
+    s.cycle.feature = Feature::bore;
+    s.cycle.repeats = 2.0;
+    const CycleResult r = evaluate(s);
+    int measuring = 0;
+    for (const PhaseRecord& p : r.phases()) measuring += p.phase == Phase::second_approach;
+    EXPECT_EQ(measuring, 4 * 2);
+    // 1 mm more backoff at 30 mm/min: 2 s per backoff, two per touch point.
+    s.cycle.backoff_mm += 1.0;
+    const CycleResult longer = evaluate(s);
+    const Warning* w = find_warning(longer, WarningCode::backoff_excess);
+    ASSERT_NE(w, nullptr) << describe(longer);
+    EXPECT_GE(w->c, 4 * 2 * 2.0 - 1e-9);
+    EXPECT_LE(w->c, longer.total() - r.total() + 1e-9);
+}
+
+TEST(Warnings, FeedOverTheProbesRatingIsAnError) {
+    Scenario s = clean_two_touch();  // 3000 then 30 mm/min
+    s.probe.max_feed_mm_min = 2000.0;
+    CycleResult r = evaluate(s);
+    const Warning* w = find_warning(r, WarningCode::feed_over_probe_limit);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_EQ(w->severity, Severity::error);
+    EXPECT_FALSE(r.valid());
+    EXPECT_NEAR(w->a, 50.0, 1e-12);
+    EXPECT_NEAR(w->b, 2000.0 / 60.0, 1e-12);
+    EXPECT_EQ(w->d, 0.0);
+    EXPECT_NE(w->message().find("Probing feed 3000 mm/min is over the probe's rated maximum 2000"),
+              std::string::npos)
+        << w->message();
+    // At the rating, or with no rating, it is no error.
+    s.probe.max_feed_mm_min = 3000.0;
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::feed_over_probe_limit), nullptr);
+    s.probe.max_feed_mm_min = 0.0;
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::feed_over_probe_limit), nullptr);
+    // A measuring feed over it is named as such.
+    s.probe.max_feed_mm_min = 40.0;
+    s.cycle.probe_feed_mm_min = 35.0;
+    s.cycle.measure_feed_mm_min = 50.0;
+    r = evaluate(s);
+    w = find_warning(r, WarningCode::feed_over_probe_limit);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_EQ(w->d, 1.0);
+    EXPECT_NE(w->message().find("Measuring feed"), std::string::npos) << w->message();
+}
+
+TEST(Warnings, StartInsideThePartsPositionUncertainty) {
+    Scenario s = clean_two_touch();
+    const double room = approach_room_mm(s, 50.0);  // 1.5 mm to reach 3000 mm/min
+    ASSERT_NEAR(room, 1.5, 1e-9);
+    s.cycle.part_position_uncertainty_mm = 2.0;
+    struct {
+        double approach_mm;
+        bool warns;
+        double inside;
+    } cases[] = {
+        {1.0, true, 1.0}, {2.0, true, 1.0}, {3.0, true, 0.0}, {3.5, false, 0.0}, {5.0, false, 0.0}};
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.approach_mm);
+        s.cycle.approach_mm = c.approach_mm;
+        const CycleResult r = evaluate(s);
+        const Warning* w = find_warning(r, WarningCode::start_inside_uncertainty);
+        ASSERT_EQ(w != nullptr, c.warns) << describe(r);
+        if (w == nullptr) continue;
+        EXPECT_EQ(w->severity, Severity::warning);
+        EXPECT_EQ(w->d, c.inside);
+        EXPECT_NE(w->message().find("start at least 3.500 mm out"), std::string::npos)
+            << w->message();
+        // The one-click fix starts the uncertainty plus the room out, and clears it.
+        const std::optional<Fix> fix = fix_for(s, analyse(s), *w);
+        ASSERT_TRUE(fix.has_value());
+        EXPECT_NEAR(fix->scenario.cycle.approach_mm, 3.5, 1e-12);
+        EXPECT_EQ(find_warning(evaluate(fix->scenario), WarningCode::start_inside_uncertainty),
+                  nullptr);
+    }
+    // A known part (0) never warns.
+    s.cycle.part_position_uncertainty_mm = 0.0;
+    s.cycle.approach_mm = 1.5;
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::start_inside_uncertainty), nullptr);
 }
 
 TEST(Warnings, CalibrationFeedMismatch) {

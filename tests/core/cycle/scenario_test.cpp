@@ -128,6 +128,12 @@ const std::vector<std::string> kNumericKeys = {
     "machine.filter2_time_s",
     "machine.servo_time_constant_s",
     "machine.in_position_mm",
+    "probe.max_feed_mm_min",
+    "cycle.part_position_uncertainty_mm",
+    "cycle.repeats",
+    "cycle.parts_per_year",
+    "cycle.cycles_per_part",
+    "cycle.machine_rate_per_hour",
 };
 
 // ---------------------------------------------------------------------------
@@ -283,11 +289,13 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
           "rapid_feed_mm_min", "scan_period_s", "controller_latency_s", "latched_input"}},
         {"probe",
          {"pretravel_mm", "interface_delay_s", "repeatability_2sigma_mm", "overtravel_limit_mm",
-          "reseat_mm", "calibration_feed_mm_min"}},
+          "reseat_mm", "calibration_feed_mm_min", "max_feed_mm_min"}},
         {"cycle",
          {"strategy", "feature", "feature_size_mm", "approach_mm", "probe_feed_mm_min",
           "measure_feed_mm_min", "backoff_mm", "backoff_from", "return_feed_mm_min",
-          "position_feed_mm_min", "clearance_mm", "target_uncertainty_mm", "knee_tolerance"}},
+          "position_feed_mm_min", "clearance_mm", "target_uncertainty_mm", "knee_tolerance",
+          "part_position_uncertainty_mm", "repeats", "parts_per_year", "cycles_per_part",
+          "machine_rate_per_hour"}},
     };
     EXPECT_EQ(j.size(), expected.size());
     for (const auto& [section, keys] : expected) {
@@ -315,6 +323,7 @@ TEST(ScenarioJson, RandomScenariosRoundTripExactly) {
             const double hi = std::min(info.max, info.min + 1000.0);
             ASSERT_TRUE(set_number(s, info.key, info.min + unit(rng) * (hi - info.min)));
         }
+        s.cycle.repeats = std::round(s.cycle.repeats);  // a whole number
         s.machine.accel_model = static_cast<AccelModel>(rng() % 3);
         s.machine.latched_input = rng() % 2 == 0;
         s.cycle.strategy = static_cast<Strategy>(rng() % 2);
@@ -474,6 +483,27 @@ TEST(ScenarioValidate, ReportsEveryBadFieldAndThrowsTheSame) {
     EXPECT_TRUE(contains(error->what(), "probe.pretravel_mm"));
 }
 
+TEST(ScenarioValidate, RepeatsAreAWholeNumber) {
+    Scenario s;
+    s.cycle.repeats = 2.5;
+    const std::vector<FieldError> errors = validate(s);
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0].key, "cycle.repeats");
+    EXPECT_EQ(errors[0].message(), "cycle.repeats: got 2.5; allowed: a whole number from 1 to 20");
+    for (double bad : {0.0, 21.0}) {
+        s.cycle.repeats = bad;
+        ASSERT_EQ(validate(s).size(), 1u) << bad;
+        EXPECT_EQ(validate(s)[0].key, "cycle.repeats");
+    }
+    s.cycle.repeats = 20.0;
+    EXPECT_TRUE(validate(s).empty());
+    EXPECT_THROW(scenario_from_json(R"({"cycle": {"repeats": 3.5}})"), ScenarioError);
+    const Scenario three = scenario_from_json(R"({"cycle": {"repeats": 3}})");
+    EXPECT_EQ(three.cycle.repeats, 3.0);
+    // Written as the count it is.
+    EXPECT_NE(scenario_to_json(three).find("\"repeats\": 3,"), std::string::npos);
+}
+
 TEST(ScenarioValidate, NanAndInfinityAreRejected) {
     for (const KeyInfo& info : numeric_keys()) {
         for (double bad :
@@ -628,7 +658,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 32u);
+    ASSERT_EQ(scenario_keys().size(), 38u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);
@@ -638,8 +668,12 @@ TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
         const std::string value = value_text(defaults, key);
         EXPECT_FALSE(value.empty());
         if (key.kind == KeyKind::number) {
-            // A number without a unit is a fraction (cycle.knee_tolerance).
-            if (std::string(key.unit).empty()) {
+            // A number without a unit is a fraction (cycle.knee_tolerance), a
+            // count or an amount of any currency (issue 14).
+            const std::set<std::string> counts = {"cycle.repeats", "cycle.parts_per_year",
+                                                  "cycle.cycles_per_part",
+                                                  "cycle.machine_rate_per_hour"};
+            if (std::string(key.unit).empty() && counts.count(key.key) == 0) {
                 EXPECT_LE(key.max, 1.0) << "no unit";
             }
             EXPECT_LE(key.min, key.max);
