@@ -8,6 +8,7 @@ packages=(
   qt6-base-dev libqt6opengl6-dev qt6-charts-dev qt6-tools-dev qt6-l10n-tools qt6-tools-dev-tools libcli11-dev
   libgl1-mesa-dev libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   xvfb xauth fonts-dejavu-core fonts-noto-cjk
+  poppler-utils  # pdftotext and pdfinfo read the PDF report back in its tests
   clang clang-format clang-tidy libclang-rt-14-dev
   linuxcnc-uspace  # rs274, LinuxCNC's stand-alone interpreter, checks the generated programs (about 3 min to install)
 )

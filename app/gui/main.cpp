@@ -2,10 +2,12 @@
 //
 //   probecycle [SCENARIO.json]
 //   probecycle --screenshot FILE.png [--scenario FILE.json] [--size WxH] [--language CODE]
+//   probecycle --report-pdf FILE.pdf [--scenario FILE.json] [--tab NAME] [--language CODE]
 //   probecycle --time-startup        prints the ms from main() to the first painted window
 //
-// --screenshot renders the window offscreen to a PNG and exits; without a
-// display it selects the offscreen platform itself.
+// --screenshot renders the window offscreen to a PNG and exits, --report-pdf
+// writes the PDF report of a tab (File > Export PDF Report) and exits; without
+// a display they select the offscreen platform themselves.
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -48,6 +50,7 @@ bool has_flag(int argc, char** argv, const char* flag) {
 // when the program should stop.
 bool choose_platform(int argc, char** argv) {
     const bool headless_mode = has_flag(argc, argv, "--screenshot") ||
+                               has_flag(argc, argv, "--report-pdf") ||
                                has_flag(argc, argv, "--time-startup") ||
                                has_flag(argc, argv, "--help") || has_flag(argc, argv, "-h") ||
                                has_flag(argc, argv, "--version") || has_flag(argc, argv, "-v");
@@ -125,9 +128,9 @@ int main(int argc, char** argv) {
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
                                         QStringLiteral("Render the window to a PNG and exit."),
                                         QStringLiteral("FILE"));
-    const QCommandLineOption scenario(QStringLiteral("scenario"),
-                                      QStringLiteral("Scenario JSON for --screenshot."),
-                                      QStringLiteral("FILE"));
+    const QCommandLineOption scenario(
+        QStringLiteral("scenario"),
+        QStringLiteral("Scenario JSON for --screenshot and --report-pdf."), QStringLiteral("FILE"));
     const QCommandLineOption size(
         QStringLiteral("size"), QStringLiteral("Window size for --screenshot (default 1280x800)."),
         QStringLiteral("WxH"), QStringLiteral("1280x800"));
@@ -140,14 +143,21 @@ int main(int argc, char** argv) {
     const QCommandLineOption tab(
         QStringLiteral("tab"),
         QStringLiteral(
-            "Tab for --screenshot: cycle (default), calibration, latency or comparison."),
+            "Tab for --screenshot and --report-pdf: cycle (default), calibration, latency or "
+            "comparison."),
         QStringLiteral("NAME"), QStringLiteral("cycle"));
-    parser.addOptions({screenshot, scenario, size, language, time_startup, tab});
+    const QCommandLineOption report_pdf(
+        QStringLiteral("report-pdf"),
+        QStringLiteral("Write the PDF report of the tab (--tab) to FILE and exit; no display "
+                       "needed."),
+        QStringLiteral("FILE"));
+    parser.addOptions({screenshot, scenario, size, language, time_startup, tab, report_pdf});
     parser.addPositionalArgument(QStringLiteral("scenario"), QStringLiteral("Scenario to open."),
                                  QStringLiteral("[SCENARIO.json]"));
     parser.process(app);
 
-    const bool shooting = parser.isSet(screenshot);
+    const bool reporting = parser.isSet(report_pdf);
+    const bool shooting = parser.isSet(screenshot) || reporting;
     const bool timing = parser.isSet(time_startup);
     const bool interactive = !shooting && !timing;
     const QString language_code =
@@ -198,6 +208,13 @@ int main(int argc, char** argv) {
         QCoreApplication::processEvents();
         window.recompute_now();
         QCoreApplication::processEvents();
+        if (reporting) {
+            if (!window.export_pdf_report(parser.value(report_pdf))) {
+                std::fprintf(stderr, "probecycle: %s\n", qPrintable(window.last_error()));
+                return 2;
+            }
+            if (!parser.isSet(screenshot)) return 0;
+        }
         const QImage image = window.grab().toImage();
         QSaveFile out(parser.value(screenshot));
         if (!out.open(QIODevice::WriteOnly) || !image.save(&out, "PNG") || !out.commit()) {

@@ -1039,6 +1039,13 @@
     </message>
 </context>
 <context>
+    <name>PdfReport</name>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Страница %1 из %2</translation>
+    </message>
+</context>
+<context>
     <name>Phase</name>
     <message>
         <source>Approach</source>
@@ -2998,6 +3005,99 @@
         <source>Save as</source>
         <translation>Сохранить как</translation>
     </message>
+    <message>
+        <source>Export P&amp;DF Report…</source>
+        <translation>Экспорт отчёта в P&amp;DF…</translation>
+    </message>
+    <message>
+        <source>A4 pages to hand over: the current tab&apos;s results, charts, warnings with their fixes and the inputs, in the interface&apos;s language</source>
+        <translation>Страницы A4 для передачи: результаты текущей вкладки, графики, предупреждения с исправлениями и исходные данные, на языке интерфейса</translation>
+    </message>
+    <message>
+        <source>Export PDF report</source>
+        <translation>Экспорт отчёта в PDF</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>используется</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>не используется</translation>
+    </message>
+    <message>
+        <source>ProbeCycle report: %1</source>
+        <translation>Отчёт ProbeCycle: %1</translation>
+    </message>
+    <message>
+        <source>Figures computed by ProbeCycle %1 from a model of the machine, probe and cycle with the inputs listed in this report. They are estimates for setting up the cycle, not a calibration certificate.</source>
+        <translation>Значения рассчитаны ProbeCycle %1 по модели станка, щупа и цикла с исходными данными, приведёнными в этом отчёте. Это оценки для наладки цикла, а не свидетельство о калибровке.</translation>
+    </message>
+    <message>
+        <source>%1 · %2 · ProbeCycle %3</source>
+        <translation>%1 · %2 · ProbeCycle %3</translation>
+    </message>
+    <message>
+        <source>No results yet: %1</source>
+        <translation>Результатов пока нет: %1</translation>
+    </message>
+    <message>
+        <source>Results</source>
+        <translation>Результаты</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>Величина</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Значение</translation>
+    </message>
+    <message>
+        <source>Detail</source>
+        <translation>Подробности</translation>
+    </message>
+    <message>
+        <source>Warnings and what to change</source>
+        <translation>Предупреждения и что изменить</translation>
+    </message>
+    <message>
+        <source>No warnings: the cycle runs as set.</source>
+        <translation>Предупреждений нет: цикл выполняется как задан.</translation>
+    </message>
+    <message>
+        <source>The scenario</source>
+        <translation>Сценарий</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Параметр</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Ключ</translation>
+    </message>
+    <message>
+        <source>Could not export the PDF report</source>
+        <translation>Не удалось экспортировать отчёт в PDF</translation>
+    </message>
+    <message>
+        <source>PDF report written to %1</source>
+        <translation>Отчёт PDF записан в %1</translation>
+    </message>
+    <message>
+        <source>One-click fix: %1</source>
+        <translation>Исправление одним щелчком: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the severity (Error, Warning, Note), %2 the warning&apos;s title</extracomment>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>
@@ -3283,6 +3383,18 @@
     <message>
         <source>Drop feed to %1</source>
         <translation>Снизить подачу до %1</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Ошибка</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Предупреждение</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Примечание</translation>
     </message>
 </context>
 </TS>

@@ -1039,6 +1039,13 @@
     </message>
 </context>
 <context>
+    <name>PdfReport</name>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>第 %1 页，共 %2 页</translation>
+    </message>
+</context>
+<context>
     <name>Phase</name>
     <message>
         <source>Approach</source>
@@ -2998,6 +3005,99 @@
         <source>Save as</source>
         <translation>另存为</translation>
     </message>
+    <message>
+        <source>Export P&amp;DF Report…</source>
+        <translation>导出 PDF 报告(&amp;D)…</translation>
+    </message>
+    <message>
+        <source>A4 pages to hand over: the current tab&apos;s results, charts, warnings with their fixes and the inputs, in the interface&apos;s language</source>
+        <translation>可交付的 A4 页面：当前选项卡的结果、图表、警告及其修正和输入参数，使用界面语言</translation>
+    </message>
+    <message>
+        <source>Export PDF report</source>
+        <translation>导出 PDF 报告</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <source>ProbeCycle report: %1</source>
+        <translation>ProbeCycle 报告：%1</translation>
+    </message>
+    <message>
+        <source>Figures computed by ProbeCycle %1 from a model of the machine, probe and cycle with the inputs listed in this report. They are estimates for setting up the cycle, not a calibration certificate.</source>
+        <translation>数值由 ProbeCycle %1 根据机床、测头和循环的模型及本报告所列输入计算得出。它们是用于设置循环的估计值，而非校准证书。</translation>
+    </message>
+    <message>
+        <source>%1 · %2 · ProbeCycle %3</source>
+        <translation>%1 · %2 · ProbeCycle %3</translation>
+    </message>
+    <message>
+        <source>No results yet: %1</source>
+        <translation>尚无结果：%1</translation>
+    </message>
+    <message>
+        <source>Results</source>
+        <translation>计算结果</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Detail</source>
+        <translation>详情</translation>
+    </message>
+    <message>
+        <source>Warnings and what to change</source>
+        <translation>警告及应做的更改</translation>
+    </message>
+    <message>
+        <source>No warnings: the cycle runs as set.</source>
+        <translation>无警告：循环按设置运行。</translation>
+    </message>
+    <message>
+        <source>The scenario</source>
+        <translation>场景</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>键</translation>
+    </message>
+    <message>
+        <source>Could not export the PDF report</source>
+        <translation>无法导出 PDF 报告</translation>
+    </message>
+    <message>
+        <source>PDF report written to %1</source>
+        <translation>PDF 报告已写入 %1</translation>
+    </message>
+    <message>
+        <source>One-click fix: %1</source>
+        <translation>一键修正：%1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the severity (Error, Warning, Note), %2 the warning&apos;s title</extracomment>
+        <translation>%1：%2</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>
@@ -3283,6 +3383,18 @@
     <message>
         <source>Drop feed to %1</source>
         <translation>将进给率降至 %1</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>警示</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>提示</translation>
     </message>
 </context>
 </TS>

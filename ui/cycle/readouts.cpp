@@ -284,6 +284,10 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
     }
 }
 
+QString Readouts::title_text(Readout readout) const {
+    return cards_[static_cast<std::size_t>(readout)].title->text();
+}
+
 QString Readouts::value_text(Readout readout) const {
     return cards_[static_cast<std::size_t>(readout)].value->text();
 }

@@ -35,6 +35,7 @@ class Readouts : public QWidget {
 
     void show_result(const Computed& computed, const Computed* baseline);
 
+    QString title_text(Readout readout) const;
     QString value_text(Readout readout) const;
     // The lines under the value: context, and the difference from the baseline.
     QString detail_text(Readout readout) const;

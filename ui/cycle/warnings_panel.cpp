@@ -192,6 +192,19 @@ QStringList WarningsPanel::texts() const {
     return out;
 }
 
+QList<QStringList> WarningsPanel::rows_text() const {
+    QList<QStringList> out;
+    for (std::size_t i = 0; i < shown_; ++i) {
+        const Row& r = rows_[i];
+        const QString severity = r.severity == static_cast<int>(Severity::error)     ? tr("Error")
+                                 : r.severity == static_cast<int>(Severity::warning) ? tr("Warning")
+                                                                                     : tr("Note");
+        out.append({severity, r.title->text(), r.text->text(),
+                    r.fix.has_value() ? r.button->text() : QString()});
+    }
+    return out;
+}
+
 std::optional<Fix> WarningsPanel::fix_for(const QString& code) const {
     for (std::size_t i = 0; i < shown_; ++i) {
         if (rows_[i].code == code) return rows_[i].fix;

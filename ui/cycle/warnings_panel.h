@@ -4,6 +4,7 @@
 // one-click fix where the core has one that clears it (core/cycle/fixes.h).
 // Problems that make the scenario invalid are listed too.
 
+#include <QList>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
@@ -32,6 +33,9 @@ class WarningsPanel : public QWidget {
     // for the second touch's; "invalid:<key>" for field errors).
     QStringList codes() const;
     QStringList texts() const;
+    // Each shown row as the user reads it: severity, title, text and the fix
+    // button's words (empty without a fix), for the PDF report.
+    QList<QStringList> rows_text() const;
     // The fix offered for a shown code, nullopt if none.
     std::optional<Fix> fix_for(const QString& code) const;
     // Shown problems by severity, for the panel's title.

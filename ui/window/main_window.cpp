@@ -305,6 +305,9 @@ void MainWindow::build_actions() {
     export_png_ = new QAction(icon(QStyle::SP_DesktopIcon), {}, this);
     export_png_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
     connect(export_png_, &QAction::triggered, this, &MainWindow::export_png_dialog);
+    export_pdf_ = new QAction(icon(QStyle::SP_FileIcon), {}, this);
+    export_pdf_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    connect(export_pdf_, &QAction::triggered, this, &MainWindow::export_pdf_dialog);
     quit_ = new QAction(this);
     quit_->setShortcut(QKeySequence::Quit);
     quit_->setMenuRole(QAction::QuitRole);
@@ -385,6 +388,7 @@ void MainWindow::build_menus() {
     file_menu_->addSeparator();
     file_menu_->addAction(export_csv_);
     file_menu_->addAction(export_png_);
+    file_menu_->addAction(export_pdf_);
     file_menu_->addSeparator();
     file_menu_->addAction(quit_);
 
@@ -455,6 +459,10 @@ void MainWindow::retranslate() {
            "command-line tool writes"));
     export_png_->setText(tr("Export Charts as &PNG…"));
     export_png_->setToolTip(tr("Save the four charts as one PNG image"));
+    export_pdf_->setText(tr("Export P&DF Report…"));
+    export_pdf_->setToolTip(
+        tr("A4 pages to hand over: the current tab's results, charts, warnings with their fixes "
+           "and the inputs, in the interface's language"));
     quit_->setText(tr("&Quit"));
     update_undo_texts();
     pin_->setText(tr("&Pin Baseline"));
@@ -1084,6 +1092,15 @@ void MainWindow::export_csv_dialog() {
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".csv");
     export_csv_report(path);
+}
+
+void MainWindow::export_pdf_dialog() {
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Export PDF report"), dialog_start(QStringLiteral("probecycle-report.pdf")),
+        tr("PDF (*.pdf)"));
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".pdf");
+    export_pdf_report(path);
 }
 
 void MainWindow::export_png_dialog() {

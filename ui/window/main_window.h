@@ -8,6 +8,7 @@
 // The public functions below the constructor are the window's behaviour as
 // tests, the benchmark and `--screenshot` drive it.
 
+#include <QByteArray>
 #include <QImage>
 #include <QList>
 #include <QMainWindow>
@@ -100,6 +101,10 @@ class MainWindow : public QMainWindow {
     // The current tab's charts at `width` pixels under a title line (issue 12).
     bool export_charts_png(const QString& path, int width = 1920);
     QImage export_image(int width);
+    // The report to hand over (issue 14), of the current tab: A4 pages in the
+    // interface's language (main_window_pdf.cpp). Written atomically.
+    bool export_pdf_report(const QString& path);
+    QByteArray pdf_report_bytes();
     // A preset from resources/ (":/presets/..."): its machine or probe section
     // replaces the current one, as an undoable edit.
     bool apply_preset(const QString& resource_path);
@@ -194,6 +199,7 @@ class MainWindow : public QMainWindow {
     bool save_as_dialog(bool as_project);
     void export_csv_dialog();
     void export_png_dialog();
+    void export_pdf_dialog();
 
     MainWindowOptions options_;
     QStringList last_preset_changes_;
@@ -244,6 +250,7 @@ class MainWindow : public QMainWindow {
     QAction* save_as_{nullptr};
     QAction* export_csv_{nullptr};
     QAction* export_png_{nullptr};
+    QAction* export_pdf_{nullptr};
     QAction* quit_{nullptr};
     QAction* undo_action_{nullptr};
     QAction* redo_action_{nullptr};

@@ -1,0 +1,200 @@
+// The PDF report to hand over (issue 14): MainWindow::export_pdf_report and
+// what each tab puts in it.
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QTabWidget>
+#include <QTemporaryDir>
+
+#include "ui/common/file_write.h"
+#include "ui/common/parameter_info.h"
+#include "ui/common/pdf_report.h"
+#include "ui/common/text_format.h"
+#include "ui/comparison/comparison_tab.h"
+#include "ui/lab/calibration_tab.h"
+#include "ui/lab/latency_tab.h"
+#include "ui/window/main_window.h"
+
+namespace probecycle::ui {
+
+namespace {
+
+// Width of the charts' picture in the PDF, in pixels.
+constexpr int kChartsWidth = 1600;
+
+// One CSV line's fields (RFC 4180 quoting, as the reports write them).
+QStringList csv_fields(const QString& line) {
+    QStringList fields;
+    QString field;
+    bool quoted = false;
+    for (qsizetype i = 0; i < line.size(); ++i) {
+        const QChar c = line[i];
+        if (quoted) {
+            if (c == QLatin1Char('"') && i + 1 < line.size() && line[i + 1] == QLatin1Char('"')) {
+                field += c;
+                ++i;
+            } else if (c == QLatin1Char('"')) {
+                quoted = false;
+            } else {
+                field += c;
+            }
+        } else if (c == QLatin1Char('"')) {
+            quoted = true;
+        } else if (c == QLatin1Char(',')) {
+            fields.append(field);
+            field.clear();
+        } else {
+            field += c;
+        }
+    }
+    fields.append(field);
+    return fields;
+}
+
+// A tab's CSV report as the PDF's tables: a "# name" line heads a section, a
+// "# key,value" line is a paragraph, the rows up to a blank line a table.
+void add_csv(PdfReport& report, const QString& csv) {
+    QList<QStringList> rows;
+    const auto flush = [&] {
+        report.add_table(rows);
+        rows.clear();
+    };
+    for (const QString& line : csv.split(QLatin1Char('\n'))) {
+        if (line.trimmed().isEmpty()) {
+            flush();
+        } else if (line.startsWith(QLatin1Char('#'))) {
+            flush();
+            const QString text = line.mid(1).trimmed();
+            if (text.contains(QLatin1Char(','))) {
+                report.add_paragraph(csv_fields(text).join(QStringLiteral(": ")));
+            } else {
+                report.add_heading(text);
+            }
+        } else {
+            rows.append(csv_fields(line));
+        }
+    }
+    flush();
+}
+
+// A scenario key's value as the editors show it (unit, digits, the word
+// for 0 where 0 means something).
+QString shown_value(const Scenario& scenario, const KeyInfo& key) {
+    if (key.kind == KeyKind::number) {
+        const ParameterView view = parameter_view(key);
+        const double value = get_number(scenario, key.key).value_or(0.0);
+        if (value == 0.0 && !view.zero_text.isEmpty()) return view.zero_text;
+        return with_unit(format_number(value * view.factor, view.decimals), view.unit);
+    }
+    const std::string word = value_text(scenario, key);
+    const std::string_view name = key.key;
+    if (key.kind == KeyKind::flag) {
+        return word == "true" ? MainWindow::tr("yes") : MainWindow::tr("no");
+    }
+    if (name == "machine.accel_model") return accel_model_label(scenario.machine.accel_model);
+    if (name == "machine.filter") return filter_label(scenario.machine.filter);
+    if (name == "cycle.strategy") return strategy_label(scenario.cycle.strategy);
+    if (name == "cycle.backoff_from") return backoff_from_label(scenario.cycle.backoff_from);
+    if (name == "cycle.feature") return feature_label(scenario.cycle.feature);
+    return QString::fromStdString(word);
+}
+
+}  // namespace
+
+QByteArray MainWindow::pdf_report_bytes() {
+    recompute_now();
+    const QString name =
+        current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();
+    QWidget* tab = tabs_->currentWidget();
+    // The tab's name without the count of problems the tab bar adds.
+    const QString tab_name = tabs_->tabText(tabs_->currentIndex())
+                                 .remove(QRegularExpression(QStringLiteral("\\s*[(（]\\d+[)）]$")))
+                                 .remove(QLatin1Char('&'));
+    PdfReport report(tr("ProbeCycle report: %1").arg(name));
+    report.set_footer(
+        tr("Figures computed by ProbeCycle %1 from a model of the machine, probe and cycle with "
+           "the inputs listed in this report. They are estimates for setting up the cycle, not "
+           "a calibration certificate.")
+            .arg(QCoreApplication::applicationVersion()));
+    report.add_paragraph(tr("%1 · %2 · ProbeCycle %3")
+                             .arg(tab_name, QString::fromStdString(report_date()),
+                                  QCoreApplication::applicationVersion()));
+
+    if (tab == calibration_tab_ || tab == latency_tab_ || tab == comparison_tab_) {
+        // The tab as the user sees it, then its CSV report's figures.
+        report.add_image(export_image(kChartsWidth));
+        QTemporaryDir dir;
+        const QString path = dir.path() + QStringLiteral("/report.csv");
+        const bool written = tab == calibration_tab_ ? calibration_tab_->export_report(path)
+                             : tab == latency_tab_   ? latency_tab_->export_report(path)
+                                                     : comparison_tab_->export_report(path);
+        QFile file(path);
+        if (written && file.open(QIODevice::ReadOnly)) {
+            report.add_page_break();
+            add_csv(report, QString::fromUtf8(file.readAll()));
+        } else {
+            report.add_paragraph(tr("No results yet: %1")
+                                     .arg(tab == calibration_tab_ ? calibration_tab_->last_error()
+                                          : tab == latency_tab_   ? latency_tab_->last_error()
+                                                                  : comparison_tab_->last_error()));
+        }
+        return report.render();
+    }
+
+    // The cycle: results, charts, what to change, the scenario.
+    report.add_heading(tr("Results"));
+    QList<QStringList> results = {{tr("Quantity"), tr("Value"), tr("Detail")}};
+    for (std::size_t i = 0; i < kReadoutCount; ++i) {
+        const auto readout = static_cast<Readout>(i);
+        results.append({readouts_->title_text(readout), readouts_->value_text(readout),
+                        readouts_->detail_text(readout)});
+    }
+    report.add_table(results);
+    report.add_image(export_image(kChartsWidth));
+
+    report.add_heading(tr("Warnings and what to change"));
+    const QList<QStringList> warnings = warnings_->rows_text();
+    if (warnings.isEmpty()) report.add_paragraph(tr("No warnings: the cycle runs as set."));
+    for (const QStringList& row : warnings) {
+        // "Error: Backoff too small", the message, and the window's fix.
+        QString text = row[2];
+        if (!row[3].isEmpty()) text += QLatin1Char('\n') + tr("One-click fix: %1").arg(row[3]);
+        //: %1 the severity (Error, Warning, Note), %2 the warning's title
+        report.add_item(tr("%1: %2").arg(row[0], row[1]), text);
+    }
+
+    report.add_page_break();
+    report.add_heading(tr("The scenario"));
+    for (const std::string& section : scenario_sections()) {
+        const QString section_name = QString::fromStdString(section);
+        report.add_paragraph(section_label(section_name));
+        QList<QStringList> rows = {{tr("Parameter"), tr("Value"), tr("Key")}};
+        for (const KeyInfo& key : scenario_keys()) {
+            if (section_of(key.key) != section_name) continue;
+            rows.append({QCoreApplication::translate("Parameter", key.label),
+                         shown_value(scenario_, key), QString::fromUtf8(key.key)});
+        }
+        report.add_table(rows);
+    }
+    return report.render();
+}
+
+bool MainWindow::export_pdf_report(const QString& path) {
+    const QByteArray pdf = pdf_report_bytes();
+    QString error;
+    if (!write_file(path, pdf, error)) {
+        report_error(QT_TR_NOOP("Could not export the PDF report"),
+                     tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
+        return false;
+    }
+    remember_folder_of(path);
+    show_status(
+        [path] { return tr("PDF report written to %1").arg(QDir::toNativeSeparators(path)); },
+        4000);
+    return true;
+}
+
+}  // namespace probecycle::ui
