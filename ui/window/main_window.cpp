@@ -912,7 +912,7 @@ ReportHeader MainWindow::report_header() const {
 // comparison tab), drawn at `width` pixels (the widgets are vector-drawn, so
 // no upscaled pixels), under a title line naming the scenario, the tab, the
 // date and the program version.
-QImage MainWindow::export_image(int width) {
+QImage MainWindow::export_image(int width, bool titled) {
     recompute_now();
     QWidget* source =
         tabs_->currentIndex() == 0 ? static_cast<QWidget*>(charts_) : tabs_->currentWidget();
@@ -921,6 +921,7 @@ QImage MainWindow::export_image(int width) {
     content.setDevicePixelRatio(scale);
     content.fill(palette().color(QPalette::Window));
     source->render(&content);
+    if (!titled) return content.toImage();
 
     const QString name =
         current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();

@@ -100,7 +100,8 @@ class MainWindow : public QMainWindow {
     ReportHeader report_header() const;
     // The current tab's charts at `width` pixels under a title line (issue 12).
     bool export_charts_png(const QString& path, int width = 1920);
-    QImage export_image(int width);
+    // `titled`: under the title line (the PNG export); the PDF report has its own.
+    QImage export_image(int width, bool titled = true);
     // The report to hand over (issue 14), of the current tab: A4 pages in the
     // interface's language (main_window_pdf.cpp). Written atomically.
     bool export_pdf_report(const QString& path);

@@ -125,7 +125,7 @@ QByteArray MainWindow::pdf_report_bytes() {
 
     if (tab == calibration_tab_ || tab == latency_tab_ || tab == comparison_tab_) {
         // The tab as the user sees it, then its CSV report's figures.
-        report.add_image(export_image(kChartsWidth));
+        report.add_image(export_image(kChartsWidth, false));
         QTemporaryDir dir;
         const QString path = dir.path() + QStringLiteral("/report.csv");
         const bool written = tab == calibration_tab_ ? calibration_tab_->export_report(path)
@@ -153,7 +153,7 @@ QByteArray MainWindow::pdf_report_bytes() {
                         readouts_->detail_text(readout)});
     }
     report.add_table(results);
-    report.add_image(export_image(kChartsWidth));
+    report.add_image(export_image(kChartsWidth, false));
 
     report.add_heading(tr("Warnings and what to change"));
     const QList<QStringList> warnings = warnings_->rows_text();
