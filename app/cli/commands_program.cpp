@@ -94,7 +94,7 @@ void add_delay(CLI::App& program) {
         ProgramArgs common;
         std::string axis{"Z-"};
         std::vector<std::string> feeds;
-        IntegerArg repeats{1, kMaxRepeats};
+        IntegerArg repeats{1, kMaxPlanRepeats};
         NumberArg margin{0.0, 100.0};
         NumberArg placement{0.1, kMaxPlanDistance_mm};
     };

@@ -143,8 +143,8 @@ int main(int argc, char** argv) {
     const QCommandLineOption tab(
         QStringLiteral("tab"),
         QStringLiteral(
-            "Tab for --screenshot and --report-pdf: cycle (default), calibration, latency or "
-            "comparison."),
+            "Tab for --screenshot and --report-pdf: cycle (default), calibration, latency, "
+            "comparison or optimise."),
         QStringLiteral("NAME"), QStringLiteral("cycle"));
     const QCommandLineOption report_pdf(
         QStringLiteral("report-pdf"),
@@ -190,7 +190,8 @@ int main(int argc, char** argv) {
         // Issue 12: any tab can be looked at offscreen. The order is the
         // window's (main_window.cpp, build_ui).
         const QStringList tab_names = {QStringLiteral("cycle"), QStringLiteral("calibration"),
-                                       QStringLiteral("latency"), QStringLiteral("comparison")};
+                                       QStringLiteral("latency"), QStringLiteral("comparison"),
+                                       QStringLiteral("optimise")};
         const qsizetype tab_index = tab_names.indexOf(parser.value(tab));
         if (tab_index < 0) {
             std::fprintf(stderr, "probecycle: --tab: got '%s'; allowed: %s\n",

@@ -260,7 +260,7 @@ ProbingPlan make_delay_plan(const Scenario& scenario, const DelayPlanOptions& op
     for (double feed : feeds) {
         check_range(feed, kMinPlanFeed_mm_min, kMaxPlanFeed_mm_min, "feeds", "mm/min");
     }
-    check_range(options.repeats, 1, kMaxRepeats, "repeats", "");
+    check_range(options.repeats, 1, kMaxPlanRepeats, "repeats", "");
     check_range(options.margin_mm, 0.0, 100.0, "margin_mm", "mm");
     check_range(options.placement_mm, 0.1, kMaxPlanDistance_mm, "placement_mm", "mm");
     ProbingPlan plan;

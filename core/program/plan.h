@@ -71,7 +71,7 @@ std::string to_string(const AxisDirection& group);
 constexpr double kMinPlanFeed_mm_min = 1.0;
 constexpr double kMaxPlanFeed_mm_min = 100000.0;
 constexpr double kMaxPlanDistance_mm = 1000.0;
-constexpr int kMaxRepeats = 100;
+constexpr int kMaxPlanRepeats = 100;
 constexpr std::size_t kMaxPlanSteps = 20000;
 constexpr std::size_t kMaxPlanFeeds = 20;
 constexpr std::size_t kMaxPauseTextChars = 200;

@@ -156,7 +156,7 @@ void ProgramDialog::build_delay_options(QFormLayout* form) {
     feeds_->setObjectName(QStringLiteral("program-feeds"));
     repeats_ = new QSpinBox(this);
     repeats_->setObjectName(QStringLiteral("program-repeats"));
-    repeats_->setRange(1, kMaxRepeats);
+    repeats_->setRange(1, kMaxPlanRepeats);
     repeats_->setValue(defaults.repeats);
     repeats_->setKeyboardTracking(false);
     margin_ = new UnitSpinBox(0.0, 100.0, 3, defaults.margin_mm, this);

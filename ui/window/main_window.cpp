@@ -41,6 +41,7 @@
 #include "ui/common/text_format.h"
 #include "ui/comparison/comparison_tab.h"
 #include "ui/cycle/cycle_charts.h"
+#include "ui/cycle/optimise_panel.h"
 #include "ui/cycle/parameter_panel.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
@@ -270,6 +271,25 @@ void MainWindow::build_ui() {
     tabs_->addTab(latency_tab_, QString());
     comparison_tab_ = new ComparisonTab;
     tabs_->addTab(comparison_tab_, QString());
+    // Issue 14: "What should I change?"
+    optimise_ = new OptimisePanel;
+    tabs_->addTab(optimise_, QString());
+    connect(optimise_, &OptimisePanel::requirement_edited, this,
+            [this](const QString& key, double value) {
+                Scenario s = scenario_;
+                if (!set_number(s, key.toStdString(), value)) return;
+                on_panel_edit(s, key);
+            });
+    connect(optimise_, &OptimisePanel::options_changed, this, &MainWindow::refresh_optimise);
+    connect(optimise_, &OptimisePanel::apply_requested, this, [this](const Scenario& best) {
+        edit_scenario(best, [] { return tr("apply the best settings"); });
+    });
+    connect(tabs_, &QTabWidget::currentChanged, this, [this] {
+        if (tabs_->currentWidget() == optimise_ && optimise_stale_) {
+            recompute_now();
+            refresh_optimise();
+        }
+    });
     setCentralWidget(tabs_);
     // The title's "*" counts the lab in a project: looked at when the user
     // moves between tabs and when a fit changes (the question on leaving
@@ -439,6 +459,7 @@ void MainWindow::build_menus() {
     toolbar->addSeparator();
     toolbar->addAction(export_csv_);
     toolbar->addAction(export_png_);
+    toolbar->addAction(export_pdf_);
 }
 
 void MainWindow::retranslate() {
@@ -446,6 +467,7 @@ void MainWindow::retranslate() {
     tabs_->setTabText(1, tr("Calibration"));
     tabs_->setTabText(2, tr("Latency"));
     tabs_->setTabText(3, tr("Comparison"));
+    tabs_->setTabText(4, tr("Optimise"));
     new_->setText(tr("&New"));
     new_->setToolTip(tr("Start from the default scenario (typical values)"));
     open_->setText(tr("&Open…"));
@@ -690,6 +712,20 @@ void MainWindow::edit_scenario(const Scenario& scenario, std::function<QString()
                                     scenario, std::move(describe)));
 }
 
+void MainWindow::refresh_optimise() {
+    optimise_stale_ = false;
+    // The optimiser assumes a scenario that validates; the warnings panel
+    // says what is wrong with one that does not.
+    if (!validate(scenario_).empty()) return;
+    optimise_->show_scenario(scenario_);
+}
+
+OptimisePanel* MainWindow::optimise_panel() {
+    recompute_now();
+    if (optimise_stale_) refresh_optimise();
+    return optimise_;
+}
+
 void MainWindow::schedule_recompute() {
     if (!recompute_timer_.isActive()) recompute_timer_.start();
 }
@@ -707,6 +743,8 @@ void MainWindow::recompute() {
     charts_->show_result(c);
     readouts_->show_result(c, baseline);
     warnings_->show_result(c);
+    optimise_stale_ = true;
+    if (tabs_ != nullptr && tabs_->currentWidget() == optimise_) refresh_optimise();
     ++recompute_count_;
     emit recomputed();
 }

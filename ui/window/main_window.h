@@ -40,6 +40,7 @@ namespace probecycle::ui {
 class CalibrationTab;
 class HelpGuide;
 class CycleCharts;
+class OptimisePanel;
 class LatencyTab;
 class ComparisonTab;
 class ParameterPanel;
@@ -121,6 +122,8 @@ class MainWindow : public QMainWindow {
     bool pin_baseline_of(const Scenario& scenario);
     void clear_baseline();
     bool has_baseline() const { return baseline_.has_value(); }
+    // The Optimise tab (issue 14), optimised for the current scenario.
+    OptimisePanel* optimise_panel();
 
     // Help > Guide (F1): the in-window guide, one window, shown and raised.
     HelpGuide* show_guide();
@@ -177,6 +180,8 @@ class MainWindow : public QMainWindow {
     void remember_recent(const QString& path);
     void update_title();
     void update_warning_counts();
+    // Optimises the current scenario into the Optimise tab (when it is valid).
+    void refresh_optimise();
     void update_undo_texts();
     void update_recent_menu();
 
@@ -233,6 +238,11 @@ class MainWindow : public QMainWindow {
     CalibrationTab* calibration_tab_{nullptr};
     LatencyTab* latency_tab_{nullptr};
     ComparisonTab* comparison_tab_{nullptr};
+    // Issue 14: optimised when its tab is shown, again on every change while
+    // it is; marked stale otherwise (the optimiser costs far more than a
+    // recompute).
+    OptimisePanel* optimise_{nullptr};
+    bool optimise_stale_{true};
     QSplitter* right_splitter_{nullptr};
 
     QMenu* file_menu_{nullptr};

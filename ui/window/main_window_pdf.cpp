@@ -14,6 +14,7 @@
 #include "ui/common/pdf_report.h"
 #include "ui/common/text_format.h"
 #include "ui/comparison/comparison_tab.h"
+#include "ui/cycle/optimise_panel.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
 #include "ui/window/main_window.h"
@@ -164,6 +165,22 @@ QByteArray MainWindow::pdf_report_bytes() {
         if (!row[3].isEmpty()) text += QLatin1Char('\n') + tr("One-click fix: %1").arg(row[3]);
         //: %1 the severity (Error, Warning, Note), %2 the warning's title
         report.add_item(tr("%1: %2").arg(row[0], row[1]), text);
+    }
+
+    // Issue 14: the fastest settings that meet the requirements, and their worth.
+    report.add_heading(tr("The optimiser's recommendation"));
+    const OptimisePanel* optimiser = optimise_panel();
+    if (optimiser->result()) {
+        report.add_paragraph(optimiser->saved_text());
+        report.add_table(optimiser->table_rows());
+        for (const QString& text : {optimiser->binding_text(), optimiser->savings_text()}) {
+            if (!text.isEmpty()) report.add_paragraph(text);
+        }
+        for (const QString& advice : optimiser->advice_texts()) report.add_paragraph(advice);
+    } else {
+        report.add_paragraph(optimiser->problem().isEmpty()
+                                 ? tr("The scenario is not valid; see the warnings.")
+                                 : optimiser->problem());
     }
 
     report.add_page_break();
