@@ -554,7 +554,8 @@ Message impossible_message(Optimiser& optimiser, const Scenario& scenario, doubl
             "overtravel_fraction", "Optimise",
             QT_TRANSLATE_NOOP("Optimise",
                               "no setting meets the requirements: the overtravel must stay at "
-                              "or under %1 of the probe's limit %2, and even at %3 it is %4"));
+                              "or under %1 of the probe's limit %2 (probe.overtravel_limit_mm), "
+                              "and even at %3 it is %4"));
         m.args = {arg("fraction", ArgKind::percent, 100.0 * fraction),
                   arg("limit_mm", ArgKind::length_mm, scenario.probe.overtravel_limit_mm),
                   arg("feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min),
@@ -579,12 +580,18 @@ Message impossible_message(Optimiser& optimiser, const Scenario& scenario, doubl
     }
     const double smallest = s.smallest_uncertainty_mm();
     if (smallest > bound_mm * (1.0 + kUncertaintyRelTolerance)) {
+        const bool target = uncertainty_requirement(scenario) == Requirement::target_uncertainty;
         Message m = make_message(
             to_string(uncertainty_requirement(scenario)), "Optimise",
-            QT_TRANSLATE_NOOP("Optimise",
-                              "no setting meets the uncertainty requirement %1: the smallest "
-                              "achievable is %2 (at %3 with %4 repeats; the probe's "
-                              "repeatability is %5)"));
+            target ? QT_TRANSLATE_NOOP("Optimise",
+                                       "no setting meets the target uncertainty %1 "
+                                       "(cycle.target_uncertainty_mm): the smallest achievable "
+                                       "is %2, at %3 with %4 repeats (the probe's repeatability "
+                                       "is %5)")
+                   : QT_TRANSLATE_NOOP("Optimise",
+                                       "no setting meets the current uncertainty %1: the "
+                                       "smallest achievable is %2, at %3 with %4 repeats (the "
+                                       "probe's repeatability is %5)"));
         m.args = {significant_arg("bound_mm", ArgKind::length_mm, bound_mm, 4),
                   significant_arg("smallest_mm", ArgKind::length_mm, smallest, 4),
                   arg("feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min),
@@ -613,10 +620,14 @@ Core fastest_rounded(Optimiser& optimiser, const Scenario& scenario, double boun
     return {*best, *outcome};
 }
 
-// Within one feed step of a bound: the setting sits on it.
+// The setting sits on a feed bound: within 0.2 % or two feed steps of it.
+// Not exactly on it: the backoff (1 um) and the start distance (0.01 mm)
+// are rounded up, so the time is a fine staircase in the feed and the
+// fastest feed can be a step or two under the bound it presses against.
 bool on_bound(double feed_mm_min, double bound_mm_min) {
     return std::isfinite(bound_mm_min) &&
-           feed_mm_min + feed_step_mm_min(feed_mm_min) > bound_mm_min - 1e-9;
+           feed_mm_min + std::max(0.002 * bound_mm_min, 2.0 * feed_step_mm_min(feed_mm_min)) >
+               bound_mm_min;
 }
 
 }  // namespace
@@ -749,8 +760,12 @@ std::vector<Requirement> binding_requirements(Optimiser& optimiser, const Scenar
                                scenario.probe.max_feed_mm_min <= scenario.machine.rapid_feed_mm_min;
         binding.push_back(probe_cap ? Requirement::probe_max_feed : Requirement::machine_rapid);
     }
-    if (scenario.cycle.part_position_uncertainty_mm > 0.0 ||
-        on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()))
+    // The start rule binds where the part position uncertainty lengthens the
+    // start the best setting uses, or where a bore's size caps the feed.
+    if ((scenario.cycle.part_position_uncertainty_mm > 0.0 &&
+         b.approach_mm <= s.approach_min_mm(b.probe_feed_mm_min)) ||
+        (on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()) &&
+         s.start_feed_mm_min() < s.cap_mm_min()))
         binding.push_back(Requirement::start_distance);
     if (b.repeats == kMaxRepeats && std::isfinite(bound_mm))
         binding.push_back(Requirement::repeats_limit);
