@@ -420,8 +420,12 @@ class Optimiser {
     const Cell& unconstrained(Strategy strategy, int repeats) {
         const auto key = std::make_pair(static_cast<int>(strategy), repeats);
         auto it = unconstrained_.find(key);
-        if (it == unconstrained_.end())
-            it = unconstrained_.emplace(key, search_.cell(strategy, repeats, kInf)).first;
+        if (it == unconstrained_.end()) {
+            // A coarser grid for more repeats: their cells only bound the
+            // search from below and serve the Pareto front's slow end.
+            const int grid = repeats == 1 ? 24 : 12;
+            it = unconstrained_.emplace(key, search_.cell(strategy, repeats, kInf, grid)).first;
+        }
         return it->second;
     }
 
