@@ -587,15 +587,16 @@ Message impossible_message(Optimiser& optimiser, const Scenario& scenario, doubl
         const bool target = uncertainty_requirement(scenario) == Requirement::target_uncertainty;
         Message m = make_message(
             to_string(uncertainty_requirement(scenario)), "Optimise",
-            target ? QT_TRANSLATE_NOOP("Optimise",
-                                       "no setting meets the target uncertainty %1 "
-                                       "(cycle.target_uncertainty_mm): the smallest achievable "
-                                       "is %2, at %3 with %4 repeats (the probe's repeatability "
-                                       "is %5)")
-                   : QT_TRANSLATE_NOOP("Optimise",
-                                       "no setting meets the current uncertainty %1: the "
-                                       "smallest achievable is %2, at %3 with %4 repeats (the "
-                                       "probe's repeatability is %5)"));
+            target
+                ? QT_TRANSLATE_NOOP("Optimise",
+                                    "no setting meets the target uncertainty %1 "
+                                    "(cycle.target_uncertainty_mm): the smallest achievable "
+                                    "is %2, at %3 and cycle.repeats %4 (the probe's repeatability "
+                                    "is %5)")
+                : QT_TRANSLATE_NOOP("Optimise",
+                                    "no setting meets the current uncertainty %1: the "
+                                    "smallest achievable is %2, at %3 and cycle.repeats %4 (the "
+                                    "probe's repeatability is %5)"));
         m.args = {significant_arg("bound_mm", ArgKind::length_mm, bound_mm, 4),
                   significant_arg("smallest_mm", ArgKind::length_mm, smallest, 4),
                   arg("feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min),
