@@ -180,6 +180,7 @@ class Search {
     Search(const Scenario& scenario, const CycleModel& model, double max_overtravel_fraction)
         : base_(scenario),
           scratch_(scenario),
+          touch_(scenario),
           model_(model),
           overtravel_max_mm_(max_overtravel_fraction * scenario.probe.overtravel_limit_mm),
           cap_mm_min_(feed_cap_mm_min(scenario)),
@@ -245,6 +246,22 @@ class Search {
         return point_;
     }
 
+    // One single-touch surface from the start rule's distance: a touch's
+    // overtravel and uncertainty at a feed do not depend on the feature, and
+    // a bore's start may not fit the feed being tried.
+    const ModelPoint& evaluate_touch(int repeats, double feed_mm_min) {
+        Cycle& c = touch_.cycle;
+        c.strategy = Strategy::single_touch;
+        c.feature = Feature::surface;
+        c.repeats = repeats;
+        c.probe_feed_mm_min = feed_mm_min;
+        c.measure_feed_mm_min = feed_mm_min;
+        c.backoff_mm = 0.0;
+        c.approach_mm = approach_min_mm(feed_mm_min);
+        model_(touch_, point_);
+        return point_;
+    }
+
     // Cycle time of a setting at its best start distance, kInf when it
     // fails a requirement (start rule and feed caps are met by construction).
     double time_s(Strategy strategy, int repeats, double probe_feed_mm_min,
@@ -276,8 +293,7 @@ class Search {
         double guess = closed_form_measure_feed_bound(base_, repeats, bound_mm);
         if (guess == kInf) guess = cap_mm_min_;
         const auto meets = [&](double feed) {
-            const ModelPoint& p = evaluate(Strategy::single_touch, repeats, feed, feed,
-                                           std::min(approach_min_mm(feed), approach_max_mm_));
+            const ModelPoint& p = evaluate_touch(repeats, feed);
             return p.uncertainty_mm <= bound_mm * (1.0 + kUncertaintyRelTolerance);
         };
         const double hi = std::min(std::max(guess, kMinFeed_mm_min), cap_mm_min_);
@@ -339,9 +355,7 @@ class Search {
     // feed, the most repeats.
     double smallest_uncertainty_mm() {
         const double feed = kMinFeed_mm_min;
-        return evaluate(Strategy::single_touch, max_repeats(), feed, feed,
-                        std::min(approach_min_mm(feed), approach_max_mm_))
-            .uncertainty_mm;
+        return evaluate_touch(max_repeats(), feed).uncertainty_mm;
     }
 
   private:
@@ -350,9 +364,8 @@ class Search {
     // one is searched.
     bool detect_repeats_ignored() {
         const double feed = std::clamp(base_.cycle.probe_feed_mm_min, kMinFeed_mm_min, cap_mm_min_);
-        const double start = approach_min_mm(feed);
-        const ModelPoint one = evaluate(Strategy::single_touch, 1, feed, feed, start);
-        const ModelPoint two = evaluate(Strategy::single_touch, 2, feed, feed, start);
+        const ModelPoint one = evaluate_touch(1, feed);
+        const ModelPoint two = evaluate_touch(2, feed);
         return one.cycle_time_s == two.cycle_time_s && one.uncertainty_mm == two.uncertainty_mm;
     }
 
@@ -361,8 +374,7 @@ class Search {
     // cycle: overtravel grows with the feed. Under 1 mm/min when none does.
     double feed_bound_overtravel() {
         const auto ok = [&](double feed) {
-            const ModelPoint& p =
-                evaluate(Strategy::single_touch, 1, feed, feed, approach_min_mm(feed));
+            const ModelPoint& p = evaluate_touch(1, feed);
             return p.first_overtravel_mm <= overtravel_max_mm_ &&
                    p.first_overtravel_mm < base_.probe.overtravel_limit_mm;
         };
@@ -381,6 +393,7 @@ class Search {
 
     Scenario base_;
     Scenario scratch_;
+    Scenario touch_;
     const CycleModel& model_;
     ModelPoint point_;
     double overtravel_max_mm_;
@@ -552,8 +565,7 @@ Message impossible_message(Optimiser& optimiser, const Scenario& scenario, doubl
         return m;
     }
     if (s.overtravel_feed_mm_min() < kMinFeed_mm_min) {
-        const ModelPoint& p = s.evaluate(Strategy::single_touch, 1, kMinFeed_mm_min,
-                                         kMinFeed_mm_min, s.approach_min_mm(kMinFeed_mm_min));
+        const ModelPoint& p = s.evaluate_touch(1, kMinFeed_mm_min);
         Message m = make_message(
             "overtravel_fraction", "Optimise",
             QT_TRANSLATE_NOOP("Optimise",
