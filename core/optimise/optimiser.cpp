@@ -7,7 +7,6 @@
 #include <utility>
 
 #include "core/common/input_error.h"
-#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 namespace probecycle {
