@@ -13,6 +13,7 @@
 #include "core/cycle/cycle.h"
 #include "core/cycle/motion.h"
 #include "core/cycle/sweep.h"
+#include "core/optimise/optimiser.h"
 
 namespace {
 
@@ -117,6 +118,15 @@ void BM_Analyse(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(analyse(scenario));
 }
 
+// Issue 14: the optimiser on the bore with the defaults (no target: the
+// current uncertainty), everything the window shows: the best setting, the
+// binding requirements, the advice (a second optimisation with a latched
+// input) and the 20-point Pareto front.
+void BM_Optimise(benchmark::State& state) {
+    const Scenario scenario = two_touch_bore();
+    for (auto _ : state) benchmark::DoNotOptimize(optimise(scenario));
+}
+
 // The whole comparison pipeline (C-axis identification with its
 // uncertainty, three surface fits, every projection) on the simulator's
 // data: 16 x 12 = 192 and 115 x 87 = 10,005 plan points, jittered.
@@ -148,6 +158,7 @@ BENCHMARK(BM_Evaluate_Filtered);
 BENCHMARK(BM_Sweep1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Sweep1000_Filtered)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Analyse)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Optimise)->Unit(benchmark::kMillisecond);
 
 BENCHMARK(BM_Compare200)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Compare10000)->Unit(benchmark::kMillisecond);

@@ -19,5 +19,7 @@ void add_latency_commands(CLI::App& app);
 void add_compare_commands(CLI::App& app);
 // program delay|ring|cycle, import (commands_program.cpp)
 void add_program_commands(CLI::App& app);
+// optimise (commands_optimise.cpp)
+void add_optimise_commands(CLI::App& app);
 
 }  // namespace probecycle::cli

@@ -65,6 +65,7 @@ int run(int argc, char** argv) {
     app.footer(kFooter);
     app.require_subcommand(1);
     cli::add_cycle_commands(app);
+    cli::add_optimise_commands(app);
     cli::add_calibrate_commands(app);
     cli::add_latency_commands(app);
     cli::add_compare_commands(app);

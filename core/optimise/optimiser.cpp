@@ -7,7 +7,6 @@
 #include <utility>
 
 #include "core/common/input_error.h"
-#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 namespace probecycle {
@@ -180,6 +179,7 @@ class Search {
     Search(const Scenario& scenario, const CycleModel& model, double max_overtravel_fraction)
         : base_(scenario),
           scratch_(scenario),
+          touch_(scenario),
           model_(model),
           overtravel_max_mm_(max_overtravel_fraction * scenario.probe.overtravel_limit_mm),
           cap_mm_min_(feed_cap_mm_min(scenario)),
@@ -245,6 +245,22 @@ class Search {
         return point_;
     }
 
+    // One single-touch surface from the start rule's distance: a touch's
+    // overtravel and uncertainty at a feed do not depend on the feature, and
+    // a bore's start may not fit the feed being tried.
+    const ModelPoint& evaluate_touch(int repeats, double feed_mm_min) {
+        Cycle& c = touch_.cycle;
+        c.strategy = Strategy::single_touch;
+        c.feature = Feature::surface;
+        c.repeats = repeats;
+        c.probe_feed_mm_min = feed_mm_min;
+        c.measure_feed_mm_min = feed_mm_min;
+        c.backoff_mm = 0.0;
+        c.approach_mm = approach_min_mm(feed_mm_min);
+        model_(touch_, point_);
+        return point_;
+    }
+
     // Cycle time of a setting at its best start distance, kInf when it
     // fails a requirement (start rule and feed caps are met by construction).
     double time_s(Strategy strategy, int repeats, double probe_feed_mm_min,
@@ -276,8 +292,7 @@ class Search {
         double guess = closed_form_measure_feed_bound(base_, repeats, bound_mm);
         if (guess == kInf) guess = cap_mm_min_;
         const auto meets = [&](double feed) {
-            const ModelPoint& p = evaluate(Strategy::single_touch, repeats, feed, feed,
-                                           std::min(approach_min_mm(feed), approach_max_mm_));
+            const ModelPoint& p = evaluate_touch(repeats, feed);
             return p.uncertainty_mm <= bound_mm * (1.0 + kUncertaintyRelTolerance);
         };
         const double hi = std::min(std::max(guess, kMinFeed_mm_min), cap_mm_min_);
@@ -339,9 +354,7 @@ class Search {
     // feed, the most repeats.
     double smallest_uncertainty_mm() {
         const double feed = kMinFeed_mm_min;
-        return evaluate(Strategy::single_touch, max_repeats(), feed, feed,
-                        std::min(approach_min_mm(feed), approach_max_mm_))
-            .uncertainty_mm;
+        return evaluate_touch(max_repeats(), feed).uncertainty_mm;
     }
 
   private:
@@ -350,9 +363,8 @@ class Search {
     // one is searched.
     bool detect_repeats_ignored() {
         const double feed = std::clamp(base_.cycle.probe_feed_mm_min, kMinFeed_mm_min, cap_mm_min_);
-        const double start = approach_min_mm(feed);
-        const ModelPoint one = evaluate(Strategy::single_touch, 1, feed, feed, start);
-        const ModelPoint two = evaluate(Strategy::single_touch, 2, feed, feed, start);
+        const ModelPoint one = evaluate_touch(1, feed);
+        const ModelPoint two = evaluate_touch(2, feed);
         return one.cycle_time_s == two.cycle_time_s && one.uncertainty_mm == two.uncertainty_mm;
     }
 
@@ -361,8 +373,7 @@ class Search {
     // cycle: overtravel grows with the feed. Under 1 mm/min when none does.
     double feed_bound_overtravel() {
         const auto ok = [&](double feed) {
-            const ModelPoint& p =
-                evaluate(Strategy::single_touch, 1, feed, feed, approach_min_mm(feed));
+            const ModelPoint& p = evaluate_touch(1, feed);
             return p.first_overtravel_mm <= overtravel_max_mm_ &&
                    p.first_overtravel_mm < base_.probe.overtravel_limit_mm;
         };
@@ -381,6 +392,7 @@ class Search {
 
     Scenario base_;
     Scenario scratch_;
+    Scenario touch_;
     const CycleModel& model_;
     ModelPoint point_;
     double overtravel_max_mm_;
@@ -420,8 +432,12 @@ class Optimiser {
     const Cell& unconstrained(Strategy strategy, int repeats) {
         const auto key = std::make_pair(static_cast<int>(strategy), repeats);
         auto it = unconstrained_.find(key);
-        if (it == unconstrained_.end())
-            it = unconstrained_.emplace(key, search_.cell(strategy, repeats, kInf)).first;
+        if (it == unconstrained_.end()) {
+            // A coarser grid for more repeats: their cells only bound the
+            // search from below and serve the Pareto front's slow end.
+            const int grid = repeats == 1 ? 24 : 12;
+            it = unconstrained_.emplace(key, search_.cell(strategy, repeats, kInf, grid)).first;
+        }
         return it->second;
     }
 
@@ -548,13 +564,13 @@ Message impossible_message(Optimiser& optimiser, const Scenario& scenario, doubl
         return m;
     }
     if (s.overtravel_feed_mm_min() < kMinFeed_mm_min) {
-        const ModelPoint& p = s.evaluate(Strategy::single_touch, 1, kMinFeed_mm_min,
-                                         kMinFeed_mm_min, s.approach_min_mm(kMinFeed_mm_min));
+        const ModelPoint& p = s.evaluate_touch(1, kMinFeed_mm_min);
         Message m = make_message(
             "overtravel_fraction", "Optimise",
             QT_TRANSLATE_NOOP("Optimise",
                               "no setting meets the requirements: the overtravel must stay at "
-                              "or under %1 of the probe's limit %2, and even at %3 it is %4"));
+                              "or under %1 of the probe's limit %2 (probe.overtravel_limit_mm), "
+                              "and even at %3 it is %4"));
         m.args = {arg("fraction", ArgKind::percent, 100.0 * fraction),
                   arg("limit_mm", ArgKind::length_mm, scenario.probe.overtravel_limit_mm),
                   arg("feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min),
@@ -579,12 +595,19 @@ Message impossible_message(Optimiser& optimiser, const Scenario& scenario, doubl
     }
     const double smallest = s.smallest_uncertainty_mm();
     if (smallest > bound_mm * (1.0 + kUncertaintyRelTolerance)) {
+        const bool target = uncertainty_requirement(scenario) == Requirement::target_uncertainty;
         Message m = make_message(
             to_string(uncertainty_requirement(scenario)), "Optimise",
-            QT_TRANSLATE_NOOP("Optimise",
-                              "no setting meets the uncertainty requirement %1: the smallest "
-                              "achievable is %2 (at %3 with %4 repeats; the probe's "
-                              "repeatability is %5)"));
+            target
+                ? QT_TRANSLATE_NOOP("Optimise",
+                                    "no setting meets the target uncertainty %1 "
+                                    "(cycle.target_uncertainty_mm): the smallest achievable "
+                                    "is %2, at %3 and cycle.repeats %4 (the probe's repeatability "
+                                    "is %5)")
+                : QT_TRANSLATE_NOOP("Optimise",
+                                    "no setting meets the current uncertainty %1: the "
+                                    "smallest achievable is %2, at %3 and cycle.repeats %4 (the "
+                                    "probe's repeatability is %5)"));
         m.args = {significant_arg("bound_mm", ArgKind::length_mm, bound_mm, 4),
                   significant_arg("smallest_mm", ArgKind::length_mm, smallest, 4),
                   arg("feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min),
@@ -613,10 +636,14 @@ Core fastest_rounded(Optimiser& optimiser, const Scenario& scenario, double boun
     return {*best, *outcome};
 }
 
-// Within one feed step of a bound: the setting sits on it.
+// The setting sits on a feed bound: within 0.2 % or two feed steps of it.
+// Not exactly on it: the backoff (1 um) and the start distance (0.01 mm)
+// are rounded up, so the time is a fine staircase in the feed and the
+// fastest feed can be a step or two under the bound it presses against.
 bool on_bound(double feed_mm_min, double bound_mm_min) {
     return std::isfinite(bound_mm_min) &&
-           feed_mm_min + feed_step_mm_min(feed_mm_min) > bound_mm_min - 1e-9;
+           feed_mm_min + std::max(0.002 * bound_mm_min, 2.0 * feed_step_mm_min(feed_mm_min)) >
+               bound_mm_min;
 }
 
 }  // namespace
@@ -749,8 +776,12 @@ std::vector<Requirement> binding_requirements(Optimiser& optimiser, const Scenar
                                scenario.probe.max_feed_mm_min <= scenario.machine.rapid_feed_mm_min;
         binding.push_back(probe_cap ? Requirement::probe_max_feed : Requirement::machine_rapid);
     }
-    if (scenario.cycle.part_position_uncertainty_mm > 0.0 ||
-        on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()))
+    // The start rule binds where the part position uncertainty lengthens the
+    // start the best setting uses, or where a bore's size caps the feed.
+    if ((scenario.cycle.part_position_uncertainty_mm > 0.0 &&
+         b.approach_mm <= s.approach_min_mm(b.probe_feed_mm_min)) ||
+        (on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()) &&
+         s.start_feed_mm_min() < s.cap_mm_min()))
         binding.push_back(Requirement::start_distance);
     if (b.repeats == kMaxRepeats && std::isfinite(bound_mm))
         binding.push_back(Requirement::repeats_limit);

@@ -35,9 +35,11 @@ namespace probecycle {
 
 struct OptimiseRequirements {
     // Overtravel at or under this fraction of probe.overtravel_limit_mm
-    // (0.8: where evaluate() starts to warn). Allowed: over 0, at most 1.
+    // (0.8: where evaluate() starts to warn). Allowed: kMinOvertravelFraction
+    // to kMaxOvertravelFraction; optimise() refuses others (InputError).
     double max_overtravel_fraction{0.8};
-    // Points of the Pareto front (0: none).
+    // Uncertainty bounds of the Pareto front (0: no front); the CLI allows 1
+    // to kMaxParetoPoints.
     int pareto_points{20};
     // Advice (e.g. a latched input) costs an optimisation each; the window
     // may leave it out while a slider moves.

@@ -106,6 +106,7 @@ INSTANTIATE_TEST_SUITE_P(Cli, GoldenOutput, testing::Values(
     Golden{"report_default.csv",      "report"},
     Golden{"report_bore.csv",         "report ../../resources/examples/bore_two_touch.json"},
     Golden{"report_feature_bore.csv", "report --set cycle.feature=bore"},
+    Golden{"optimise_bore.json",      "optimise ../../resources/examples/bore_two_touch.json --set cycle.parts_per_year=50000 --set cycle.cycles_per_part=2 --set cycle.machine_rate_per_hour=80 --pareto-points 6"},
     Golden{"montecarlo.json",         "montecarlo --samples 2000 --seed 7 --bins 20"},
     Golden{"calibrate_ring.json",     "calibrate ring lab_ring.csv --gauge-diameter 50 --report REPORT"},
     Golden{"calibrate_length.json",   "calibrate length --surface-z 10 --trigger-z 112.3456 --trigger-z 112.3461 --active-length 0 --nominal-length 102.34"},

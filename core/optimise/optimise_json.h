@@ -1,0 +1,17 @@
+#pragma once
+
+// The optimiser's result as `probecycle-cli optimise` prints it (JSON).
+
+#include <string>
+
+#include "core/optimise/optimiser.h"
+
+namespace probecycle {
+
+// {"best", "current", "current_meets_requirements", "uncertainty_bound_mm",
+//  "saved_s", "binding", "advice", "savings", "pareto"}; a setting as
+// {"strategy", "probe_feed_mm_min", "measure_feed_mm_min", "backoff_mm",
+//  "approach_mm", "repeats", "cycle_time_s", "uncertainty_mm", "overtravel_mm"}.
+std::string optimise_to_json(const OptimiseResult& result);
+
+}  // namespace probecycle
