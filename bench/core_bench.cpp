@@ -126,6 +126,14 @@ void BM_Optimise(benchmark::State& state) {
     const Scenario scenario = two_touch_bore();
     for (auto _ : state) benchmark::DoNotOptimize(optimise(scenario));
 }
+// The same without the Pareto front and the advice: the best setting alone.
+void BM_Optimise_BestOnly(benchmark::State& state) {
+    const Scenario scenario = two_touch_bore();
+    OptimiseRequirements requirements;
+    requirements.pareto_points = 0;
+    requirements.advice = false;
+    for (auto _ : state) benchmark::DoNotOptimize(optimise(scenario, requirements));
+}
 
 // The whole comparison pipeline (C-axis identification with its
 // uncertainty, three surface fits, every projection) on the simulator's
@@ -159,6 +167,7 @@ BENCHMARK(BM_Sweep1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Sweep1000_Filtered)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Analyse)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Optimise)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Optimise_BestOnly)->Unit(benchmark::kMillisecond);
 
 BENCHMARK(BM_Compare200)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Compare10000)->Unit(benchmark::kMillisecond);

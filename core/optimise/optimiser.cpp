@@ -126,7 +126,9 @@ Best1D minimise_log(F&& f, double lo, double hi, int grid, int golden_iterations
     double d = a + kGolden * (b - a);
     double fc = consider(std::exp(c));
     double fd = consider(std::exp(d));
-    for (int i = 0; i < golden_iterations && b - a > 1e-7; ++i) {
+    // To 1e-5 of the feed: ten times finer than the editors' digits at their
+    // finest (1 mm/min at 10000 mm/min), which the result is rounded to.
+    for (int i = 0; i < golden_iterations && b - a > 1e-5; ++i) {
         if (fc <= fd) {
             b = d;
             d = c;
@@ -151,7 +153,7 @@ double last_ok_log(Ok&& ok, double lo, double hi) {
     if (ok(hi)) return hi;
     double a = std::log(lo);
     double b = std::log(hi);
-    for (int i = 0; i < 60 && b - a > 1e-12; ++i) {
+    for (int i = 0; i < 60 && b - a > 1e-9; ++i) {
         const double m = 0.5 * (a + b);
         (ok(std::exp(m)) ? a : b) = m;
     }
@@ -313,7 +315,12 @@ class Search {
         const double measure_hi =
             std::min({cap_mm_min_, overtravel_feed_mm_min_, measure_feed_bound(repeats, bound_mm)});
         if (feed_hi < kMinFeed_mm_min || measure_hi < kMinFeed_mm_min) return out;
-        constexpr int kGoldenIterations = 40;
+        // The coarse search (a grid of 12: the Pareto front's points, the
+        // cells of more repeats that only bound the search) refines less:
+        // its points are drawn, not applied.
+        const bool coarse = grid <= 12;
+        const int kGoldenIterations = coarse ? 14 : 40;
+        const int kRounds = coarse ? 2 : 4;
         if (strategy == Strategy::single_touch) {
             const double hi = std::min(feed_hi, measure_hi);
             const Best1D b =
@@ -326,7 +333,7 @@ class Search {
                 std::clamp(base_.cycle.measure_feed_mm_min, kMinFeed_mm_min, measure_hi);
             double probe = std::clamp(base_.cycle.probe_feed_mm_min, kMinFeed_mm_min, feed_hi);
             double previous = kInf;
-            for (int round = 0; round < 4; ++round) {
+            for (int round = 0; round < kRounds; ++round) {
                 const Best1D b1 = minimise_log(
                     [&](double f) { return time_s(strategy, repeats, f, measure, bound_mm); },
                     kMinFeed_mm_min, feed_hi, grid, kGoldenIterations);
@@ -441,7 +448,12 @@ class Optimiser {
         return it->second;
     }
 
-    std::optional<SearchOutcome> fastest(double bound_mm, int grid = 24) {
+    // `unimodal`: stop counting repeats up once a count's fastest setting is
+    // slower than the last count's. Its time is N touches of a time that falls
+    // as the bound allows a faster measuring feed, N (a + c / sqrt(N U^2 -
+    // rep^2)), which has one minimum in N; the Pareto front's points, where
+    // the exact search over every count costs most, use it.
+    std::optional<SearchOutcome> fastest(double bound_mm, int grid = 24, bool unimodal = false) {
         std::optional<SearchOutcome> best;
         const double rep = search_.base().probe.repeatability_2sigma_mm;
         int fewest = 1;
@@ -451,6 +463,7 @@ class Optimiser {
         }
         fewest = std::min(fewest, search_.max_repeats());
         for (const Strategy strategy : {Strategy::single_touch, Strategy::two_touch}) {
+            double last_time = kInf;
             for (int n = fewest; n <= search_.max_repeats(); ++n) {
                 const Cell& free = unconstrained(strategy, n);
                 if (!free.found) break;
@@ -461,6 +474,10 @@ class Optimiser {
                 if (cell.found && (!best || cell.time_s < best->cell.time_s))
                     best = SearchOutcome{strategy, n, cell};
                 if (meets) break;
+                if (unimodal && cell.found) {
+                    if (cell.time_s > last_time) break;
+                    last_time = cell.time_s;
+                }
             }
         }
         return best;
@@ -851,7 +868,7 @@ OptimiseResult optimise(const Scenario& scenario, const OptimiseRequirements& re
             const double b = n == 1 || !(high > low)
                                  ? high
                                  : low * std::pow(high / low, static_cast<double>(k) / (n - 1));
-            const std::optional<SearchOutcome> outcome = optimiser.fastest(b, 12);
+            const std::optional<SearchOutcome> outcome = optimiser.fastest(b, 12, true);
             if (!outcome) continue;
             if (std::optional<Candidate> point = optimiser.rounded(*outcome, b, fraction))
                 points.push_back(*point);

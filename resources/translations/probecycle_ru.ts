@@ -572,6 +572,45 @@
     </message>
 </context>
 <context>
+    <name>Optimise</name>
+    <message>
+        <source>no setting meets the requirements: the probe&apos;s maximum feed %1 is under the lowest feed, %2</source>
+        <translation>ни одна настройка не удовлетворяет требованиям: максимальная подача щупа %1 ниже наименьшей подачи %2</translation>
+    </message>
+    <message>
+        <source>no setting meets the requirements: the overtravel must stay at or under %1 of the probe&apos;s limit %2 (probe.overtravel_limit_mm), and even at %3 it is %4</source>
+        <translation>ни одна настройка не удовлетворяет требованиям: перебег должен быть не больше %1 от предела щупа %2 (probe.overtravel_limit_mm), а даже при %3 он составляет %4</translation>
+    </message>
+    <message>
+        <source>no setting meets the requirements: a start distance of the part position uncertainty %1 plus the room to reach even %2 (%3) does not fit a %4 of %5</source>
+        <translation>ни одна настройка не удовлетворяет требованиям: расстояние подхода из неопределённости положения детали %1 и пути разгона даже до %2 (%3) не помещается в %4 размером %5</translation>
+    </message>
+    <message>
+        <source>no setting meets the target uncertainty %1 (cycle.target_uncertainty_mm): the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5)</source>
+        <translation>ни одна настройка не достигает целевой неопределённости %1 (cycle.target_uncertainty_mm): наименьшая достижимая %2, при %3 и cycle.repeats %4 (повторяемость щупа %5)</translation>
+    </message>
+    <message>
+        <source>no setting meets the current uncertainty %1: the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5)</source>
+        <translation>ни одна настройка не достигает текущей неопределённости %1: наименьшая достижимая %2, при %3 и cycle.repeats %4 (повторяемость щупа %5)</translation>
+    </message>
+    <message>
+        <source>no setting meets every requirement</source>
+        <translation>ни одна настройка не удовлетворяет всем требованиям</translation>
+    </message>
+    <message>
+        <source>the overtravel fraction %1 is out of range: allowed from %2 to %3</source>
+        <translation>доля перебега %1 вне диапазона: допустимо от %2 до %3</translation>
+    </message>
+    <message>
+        <source>the skip input&apos;s scan period %1 limits the measuring feed; a latched input would save %2 a cycle</source>
+        <translation>период опроса входа пропуска %1 ограничивает измерительную подачу; вход с аппаратной фиксацией сэкономил бы %2 за цикл</translation>
+    </message>
+    <message>
+        <source>the probe&apos;s maximum feed %1 limits the cycle; a probe rated for faster feeds would save %2 a cycle</source>
+        <translation>максимальная подача щупа %1 ограничивает цикл; щуп, рассчитанный на бо́льшие подачи, сэкономил бы %2 за цикл</translation>
+    </message>
+</context>
+<context>
     <name>Parameter</name>
     <message>
         <source>Time constant</source>
@@ -3097,6 +3136,165 @@
         <source>%1: %2</source>
         <extracomment>%1 the severity (Error, Warning, Note), %2 the warning&apos;s title</extracomment>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>apply the best settings</source>
+        <translation>применить лучшие настройки</translation>
+    </message>
+    <message>
+        <source>Optimise</source>
+        <translation>Оптимизация</translation>
+    </message>
+    <message>
+        <source>The optimiser&apos;s recommendation</source>
+        <translation>Рекомендация оптимизатора</translation>
+    </message>
+    <message>
+        <source>The scenario is not valid; see the warnings.</source>
+        <translation>Сценарий недопустим; см. предупреждения.</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::OptimisePanel</name>
+    <message>
+        <source>The current settings do not meet the requirements; the fastest that do take %1 a cycle.</source>
+        <translation>Текущие настройки не удовлетворяют требованиям; самые быстрые из удовлетворяющих дают %1 на цикл.</translation>
+    </message>
+    <message>
+        <source>The current settings are already the fastest that meet the requirements.</source>
+        <translation>Текущие настройки уже самые быстрые из удовлетворяющих требованиям.</translation>
+    </message>
+    <message>
+        <source>The best settings save %1 a cycle: %2 instead of %3 (%4 % less).</source>
+        <translation>Лучшие настройки экономят %1 за цикл: %2 вместо %3 (на %4 % меньше).</translation>
+    </message>
+    <message>
+        <source>a cycle that can run (the backoff and the probe&apos;s overtravel limit)</source>
+        <translation>выполнимость цикла (отвод и предел перебега щупа)</translation>
+    </message>
+    <message>
+        <source>the target uncertainty, %1</source>
+        <translation>целевая неопределённость, %1</translation>
+    </message>
+    <message>
+        <source>the current uncertainty, %1 (no target is set)</source>
+        <translation>текущая неопределённость, %1 (цель не задана)</translation>
+    </message>
+    <message>
+        <source>the overtravel allowed, %1 % of the probe&apos;s limit</source>
+        <translation>допустимый перебег, %1 % от предела щупа</translation>
+    </message>
+    <message>
+        <source>the probe&apos;s maximum feed, %1</source>
+        <translation>максимальная подача щупа, %1</translation>
+    </message>
+    <message>
+        <source>the machine&apos;s rapid feed, %1</source>
+        <translation>ускоренная подача станка, %1</translation>
+    </message>
+    <message>
+        <source>the start distance: the part&apos;s position uncertainty plus the distance to reach the probing feed</source>
+        <translation>расстояние подхода: неопределённость положения детали плюс путь разгона до подачи поиска</translation>
+    </message>
+    <message>
+        <source>at most %1 measurements</source>
+        <translation>не более %1 измерений</translation>
+    </message>
+    <message>
+        <source>What limits it: %1.</source>
+        <translation>Ограничивает: %1.</translation>
+    </message>
+    <message>
+        <source>Saved per part: %1; per year: %2 h of machine time</source>
+        <translation>Экономия на деталь: %1; за год: %2 ч работы станка</translation>
+    </message>
+    <message>
+        <source>, worth %1 at the machine rate</source>
+        <translation>, что составляет %1 по стоимости станко-часа</translation>
+    </message>
+    <message>
+        <source>What else would save time:</source>
+        <translation>Что ещё сэкономило бы время:</translation>
+    </message>
+    <message>
+        <source>Requirements</source>
+        <translation>Требования</translation>
+    </message>
+    <message>
+        <source>Overtravel allowed, of the probe&apos;s limit</source>
+        <translation>Допустимый перебег, от предела щупа</translation>
+    </message>
+    <message>
+        <source>The optimiser keeps the overtravel at or under this share of the probe&apos;s overtravel limit (80 %: where the cycle starts to warn).</source>
+        <translation>Оптимизатор держит перебег не выше этой доли предела перебега щупа (80 %: порог, с которого цикл предупреждает).</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>Текущие</translation>
+    </message>
+    <message>
+        <source>Best</source>
+        <translation>Лучшие</translation>
+    </message>
+    <message>
+        <source>Strategy</source>
+        <translation>Стратегия</translation>
+    </message>
+    <message>
+        <source>Probing feedrate</source>
+        <translation>Скорость подачи поиска</translation>
+    </message>
+    <message>
+        <source>Measuring feedrate</source>
+        <translation>Измерительная подача</translation>
+    </message>
+    <message>
+        <source>Backoff</source>
+        <translation>Отвод</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>Число измерений</translation>
+    </message>
+    <message>
+        <source>Cycle time</source>
+        <translation>Время цикла</translation>
+    </message>
+    <message>
+        <source>Uncertainty (k = 2)</source>
+        <translation>Неопределённость (k = 2)</translation>
+    </message>
+    <message>
+        <source>Overtravel</source>
+        <translation>Перебег</translation>
+    </message>
+    <message>
+        <source>Apply the best settings</source>
+        <translation>Применить лучшие настройки</translation>
+    </message>
+    <message>
+        <source>Sets strategy, feeds, backoff, start distance and measurements to the best ones, as one step that Undo takes back</source>
+        <translation>Устанавливает лучшие стратегию, подачи, отвод, расстояние подхода и число измерений одним шагом, который отменяется командой «Отменить»</translation>
+    </message>
+    <message>
+        <source>Fastest cycle at each uncertainty</source>
+        <translation>Самый быстрый цикл при каждой неопределённости</translation>
+    </message>
+    <message>
+        <source>Uncertainty, k = 2 [µm]</source>
+        <translation>Неопределённость, k = 2 [мкм]</translation>
+    </message>
+    <message>
+        <source>Cycle time [s]</source>
+        <translation>Время цикла [с]</translation>
+    </message>
+    <message>
+        <source>Fastest valid settings</source>
+        <translation>Самые быстрые допустимые настройки</translation>
+    </message>
+    <message>
+        <source>Approach distance</source>
+        <translation>Расстояние подхода</translation>
     </message>
 </context>
 <context>

@@ -572,6 +572,45 @@
     </message>
 </context>
 <context>
+    <name>Optimise</name>
+    <message>
+        <source>no setting meets the requirements: the probe&apos;s maximum feed %1 is under the lowest feed, %2</source>
+        <translation>没有满足要求的设置：测头最大进给率 %1 低于最低进给率 %2</translation>
+    </message>
+    <message>
+        <source>no setting meets the requirements: the overtravel must stay at or under %1 of the probe&apos;s limit %2 (probe.overtravel_limit_mm), and even at %3 it is %4</source>
+        <translation>没有满足要求的设置：过行程须不超过测头极限 %2 (probe.overtravel_limit_mm) 的 %1，而即使在 %3 时也为 %4</translation>
+    </message>
+    <message>
+        <source>no setting meets the requirements: a start distance of the part position uncertainty %1 plus the room to reach even %2 (%3) does not fit a %4 of %5</source>
+        <translation>没有满足要求的设置：由零件位置不确定度 %1 加上即使达到 %2 所需距离 (%3) 构成的起始距离放不进尺寸为 %5 的%4</translation>
+    </message>
+    <message>
+        <source>no setting meets the target uncertainty %1 (cycle.target_uncertainty_mm): the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5)</source>
+        <translation>没有设置能达到目标不确定度 %1 (cycle.target_uncertainty_mm)：可达到的最小值为 %2，在 %3 且 cycle.repeats 为 %4 时（测头重复性为 %5）</translation>
+    </message>
+    <message>
+        <source>no setting meets the current uncertainty %1: the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5)</source>
+        <translation>没有设置能达到当前不确定度 %1：可达到的最小值为 %2，在 %3 且 cycle.repeats 为 %4 时（测头重复性为 %5）</translation>
+    </message>
+    <message>
+        <source>no setting meets every requirement</source>
+        <translation>没有满足全部要求的设置</translation>
+    </message>
+    <message>
+        <source>the overtravel fraction %1 is out of range: allowed from %2 to %3</source>
+        <translation>过行程比例 %1 超出范围：允许 %2 到 %3</translation>
+    </message>
+    <message>
+        <source>the skip input&apos;s scan period %1 limits the measuring feed; a latched input would save %2 a cycle</source>
+        <translation>跳步输入的扫描周期 %1 限制了测量进给率；锁存输入每个循环可节省 %2</translation>
+    </message>
+    <message>
+        <source>the probe&apos;s maximum feed %1 limits the cycle; a probe rated for faster feeds would save %2 a cycle</source>
+        <translation>测头最大进给率 %1 限制了循环；额定进给率更高的测头每个循环可节省 %2</translation>
+    </message>
+</context>
+<context>
     <name>Parameter</name>
     <message>
         <source>Time constant</source>
@@ -3097,6 +3136,165 @@
         <source>%1: %2</source>
         <extracomment>%1 the severity (Error, Warning, Note), %2 the warning&apos;s title</extracomment>
         <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>apply the best settings</source>
+        <translation>应用最佳设置</translation>
+    </message>
+    <message>
+        <source>Optimise</source>
+        <translation>优化</translation>
+    </message>
+    <message>
+        <source>The optimiser&apos;s recommendation</source>
+        <translation>优化器的建议</translation>
+    </message>
+    <message>
+        <source>The scenario is not valid; see the warnings.</source>
+        <translation>场景无效；请查看警告。</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::OptimisePanel</name>
+    <message>
+        <source>The current settings do not meet the requirements; the fastest that do take %1 a cycle.</source>
+        <translation>当前设置不满足要求；满足要求的最快设置每个循环需 %1。</translation>
+    </message>
+    <message>
+        <source>The current settings are already the fastest that meet the requirements.</source>
+        <translation>当前设置已是满足要求的最快设置。</translation>
+    </message>
+    <message>
+        <source>The best settings save %1 a cycle: %2 instead of %3 (%4 % less).</source>
+        <translation>最佳设置每个循环节省 %1：%2，而非 %3（减少 %4 %）。</translation>
+    </message>
+    <message>
+        <source>a cycle that can run (the backoff and the probe&apos;s overtravel limit)</source>
+        <translation>可运行的循环（回退距离和测头过行程极限）</translation>
+    </message>
+    <message>
+        <source>the target uncertainty, %1</source>
+        <translation>目标不确定度 %1</translation>
+    </message>
+    <message>
+        <source>the current uncertainty, %1 (no target is set)</source>
+        <translation>当前不确定度 %1（未设目标）</translation>
+    </message>
+    <message>
+        <source>the overtravel allowed, %1 % of the probe&apos;s limit</source>
+        <translation>允许的过行程，测头极限的 %1 %</translation>
+    </message>
+    <message>
+        <source>the probe&apos;s maximum feed, %1</source>
+        <translation>测头最大进给率 %1</translation>
+    </message>
+    <message>
+        <source>the machine&apos;s rapid feed, %1</source>
+        <translation>机床快速进给率 %1</translation>
+    </message>
+    <message>
+        <source>the start distance: the part&apos;s position uncertainty plus the distance to reach the probing feed</source>
+        <translation>起始距离：零件位置不确定度加上达到探测进给率所需的距离</translation>
+    </message>
+    <message>
+        <source>at most %1 measurements</source>
+        <translation>最多 %1 次测量</translation>
+    </message>
+    <message>
+        <source>What limits it: %1.</source>
+        <translation>限制因素：%1。</translation>
+    </message>
+    <message>
+        <source>Saved per part: %1; per year: %2 h of machine time</source>
+        <translation>每件节省：%1；每年：%2 小时机床时间</translation>
+    </message>
+    <message>
+        <source>, worth %1 at the machine rate</source>
+        <translation>，按机床小时费率计价值 %1</translation>
+    </message>
+    <message>
+        <source>What else would save time:</source>
+        <translation>还有哪些可以节省时间：</translation>
+    </message>
+    <message>
+        <source>Requirements</source>
+        <translation>要求</translation>
+    </message>
+    <message>
+        <source>Overtravel allowed, of the probe&apos;s limit</source>
+        <translation>允许的过行程（占测头极限）</translation>
+    </message>
+    <message>
+        <source>The optimiser keeps the overtravel at or under this share of the probe&apos;s overtravel limit (80 %: where the cycle starts to warn).</source>
+        <translation>优化器使过行程不超过测头过行程极限的这一比例（80 %：循环开始警告的位置）。</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>当前</translation>
+    </message>
+    <message>
+        <source>Best</source>
+        <translation>最佳</translation>
+    </message>
+    <message>
+        <source>Strategy</source>
+        <translation>策略</translation>
+    </message>
+    <message>
+        <source>Probing feedrate</source>
+        <translation>探测进给率</translation>
+    </message>
+    <message>
+        <source>Measuring feedrate</source>
+        <translation>测量进给率</translation>
+    </message>
+    <message>
+        <source>Backoff</source>
+        <translation>回退距离</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>测量次数</translation>
+    </message>
+    <message>
+        <source>Cycle time</source>
+        <translation>循环时间</translation>
+    </message>
+    <message>
+        <source>Uncertainty (k = 2)</source>
+        <translation>不确定度 (k = 2)</translation>
+    </message>
+    <message>
+        <source>Overtravel</source>
+        <translation>过行程</translation>
+    </message>
+    <message>
+        <source>Apply the best settings</source>
+        <translation>应用最佳设置</translation>
+    </message>
+    <message>
+        <source>Sets strategy, feeds, backoff, start distance and measurements to the best ones, as one step that Undo takes back</source>
+        <translation>将策略、进给率、回退距离、起始距离和测量次数设为最佳值，作为一步，可用撤销恢复</translation>
+    </message>
+    <message>
+        <source>Fastest cycle at each uncertainty</source>
+        <translation>各不确定度下的最快循环</translation>
+    </message>
+    <message>
+        <source>Uncertainty, k = 2 [µm]</source>
+        <translation>不确定度，k = 2 [µm]</translation>
+    </message>
+    <message>
+        <source>Cycle time [s]</source>
+        <translation>循环时间 [s]</translation>
+    </message>
+    <message>
+        <source>Fastest valid settings</source>
+        <translation>最快的有效设置</translation>
+    </message>
+    <message>
+        <source>Approach distance</source>
+        <translation>接近距离</translation>
     </message>
 </context>
 <context>

@@ -363,8 +363,8 @@ void OptimisePanel::retranslate() {
            "limit (80 %: where the cycle starts to warn)."));
     table_->setHorizontalHeaderLabels({tr("Current"), tr("Best")});
     table_->setVerticalHeaderLabels({tr("Strategy"), tr("Probing feedrate"),
-                                     tr("Measuring feedrate"), tr("Backoff"), tr("Start distance"),
-                                     tr("Measurements"), tr("Cycle time"),
+                                     tr("Measuring feedrate"), tr("Backoff"),
+                                     tr("Approach distance"), tr("Measurements"), tr("Cycle time"),
                                      tr("Uncertainty (k = 2)"), tr("Overtravel")});
     apply_->setText(tr("Apply the best settings"));
     apply_->setToolTip(

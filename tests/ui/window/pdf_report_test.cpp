@@ -16,6 +16,7 @@
 
 #include "core/cycle/scenario.h"
 #include "ui/common/language.h"
+#include "ui/cycle/optimise_panel.h"
 #include "ui/lab/latency_tab.h"
 #include "ui/window/main_window.h"
 
@@ -117,6 +118,9 @@ TEST(PdfReport, TheCycleReportHasTheResultsTheWarningsTheirFixesAndEveryInput) {
     has(QStringLiteral("One-click fix: Set backoff to"));
     has(QStringLiteral("Error: Backoff too small"));
     has(QStringLiteral("Start 6.250 mm out"));
+    // The optimiser's recommendation, as its tab says it.
+    has(QStringLiteral("The optimiser's recommendation"));
+    has(window->optimise_panel()->saved_text());
     // Every input, by its key.
     for (const KeyInfo& key : scenario_keys()) has(QString::fromUtf8(key.key));
     has(QStringLiteral("3,000 mm/min"));  // the probe's rating, as the editor shows it
