@@ -15,22 +15,12 @@
 #include "core/cycle/cycle.h"
 #include "core/cycle/scenario.h"
 #include "core/optimise/optimiser.h"
+#include "tests/ui/window/test_window.h"
 #include "ui/cycle/optimise_panel.h"
 #include "ui/window/main_window.h"
 
 namespace probecycle::ui {
 namespace {
-
-std::unique_ptr<MainWindow> make_window() {
-    MainWindowOptions options;
-    options.persistent = false;
-    options.show_dialogs = false;
-    auto window = std::make_unique<MainWindow>(options);
-    window->resize(1280, 800);
-    window->show();
-    QCoreApplication::processEvents();
-    return window;
-}
 
 Scenario bore() {
     Scenario s;

@@ -15,6 +15,7 @@
 #include <memory>
 
 #include "core/cycle/scenario.h"
+#include "tests/ui/window/test_window.h"
 #include "ui/common/language.h"
 #include "ui/cycle/optimise_panel.h"
 #include "ui/lab/latency_tab.h"
@@ -24,17 +25,6 @@ namespace probecycle::ui {
 namespace {
 
 const QString kLabData = QStringLiteral(PROBECYCLE_TEST_DATA_DIR);
-
-std::unique_ptr<MainWindow> make_window() {
-    MainWindowOptions options;
-    options.persistent = false;
-    options.show_dialogs = false;
-    auto window = std::make_unique<MainWindow>(options);
-    window->resize(1280, 800);
-    window->show();
-    QCoreApplication::processEvents();
-    return window;
-}
 
 // A bore with errors, warnings and fixes to report.
 Scenario troubled_bore() {

@@ -16,6 +16,7 @@
 #include "core/common/file_io.h"
 #include "core/cycle/scenario.h"
 #include "core/project/project_file.h"
+#include "tests/ui/window/test_window.h"
 #include "ui/comparison/comparison_tab.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
@@ -25,17 +26,6 @@ namespace probecycle::ui {
 namespace {
 
 const QString kLabData = QStringLiteral(PROBECYCLE_TEST_DATA_DIR);
-
-std::unique_ptr<MainWindow> make_window() {
-    MainWindowOptions options;
-    options.persistent = false;
-    options.show_dialogs = false;
-    auto window = std::make_unique<MainWindow>(options);
-    window->resize(1280, 800);
-    window->show();
-    QCoreApplication::processEvents();
-    return window;
-}
 
 CalibrationTab* calibration(const MainWindow& w) {
     return w.findChild<CalibrationTab*>();
