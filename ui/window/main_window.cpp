@@ -285,10 +285,9 @@ void MainWindow::build_ui() {
         edit_scenario(best, [] { return tr("apply the best settings"); });
     });
     connect(tabs_, &QTabWidget::currentChanged, this, [this] {
-        if (tabs_->currentWidget() == optimise_ && optimise_stale_) {
-            recompute_now();
-            refresh_optimise();
-        }
+        if (tabs_->currentWidget() != optimise_) return;
+        recompute_now();  // optimises too when a recompute was pending
+        if (optimise_stale_) refresh_optimise();
     });
     setCentralWidget(tabs_);
     // The title's "*" counts the lab in a project: looked at when the user
@@ -950,16 +949,27 @@ ReportHeader MainWindow::report_header() const {
 // comparison tab), drawn at `width` pixels (the widgets are vector-drawn, so
 // no upscaled pixels), under a title line naming the scenario, the tab, the
 // date and the program version.
-QImage MainWindow::export_image(int width, bool titled) {
-    recompute_now();
-    QWidget* source =
-        tabs_->currentIndex() == 0 ? static_cast<QWidget*>(charts_) : tabs_->currentWidget();
+QPixmap MainWindow::render_widget(QWidget* source, int width) const {
     const double scale = std::max(1.0, static_cast<double>(width) / std::max(1, source->width()));
     QPixmap content(source->size() * scale);
     content.setDevicePixelRatio(scale);
     content.fill(palette().color(QPalette::Window));
     source->render(&content);
+    return content;
+}
+
+QImage MainWindow::charts_image(int width) {
+    recompute_now();
+    return render_widget(charts_, width).toImage();
+}
+
+QImage MainWindow::export_image(int width, bool titled) {
+    recompute_now();
+    QWidget* source =
+        tabs_->currentIndex() == 0 ? static_cast<QWidget*>(charts_) : tabs_->currentWidget();
+    const QPixmap content = render_widget(source, width);
     if (!titled) return content.toImage();
+    const double scale = content.devicePixelRatio();
 
     const QString name =
         current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();

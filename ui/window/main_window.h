@@ -12,6 +12,7 @@
 #include <QImage>
 #include <QList>
 #include <QMainWindow>
+#include <QPixmap>
 #include <QPointF>
 #include <QString>
 #include <QStringList>
@@ -107,6 +108,8 @@ class MainWindow : public QMainWindow {
     // interface's language (main_window_pdf.cpp). Written atomically.
     bool export_pdf_report(const QString& path);
     QByteArray pdf_report_bytes();
+    // The Cycle tab's four charts at `width` pixels, whichever tab is shown.
+    QImage charts_image(int width);
     // A preset from resources/ (":/presets/..."): its machine or probe section
     // replaces the current one, as an undoable edit.
     bool apply_preset(const QString& resource_path);
@@ -206,6 +209,8 @@ class MainWindow : public QMainWindow {
     void export_csv_dialog();
     void export_png_dialog();
     void export_pdf_dialog();
+    // `source` drawn at `width` pixels (vector-drawn widgets: no upscaled pixels).
+    QPixmap render_widget(QWidget* source, int width) const;
 
     MainWindowOptions options_;
     QStringList last_preset_changes_;

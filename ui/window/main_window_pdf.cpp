@@ -154,7 +154,7 @@ QByteArray MainWindow::pdf_report_bytes() {
                         readouts_->detail_text(readout)});
     }
     report.add_table(results);
-    report.add_image(export_image(kChartsWidth, false));
+    report.add_image(charts_image(kChartsWidth));
 
     report.add_heading(tr("Warnings and what to change"));
     const QList<QStringList> warnings = warnings_->rows_text();
@@ -176,7 +176,13 @@ QByteArray MainWindow::pdf_report_bytes() {
         for (const QString& text : {optimiser->binding_text(), optimiser->savings_text()}) {
             if (!text.isEmpty()) report.add_paragraph(text);
         }
-        for (const QString& advice : optimiser->advice_texts()) report.add_paragraph(advice);
+        const QStringList advice = optimiser->advice_texts();
+        if (!advice.isEmpty()) {
+            report.add_paragraph(OptimisePanel::tr("What else would save time:") +
+                                 QStringLiteral("\n• ") + advice.join(QStringLiteral("\n• ")));
+        }
+        // From the Optimise tab: the tab as shown, with its Pareto front.
+        if (tab == optimise_) report.add_image(export_image(kChartsWidth, false));
     } else {
         report.add_paragraph(optimiser->problem().isEmpty()
                                  ? tr("The scenario is not valid; see the warnings.")
