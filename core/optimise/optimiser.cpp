@@ -35,14 +35,15 @@ double approach_up(double distance_mm) {
 }
 static_assert(kApproachStep_mm == 0.01, "approach_up divides by 100");
 
-// A feed to the editors' digits (feed_step_mm_min), down or up.
+// A feed to the editors' digits (feed_step_mm_min, cycle.h), down or up;
+// steps per mm/min (1 or 10) so that a tenth is divided, not multiplied in.
 double feed_down(double feed_mm_min) {
-    return feed_mm_min >= 100.0 ? std::floor(feed_mm_min + 1e-9)
-                                : std::floor(feed_mm_min * 10.0 + 1e-9) / 10.0;
+    const double per = 1.0 / feed_step_mm_min(feed_mm_min);
+    return std::floor(feed_mm_min * per + 1e-9) / per;
 }
 double feed_up(double feed_mm_min) {
-    return feed_mm_min > 99.9 + 1e-9 ? std::ceil(feed_mm_min - 1e-9)
-                                     : std::ceil(feed_mm_min * 10.0 - 1e-9) / 10.0;
+    const double per = 1.0 / feed_step_mm_min(feed_mm_min);
+    return std::ceil(feed_mm_min * per - 1e-9) / per;
 }
 
 // The highest feed a setting may use: the probe's rated maximum (when set),
