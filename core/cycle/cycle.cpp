@@ -365,13 +365,13 @@ constexpr TouchPhases kSecondTouch{Phase::second_approach, Phase::second_pretrav
                                    Phase::second_interface_delay, Phase::second_controller_delay,
                                    Phase::second_deceleration};
 
-// The actual motion of a rest-to-rest move, and of a touch's approach (the
-// plan accelerating and cruising on, uncut).
-AxisMotion move_motion(const AxisKernel& kernel, const SegmentPlan& plan) {
+// The command of a rest-to-rest move, and the actual motion of a touch's
+// approach (the plan accelerating and cruising on, uncut).
+AxisCommand move_command(const SegmentPlan& plan) {
     AxisCommand command;
     command.append(plan, plan.duration_s());
     command.close();
-    return {kernel, command};
+    return command;
 }
 
 AxisMotion approach_motion(const AxisKernel& kernel, const SegmentPlan& plan) {
@@ -397,25 +397,36 @@ const AxisKernel* active_kernel(const AxisKernel& kernel) {
 // block_time_s and approach_room_mm for a kernel already built (nullptr: the
 // ideal axis).
 double block_time(const MotionLimits& limits, const AxisKernel* kernel, double distance_mm,
-                  double feed_mm_s) {
+                  double feed_mm_s, MotionCache* cache = nullptr) {
     if (kernel == nullptr) return move_time_s(limits, distance_mm, feed_mm_s);
-    return move_motion(*kernel, plan_move(limits, distance_mm, feed_mm_s)).in_position_time();
+    if (cache != nullptr) {
+        if (const auto known = cache->move_time_s(distance_mm, feed_mm_s)) return *known;
+    }
+    const double t = AxisMotion(*kernel, move_command(plan_move(limits, distance_mm, feed_mm_s)))
+                         .in_position_time();
+    if (cache != nullptr) cache->store_move_time(distance_mm, feed_mm_s, t);
+    return t;
 }
 
 double approach_room(const Scenario& scenario, const MotionLimits& limits, const AxisKernel* kernel,
-                     double feed_mm_s) {
+                     double feed_mm_s, MotionCache* cache = nullptr) {
     if (kernel == nullptr) return reach_distance_mm(limits, feed_mm_s);
     // The error of a touch at speed v - dv is at most dv * tau (the speed
     // still rises through the delay tau), so the feed counts as reached when
     // the deficit is under the tolerance / tau.
     const double tau = measurement_delay_s(scenario.machine, scenario.probe);
     if (tau <= 0.0) return 0.0;
+    if (cache != nullptr) {
+        if (const auto known = cache->approach_room_mm(feed_mm_s, tau)) return *known;
+    }
     const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
     const AxisMotion motion = approach_motion(*kernel, plan);
     const double t = motion.time_at_speed_deficit(
         kAccelErrorTolerance_mm / tau,
         reach_time_s(limits, feed_mm_s) + kernel->window_s() + kernel->lag_time_s());
-    return motion.state(t).position_mm;
+    const double room = motion.state(t).position_mm;
+    if (cache != nullptr) cache->store_approach_room(feed_mm_s, tau, room);
+    return room;
 }
 
 // Appends phases and motion to a result under construction.
@@ -424,12 +435,13 @@ class CycleBuilder {
     // `kernel`: the dynamics after interpolation, or nullptr for the ideal axis.
     CycleBuilder(std::vector<PhaseRecord>& phases, std::vector<TimedSegment>& segments,
                  std::vector<AxisMotion>& motions, std::array<double, kPhaseCount>& phase_time,
-                 const AxisKernel* kernel)
+                 const AxisKernel* kernel, MotionCache& cache)
         : phases_(phases),
           segments_(segments),
           motions_(motions),
           phase_time_(phase_time),
-          kernel_(kernel) {}
+          kernel_(kernel),
+          cache_(cache) {}
 
     double now() const { return t_; }
     double axis_mm() const { return axis_mm_; }
@@ -470,11 +482,13 @@ class CycleBuilder {
 
     // A block's actual motion with dynamics, `duration_s` of it (to the
     // in-position check); the next block starts where the command ended.
-    void add_filtered_motion(const AxisMotion& motion, double direction, double duration_s) {
-        motions_.push_back(motion);
-        add_filtered_motion(static_cast<int>(motions_.size() - 1), direction, duration_s);
+    // The actual motion of `command`, kept in motions_ (built in place: a
+    // motion is a kilobyte); its index there.
+    int keep_motion(const AxisCommand& command) {
+        motions_.emplace_back(*kernel_, command);
+        return static_cast<int>(motions_.size() - 1);
     }
-    // The same with a motion already in motions_.
+    // A kept motion as the next block.
     void add_filtered_motion(int index, double direction, double duration_s) {
         const AxisMotion& motion = motions_[static_cast<std::size_t>(index)];
         TimedSegment segment;
@@ -490,6 +504,7 @@ class CycleBuilder {
     }
 
     std::size_t phase_count() const { return phases_.size(); }
+    double phase_time(std::size_t index) const { return phases_[index].time_s; }
     std::size_t segment_count() const { return segments_.size(); }
 
     // Repeats `phase_count` phases from `first_phase` and `segment_count`
@@ -532,12 +547,14 @@ class CycleBuilder {
                     return;
                 }
             }
-            const AxisMotion motion = move_motion(*kernel_, plan);
-            const double duration = motion.in_position_time();
-            add_filtered_motion(motion, direction, duration);
+            const int index = keep_motion(move_command(plan));
+            const std::optional<double> known = cache_.move_time_s(distance_mm, feed_mm_s);
+            const double duration =
+                known ? *known : motions_[static_cast<std::size_t>(index)].in_position_time();
+            if (!known) cache_.store_move_time(distance_mm, feed_mm_s, duration);
+            add_filtered_motion(index, direction, duration);
             if (memo_.size() < memo_.capacity()) {
-                memo_.push_back(
-                    {distance_mm, feed_mm_s, static_cast<int>(motions_.size() - 1), duration});
+                memo_.push_back({distance_mm, feed_mm_s, index, duration});
             }
             add_phase(phase, duration, distance_mm);
             return;
@@ -637,7 +654,8 @@ class CycleBuilder {
             plan_stop(limits, feed_mm_s, at_react_command.speed_mm_s, at_react_command.accel_mm_s2);
         command.append(stop, stop.duration_s());
         command.close();
-        const AxisMotion motion(*kernel_, command);
+        const int index = keep_motion(command);
+        const AxisMotion& motion = motions_[static_cast<std::size_t>(index)];
         const double t_settle = std::max(motion.in_position_time(), t_react);
         const double rest_mm = command.end_state().position_mm;
 
@@ -646,7 +664,7 @@ class CycleBuilder {
         const KinematicState at_trigger = approach.state(t_trigger);
         const KinematicState at_interface = motion.state(t_interface);
         const KinematicState at_react = motion.state(t_react);
-        add_filtered_motion(motion, +1.0, t_settle);
+        add_filtered_motion(index, +1.0, t_settle);
 
         add_phase(names.approach, t_touch, distance_mm);
         add_phase(names.pretravel, t_trigger - t_touch, p.pretravel_mm);
@@ -691,6 +709,7 @@ class CycleBuilder {
     std::vector<AxisMotion>& motions_;
     std::array<double, kPhaseCount>& phase_time_;
     const AxisKernel* kernel_;
+    MotionCache& cache_;
     double t_{0.0};
     double motion_t_{0.0};
     double axis_mm_{0.0};
@@ -703,17 +722,25 @@ double backoff_reference_mm(const Cycle& cycle, const TouchResult& first) {
     return cycle.backoff_from == BackoffFrom::stop ? first.overtravel_mm : first.recorded_mm;
 }
 
+// The backoff move's length: from the stop to `backoff_mm` in front of the
+// reference (exactly the backoff from the stop: the same move at every feed).
+double backoff_move_mm(const Cycle& cycle, double backoff_mm, const TouchResult& first) {
+    if (cycle.backoff_from == BackoffFrom::stop) return backoff_mm;
+    return backoff_mm + first.overtravel_mm - first.recorded_mm;
+}
+
 // Time for the backoff move and the second approach, the part of a two-touch
 // cycle that the backoff changes (domain.md, "Strategies"). The move runs from
 // the stop to `backoff_mm` in front of the reference; the second touch starts
 // `backoff_mm - reference` in front of the surface.
 double backoff_cost_s(const Scenario& scenario, const MotionLimits& limits,
-                      const AxisKernel* kernel, double backoff_mm, const TouchResult& first) {
+                      const AxisKernel* kernel, double backoff_mm, const TouchResult& first,
+                      MotionCache& cache) {
     const Cycle& c = scenario.cycle;
     const double reference = backoff_reference_mm(c, first);
     const double measure_v = mm_min_to_mm_s(c.measure_feed_mm_min);
-    return block_time(limits, kernel, backoff_mm + first.overtravel_mm - reference,
-                      mm_min_to_mm_s(c.return_feed_mm_min)) +
+    return block_time(limits, kernel, backoff_move_mm(c, backoff_mm, first),
+                      mm_min_to_mm_s(c.return_feed_mm_min), &cache) +
            approach_time_s(limits, kernel, measure_v, std::max(0.0, backoff_mm - reference));
 }
 
@@ -784,7 +811,49 @@ CycleResult evaluate(const Scenario& scenario) {
     return result;
 }
 
+void MotionCache::bind(const MotionLimits& limits, const AxisDynamics& dynamics) {
+    if (limits_ && *limits_ == limits && dynamics_ == dynamics) return;
+    limits_ = limits;
+    dynamics_ = dynamics;
+    moves_ = {};
+    rooms_ = {};
+}
+
+std::optional<double> MotionCache::move_time_s(double distance_mm, double feed_mm_s) const {
+    return moves_.find(distance_mm, feed_mm_s);
+}
+
+void MotionCache::store_move_time(double distance_mm, double feed_mm_s, double time_s) {
+    moves_.store(distance_mm, feed_mm_s, time_s);
+}
+
+std::optional<double> MotionCache::approach_room_mm(double feed_mm_s, double delay_s) const {
+    return rooms_.find(feed_mm_s, delay_s);
+}
+
+void MotionCache::store_approach_room(double feed_mm_s, double delay_s, double room_mm) {
+    rooms_.store(feed_mm_s, delay_s, room_mm);
+}
+
+std::optional<double> MotionCache::Table::find(double key1, double key2) const {
+    for (std::size_t i = 0; i < count; ++i) {
+        if (entries[i].key1 == key1 && entries[i].key2 == key2) return entries[i].value;
+    }
+    return std::nullopt;
+}
+
+void MotionCache::Table::store(double key1, double key2, double value) {
+    entries[next] = {key1, key2, value};
+    next = (next + 1) % entries.size();
+    count = std::max(count, next == 0 ? entries.size() : next);
+}
+
 void evaluate_into(const Scenario& scenario, CycleResult& r) {
+    MotionCache cache;
+    evaluate_into(scenario, r, cache);
+}
+
+void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache) {
     r.phases_.clear();
     r.segments_.clear();
     r.motions_.clear();
@@ -803,9 +872,11 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     const bool two_touch = c.strategy == Strategy::two_touch;
     const int touches = touch_count(c.feature);
 
-    const AxisKernel kernel(scenario.axis_dynamics());
+    const AxisDynamics axis = scenario.axis_dynamics();
+    const AxisKernel kernel(axis);
     const AxisKernel* dynamics = active_kernel(kernel);
-    CycleBuilder b(r.phases_, r.segments_, r.motions_, r.phase_time_s_, dynamics);
+    cache.bind(limits, axis);
+    CycleBuilder b(r.phases_, r.segments_, r.motions_, r.phase_time_s_, dynamics, cache);
     // Issue 11, loose end 6: a feature's moves are protected, at the positioning
     // feed, from the centre (above it for a boss or web, which lifts over the
     // wall at the rapid feed, away from the part).
@@ -830,15 +901,23 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     // front of the surface (none left if the backoff is too short). From the
     // recorded trigger position (issue 11), b - recorded_1, and the backoff
     // move also covers the travel from there to the stop.
-    const auto back_off_and_measure = [&](const TouchResult& from) {
+    // `cost_s`: the time the backoff sets, the backoff move and the second
+    // approach (backoff_cost_s, here taken from the phases as they are made).
+    const auto back_off_and_measure = [&](const TouchResult& from, double& cost_s) {
         const double reference = backoff_reference_mm(c, from);
-        b.add_move(Phase::backoff, limits, c.backoff_mm + from.overtravel_mm - reference, return_v,
-                   -1.0);
+        const double t_backoff = b.now();
+        b.add_move(Phase::backoff, limits, backoff_move_mm(c, c.backoff_mm, from), return_v, -1.0);
+        const double backoff_s = b.now() - t_backoff;
         const double distance = std::max(0.0, c.backoff_mm - reference);
-        return b.add_touch(scenario, limits, measure_v, distance, kSecondTouch);
+        const std::size_t approach_phase = b.phase_count();
+        const TouchResult touch = b.add_touch(scenario, limits, measure_v, distance, kSecondTouch);
+        cost_s = backoff_s + b.phase_time(approach_phase);
+        return touch;
     };
+    double first_backoff_cost_s = 0.0;
+    double repeat_backoff_cost_s = 0.0;
     if (two_touch) {
-        measuring = back_off_and_measure(first);
+        measuring = back_off_and_measure(first, first_backoff_cost_s);
         add_touch_warnings(scenario, measuring, 1, r.warnings_);
     }
     // Issue 14: the measuring touch made `repeats` times and averaged. Two-touch
@@ -851,7 +930,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
         const std::size_t repeat_first_phase = b.phase_count();
         const std::size_t repeat_first_segment = b.segment_count();
         if (two_touch) {
-            back_off_and_measure(measuring);
+            back_off_and_measure(measuring, repeat_backoff_cost_s);
         } else {
             b.add_move(Phase::return_move, limits, b.axis_mm(), return_v, -1.0);
             b.add_touch(scenario, limits, probe_v, s, kFirstTouch);
@@ -908,7 +987,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     // value that clears backoff_too_small.
     const double needed =
         backoff_reference_mm(c, r.first_) +
-        std::max(p.reseat_mm, approach_room(scenario, limits, dynamics, measure_v));
+        std::max(p.reseat_mm, approach_room(scenario, limits, dynamics, measure_v, &cache));
     r.recommended_backoff_mm_ = round_up_to(needed, kBackoffStep_mm);
 
     // Touches of one cycle differ only in direction, so touch 0 speaks for all.
@@ -932,12 +1011,14 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
             // Excess beyond 10 % (at least 0.05 mm) of the recommendation is reported.
             // Every backoff wastes: the first touch's, and each repeat's from
             // the measuring touch.
-            const auto excess = [&](const TouchResult& from) {
-                return backoff_cost_s(scenario, limits, dynamics, c.backoff_mm, from) -
-                       backoff_cost_s(scenario, limits, dynamics, recommended, from);
+            // The costs at the scenario's backoff are the cycle's own phases.
+            const auto excess = [&](double cost_s, const TouchResult& from) {
+                return cost_s -
+                       backoff_cost_s(scenario, limits, dynamics, recommended, from, cache);
             };
-            const double wasted =
-                touches * (excess(r.first_) + (repeats - 1) * excess(r.measuring_));
+            double wasted = excess(first_backoff_cost_s, r.first_);
+            if (repeats > 1) wasted += (repeats - 1) * excess(repeat_backoff_cost_s, r.measuring_);
+            wasted *= touches;
             w.push_back(
                 {WarningCode::backoff_excess, Severity::info, c.backoff_mm, recommended, wasted});
         }
@@ -960,7 +1041,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     // touch must start outside it and at full feed.
     const double part_u = c.part_position_uncertainty_mm;
     if (part_u > 0.0) {
-        const double room = approach_room(scenario, limits, dynamics, probe_v);
+        const double room = approach_room(scenario, limits, dynamics, probe_v, &cache);
         if (s < part_u + room - 1e-9) {
             w.push_back({WarningCode::start_inside_uncertainty, Severity::warning, s, part_u, room,
                          s <= part_u ? 1.0 : 0.0});

@@ -17,6 +17,8 @@
 
 namespace probecycle {
 
+class MotionCache;
+
 enum class Phase {
     approach,
     pretravel,
@@ -185,7 +187,7 @@ class CycleResult {
     std::vector<Warning>& mutable_warnings() { return warnings_; }
 
   private:
-    friend void evaluate_into(const Scenario&, CycleResult&);
+    friend void evaluate_into(const Scenario&, CycleResult&, MotionCache&);
     std::vector<PhaseRecord> phases_;
     std::vector<TimedSegment> segments_;
     std::vector<AxisMotion> motions_;
@@ -245,11 +247,52 @@ double block_time_s(const Scenario& scenario, double distance_mm, double feed_mm
 // kAccelErrorTolerance_mm.
 double approach_room_mm(const Scenario& scenario, double feed_mm_s);
 
+// The solves of a machine with dynamics after interpolation, kept between the
+// evaluations of one machine (a sweep's feeds, the optimiser's candidates):
+// each rest-to-rest move's in-position time and each approach room is a
+// root search, and many of them (positioning, a backoff from the stop, the
+// measuring touch's room) do not depend on the setting that varies. Keyed by
+// their exact inputs; bound to one machine's motion limits and dynamics
+// (evaluating another machine empties it); a fixed, small capacity, the
+// oldest forgotten first.
+class MotionCache {
+  public:
+    // Empties the cache unless it holds `limits` and `dynamics`'s solves.
+    void bind(const MotionLimits& limits, const AxisDynamics& dynamics);
+
+    // Time of a rest-to-rest move to the in-position check.
+    std::optional<double> move_time_s(double distance_mm, double feed_mm_s) const;
+    void store_move_time(double distance_mm, double feed_mm_s, double time_s);
+    // Approach room for a feed and a measurement delay.
+    std::optional<double> approach_room_mm(double feed_mm_s, double delay_s) const;
+    void store_approach_room(double feed_mm_s, double delay_s, double room_mm);
+
+  private:
+    struct Entry {
+        double key1{0.0};
+        double key2{0.0};
+        double value{0.0};
+    };
+    struct Table {
+        std::array<Entry, 16> entries{};
+        std::size_t count{0};
+        std::size_t next{0};
+        std::optional<double> find(double key1, double key2) const;
+        void store(double key1, double key2, double value);
+    };
+    std::optional<MotionLimits> limits_;
+    AxisDynamics dynamics_{};
+    Table moves_;
+    Table rooms_;
+};
+
 // Evaluates the cycle: phases, overtravel, uncertainty, warnings that need no
 // sweep (all but feed_beyond_knee; see analyse() in sweep.h). Assumes a valid
-// scenario (validate() first). evaluate_into reuses the result's buffers.
+// scenario (validate() first). evaluate_into reuses the result's buffers; with
+// a MotionCache, the solves of earlier evaluations of the same machine.
 CycleResult evaluate(const Scenario& scenario);
 void evaluate_into(const Scenario& scenario, CycleResult& result);
+void evaluate_into(const Scenario& scenario, CycleResult& result, MotionCache& cache);
 
 // Number of touches of a feature (surface 1, web/pocket 2, bore/boss 4).
 int touch_count(Feature feature);

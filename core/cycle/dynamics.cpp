@@ -98,7 +98,10 @@ AxisKernel::AxisKernel(const AxisDynamics& d) : in_position_mm_(d.in_position_mm
         term_shift_[static_cast<std::size_t>(subset)] = shift;
         term_weight_[static_cast<std::size_t>(subset)] = sign / norm;
     }
-    for (int i = 0; i < lag_count_; ++i) lag_sum_s_ += lag_[static_cast<std::size_t>(i)];
+    for (int i = 0; i < lag_count_; ++i) {
+        lag_sum_s_ += lag_[static_cast<std::size_t>(i)];
+        rate_[static_cast<std::size_t>(i)] = 1.0 / lag_[static_cast<std::size_t>(i)];
+    }
     // Two lags closer than this are one double pole: the partial fractions
     // would divide by their difference.
     double_pole_ =
@@ -140,8 +143,8 @@ inline AxisKernel::Decay AxisKernel::decay(double tau) const {
         d.e2 = lag_count_ == 2 ? 1.0 : 0.0;
         return d;
     }
-    if (lag_count_ >= 1) d.e1 = std::exp(-tau / lag_[0]);
-    if (lag_count_ == 2) d.e2 = double_pole_ ? d.e1 : std::exp(-tau / lag_[1]);
+    if (lag_count_ >= 1) d.e1 = std::exp(-tau * rate_[0]);
+    if (lag_count_ == 2) d.e2 = double_pole_ ? d.e1 : std::exp(-tau * rate_[1]);
     return d;
 }
 
@@ -229,13 +232,19 @@ KinematicState AxisKernel::tail_state(const TailParts& p, double s) const {
     KinematicState out;
     if (lag_count_ == 0) return out;
     const Decay d = decay(s);
-    const double t1 = lag_[0];
-    const double t2 = lag_count_ == 2 ? lag_[1] : 1.0;
+    const double r1 = rate_[0];
+    const double r2 = lag_count_ == 2 ? rate_[1] : 1.0;
     const double first = p.a1 + p.b * s;
     out.position_mm = first * d.e1 + p.a2 * d.e2;
-    out.speed_mm_s = (p.b - first / t1) * d.e1 - p.a2 / t2 * d.e2;
-    out.accel_mm_s2 = (first / (t1 * t1) - 2.0 * p.b / t1) * d.e1 + p.a2 / (t2 * t2) * d.e2;
+    out.speed_mm_s = (p.b - first * r1) * d.e1 - p.a2 * r2 * d.e2;
+    out.accel_mm_s2 = (first * r1 - 2.0 * p.b) * r1 * d.e1 + p.a2 * r2 * r2 * d.e2;
     return out;
+}
+
+AxisKernel::TailParts AxisKernel::shifted(const TailParts& p, double s) const {
+    // (a1 + b (s + s')) e^(-(s + s')/T1) = ((a1 + b s) + b s') e^(-s/T1) e^(-s'/T1).
+    const Decay d = decay(s);
+    return {(p.a1 + p.b * s) * d.e1, p.a2 * d.e2, p.b * d.e1};
 }
 
 void AxisCommand::add_break(double speed, double accel, double jerk) {
@@ -274,9 +283,46 @@ void AxisCommand::close() {
     add_break(0.0, 0.0, 0.0);
 }
 
+AxisMotion::AxisMotion(const AxisKernel& kernel, const AxisCommand& command)
+    : kernel_(kernel), command_(command) {
+    if (!kernel_.lags_only()) return;
+    for (std::size_t i = 0; i < command_.size(); ++i) {
+        const AxisCommand::Break& b = command_.at(i);
+        AxisKernel::TailParts parts;
+        if (i > 0) parts = kernel_.shifted(prefix_[i - 1], b.t_s - command_.at(i - 1).t_s);
+        kernel_.accumulate_tail(b.step, 0.0, parts);
+        prefix_[i] = parts;
+    }
+}
+
+KinematicState AxisMotion::settled_state(const AxisCommand::Break& last, double t_s) const {
+    const KinematicState c = integrate(t_s - last.t_s, last.after, last.jerk_after);
+    const double mu1 = kernel_.moment(1);
+    const double mu2 = kernel_.moment(2);
+    const double mu3 = kernel_.moment(3);
+    KinematicState out;
+    out.position_mm =
+        c.position_mm - mu1 * c.speed_mm_s + mu2 * c.accel_mm_s2 - mu3 * last.jerk_after;
+    out.speed_mm_s = c.speed_mm_s - mu1 * c.accel_mm_s2 + mu2 * last.jerk_after;
+    return out;
+}
+
 KinematicState AxisMotion::state(double t_s) const {
     if (t_s <= 0.0) return {};
     const std::size_t count = command_.size();
+    if (kernel_.lags_only() && count > 0) {
+        if (t_s < command_.at(0).t_s) return {};
+        // Every break up to t is settled: the moment expansion of the command
+        // at t, plus the decaying parts of those breaks (prefix_).
+        std::size_t last = 0;
+        while (last + 1 < count && command_.at(last + 1).t_s <= t_s) ++last;
+        const AxisCommand::Break& b = command_.at(last);
+        KinematicState out = settled_state(b, t_s);
+        const KinematicState tail = kernel_.tail_state(prefix_[last], t_s - b.t_s);
+        out.position_mm = std::max(out.position_mm + tail.position_mm, 0.0);
+        out.speed_mm_s = std::max(out.speed_mm_s + tail.speed_mm_s, 0.0);
+        return out;
+    }
     const double window = kernel_.window_s();
     // Breaks further back than the windows: the moment expansion of the
     // command they make, plus their decaying terms.
@@ -284,14 +330,7 @@ KinematicState AxisMotion::state(double t_s) const {
     while (settled < count && t_s - command_.at(settled).t_s >= window) ++settled;
     KinematicState out;
     if (settled > 0) {
-        const AxisCommand::Break& last = command_.at(settled - 1);
-        const KinematicState c = integrate(t_s - last.t_s, last.after, last.jerk_after);
-        const double mu1 = kernel_.moment(1);
-        const double mu2 = kernel_.moment(2);
-        const double mu3 = kernel_.moment(3);
-        out.position_mm =
-            c.position_mm - mu1 * c.speed_mm_s + mu2 * c.accel_mm_s2 - mu3 * last.jerk_after;
-        out.speed_mm_s = c.speed_mm_s - mu1 * c.accel_mm_s2 + mu2 * last.jerk_after;
+        out = settled_state(command_.at(settled - 1), t_s);
         for (std::size_t i = 0; i < settled; ++i) {
             const AxisCommand::Break& b = command_.at(i);
             kernel_.accumulate(b.step, t_s - b.t_s, true, out.position_mm, out.speed_mm_s);
@@ -401,6 +440,10 @@ double AxisMotion::in_position_time() const {
 }
 
 AxisKernel::TailParts AxisMotion::tail_at(double t_ref) const {
+    if (kernel_.lags_only() && command_.size() > 0) {
+        const std::size_t last = command_.size() - 1;
+        return kernel_.shifted(prefix_[last], t_ref - command_.at(last).t_s);
+    }
     AxisKernel::TailParts parts;
     for (std::size_t i = 0; i < command_.size(); ++i) {
         const AxisCommand::Break& b = command_.at(i);

@@ -46,6 +46,8 @@ struct AxisDynamics {
     // (command end - actual) is under it.
     double in_position_mm{0.01};
 
+    bool operator==(const AxisDynamics&) const = default;
+
     // False for the ideal axis (no filter, no servo lag): then the actual
     // motion is the command and the plans of motion.h are used as they are.
     bool active() const;
@@ -90,7 +92,11 @@ class AxisKernel {
     // Position, speed and acceleration of a tail at s >= 0 after where its
     // parts were taken (one pair of exponentials for all three).
     KinematicState tail_state(const TailParts& parts, double s) const;
+    // The same tail's parts taken `s` >= 0 later.
+    TailParts shifted(const TailParts& parts, double s) const;
     int lag_count() const { return lag_count_; }
+    // Lags alone, no moving average: every break is settled at once.
+    bool lags_only() const { return fir_count_ == 0 && lag_count_ > 0; }
 
   private:
     struct Decay {
@@ -108,6 +114,7 @@ class AxisKernel {
     std::array<double, 2> window_{};
     int lag_count_{0};
     std::array<double, 2> lag_{};
+    std::array<double, 2> rate_{};  // 1 / lag_: the exponentials' rates
     bool double_pole_{false};
     // A moving average over W turns a response g into (G(t) - G(t - W)) / W,
     // G its integral (the response to the next ramp): one term per subset of
@@ -160,8 +167,7 @@ class AxisCommand {
 class AxisMotion {
   public:
     AxisMotion() = default;
-    AxisMotion(const AxisKernel& kernel, const AxisCommand& command)
-        : kernel_(kernel), command_(command) {}
+    AxisMotion(const AxisKernel& kernel, const AxisCommand& command);
 
     // Actual position and speed at time t (acceleration is not computed).
     KinematicState state(double t_s) const;
@@ -179,6 +185,9 @@ class AxisMotion {
     const AxisCommand& command() const { return command_; }
 
   private:
+    // The polynomial part of the response at t_s to the breaks up to `last`
+    // once all are settled: the moment expansion of the command.
+    KinematicState settled_state(const AxisCommand::Break& last, double t_s) const;
     // The tail of all breaks at t_ref (every one settled by then).
     AxisKernel::TailParts tail_at(double t_ref) const;
     // The first s >= 0 at which the tail's error (or, with `speed`, its speed
@@ -187,6 +196,10 @@ class AxisMotion {
 
     AxisKernel kernel_{};
     AxisCommand command_{};
+    // Lags alone (kernel_.lags_only()): the decaying parts of breaks 0..i,
+    // taken at break i, so that a state needs one pair of exponentials
+    // however many breaks lie behind it.
+    std::array<AxisKernel::TailParts, 12> prefix_{};
 };
 
 }  // namespace probecycle

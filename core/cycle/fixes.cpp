@@ -40,9 +40,10 @@ std::optional<double> feed_for_overtravel(const Scenario& scenario, double feed_
     const double limit = kOvertravelWarningFraction * scenario.probe.overtravel_limit_mm;
     Scenario s = scenario;
     CycleResult r;
+    MotionCache cache;
     const auto under = [&](double feed) {
         s.cycle.probe_feed_mm_min = feed;
-        evaluate_into(s, r);
+        evaluate_into(s, r, cache);
         return r.overtravel_mm() < limit;
     };
     double lo = std::min(kKneeSearchFrom_mm_min, feed_mm_min);

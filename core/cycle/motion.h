@@ -22,6 +22,8 @@ struct MotionLimits {
     double time_constant_s{0.06};    // time_constant: a = v / T
     double max_accel_mm_s2{2000.0};  // constant_accel, jerk_limited
     double max_jerk_mm_s3{40000.0};  // jerk_limited
+
+    bool operator==(const MotionLimits&) const = default;
 };
 
 struct KinematicState {

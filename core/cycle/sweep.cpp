@@ -20,10 +20,15 @@ namespace probecycle {
 namespace {
 
 // The evaluation buffer the sweeps and knee searches reuse on this thread:
-// its vectors are allocated once, not per evaluation.
+// its vectors are allocated once, not per evaluation; with it, the solves
+// that do not change with the feed (MotionCache).
 CycleResult& scratch_result() {
     thread_local CycleResult scratch;
     return scratch;
+}
+MotionCache& scratch_cache() {
+    thread_local MotionCache cache;
+    return cache;
 }
 
 // Evaluates `base` at a probe feed, into `scratch`; returns the cycle time.
@@ -31,11 +36,11 @@ double cycle_time_at(const Scenario& base, double feed_mm_min, const SweepOption
                      CycleResult& scratch) {
     Scenario s = base;
     s.cycle.probe_feed_mm_min = feed_mm_min;
-    evaluate_into(s, scratch);
+    evaluate_into(s, scratch, scratch_cache());
     if (options.recommended_backoff && s.cycle.strategy == Strategy::two_touch) {
         // The first touch does not depend on the backoff, so one pass tells it.
         s.cycle.backoff_mm = scratch.recommended_backoff_mm();
-        evaluate_into(s, scratch);
+        evaluate_into(s, scratch, scratch_cache());
     }
     return scratch.total();
 }

@@ -713,7 +713,8 @@ Settings settings_of(const Scenario& scenario) {
 
 void evaluate_point(const Scenario& scenario, ModelPoint& point) {
     thread_local CycleResult result;
-    evaluate_into(scenario, result);
+    thread_local MotionCache cache;  // the candidates share the machine
+    evaluate_into(scenario, result, cache);
     point.valid = result.valid();
     point.cycle_time_s = result.total();
     point.uncertainty_mm = result.uncertainty_mm();

@@ -1643,5 +1643,91 @@ TEST(Overtravel, SweepCarriesEachTouch) {
     }
 }
 
+// MotionCache: the solves kept between evaluations of one machine must give
+// the evaluations bit for bit what fresh ones give, whatever was evaluated
+// before with the same cache (other feeds, backoffs, features, machines).
+void expect_same_cycle(const CycleResult& cached, const CycleResult& fresh) {
+    EXPECT_EQ(cached.total(), fresh.total());
+    EXPECT_EQ(cached.overtravel_mm(), fresh.overtravel_mm());
+    EXPECT_EQ(cached.recommended_backoff_mm(), fresh.recommended_backoff_mm());
+    ASSERT_EQ(cached.phases().size(), fresh.phases().size());
+    for (std::size_t i = 0; i < fresh.phases().size(); ++i) {
+        EXPECT_EQ(cached.phases()[i].time_s, fresh.phases()[i].time_s) << "phase " << i;
+    }
+    ASSERT_EQ(cached.warnings().size(), fresh.warnings().size());
+    for (std::size_t i = 0; i < fresh.warnings().size(); ++i) {
+        EXPECT_EQ(cached.warnings()[i].code, fresh.warnings()[i].code);
+        EXPECT_EQ(cached.warnings()[i].a, fresh.warnings()[i].a);
+        EXPECT_EQ(cached.warnings()[i].b, fresh.warnings()[i].b);
+        EXPECT_EQ(cached.warnings()[i].c, fresh.warnings()[i].c);
+    }
+    for (double t = 0.0; t < fresh.total(); t += fresh.total() / 37.0) {
+        EXPECT_EQ(cached.state_at(t).position_mm, fresh.state_at(t).position_mm) << "t " << t;
+    }
+}
+
+TEST(MotionCache, EvaluationsThroughOneCacheAreThoseOfFreshOnes) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> log_feed(std::log(20.0), std::log(6000.0));
+    std::uniform_int_distribution<int> pick(0, 3);
+    const std::array<Feature, 4> features = {Feature::surface, Feature::bore, Feature::boss,
+                                             Feature::web};
+    const std::array<FilterKind, 4> filters = {FilterKind::none, FilterKind::linear,
+                                               FilterKind::exponential, FilterKind::bell};
+    MotionCache cache;
+    CycleResult cached;
+    for (int i = 0; i < 200; ++i) {
+        Scenario s;
+        s.cycle.strategy = Strategy::two_touch;
+        s.cycle.feature = features[static_cast<std::size_t>(pick(rng))];
+        s.cycle.feature_size_mm = 40.0;
+        s.cycle.probe_feed_mm_min = std::round(std::exp(log_feed(rng)));
+        s.cycle.backoff_mm = i % 3 == 0 ? 1.0 : 3.0;  // too small, or more than enough
+        s.cycle.backoff_from = i % 5 == 0 ? BackoffFrom::trigger : BackoffFrom::stop;
+        s.cycle.repeats = 1 + i % 3;
+        // Runs of ten evaluations of one machine (the cache kept), then
+        // another machine (the cache rebound).
+        s.machine.accel_model = (i / 10) % 2 == 0 ? AccelModel::none : AccelModel::time_constant;
+        s.machine.filter = filters[static_cast<std::size_t>((i / 20) % 4)];
+        s.machine.filter_time_s = 0.032;
+        s.machine.servo_time_constant_s = (i / 80) % 2 == 0 ? 0.033 : 0.0;
+        s.machine.in_position_mm = 0.02;
+        ASSERT_TRUE(validate(s).empty()) << i;
+        evaluate_into(s, cached, cache);
+        SCOPED_TRACE(i);
+        expect_same_cycle(cached, evaluate(s));
+    }
+}
+
+TEST(MotionCache, KeepsTheSolvesOfOneMachineOnly) {
+    Scenario s;
+    MotionCache cache;
+    cache.bind(s.motion_limits(), s.axis_dynamics());
+    cache.store_move_time(3.0, 50.0, 0.125);
+    cache.store_approach_room(50.0, 0.004, 0.2);
+    cache.bind(s.motion_limits(), s.axis_dynamics());  // the same machine: kept
+    EXPECT_EQ(cache.move_time_s(3.0, 50.0), std::optional<double>(0.125));
+    EXPECT_EQ(cache.approach_room_mm(50.0, 0.004), std::optional<double>(0.2));
+    EXPECT_FALSE(cache.move_time_s(3.0, 50.5).has_value());  // keyed by the exact inputs
+    EXPECT_FALSE(cache.approach_room_mm(50.0, 0.005).has_value());
+
+    Scenario other = s;
+    other.machine.servo_time_constant_s = 0.03;
+    cache.bind(other.motion_limits(), other.axis_dynamics());  // another machine: emptied
+    EXPECT_FALSE(cache.move_time_s(3.0, 50.0).has_value());
+    EXPECT_FALSE(cache.approach_room_mm(50.0, 0.004).has_value());
+}
+
+TEST(MotionCache, ForgetsTheOldestWhenFull) {
+    MotionCache cache;
+    Scenario s;
+    cache.bind(s.motion_limits(), s.axis_dynamics());
+    for (int i = 0; i < 17; ++i) cache.store_move_time(1.0 + i, 50.0, 0.1 * i);
+    EXPECT_FALSE(cache.move_time_s(1.0, 50.0).has_value());  // the first, overwritten
+    for (int i = 1; i < 17; ++i) {
+        EXPECT_EQ(cache.move_time_s(1.0 + i, 50.0), std::optional<double>(0.1 * i)) << i;
+    }
+}
+
 }  // namespace
 }  // namespace probecycle
