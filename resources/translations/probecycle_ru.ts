@@ -3153,6 +3153,14 @@
         <source>The scenario is not valid; see the warnings.</source>
         <translation>Сценарий недопустим; см. предупреждения.</translation>
     </message>
+    <message>
+        <source>Program for the &amp;Control…</source>
+        <translation>Программа для &amp;ЧПУ…</translation>
+    </message>
+    <message>
+        <source>The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), with the values set here</source>
+        <translation>Цикл как программа измерения для вашей ЧПУ (LinuxCNC, grbl, типа Fanuc) со значениями, заданными здесь</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>
@@ -3448,6 +3456,18 @@
     <message>
         <source>The block your control turns the spindle to 180° with. The Fanuc-type programs need it: M19 with an angle differs by maker and machine, and ProbeCycle does not guess it (the CLI&apos;s --orient-180).</source>
         <translation>Кадр, которым ваша система ЧПУ поворачивает шпиндель на 180°. Он нужен программам типа Fanuc: M19 с углом различается у производителей и станков, и ProbeCycle его не угадывает (в CLI — --orient-180).</translation>
+    </message>
+    <message>
+        <source>Tuned cycle program</source>
+        <translation>Программа настроенного цикла</translation>
+    </message>
+    <message>
+        <source>The scenario&apos;s cycle on a surface, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe stands at the start distance in front of the surface. Every move is incremental from where the probe stands. Prove it out at reduced rapid override with the probe clear of the part.</source>
+        <translation>Цикл сценария на поверхности в виде простых измерительных перемещений: его стратегия, подачи, отвод и начальное расстояние — значения, настроенные здесь, а не вызов цикла производителя. Датчик стоит на начальном расстоянии перед поверхностью. Каждое перемещение задано в приращениях от текущего положения датчика. Проверьте программу на пониженной коррекции ускоренного хода, с датчиком вдали от детали.</translation>
+    </message>
+    <message>
+        <source>The direction of travel of the touch.</source>
+        <translation>Направление движения при касании.</translation>
     </message>
 </context>
 <context>

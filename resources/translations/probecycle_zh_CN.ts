@@ -3153,6 +3153,14 @@
         <source>The scenario is not valid; see the warnings.</source>
         <translation>场景无效；请查看警告。</translation>
     </message>
+    <message>
+        <source>Program for the &amp;Control…</source>
+        <translation>生成数控程序(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), with the values set here</source>
+        <translation>将此循环生成为适用于您的数控系统（LinuxCNC、grbl、Fanuc 类）的测量程序，使用此处设定的值</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>
@@ -3448,6 +3456,18 @@
     <message>
         <source>The block your control turns the spindle to 180° with. The Fanuc-type programs need it: M19 with an angle differs by maker and machine, and ProbeCycle does not guess it (the CLI&apos;s --orient-180).</source>
         <translation>您的数控系统将主轴转到 180° 所用的程序段。Fanuc 类程序需要它：带角度的 M19 因厂商和机床而异，ProbeCycle 不会猜测（CLI 中为 --orient-180）。</translation>
+    </message>
+    <message>
+        <source>Tuned cycle program</source>
+        <translation>调优循环程序</translation>
+    </message>
+    <message>
+        <source>The scenario&apos;s cycle on a surface, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe stands at the start distance in front of the surface. Every move is incremental from where the probe stands. Prove it out at reduced rapid override with the probe clear of the part.</source>
+        <translation>场景中对表面的循环，以普通测量移动写出：其策略、进给率、回退距离和起始距离，即您在此调优的值，而非厂商的循环调用。测头位于表面前方的起始距离处。每个移动都是从测头当前位置出发的增量移动。请在降低的快速倍率下、测头远离工件时试运行。</translation>
+    </message>
+    <message>
+        <source>The direction of travel of the touch.</source>
+        <translation>触测的行程方向。</translation>
     </message>
 </context>
 <context>

@@ -83,6 +83,8 @@ ProgramDialog::ProgramDialog(ProgramKind kind, const Scenario& scenario, QWidget
     form->addRow(dialect_label_, dialect_);
     if (kind_ == ProgramKind::ring) {
         build_ring_options(form);
+    } else if (kind_ == ProgramKind::cycle) {
+        build_cycle_options(form);
     } else {
         build_delay_options(form);
     }
@@ -143,15 +145,35 @@ ProgramDialog::ProgramDialog(ProgramKind kind, const Scenario& scenario, QWidget
 
 ProgramDialog::~ProgramDialog() = default;
 
-void ProgramDialog::build_delay_options(QFormLayout* form) {
-    const DelayPlanOptions defaults;
+void ProgramDialog::build_axis(QFormLayout* form, const AxisDirection& touch) {
     axis_ = new QComboBox(this);
     axis_->setObjectName(QStringLiteral("program-axis"));
     for (const AxisDirection& at : kAxes) {
         const QString name = QString::fromStdString(to_string(at));
         axis_->addItem(name, name);
     }
-    axis_->setCurrentIndex(axis_->findData(QString::fromStdString(to_string(defaults.touch))));
+    set_axis(touch);
+    axis_label_ = new QLabel(this);
+    axis_label_->setBuddy(axis_);
+    form->addRow(axis_label_, axis_);
+    connect(axis_, &QComboBox::currentIndexChanged, this, &ProgramDialog::schedule_update);
+}
+
+void ProgramDialog::set_axis(const AxisDirection& touch) {
+    axis_->setCurrentIndex(std::max(axis_->findData(QString::fromStdString(to_string(touch))), 0));
+}
+
+AxisDirection ProgramDialog::axis() const {
+    return *axis_direction_from_string(axis_->currentData().toString().toStdString());
+}
+
+void ProgramDialog::build_cycle_options(QFormLayout* form) {
+    build_axis(form, CyclePlanOptions{}.touch);
+}
+
+void ProgramDialog::build_delay_options(QFormLayout* form) {
+    const DelayPlanOptions defaults;
+    build_axis(form, defaults.touch);
     feeds_ = new QLineEdit(this);
     feeds_->setObjectName(QStringLiteral("program-feeds"));
     repeats_ = new QSpinBox(this);
@@ -163,24 +185,20 @@ void ProgramDialog::build_delay_options(QFormLayout* form) {
     margin_->set_unit(unit_mm);
     placement_ = new UnitSpinBox(0.1, kMaxPlanDistance_mm, 3, defaults.placement_mm, this);
     placement_->set_unit(unit_mm);
-    axis_label_ = new QLabel(this);
     feeds_label_ = new QLabel(this);
     repeats_label_ = new QLabel(this);
     margin_label_ = new QLabel(this);
     placement_label_ = new QLabel(this);
-    form->addRow(axis_label_, axis_);
     form->addRow(feeds_label_, feeds_);
     form->addRow(repeats_label_, repeats_);
     form->addRow(margin_label_, margin_);
     form->addRow(placement_label_, placement_);
-    axis_label_->setBuddy(axis_);
     feeds_label_->setBuddy(feeds_);
     repeats_label_->setBuddy(repeats_);
     margin_label_->setBuddy(margin_);
     placement_label_->setBuddy(placement_);
     set_delay_options(defaults);
 
-    connect(axis_, &QComboBox::currentIndexChanged, this, &ProgramDialog::schedule_update);
     connect(feeds_, &QLineEdit::textChanged, this, &ProgramDialog::schedule_update);
     connect(repeats_, &QSpinBox::valueChanged, this, &ProgramDialog::schedule_update);
     for (UnitSpinBox* box : {margin_, placement_}) {
@@ -244,6 +262,16 @@ void ProgramDialog::retranslate() {
             tr("How far off the gauge centre the probe may start: each first touch searches "
                "this much further."));
         for (UnitSpinBox* box : {gauge_, ball_, tolerance_}) box->retranslate();
+    } else if (kind_ == ProgramKind::cycle) {
+        setWindowTitle(tr("Tuned cycle program"));
+        intro_->setText(
+            tr("The scenario's cycle on a surface, as plain probing moves: its strategy, feeds, "
+               "backoff and start distance, the values you tuned here, not a maker's cycle call. "
+               "The probe stands at the start distance in front of the surface. Every move is "
+               "incremental from where the probe stands. Prove it out at reduced rapid override "
+               "with the probe clear of the part."));
+        axis_label_->setText(tr("Axis and direction"));
+        axis_->setToolTip(tr("The direction of travel of the touch."));
     } else {
         setWindowTitle(tr("Delay-stability test program"));
         intro_->setText(
@@ -296,9 +324,8 @@ DialectId ProgramDialog::dialect_id() const {
 }
 
 void ProgramDialog::set_delay_options(const DelayPlanOptions& options) {
-    if (!axis_) return;
-    axis_->setCurrentIndex(
-        std::max(axis_->findData(QString::fromStdString(to_string(options.touch))), 0));
+    if (!feeds_) return;
+    set_axis(options.touch);
     const std::vector<double> feeds =
         options.feeds_mm_min.empty() ? default_delay_feeds(scenario_) : options.feeds_mm_min;
     QStringList texts;
@@ -333,12 +360,24 @@ std::optional<std::vector<double>> ProgramDialog::parsed_feeds() const {
 
 DelayPlanOptions ProgramDialog::delay_options() const {
     DelayPlanOptions options;
-    if (!axis_) return options;
-    options.touch = *axis_direction_from_string(axis_->currentData().toString().toStdString());
+    if (!feeds_) return options;
+    options.touch = axis();
     options.feeds_mm_min = parsed_feeds().value_or(std::vector<double>{});
     options.repeats = repeats_->value();
     options.margin_mm = margin_->internal_value();
     options.placement_mm = placement_->internal_value();
+    return options;
+}
+
+void ProgramDialog::set_cycle_options(const CyclePlanOptions& options) {
+    if (kind_ != ProgramKind::cycle) return;
+    set_axis(options.touch);
+    schedule_update();
+}
+
+CyclePlanOptions ProgramDialog::cycle_options() const {
+    CyclePlanOptions options;
+    if (kind_ == ProgramKind::cycle) options.touch = axis();
     return options;
 }
 
@@ -372,6 +411,8 @@ void ProgramDialog::update_now() {
     try {
         if (kind_ == ProgramKind::ring) {
             plan_ = make_ring_plan(scenario_, ring_options());
+        } else if (kind_ == ProgramKind::cycle) {
+            plan_ = make_cycle_plan(scenario_, cycle_options());
         } else if (parsed_feeds()) {
             plan_ = make_delay_plan(scenario_, delay_options());
         } else {

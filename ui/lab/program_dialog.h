@@ -1,10 +1,11 @@
 #pragma once
 
-// "Program…" on the Latency and Calibration tabs (issue 13, "CLI and
-// window"): the delay-stability test or the ring-gauge calibration as a
-// program for the user's control. The plan and the program are the core's
-// (core/program/plan.h, program_writer.h), the same calls as `probecycle-cli
-// program delay|ring`; this dialog edits the options, shows the program as it
+// "Program…" on the Latency and Calibration tabs and File > "Program for
+// the Control…" (issue 13, "CLI and window"): the delay-stability test, the
+// ring-gauge calibration or the tuned cycle as a program for the user's
+// control. The plan and the program are the core's (core/program/plan.h,
+// program_writer.h), the same calls as `probecycle-cli program
+// delay|ring|cycle`; this dialog edits the options, shows the program as it
 // will be saved, shows the core's refusal in place (Save disabled) and saves
 // the program with its plan beside it (the import needs the plan).
 //
@@ -46,7 +47,7 @@ class ProgramDialog : public QDialog {
     Q_OBJECT
 
   public:
-    // `kind`: delay or ring. The options start at the core's defaults (the
+    // `kind`: delay, ring or cycle. The options start at the core's defaults (the
     // delay test's feeds from the scenario).
     ProgramDialog(ProgramKind kind, const Scenario& scenario, QWidget* parent = nullptr);
     ~ProgramDialog() override;
@@ -61,6 +62,9 @@ class ProgramDialog : public QDialog {
     // The feeds as typed: numbers separated by semicolons or spaces (and by
     // commas where the decimal sign is a point).
     void set_feeds_text(const QString& text);
+    // The tuned cycle's options (the cycle kind only).
+    void set_cycle_options(const CyclePlanOptions& options);
+    CyclePlanOptions cycle_options() const;
     void set_ring_options(const RingPlanOptions& options);
     RingPlanOptions ring_options() const;
 
@@ -91,6 +95,11 @@ class ProgramDialog : public QDialog {
     void changeEvent(QEvent* event) override;
 
   private:
+    // The axis and direction box of the delay test and the tuned cycle.
+    void build_axis(QFormLayout* form, const AxisDirection& touch);
+    void set_axis(const AxisDirection& touch);
+    AxisDirection axis() const;
+    void build_cycle_options(QFormLayout* form);
     void build_delay_options(QFormLayout* form);
     void build_ring_options(QFormLayout* form);
     void schedule_update();
@@ -107,9 +116,10 @@ class ProgramDialog : public QDialog {
     QLabel* intro_{nullptr};
     QLabel* dialect_label_{nullptr};
     QComboBox* dialect_{nullptr};
-    // Delay test
+    // Delay test and tuned cycle
     QLabel* axis_label_{nullptr};
     QComboBox* axis_{nullptr};
+    // Delay test
     QLabel* feeds_label_{nullptr};
     QLineEdit* feeds_{nullptr};
     QLabel* repeats_label_{nullptr};

@@ -45,6 +45,7 @@
 #include "ui/cycle/parameter_panel.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
+#include "ui/lab/program_dialog.h"
 #include "ui/window/help_guide.h"
 #include "ui/window/scenario_command.h"
 
@@ -327,6 +328,8 @@ void MainWindow::build_actions() {
     export_pdf_ = new QAction(icon(QStyle::SP_FileIcon), {}, this);
     export_pdf_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
     connect(export_pdf_, &QAction::triggered, this, &MainWindow::export_pdf_dialog);
+    export_program_ = new QAction(this);
+    connect(export_program_, &QAction::triggered, this, [this] { open_cycle_program_dialog(); });
     quit_ = new QAction(this);
     quit_->setShortcut(QKeySequence::Quit);
     quit_->setMenuRole(QAction::QuitRole);
@@ -396,6 +399,13 @@ void MainWindow::build_actions() {
     }
 }
 
+ProgramDialog* MainWindow::open_cycle_program_dialog() {
+    auto* dialog = new ProgramDialog(ProgramKind::cycle, scenario_, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+    return dialog;
+}
+
 void MainWindow::build_menus() {
     file_menu_ = menuBar()->addMenu(QString());
     file_menu_->addAction(new_);
@@ -408,6 +418,7 @@ void MainWindow::build_menus() {
     file_menu_->addAction(export_csv_);
     file_menu_->addAction(export_png_);
     file_menu_->addAction(export_pdf_);
+    file_menu_->addAction(export_program_);
     file_menu_->addSeparator();
     file_menu_->addAction(quit_);
 
@@ -484,6 +495,10 @@ void MainWindow::retranslate() {
     export_pdf_->setToolTip(
         tr("A4 pages to hand over: the current tab's results, charts, warnings with their fixes "
            "and the inputs, in the interface's language"));
+    export_program_->setText(tr("Program for the &Control…"));
+    export_program_->setToolTip(
+        tr("The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), "
+           "with the values set here"));
     quit_->setText(tr("&Quit"));
     update_undo_texts();
     pin_->setText(tr("&Pin Baseline"));

@@ -45,6 +45,7 @@ class OptimisePanel;
 class LatencyTab;
 class ComparisonTab;
 class ParameterPanel;
+class ProgramDialog;
 
 // What to do with unsaved edits before they would be lost.
 enum class UnsavedAnswer { save, discard, cancel };
@@ -108,6 +109,9 @@ class MainWindow : public QMainWindow {
     // interface's language (main_window_pdf.cpp). Written atomically.
     bool export_pdf_report(const QString& path);
     QByteArray pdf_report_bytes();
+    // File > "Program for the Control…" (issue 13): the tuned cycle, the
+    // scenario's cycle as plain probing moves, in the control's dialect.
+    ProgramDialog* open_cycle_program_dialog();
     // The Cycle tab's four charts at `width` pixels, whichever tab is shown.
     QImage charts_image(int width);
     // A preset from resources/ (":/presets/..."): its machine or probe section
@@ -267,6 +271,7 @@ class MainWindow : public QMainWindow {
     QAction* export_csv_{nullptr};
     QAction* export_png_{nullptr};
     QAction* export_pdf_{nullptr};
+    QAction* export_program_{nullptr};
     QAction* quit_{nullptr};
     QAction* undo_action_{nullptr};
     QAction* redo_action_{nullptr};

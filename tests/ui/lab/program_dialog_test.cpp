@@ -114,6 +114,41 @@ TEST(ProgramDialog, ThePreviewIsTheCoresProgramInEveryDialect) {
     }
 }
 
+TEST(ProgramDialog, TheTunedCycleIsTheCoresProgramInEveryDialect) {
+    Scenario scenario;
+    scenario.cycle.probe_feed_mm_min = 1500.0;
+    ProgramDialog cycle(ProgramKind::cycle, scenario);
+    EXPECT_EQ(to_string(cycle.cycle_options().touch), to_string(CyclePlanOptions{}.touch));
+    CyclePlanOptions options;
+    options.touch = {'X', 1};
+    cycle.set_cycle_options(options);
+    for (DialectId id : program_dialects()) {
+        SCOPED_TRACE(dialect(id).name);
+        cycle.set_dialect(id);
+        cycle.update_now();
+        ASSERT_TRUE(cycle.can_save()) << cycle.problem().toStdString();
+        const ProbingPlan plan = make_cycle_plan(scenario, options);
+        EXPECT_EQ(cycle.program_text().toStdString(),
+                  write_program(plan, dialect(id), cycle.date()));
+        EXPECT_EQ(probing_plan_json(*cycle.plan()), probing_plan_json(plan));
+    }
+    // The feeds, the backoff and the start distance are the scenario's.
+    EXPECT_NE(cycle.program_text().indexOf(QStringLiteral("1500")), -1);
+}
+
+TEST(ProgramDialog, ATunedCycleTheCoreRefusesIsShownInPlace) {
+    Scenario scenario;
+    scenario.cycle.feature = Feature::bore;  // a surface's program only, so far
+    ProgramDialog cycle(ProgramKind::cycle, scenario);
+    cycle.show();
+    cycle.update_now();
+    EXPECT_FALSE(cycle.can_save());
+    EXPECT_TRUE(cycle.program_text().isEmpty());
+    EXPECT_FALSE(cycle.findChild<QPushButton*>(QStringLiteral("program-save"))->isEnabled());
+    EXPECT_TRUE(shown_text(cycle, "program-problem").startsWith(QStringLiteral("cycle.feature")))
+        << shown_text(cycle, "program-problem").toStdString();
+}
+
 TEST(ProgramDialog, TheTabsOpenItWithTheirScenarioAndGauge) {
     Scenario scenario;
     scenario.cycle.probe_feed_mm_min = 1500.0;
@@ -391,6 +426,16 @@ TEST_P(ProgramLanguage, TheDialogsAndTheirMessagesAreTranslated) {
     ring.set_ring_options({});
     ring.update_now();
     save_screenshot(ring, QStringLiteral("program_ring"));
+
+    ProgramDialog cycle(ProgramKind::cycle, Scenario{});
+    cycle.show();
+    cycle.update_now();
+    EXPECT_TRUE(cycle.can_save()) << cycle.problem().toStdString();
+    if (!english) {
+        EXPECT_NE(cycle.windowTitle(), QStringLiteral("Tuned cycle program"));
+        EXPECT_EQ(english_left(cycle.windowTitle()), QString());
+    }
+    save_screenshot(cycle, QStringLiteral("program_cycle"));
 
     MachineLogDialog log(ProgramKind::ring);
     log.show();

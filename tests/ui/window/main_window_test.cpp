@@ -28,10 +28,12 @@
 
 #include "core/cycle/cycle_report.h"
 #include "core/cycle/scenario.h"
+#include "core/program/program_writer.h"
 #include "ui/common/language.h"
 #include "ui/common/plot_view.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
+#include "ui/lab/program_dialog.h"
 #include "ui/window/help_guide.h"
 
 namespace probecycle::ui {
@@ -1073,6 +1075,27 @@ TEST_F(MainWindowTest, InvalidCombinationIsShownAndKeepsTheLastCharts) {
     settle();
     EXPECT_TRUE(window_->warning_codes().contains(QStringLiteral("invalid:cycle.feature_size_mm")));
     EXPECT_EQ(window_->series_points(QStringLiteral("cycle_time.two_touch")).size(), 500);
+}
+
+// Issue 13: File > "Program for the Control…" opens the tuned cycle's dialog
+// on the window's scenario (the default: a surface); its program is the
+// core's for that scenario.
+TEST_F(MainWindowTest, ProgramForTheControlWritesTheWindowsCycle) {
+    QAction* action = nullptr;
+    for (QAction* a : window_->menuBar()->actions().front()->menu()->actions()) {
+        if (a->text().contains(QStringLiteral("Program for the"))) action = a;
+    }
+    ASSERT_NE(action, nullptr);
+    ProgramDialog* dialog = window_->open_cycle_program_dialog();
+    ASSERT_NE(dialog, nullptr);
+    EXPECT_EQ(dialog->kind(), ProgramKind::cycle);
+    dialog->set_dialect(DialectId::linuxcnc);
+    dialog->update_now();
+    ASSERT_TRUE(dialog->can_save()) << dialog->problem().toStdString();
+    EXPECT_EQ(dialog->program_text().toStdString(),
+              write_program(make_cycle_plan(window_->scenario(), {}), dialect(DialectId::linuxcnc),
+                            dialog->date()));
+    dialog->close();
 }
 
 }  // namespace
