@@ -198,7 +198,7 @@ std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
             const std::optional<std::array<double, 3>> xyz = coordinates(words, 3);
             const std::optional<double> n =
                 words.size() == 6 ? parse_decimal(words[2]) : std::nullopt;
-            if (words[1] != "touch" || !xyz || !n) {
+            if (words.size() != 6 || words[1] != "touch" || !xyz || !n) {
                 bad_line(number, line, "'probecycle touch N X Y Z'");
             }
             if (*n != static_cast<double>(positions.size() + 1)) {

@@ -189,6 +189,21 @@ TEST(MachineLog, LinuxCncBrokenLogsNameTheLine) {
     EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::linuxcnc, "1 2 three\n"); }), 1);
 }
 
+// fuzz_machine_log: a line holding only "probecycle" read the second word of a
+// one-word line (past the end of its words).
+TEST(MachineLog, LinuxCncLogLineOfOneWordIsUnreadable) {
+    const ProbingPlan plan = small_delay_plan();
+    const std::string first = "probecycle plan " + plan_id(plan) + " delay\n";
+    EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::linuxcnc, "probecycle"); }), 1);
+    EXPECT_EQ(
+        line_of([&] { import_machine_log(plan, DialectId::linuxcnc, first + "  probecycle  \n"); }),
+        2);
+    EXPECT_EQ(line_of([&] {
+                  import_machine_log(plan, DialectId::linuxcnc, first + "probecycle touch\n");
+              }),
+              2);
+}
+
 TEST(MachineLog, RingLogGivesTheRingCsvAndACyclePlanHasNoTable) {
     const ProbingPlan ring = make_ring_plan(Scenario{}, RingPlanOptions{});
     const double r = program_test::kRingLogRadius_mm;
