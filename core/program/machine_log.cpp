@@ -447,7 +447,9 @@ std::string import_machine_log(const ProbingPlan& plan, DialectId dialect, std::
         return lab_csv_from_positions(plan, read_fanuc_positions(text, plan), false);
     }
     const std::vector<RecordedPosition> positions = read_linuxcnc_positions(text, plan);
-    const bool log_file = trimmed(text).substr(0, 10) == "probecycle";
+    // The LOG file's first line that is not blank opens with "probecycle".
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    const bool log_file = first != std::string_view::npos && text.substr(first, 10) == "probecycle";
     return lab_csv_from_positions(plan, positions, !log_file);
 }
 

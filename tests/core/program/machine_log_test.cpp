@@ -204,6 +204,17 @@ TEST(MachineLog, LinuxCncLogLineOfOneWordIsUnreadable) {
               2);
 }
 
+// fuzz_machine_log: blank lines before the LOG file made the import take it
+// for the PROBEOPEN file (one position per probe) and refuse it as short.
+TEST(MachineLog, LinuxCncLogAfterBlankLinesGivesTheSameTable) {
+    const ProbingPlan plan = small_delay_plan();
+    const std::string log = linuxcnc_log(plan, {-20.0171, -20.0172, -20.1501, -20.1502});
+    const std::string csv = import_machine_log(plan, DialectId::linuxcnc, log);
+    EXPECT_EQ(import_machine_log(plan, DialectId::linuxcnc, "\n" + log), csv);
+    EXPECT_EQ(import_machine_log(plan, DialectId::linuxcnc, "\r\n \t\r\n  " + log), csv);
+    EXPECT_EQ(parse_delay_csv(csv).size(), 4u);
+}
+
 TEST(MachineLog, RingLogGivesTheRingCsvAndACyclePlanHasNoTable) {
     const ProbingPlan ring = make_ring_plan(Scenario{}, RingPlanOptions{});
     const double r = program_test::kRingLogRadius_mm;
