@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Runs every libFuzzer target for SECONDS each, seeded from the test data and
-# the regression inputs in fuzz/corpus/<target>/ (inputs that once crashed;
-# each is run first). Fails on any finding; the crashing input is left in
-# the build directory as crash-* and its path printed.
+# Runs every libFuzzer target for SECONDS each, seeded from the test data (or
+# fuzz/seeds/<target>/ where the input has no test file) and the regression
+# inputs in fuzz/corpus/<target>/ (inputs that once crashed; each is run
+# first). Fails on any finding; the crashing input is left in the build
+# directory as crash-* and its path printed.
 # usage: tools/run_fuzzers.sh BUILD_DIR [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,9 +16,12 @@ declare -A seeds=(
   [delay_csv]="tests/data/lab_delay*.csv"
   [comparison_points]="tests/data/comparison/*.csv"
   [project_json]="tests/data/golden/project.probecycle"
+  [probing_plan]="fuzz/seeds/probing_plan/*.json"
+  [machine_log]="fuzz/seeds/machine_log/*"
 )
 status=0
-for target in scenario_json ring_csv delay_csv comparison_points project_json; do
+for target in scenario_json ring_csv delay_csv comparison_points project_json probing_plan \
+    machine_log; do
   work=$(mktemp -d)
   # shellcheck disable=SC2086
   cp ${seeds[$target]} "$work"/

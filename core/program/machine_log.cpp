@@ -198,7 +198,7 @@ std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
             const std::optional<std::array<double, 3>> xyz = coordinates(words, 3);
             const std::optional<double> n =
                 words.size() == 6 ? parse_decimal(words[2]) : std::nullopt;
-            if (words[1] != "touch" || !xyz || !n) {
+            if (words.size() != 6 || words[1] != "touch" || !xyz || !n) {
                 bad_line(number, line, "'probecycle touch N X Y Z'");
             }
             if (*n != static_cast<double>(positions.size() + 1)) {
@@ -447,7 +447,9 @@ std::string import_machine_log(const ProbingPlan& plan, DialectId dialect, std::
         return lab_csv_from_positions(plan, read_fanuc_positions(text, plan), false);
     }
     const std::vector<RecordedPosition> positions = read_linuxcnc_positions(text, plan);
-    const bool log_file = trimmed(text).substr(0, 10) == "probecycle";
+    // The LOG file's first line that is not blank opens with "probecycle".
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    const bool log_file = first != std::string_view::npos && text.substr(first, 10) == "probecycle";
     return lab_csv_from_positions(plan, positions, !log_file);
 }
 

@@ -189,6 +189,32 @@ TEST(MachineLog, LinuxCncBrokenLogsNameTheLine) {
     EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::linuxcnc, "1 2 three\n"); }), 1);
 }
 
+// fuzz_machine_log: a line holding only "probecycle" read the second word of a
+// one-word line (past the end of its words).
+TEST(MachineLog, LinuxCncLogLineOfOneWordIsUnreadable) {
+    const ProbingPlan plan = small_delay_plan();
+    const std::string first = "probecycle plan " + plan_id(plan) + " delay\n";
+    EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::linuxcnc, "probecycle"); }), 1);
+    EXPECT_EQ(
+        line_of([&] { import_machine_log(plan, DialectId::linuxcnc, first + "  probecycle  \n"); }),
+        2);
+    EXPECT_EQ(line_of([&] {
+                  import_machine_log(plan, DialectId::linuxcnc, first + "probecycle touch\n");
+              }),
+              2);
+}
+
+// fuzz_machine_log: blank lines before the LOG file made the import take it
+// for the PROBEOPEN file (one position per probe) and refuse it as short.
+TEST(MachineLog, LinuxCncLogAfterBlankLinesGivesTheSameTable) {
+    const ProbingPlan plan = small_delay_plan();
+    const std::string log = linuxcnc_log(plan, {-20.0171, -20.0172, -20.1501, -20.1502});
+    const std::string csv = import_machine_log(plan, DialectId::linuxcnc, log);
+    EXPECT_EQ(import_machine_log(plan, DialectId::linuxcnc, "\n" + log), csv);
+    EXPECT_EQ(import_machine_log(plan, DialectId::linuxcnc, "\r\n \t\r\n  " + log), csv);
+    EXPECT_EQ(parse_delay_csv(csv).size(), 4u);
+}
+
 TEST(MachineLog, RingLogGivesTheRingCsvAndACyclePlanHasNoTable) {
     const ProbingPlan ring = make_ring_plan(Scenario{}, RingPlanOptions{});
     const double r = program_test::kRingLogRadius_mm;

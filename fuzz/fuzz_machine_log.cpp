@@ -1,0 +1,93 @@
+// A control's log (issue 13, "Reading back"), imported for a plan. The first
+// byte picks the plan and the dialect: '0' to '8' (every byte picks one,
+// modulo 9) stand for plan (digit / 3: delay, ring, cycle, each from the
+// default scenario and options) and dialect (digit % 3: linuxcnc, grbl,
+// fanuc); the rest is the log. Any log is refused with a CsvError (an
+// InputError for the cycle plan, which has no lab table), or gives the lab's
+// CSV that parse_delay_csv / parse_ring_csv read back: one row per recorded
+// touch of the plan, in order, with its axis, direction and feed (delay) or
+// its orientation (ring). A blank line before the log changes nothing (every
+// importer skips blank lines).
+//
+// The seeds (fuzz/seeds/machine_log/, named for their first byte) are logs of
+// these plans in each format. The LinuxCNC LOG files and the DPRNT outputs
+// carry the plan's id, as `probecycle-cli program delay|ring|cycle` writes it
+// with the default scenario and options: a change to those plans makes the
+// ids stale (the import then stops at the id), and the seeds need the new ids.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/common/csv_reader.h"
+#include "core/common/input_error.h"
+#include "core/cycle/scenario.h"
+#include "core/lab/calibration.h"
+#include "core/lab/delay_fit.h"
+#include "core/program/machine_log.h"
+#include "core/program/plan.h"
+
+namespace {
+
+using namespace probecycle;
+
+const std::array<ProbingPlan, 3>& plans() {
+    static const std::array<ProbingPlan, 3> kPlans = {
+        make_delay_plan(Scenario{}, DelayPlanOptions{}),
+        make_ring_plan(Scenario{}, RingPlanOptions{}),
+        make_cycle_plan(Scenario{}, CyclePlanOptions{}),
+    };
+    return kPlans;
+}
+
+// The CSV holds one row per recorded touch of the plan, each the touch's.
+void check_lab_csv(const ProbingPlan& plan, const std::string& csv) {
+    const std::vector<const ProgramStep*> recorded = plan.recorded();
+    if (plan.kind == ProgramKind::delay) {
+        const std::vector<DelayTouch> touches = parse_delay_csv(csv);
+        if (touches.size() != recorded.size()) std::abort();
+        for (std::size_t i = 0; i < touches.size(); ++i) {
+            if (touches[i].axis != std::string(1, recorded[i]->axis) ||
+                touches[i].direction != recorded[i]->direction ||
+                touches[i].feed_mm_min != recorded[i]->feed_mm_min) {
+                std::abort();
+            }
+        }
+    } else if (plan.kind == ProgramKind::ring) {
+        const std::vector<RingPoint> points = parse_ring_csv(csv);
+        if (points.size() != recorded.size()) std::abort();
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            if (points[i].orientation_deg != recorded[i]->orientation_deg) std::abort();
+        }
+    } else {
+        std::abort();  // a cycle plan has no table
+    }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size == 0) return 0;
+    const unsigned pick = (data[0] + 6u) % 9u;  // '0' -> 0
+    const ProbingPlan& plan = plans()[pick / 3];
+    const DialectId dialect =
+        std::array{DialectId::linuxcnc, DialectId::grbl, DialectId::fanuc}[pick % 3];
+    const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
+    std::string csv;
+    try {
+        csv = import_machine_log(plan, dialect, text);
+    } catch (const CsvError& e) {
+        (void)e.to_message();
+        return 0;
+    } catch (const InputError& e) {
+        if (plan.kind != ProgramKind::cycle) std::abort();
+        (void)e.to_message();
+        return 0;
+    }
+    check_lab_csv(plan, csv);
+    if (import_machine_log(plan, dialect, "\n" + std::string(text)) != csv) std::abort();
+    return 0;
+}
