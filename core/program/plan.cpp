@@ -421,7 +421,7 @@ class PlanReader {
         return number == 0.0 ? 0.0 : number;
     }
 
-    std::string text(const Json& object, const std::string& where, const char* name,
+    std::string text(const Json& object, const std::string& where, const std::string& name,
                      std::size_t max_chars) {
         if (!object.contains(name)) return {};
         const Json& value = object[name];
@@ -500,9 +500,11 @@ class PlanReader {
             fail(where + ".direction", direction, std::move(allowed));
         }
         step.distance_mm = number(body, where, "distance_mm", kStep_mm, kMaxPlanDistance_mm, "mm");
-        const double min_feed = step.kind == StepKind::move ? 0.0 : kMinPlanFeed_mm_min;
-        step.feed_mm_min =
-            number(body, where, "feed_mm_min", min_feed, kMaxPlanFeed_mm_min * 2.0, "mm/min");
+        // A probe's feed is one the lab reads back (kMaxPlanFeed_mm_min); a
+        // move may be a rapid (0) or a return faster than any probe.
+        const bool move = step.kind == StepKind::move;
+        step.feed_mm_min = number(body, where, "feed_mm_min", move ? 0.0 : kMinPlanFeed_mm_min,
+                                  move ? kMaxPlanFeed_mm_min * 2.0 : kMaxPlanFeed_mm_min, "mm/min");
         if (body.contains("recorded")) {
             const Json& recorded = body["recorded"];
             if (recorded.is_boolean() && (step.kind == StepKind::probe || !recorded.get<bool>())) {
@@ -515,7 +517,16 @@ class PlanReader {
             }
         }
         if (body.contains("orientation_deg")) {
-            step.orientation_deg = number(body, where, "orientation_deg", 0.0, 360.0, "deg");
+            // The ring's two spindle orientations, as the lab reads them.
+            const Json& orientation = body["orientation_deg"];
+            if (orientation == 0 || orientation == 180) {
+                step.orientation_deg = orientation.get<double>();
+            } else {
+                Message allowed =
+                    allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
+                allowed.args = {text_arg("allowed_words", "0, 180")};
+                fail(where + ".orientation_deg", orientation, std::move(allowed));
+            }
         }
         return step;
     }
@@ -592,7 +603,7 @@ ProbingPlan parse_probing_plan(std::string_view text) {
             }
         } else if (key == "values" && value.is_object()) {
             for (const auto& v : value.items()) {
-                const std::string shown = reader.text(value, key, v.key().c_str(), 100);
+                const std::string shown = reader.text(value, key, v.key(), 100);
                 plan.values.push_back({v.key(), shown});
             }
         } else if (key == "steps" && value.is_array() && value.size() <= kMaxPlanSteps) {

@@ -64,13 +64,35 @@ TEST(ProbingPlan, BadFilesNameTheKey) {
     std::string feed = good;
     feed.replace(feed.find("\"feed_mm_min\": 2000.0"), 21, "\"feed_mm_min\": -5");
     EXPECT_EQ(first_error(feed),
-              "steps.2.feed_mm_min: got -5; allowed: a number from 1 to 200000 mm/min");
+              "steps.2.feed_mm_min: got -5; allowed: a number from 1 to 100000 mm/min");
+    // A probe's feed and a ring touch's orientation are ones the lab reads back
+    // (found by fuzz_machine_log: an edited plan imported to a CSV the lab refused).
+    feed.replace(feed.find("\"feed_mm_min\": -5"), 17, "\"feed_mm_min\": 150000");
+    EXPECT_EQ(first_error(feed),
+              "steps.2.feed_mm_min: got 150000; allowed: a number from 1 to 100000 mm/min");
+    std::string ring = probing_plan_json(program_test::golden_plans()[1].plan);
+    ASSERT_NE(ring.find("\"orientation_deg\": 180.0"), std::string::npos);
+    ring.replace(ring.find("\"orientation_deg\": 180.0"), 24, "\"orientation_deg\": 90");
+    EXPECT_NE(first_error(ring).find("orientation_deg: got 90; allowed: one of 0, 180"),
+              std::string::npos)
+        << first_error(ring);
     std::string axis = good;
     axis.replace(axis.find(R"("axis": "Z")"), 11, R"("axis": "Q")");
     EXPECT_EQ(first_error(axis), "steps.2.axis: got \"Q\"; allowed: one of X, Y, Z");
     EXPECT_EQ(
         first_error("{\"format\": \"probecycle-probing-plan\", \"version\": 1, \"steps\": []}"),
         "steps: no recorded probe; a plan needs one or more");
+}
+
+// A value's key is kept whole, a NUL in it too (found by fuzz_probing_plan:
+// the lookup cut the key at the NUL and lost its text).
+TEST(ProbingPlan, AValueKeyWithANulKeepsItsText) {
+    ProbingPlan plan = program_test::golden_plans()[2].plan;
+    plan.values.push_back({std::string("a\0b", 3), "7"});
+    const ProbingPlan back = parse_probing_plan(probing_plan_json(plan));
+    ASSERT_EQ(back.values.size(), plan.values.size());
+    EXPECT_EQ(back.values.back().key, std::string("a\0b", 3));
+    EXPECT_EQ(back.values.back().text, "7");
 }
 
 TEST(ProbingPlan, OptionsThatCannotWorkAreRefused) {
