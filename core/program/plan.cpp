@@ -405,6 +405,14 @@ class PlanReader {
         errors.push_back({std::move(key), value.is_null() ? "" : value.dump(), std::move(allowed)});
     }
 
+    // Not one of the `words` allowed (listed as "X, Y, Z").
+    void fail_word(std::string key, const Json& value, const char* words) {
+        Message allowed =
+            allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
+        allowed.args = {text_arg("allowed_words", words)};
+        fail(std::move(key), value, std::move(allowed));
+    }
+
     double number(const Json& object, const std::string& where, const char* name, double min,
                   double max, const char* unit) {
         const std::string key = where + "." + name;
@@ -473,10 +481,7 @@ class PlanReader {
         } else if (kind == "move") {
             step.kind = StepKind::move;
         } else {
-            Message allowed =
-                allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
-            allowed.args = {text_arg("allowed_words", "pause, probe, move")};
-            fail(where + ".step", kind, std::move(allowed));
+            fail_word(where + ".step", kind, "pause, probe, move");
             return step;
         }
         step.text = text(body, where, "text", kMaxPauseTextChars);
@@ -485,19 +490,13 @@ class PlanReader {
         if (axis == "X" || axis == "Y" || axis == "Z") {
             step.axis = axis.get<std::string>()[0];
         } else {
-            Message allowed =
-                allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
-            allowed.args = {text_arg("allowed_words", "X, Y, Z")};
-            fail(where + ".axis", axis, std::move(allowed));
+            fail_word(where + ".axis", axis, "X, Y, Z");
         }
         const Json direction = body.contains("direction") ? body["direction"] : Json();
         if (direction == 1 || direction == -1) {
             step.direction = direction.get<int>();
         } else {
-            Message allowed =
-                allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
-            allowed.args = {text_arg("allowed_words", "1, -1")};
-            fail(where + ".direction", direction, std::move(allowed));
+            fail_word(where + ".direction", direction, "1, -1");
         }
         step.distance_mm = number(body, where, "distance_mm", kStep_mm, kMaxPlanDistance_mm, "mm");
         // A probe's feed is one the lab reads back (kMaxPlanFeed_mm_min); a
@@ -522,10 +521,7 @@ class PlanReader {
             if (orientation == 0 || orientation == 180) {
                 step.orientation_deg = orientation.get<double>();
             } else {
-                Message allowed =
-                    allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
-                allowed.args = {text_arg("allowed_words", "0, 180")};
-                fail(where + ".orientation_deg", orientation, std::move(allowed));
+                fail_word(where + ".orientation_deg", orientation, "0, 180");
             }
         }
         return step;
@@ -596,10 +592,7 @@ ProbingPlan parse_probing_plan(std::string_view text) {
             if (kind) {
                 plan.kind = *kind;
             } else {
-                Message allowed =
-                    allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
-                allowed.args = {text_arg("allowed_words", "delay, ring, cycle")};
-                reader.fail(key, value, std::move(allowed));
+                reader.fail_word(key, value, "delay, ring, cycle");
             }
         } else if (key == "values" && value.is_object()) {
             for (const auto& v : value.items()) {
