@@ -480,15 +480,14 @@ class CycleBuilder {
         return state.position_mm;
     }
 
-    // A block's actual motion with dynamics, `duration_s` of it (to the
-    // in-position check); the next block starts where the command ended.
     // The actual motion of `command`, kept in motions_ (built in place: a
     // motion is a kilobyte); its index there.
     int keep_motion(const AxisCommand& command) {
         motions_.emplace_back(*kernel_, command);
         return static_cast<int>(motions_.size() - 1);
     }
-    // A kept motion as the next block.
+    // A kept motion as the next block, `duration_s` of it (to the in-position
+    // check); the next block starts where the command ended.
     void add_filtered_motion(int index, double direction, double duration_s) {
         const AxisMotion& motion = motions_[static_cast<std::size_t>(index)];
         TimedSegment segment;
