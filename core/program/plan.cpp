@@ -224,6 +224,11 @@ std::vector<const ProgramStep*> ProbingPlan::recorded() const {
     return out;
 }
 
+bool ProbingPlan::has_guards() const {
+    return std::any_of(steps.begin(), steps.end(),
+                       [](const ProgramStep& step) { return step.kind == StepKind::guard; });
+}
+
 std::optional<AxisDirection> axis_direction_from_string(std::string_view text) {
     if (text.size() != 2) return std::nullopt;
     const char axis = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
@@ -393,6 +398,8 @@ const char* to_word(StepKind kind) {
             return "probe";
         case StepKind::move:
             return "move";
+        case StepKind::guard:
+            return "guard";
     }
     return "probe";
 }
@@ -472,10 +479,12 @@ class PlanReader {
             step.kind = StepKind::probe;
         } else if (kind == "move") {
             step.kind = StepKind::move;
+        } else if (kind == "guard") {
+            step.kind = StepKind::guard;
         } else {
             Message allowed =
                 allowed_text("unknown_word", QT_TRANSLATE_NOOP("FieldError", "one of %1"));
-            allowed.args = {text_arg("allowed_words", "pause, probe, move")};
+            allowed.args = {text_arg("allowed_words", "pause, probe, move, guard")};
             fail(where + ".step", kind, std::move(allowed));
             return step;
         }
@@ -500,6 +509,7 @@ class PlanReader {
             fail(where + ".direction", direction, std::move(allowed));
         }
         step.distance_mm = number(body, where, "distance_mm", kStep_mm, kMaxPlanDistance_mm, "mm");
+        // A plain move may be a rapid; a probe and a protected move run at a feed.
         const double min_feed = step.kind == StepKind::move ? 0.0 : kMinPlanFeed_mm_min;
         step.feed_mm_min =
             number(body, where, "feed_mm_min", min_feed, kMaxPlanFeed_mm_min * 2.0, "mm/min");

@@ -28,6 +28,10 @@ enum class StepKind {
     pause,  // the operator does what `text` says, then resumes (cycle start)
     probe,  // a probing move: stops at the trigger, an alarm when none comes
     move,   // a plain move: rapid (feed 0) or at a feed
+    // A protected move: at a feed with the probe armed, a move that must not
+    // trigger. A trigger means the path is obstructed: the program stops with
+    // an alarm where the dialect can branch (dialect.h, guard_word).
+    guard,
 };
 
 struct ProgramStep {
@@ -35,12 +39,12 @@ struct ProgramStep {
     char axis{'X'};           // 'X', 'Y' or 'Z'
     int direction{-1};        // +1 or -1, the direction of travel
     double distance_mm{0.0};  // the length of the move (probe: the farthest it may go)
-    double feed_mm_min{0.0};  // 0: rapid (a move only)
+    double feed_mm_min{0.0};  // 0: rapid (a plain move only)
     // A probe whose trigger position the lab uses; the others locate the
     // surface or make the first touch of a two-touch point.
     bool recorded{false};
     double orientation_deg{0.0};  // ring: the spindle orientation of the touch
-    std::string text;             // pause: what the operator does; probe/move: a note
+    std::string text;             // pause: what the operator does; otherwise a note
 };
 
 // A scenario value the plan was made from, shown in the program's header.
@@ -56,6 +60,8 @@ struct ProbingPlan {
 
     // The recorded probes, in order.
     std::vector<const ProgramStep*> recorded() const;
+    // Whether a step is a protected move (StepKind::guard).
+    bool has_guards() const;
 };
 
 // One axis and direction of the delay test ("X-").
@@ -128,7 +134,9 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
 //    "values": {"cycle.probe_feed_mm_min": "2000", ...},
 //    "steps": [{"step": "pause", "text": "..."},
 //              {"step": "probe", "axis": "Z", "direction": -1, "distance_mm": 3.1,
-//               "feed_mm_min": 30, "recorded": true, "orientation_deg": 0, "text": ""}, ...]}
+//               "feed_mm_min": 30, "recorded": true, "orientation_deg": 0, "text": ""},
+//              {"step": "guard", "axis": "X", "direction": 1, "distance_mm": 20,
+//               "feed_mm_min": 3000, "text": ""}, ...]}
 std::string probing_plan_json(const ProbingPlan& plan);
 // Throws ScenarioError listing every problem, keyed by its dotted path
 // ("steps.3.feed_mm_min").

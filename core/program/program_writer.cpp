@@ -128,15 +128,21 @@ class Writer {
         words.insert(words.begin(), step.axis);
         return words;
     }
-    // A probe's check line ({current}, {skip}, {distance}).
-    void probe_check(const char* pattern, const ProgramStep& step) {
+    // A probe's or protected move's check line ({current}, {skip},
+    // {distance}, {label}).
+    void probe_check(const char* pattern, const ProgramStep& step, std::size_t label = 0) {
         if (*pattern == '\0') return;
         const std::size_t axis = axis_index(step.axis);
         std::string distance = program_number(step.direction * step.distance_mm);
         if (distance[0] != '-') distance.insert(distance.begin(), '+');
-        line(replaced(replaced(replaced(pattern, "{current}", d_.current_position.at(axis)),
-                               "{skip}", d_.skip_position.at(axis)),
-                      "{distance}", distance));
+        std::string text = replaced(pattern, "{label}", std::to_string(label));
+        if (text.find("{current}") != std::string::npos) {
+            text = replaced(text, "{current}", d_.current_position.at(axis));
+        }
+        if (text.find("{skip}") != std::string::npos) {
+            text = replaced(text, "{skip}", d_.skip_position.at(axis));
+        }
+        line(replaced(text, "{distance}", distance));
     }
     const std::string& text() const { return out_; }
 
@@ -220,6 +226,10 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
         "starts or a pause ends. A probing move that does not trigger stops the program\n"
         "with an alarm.");
     for (const char* note : dialect.record_notes) w.comment(note);
+    const bool guards = plan.has_guards();
+    if (guards) {
+        for (const char* note : dialect.guard_notes) w.comment(note);
+    }
     w.line(dialect.modes);
     std::string kind_upper = to_string(plan.kind);
     for (char& c : kind_upper) c = static_cast<char>(c - 'a' + 'A');
@@ -230,6 +240,7 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                      "{KIND}", kind_upper));
     }
     std::size_t recorded = 0;
+    std::size_t guard_count = 0;
     double orientation = 0.0;
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const ProgramStep& step = plan.steps[i];
@@ -268,6 +279,16 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                     }
                 }
                 break;
+            case StepKind::guard: {
+                // A number of the move's own: LinuxCNC's o-word of its branch.
+                const std::size_t label = 1000 + ++guard_count;
+                w.comment(step.text);
+                w.probe_check(dialect.before_guard, step, label);
+                w.line(std::string(dialect.guard_word) + " " + w.move_words(step) + " F" +
+                       program_feed(step.feed_mm_min));
+                for (const char* after : dialect.after_guard) w.probe_check(after, step, label);
+                break;
+            }
             case StepKind::move:
                 if (step.feed_mm_min > 0.0) {
                     w.line(std::string(dialect.feed_word) + " " + w.move_words(step) + " F" +
@@ -282,6 +303,10 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
     for (const char* close : dialect.close_record) w.line(close);
     for (const char* end : dialect.end) w.line(end);
     for (const char* after : dialect.after_end) w.line(after);
+    if (guards) {
+        for (const char* line : dialect.guard_alarm) w.line(line);
+    }
+    for (const char* line : dialect.file_end) w.line(line);
     return w.text();
 }
 

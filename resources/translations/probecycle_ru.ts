@@ -570,6 +570,14 @@
         <source>no line PROBECYCLE PLAN: is this the DPRNT output of a ProbeCycle program? Nothing imported</source>
         <translation>нет строки PROBECYCLE PLAN: это вывод DPRNT программы ProbeCycle? Ничего не импортировано</translation>
     </message>
+    <message>
+        <source>the probe touched something during a protected move (%1): its path is obstructed, and grbl, which cannot stop a program on it, went on; check the machine; nothing imported</source>
+        <translation>датчик коснулся чего-то во время защищённого перемещения (%1): на пути препятствие, а grbl, который не может остановить на этом программу, продолжил её; проверьте станок; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>the program printed PROBECYCLE OBSTRUCTED: the probe touched something during a protected move and the control stopped with alarm 102; nothing imported</source>
+        <translation>программа вывела PROBECYCLE OBSTRUCTED: датчик коснулся чего-то во время защищённого перемещения, и система ЧПУ остановилась с аварией 102; ничего не импортировано</translation>
+    </message>
 </context>
 <context>
     <name>Optimise</name>

@@ -570,6 +570,14 @@
         <source>no line PROBECYCLE PLAN: is this the DPRNT output of a ProbeCycle program? Nothing imported</source>
         <translation>没有 PROBECYCLE PLAN 行：这是 ProbeCycle 程序的 DPRNT 输出吗？未导入任何内容</translation>
     </message>
+    <message>
+        <source>the probe touched something during a protected move (%1): its path is obstructed, and grbl, which cannot stop a program on it, went on; check the machine; nothing imported</source>
+        <translation>测头在保护移动中触碰到物体（%1）：路径受阻，而 grbl 无法因此停止程序，仍继续执行；请检查机床；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>the program printed PROBECYCLE OBSTRUCTED: the probe touched something during a protected move and the control stopped with alarm 102; nothing imported</source>
+        <translation>程序输出了 PROBECYCLE OBSTRUCTED：测头在保护移动中触碰到物体，系统以报警 102 停止；未导入任何内容</translation>
+    </message>
 </context>
 <context>
     <name>Optimise</name>

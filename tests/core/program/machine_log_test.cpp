@@ -206,6 +206,78 @@ TEST(MachineLog, RingLogGivesTheRingCsvAndACyclePlanHasNoTable) {
     EXPECT_THROW(import_machine_log(cycle, DialectId::grbl, prb(0, 0, -5)), InputError);
 }
 
+// A plan with protected moves (a cycle plan: no lab table, but its recorded
+// touches are matched as the import matches any plan's). grbl reports every
+// G38.3: ":0" where it touched nothing; a ":1" there is an obstruction, which
+// grbl itself cannot stop on. LinuxCNC's PROBEOPEN file holds a G38.3's end
+// too; its LOG and the Fanuc-type DPRNT output the recorded touches alone.
+TEST(MachineLog, ProtectedMovesAreMatchedAndATouchOnOneIsRefused) {
+    const ProbingPlan plan = program_test::guarded_plan();
+    // Out to X20 (line 1), the touch at X25.03 (2), back to the start and
+    // the centre (4), down to Z-10 (5).
+    const std::string console =
+        prb(20, 0, 0, 0) + prb(25.03, 0, 0) + "ok\n" + prb(0, 0, 0, 0) + prb(0, 0, -10, 0);
+    const std::vector<RecordedPosition> touches =
+        recorded_touch_positions(plan, DialectId::grbl, console);
+    ASSERT_EQ(touches.size(), 1u);
+    EXPECT_EQ(touches[0].line, 2u);
+    EXPECT_DOUBLE_EQ(touches[0].xyz[0], 25.03);
+    // The cycle has no table in the lab.
+    EXPECT_THROW(import_machine_log(plan, DialectId::grbl, console), InputError);
+
+    // A protected move that touched (line 4), and a probe that did not (line 2).
+    std::string obstructed = console;
+    obstructed.replace(obstructed.find(prb(0, 0, 0, 0)), prb(0, 0, 0, 0).size(), prb(3, 0, 0));
+    EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, obstructed); }), 4);
+    try {
+        recorded_touch_positions(plan, DialectId::grbl, obstructed);
+    } catch (const CsvError& e) {
+        EXPECT_NE(std::string(e.what()).find("during a protected move ([PRB:3.000,0.000,0.000:1])"),
+                  std::string::npos)
+            << e.what();
+    }
+    std::string no_trigger = console;
+    no_trigger.replace(no_trigger.find(prb(25.03, 0, 0)), prb(25.03, 0, 0).size(),
+                       prb(26, 0, 0, 0));
+    EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, no_trigger); }), 2);
+    // A console of the touch alone: its report stands where the first
+    // protected move's is due, and reads as a touch there.
+    EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, prb(25.03, 0, 0)); }),
+              1);
+
+    // LinuxCNC: the LOG file, and the PROBEOPEN file with every G38.3's end.
+    const std::string id = plan_id(plan);
+    const std::vector<RecordedPosition> logged = recorded_touch_positions(
+        plan, DialectId::linuxcnc,
+        "probecycle plan " + id + " cycle\nprobecycle touch 1 25.030000 0.000000 0.000000\n");
+    ASSERT_EQ(logged.size(), 1u);
+    EXPECT_EQ(logged[0].line, 2u);
+    EXPECT_DOUBLE_EQ(logged[0].xyz[0], 25.03);
+    const std::string probe_file =
+        "20.000000 0.000000 0.000000 0 0 0 0 0 0\n25.030000 0.000000 0.000000 0 0 0 0 0 0\n"
+        "0.000000 0.000000 0.000000 0 0 0 0 0 0\n0.000000 0.000000 -10.000000 0 0 0 0 0 0\n";
+    const std::vector<RecordedPosition> probed =
+        recorded_touch_positions(plan, DialectId::linuxcnc, probe_file);
+    ASSERT_EQ(probed.size(), 1u);
+    EXPECT_EQ(probed[0].line, 2u);
+    EXPECT_DOUBLE_EQ(probed[0].xyz[0], 25.03);
+
+    // Fanuc-type: the touch, and the obstruction's marker (line 2).
+    const std::string letters = id_letters(id);
+    const std::vector<RecordedPosition> printed = recorded_touch_positions(
+        plan, DialectId::fanuc,
+        "PROBECYCLE PLAN " + letters +
+            " CYCLE\nTOUCH   1 X  25.0300 Y   0.0000 Z   0.0000\nPROBECYCLE END\n");
+    ASSERT_EQ(printed.size(), 1u);
+    EXPECT_DOUBLE_EQ(printed[0].xyz[0], 25.03);
+    EXPECT_EQ(line_of([&] {
+                  recorded_touch_positions(
+                      plan, DialectId::fanuc,
+                      "PROBECYCLE PLAN " + letters + " CYCLE\nPROBECYCLE OBSTRUCTED\n");
+              }),
+              2);
+}
+
 // One probing move on the simulated machine: the surface `surface_mm` along
 // the move's axis; the probe triggers after the pretravel, the control
 // records the position a total delay later (the interface and controller

@@ -73,6 +73,60 @@ TEST(ProbingPlan, BadFilesNameTheKey) {
         "steps: no recorded probe; a plan needs one or more");
 }
 
+TEST(ProbingPlan, ProtectedMovesReadBackAsWritten) {
+    const ProbingPlan plan = program_test::guarded_plan();
+    const std::string text = probing_plan_json(plan);
+    // A protected move is written as a plain move is: no recorded flag, no orientation.
+    EXPECT_NE(text.find(R"({
+      "step": "guard",
+      "axis": "X",
+      "direction": 1,
+      "distance_mm": 20.0,
+      "feed_mm_min": 3000.0,
+      "text": "out to the X+ start"
+    })"),
+              std::string::npos)
+        << text;
+    const ProbingPlan back = parse_probing_plan(text);
+    EXPECT_EQ(probing_plan_json(back), text);
+    EXPECT_EQ(plan_id(back), plan_id(plan));
+    ASSERT_EQ(back.steps.size(), 6u);
+    EXPECT_EQ(back.steps[1].kind, StepKind::guard);
+    EXPECT_EQ(back.steps[5].kind, StepKind::guard);
+    EXPECT_EQ(back.steps[5].axis, 'Z');
+    EXPECT_EQ(back.steps[5].direction, -1);
+    EXPECT_FALSE(back.steps[5].recorded);
+    EXPECT_TRUE(back.has_guards());
+    // The recorded touches are the probes alone.
+    ASSERT_EQ(back.recorded().size(), 1u);
+    EXPECT_EQ(back.recorded()[0], &back.steps[2]);
+    EXPECT_FALSE(program_test::golden_plans()[0].plan.has_guards());
+}
+
+TEST(ProbingPlan, BadProtectedMovesNameTheKey) {
+    const std::string good = probing_plan_json(program_test::guarded_plan());
+    // The first protected move is steps.2; its fields as written.
+    const auto with = [&good](const std::string& from, const std::string& to) {
+        std::string text = good;
+        text.replace(text.find(from, text.find("\"step\": \"guard\"")), from.size(), to);
+        return first_error(text);
+    };
+    // A protected move runs at a feed, never at the rapid.
+    EXPECT_EQ(with("\"feed_mm_min\": 3000.0", "\"feed_mm_min\": 0"),
+              "steps.2.feed_mm_min: got 0; allowed: a number from 1 to 200000 mm/min");
+    EXPECT_EQ(with("\"distance_mm\": 20.0", "\"distance_mm\": 0"),
+              "steps.2.distance_mm: got 0; allowed: a number from 0.001 to 1000 mm");
+    EXPECT_EQ(with("\"direction\": 1", "\"direction\": 2"),
+              "steps.2.direction: got 2; allowed: one of 1, -1");
+    EXPECT_EQ(with("\"axis\": \"X\"", "\"axis\": \"A\""),
+              "steps.2.axis: got \"A\"; allowed: one of X, Y, Z");
+    // Only a probe is recorded.
+    EXPECT_EQ(with("\"direction\": 1", "\"direction\": 1, \"recorded\": true"),
+              "steps.2.recorded: got true; allowed: true or false (true on a probe only)");
+    EXPECT_EQ(with("\"step\": \"guard\"", "\"step\": \"gaurd\""),
+              "steps.2.step: got \"gaurd\"; allowed: one of pause, probe, move, guard");
+}
+
 TEST(ProbingPlan, OptionsThatCannotWorkAreRefused) {
     const Scenario scenario;
     DelayPlanOptions one_feed;
