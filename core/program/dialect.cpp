@@ -159,11 +159,11 @@ const Dialect& grbl_dialect() {
                          "positions; set $13=0 for mm). Save the sender's console to a file and",
                          "import that file."},
         .guard_notes =
-            {"Protected moves are G38.3, the probe armed: grbl stops one that touches",
-             "something, but it cannot branch, so the program goes on. The next G38.2 or",
-             "G38.3 then stops it with ALARM:4 if the probe is still deflected; after the",
-             "last protected move no probe follows. The import refuses a console where a",
-             "protected move reports [PRB:...:1]: check every such line."},
+            {"Protected moves are G38.3, the probe armed: grbl answers [PRB:...:0] after",
+             "one that touches nothing. It stops one that touches something ([PRB:...:1])",
+             "but cannot branch, so the program goes on; the next G38.2 or G38.3 then",
+             "stops it with ALARM:4 if the probe is still deflected. No probe follows the",
+             "last protected move: the import refuses a console where one answers :1."},
     };
     return dialect;
 }

@@ -119,7 +119,20 @@ struct RingPlanOptions {
 };
 
 // The tuned cycle: the scenario's strategy, feeds, backoff and start distance
-// on a surface, along `axis` (the probe stands approach_mm in front of it).
+// (cycle.*), the touches of its feature (cycle.feature):
+// - a surface along `touch` (the probe stands approach_mm in front of it);
+// - a bore X+, X-, Y+, Y-, a pocket both walls along touch's axis (X or Y;
+//   its sign is not used: + first, as the model): from the centre at the
+//   measuring depth, a protected move (StepKind::guard, at
+//   cycle.position_feed_mm_min) out to each touch's start
+//   (start_radius_mm, cycle.h), the touch, a protected move back to the centre;
+// - a boss its X+, X-, Y+, Y- sides, a web both sides along touch's axis:
+//   from above the centre, cycle.clearance_mm over the measuring depth,
+//   per side a protected move out over the start, one down by the clearance,
+//   the touch toward the centre, a rapid up by the clearance, a protected move
+//   back over the centre.
+// The model moves straight from start to start; the programs go back through
+// the centre between touches.
 struct CyclePlanOptions {
     AxisDirection touch{'Z', -1};
 };

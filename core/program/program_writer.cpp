@@ -70,6 +70,46 @@ std::string comment_safe(std::string text) {
     return text;
 }
 
+// The tuned cycle on a feature (plan.h, CyclePlanOptions): the plan names the
+// feature in its values; a surface's plan does not. nullptr for another word.
+const char* feature_description(std::string_view feature) {
+    if (feature == "bore") {
+        return "the tuned cycle on a bore.\n"
+               "X+, X-, Y+ and Y- touched with the scenario's strategy, feeds, backoff and\n"
+               "start distance, from the centre at the measuring depth: a protected move\n"
+               "out to each touch's start and back to the centre.";
+    }
+    if (feature == "pocket") {
+        return "the tuned cycle on a pocket.\n"
+               "Both walls along one axis touched with the scenario's strategy, feeds,\n"
+               "backoff and start distance, from the centre at the measuring depth: a\n"
+               "protected move out to each touch's start and back to the centre.";
+    }
+    if (feature == "boss") {
+        return "the tuned cycle on a boss.\n"
+               "The X+, X-, Y+ and Y- sides touched toward the centre with the scenario's\n"
+               "strategy, feeds, backoff and start distance, from above the centre at the\n"
+               "clearance height: per side a protected move out over its start, a protected\n"
+               "move down by the clearance, the touch, a rapid up by the clearance and a\n"
+               "protected move back over the centre.";
+    }
+    if (feature == "web") {
+        return "the tuned cycle on a web.\n"
+               "Both sides along one axis touched toward the centre with the scenario's\n"
+               "strategy, feeds, backoff and start distance, from above the centre at the\n"
+               "clearance height: per side a protected move out over its start, a protected\n"
+               "move down by the clearance, the touch, a rapid up by the clearance and a\n"
+               "protected move back over the centre.";
+    }
+    return nullptr;
+}
+
+// The model moves straight from start to start (over the top of a boss or web).
+constexpr const char* kThroughTheCentre =
+    "\nThe model moves straight from one touch's start to the next; this program\n"
+    "goes back through the centre between touches, so it runs a little longer\n"
+    "than the model's cycle time.";
+
 const char* description(ProgramKind kind) {
     switch (kind) {
         case ProgramKind::delay:
@@ -87,6 +127,17 @@ const char* description(ProgramKind kind) {
                    "distance: a plain skip sequence, no macro call.";
     }
     return "";
+}
+
+std::string description(const ProbingPlan& plan) {
+    if (plan.kind == ProgramKind::cycle) {
+        for (const PlanValue& value : plan.values) {
+            const char* text =
+                value.key == "cycle.feature" ? feature_description(value.text) : nullptr;
+            if (text != nullptr) return std::string(text) + kThroughTheCentre;
+        }
+    }
+    return description(plan.kind);
 }
 
 std::size_t axis_index(char axis) {
@@ -214,7 +265,7 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
     const std::string id = plan_id(plan);
     for (const char* start : dialect.program_start) w.line(start);
     w.comment_block(std::string("ProbeCycle program for ") + dialect.title + ": " +
-                    description(plan.kind));
+                    description(plan));
     w.comment("Plan " + id + " (keep the plan file: the import matches the positions to it).");
     w.comment("Date " + date + ".");
     w.comment("Scenario values and options used:");

@@ -32,9 +32,24 @@ inline ProgramOptions golden_options() {
 }
 
 struct NamedPlan {
-    std::string name;  // "delay", "ring", "cycle", "cycle_single"
+    std::string name;  // "delay", "ring", "cycle", "cycle_single", "cycle_bore", "cycle_boss"
     ProbingPlan plan;
 };
+
+// The tuned cycle on a bore: the default scenario (two-touch) on its 50 mm bore.
+inline Scenario golden_bore() {
+    Scenario bore;
+    bore.cycle.feature = Feature::bore;
+    return bore;
+}
+// On a boss, single-touch at 300 mm/min.
+inline Scenario golden_boss() {
+    Scenario boss;
+    boss.cycle.feature = Feature::boss;
+    boss.cycle.strategy = Strategy::single_touch;
+    boss.cycle.probe_feed_mm_min = 300.0;
+    return boss;
+}
 
 // Every program the tests write, from the default scenario.
 inline std::vector<NamedPlan> golden_plans() {
@@ -47,6 +62,8 @@ inline std::vector<NamedPlan> golden_plans() {
         {"ring", make_ring_plan(scenario, RingPlanOptions{})},
         {"cycle", make_cycle_plan(scenario, CyclePlanOptions{})},
         {"cycle_single", make_cycle_plan(single, CyclePlanOptions{{'X', 1}})},
+        {"cycle_bore", make_cycle_plan(golden_bore(), CyclePlanOptions{})},
+        {"cycle_boss", make_cycle_plan(golden_boss(), CyclePlanOptions{})},
     };
 }
 

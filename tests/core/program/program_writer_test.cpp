@@ -108,7 +108,7 @@ TEST(ProgramWriter, ProtectedMovesInEveryDialect) {
     EXPECT_NE(grbl.find("; out to the X+ start\nG38.3 X20.000 F3000\n; touch 1:"),
               std::string::npos)
         << grbl;
-    EXPECT_NE(grbl.find("; Protected moves are G38.3, the probe armed: grbl stops one"),
+    EXPECT_NE(grbl.find("; Protected moves are G38.3, the probe armed: grbl answers"),
               std::string::npos);
 
     const std::string fanuc = write_program(plan, fanuc_dialect(), program_test::kDate);
