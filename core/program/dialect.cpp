@@ -212,14 +212,14 @@ const Dialect& grbl_dialect() {
 //   The moving axis's own skip variable is read: #5061 X, #5062 Y, #5063 Z
 //   (15i p.564: 1st, 2nd, 3rd axis). A touch in the last 0.05 mm passes: the
 //   move ends there anyway, so the stylus is deflected by at most that. An
-//   early #5041 read (below) can raise this alarm falsely, never hide it.
+//   early #5041 read (above) can raise this alarm falsely, never hide it.
 //   GE is one of macro B's comparison operators EQ NE GT GE LT LE (the
 //   tutorial "G-Code Macro Programming"; EQ, NE and LE in the working program
-//   below).
+//   above).
 // - #3000=n (TEXT) stops with alarm n (cncci.com, "Generating alarms for
 //   dangerous situations": "for most control models, must range between 100
-//   and 255"): 101 and 102, upper-case text. IF[...]GOTOn and the N label after M30:
-//   the same working program.
+//   and 255"): 101 and 102, upper-case text. IF[...]GOTOn and the N label
+//   after M30: the same working program.
 // - POPEN, DPRNT[...], PCLOS: Haas 96-8000 Rev AC p.116 ("DPRNT must be the
 //   only command in the block"; text "any character from A to Z or the
 //   letters (+,-,/,*, and the space). When an asterisk is output, it is
