@@ -68,6 +68,17 @@ Rs274Run run(const std::string& command) {
 // (saicanon.cc: 0.254 mm, 0.01 inch).
 constexpr double kRs274Backoff_mm = 0.254;
 
+// `rs274 -g FILE` in `dir`, with HOME there too: LinuxCNC 2.9's rs274 opens
+// $HOME/.tool.mmap with O_TRUNC and maps it shared (tool_mmap_creator,
+// src/emc/tooldata/tooldata_mmap.cc), so two runs at once under one HOME
+// (ctest -j) truncate each other's map and die with a bus error, and a run
+// would empty the tool table of a LinuxCNC running under that HOME. Later
+// versions give rs274 a file of its own (src/emc/sai/driver.cc).
+Rs274Run run_rs274(const std::string& rs274, const fs::path& dir, const fs::path& file) {
+    return run("cd '" + dir.string() + "' && HOME='" + dir.string() + "' " + rs274 + " -g '" +
+               file.string() + "' </dev/null 2>&1");
+}
+
 struct CanonProbe {
     char axis{'?'};
     double distance_mm{0.0};
@@ -146,8 +157,7 @@ TEST(Rs274Check, EveryLinuxCncProgramReadsAndProbesAsPlanned) {
     for (const auto& [name, plan] : plans) {
         const fs::path file = dir / ("program_" + name + ".ngc");
         std::ofstream(file) << write_program(plan, linuxcnc_dialect(), program_test::kDate);
-        const Rs274Run result = run("cd '" + dir.string() + "' && " + rs274 + " -g '" +
-                                    file.string() + "' </dev/null 2>&1");
+        const Rs274Run result = run_rs274(rs274, dir, file);
         EXPECT_EQ(result.exit_code, 0) << name << ":\n" << result.output;
         std::size_t logs = 0;
         const std::vector<CanonProbe> probes = probes_of(result.output, logs);
@@ -186,8 +196,7 @@ TEST(Rs274Check, AProtectedMoveThatTripsAbortsTheProgram) {
     fs::create_directories(dir);
     const fs::path file = dir / "guarded.ngc";
     std::ofstream(file) << text;
-    const Rs274Run result = run("cd '" + dir.string() + "' && " + rs274 + " -g '" + file.string() +
-                                "' </dev/null 2>&1");
+    const Rs274Run result = run_rs274(rs274, dir, file);
     EXPECT_NE(result.exit_code, 0) << result.output;
     EXPECT_NE(result.output.find("the path is obstructed"), std::string::npos) << result.output;
     std::size_t logs = 0;
@@ -199,12 +208,14 @@ TEST(Rs274Check, AnInterpreterErrorFailsTheCheck) {
     const std::string rs274 = find_rs274();
     if (rs274.empty()) GTEST_SKIP() << "rs274 is not installed (apt-get install linuxcnc-uspace)";
     std::random_device seed;
-    const fs::path file =
-        fs::temp_directory_path() / ("probecycle_rs274_bad_" + std::to_string(seed()) + ".ngc");
+    const fs::path dir =
+        fs::temp_directory_path() / ("probecycle_rs274_bad_" + std::to_string(seed()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "bad.ngc";
     std::ofstream(file) << "G21 G91\nG38.2 F30\nM2\n";  // a probe without an axis word
-    const Rs274Run result = run(rs274 + " -g '" + file.string() + "' </dev/null 2>&1");
+    const Rs274Run result = run_rs274(rs274, dir, file);
     EXPECT_NE(result.exit_code, 0) << result.output;
-    fs::remove(file);
+    fs::remove_all(dir);
 }
 
 }  // namespace
