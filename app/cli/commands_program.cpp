@@ -61,7 +61,7 @@ void add_common(CLI::App& cmd, ProgramArgs& args) {
 // A plan's refusal in the options' words: "feeds: ..." reads "--feeds: ...".
 std::string in_option_words(std::string text) {
     for (const char* key : {"feeds", "repeats", "margin_mm", "placement_mm", "gauge_diameter_mm",
-                            "ball_diameter_mm", "centre_tolerance_mm"}) {
+                            "ball_diameter_mm", "centre_tolerance_mm", "axis"}) {
         const std::string prefix = std::string(key) + ":";
         if (text.rfind(prefix, 0) != 0) continue;
         std::string option = "--" + std::string(key);
@@ -172,9 +172,15 @@ void add_cycle(CLI::App& program) {
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = program.add_subcommand(
-        "cycle", "The scenario's cycle on a surface (strategy, feeds, backoff, start distance)");
+        "cycle",
+        "The scenario's cycle (strategy, feeds, backoff, start distance) on its feature: a "
+        "surface, a bore or boss (X+, X-, Y+, Y-), a pocket or web, with protected moves "
+        "between the touches");
     add_common(*cmd, args->common);
-    cmd->add_option("--axis", args->axis, "Axis and direction of travel (default Z-)")
+    cmd->add_option("--axis", args->axis,
+                    "A surface: axis and direction of travel (default Z-); a pocket or web: the "
+                    "axis its two walls are touched along (X or Y, + first); a bore or boss: not "
+                    "used")
         ->type_name("X+|X-|Y+|Y-|Z+|Z-")
         ->check(axis_check());
     cmd->callback([args] {

@@ -326,31 +326,24 @@ int touch_count(Feature feature) {
     return 1;
 }
 
-namespace {
-
-// Issue 11, loose end 6: the moves of a feature as real cycles make them.
-// A pocket or bore starts and ends at the feature centre; each touch starts
-// `approach` inside the wall, r = D/2 - approach from the centre. A boss or web
-// starts above its centre at the clearance height; each touch starts outside,
-// R = D/2 + approach from the centre, and the probe lifts over the wall
-// between touches. Touches go X+, X-, Y+, Y- (pocket and web X+, X-).
-// Distance from the centre to a touch's start position.
+// Issue 11, loose end 6: the moves of a feature as real cycles make them
+// (cycle.h).
 double start_radius_mm(const Cycle& cycle) {
     const double half = 0.5 * cycle.feature_size_mm;
-    return cycle.feature == Feature::boss || cycle.feature == Feature::web
-               ? half + cycle.approach_mm
-               : half - cycle.approach_mm;
+    return lifts_over(cycle.feature) ? half + cycle.approach_mm : half - cycle.approach_mm;
 }
+
+bool lifts_over(Feature feature) {
+    return feature == Feature::boss || feature == Feature::web;
+}
+
+namespace {
 
 // Straight from the start of touch k - 1 to the start of touch k (k >= 1):
 // across the centre (2 rho) or, X- to Y+, a quarter turn (sqrt(2) rho).
 double between_starts_mm(const Cycle& cycle, int touch) {
     const double rho = start_radius_mm(cycle);
     return touch == 2 ? std::numbers::sqrt2 * rho : 2.0 * rho;
-}
-
-bool lifts_over(Feature feature) {
-    return feature == Feature::boss || feature == Feature::web;
 }
 
 // Long enough for any touch: the approach plan is cut where the axis reacts.

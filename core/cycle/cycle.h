@@ -297,4 +297,15 @@ void evaluate_into(const Scenario& scenario, CycleResult& result, MotionCache& c
 // Number of touches of a feature (surface 1, web/pocket 2, bore/boss 4).
 int touch_count(Feature feature);
 
+// The moves of a feature as real cycles make them (issue 11, loose end 6). A
+// pocket or bore starts and ends at the feature centre; each touch starts
+// `approach` inside the wall. A boss or web starts above its centre at the
+// clearance height; each touch starts outside, and the probe lifts over the
+// wall between touches. Touches go X+, X-, Y+, Y- (pocket and web X+, X-).
+// The distance from the centre to a touch's start position: D/2 - approach
+// inside a pocket or bore, D/2 + approach outside a boss or web.
+double start_radius_mm(const Cycle& cycle);
+// A boss or web: the probe lifts over the wall between touches.
+bool lifts_over(Feature feature);
+
 }  // namespace probecycle

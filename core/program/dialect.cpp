@@ -28,8 +28,30 @@ namespace probecycle {
 //   (spindle orientation) needs a spindle encoder, so the ring program asks
 //   the operator to orient the spindle at a pause instead.
 // - G21 (mm), G91 (incremental), G94 (units per minute), G0, G1: g-code.adoc.
+// - A protected move is G38.3 (g-code.adoc, "G38.n Straight Probe": "probe
+//   toward workpiece, stop on contact", no error without a trip; after it
+//   "Parameter 5070 is set to 1 if the probe succeeded and 0 if the probe
+//   failed"). So after each G38.3 the program stops when #5070 is 1: an
+//   o-word if (o-code.adoc, "Conditional": "o101 if [#31 EQ 3] ... o101
+//   endif"; "Numbering": one o-number per control-flow block in the main
+//   program) around "(ABORT,...)" (overview.adoc, "Abort Messages": "displays
+//   a message like (MSG,) ... and aborting the current running process";
+//   src/emc/rs274ngc/interp_convert.cc returns an interpreter error for it).
+//   A preview never trips the probe (GET_EXTERNAL_PROBE_TRIPPED_VALUE is 0 in
+//   Axis's src/emc/rs274ngc/gcodemodule.cc and in rs274's
+//   src/emc/sai/saicanon.cc), so unlike a test of #5070 after G38.2 (above)
+//   the branch never stops a preview. Motion itself also stops a plain move
+//   when the probe input rises ("Probe tripped during non-probe move",
+//   src/emc/motion/control.c); the G38.3 and its message name the move.
+// - The PROBEOPEN file: the interpreter reads the probe position after every
+//   straight probe, tripped or not (set_probe_data,
+//   src/emc/rs274ngc/interp_internal.cc), and GET_EXTERNAL_PROBE_POSITION
+//   writes it; so a G38.3 that does not trip writes its end point too (the
+//   manual says "each successful straight probe"; the source is followed),
+//   and the import counts the protected moves among the file's probes.
 // Checked by running every generated program through LinuxCNC's own
-// stand-alone interpreter, rs274 (tests/core/program/rs274_check_test.cpp).
+// stand-alone interpreter, rs274 (tests/core/program/rs274_check_test.cpp),
+// the abort branch too (with #5070 read as 1).
 const Dialect& linuxcnc_dialect() {
     static const Dialect dialect{
         .id = DialectId::linuxcnc,
@@ -49,15 +71,26 @@ const Dialect& linuxcnc_dialect() {
                         "(LOG,probecycle plan {id} {kind})"},
         .before_probe = "",
         .after_probe = "",
+        .guard_word = "G38.3",
+        .before_guard = "",
+        .after_guard = {"o{label} if [#5070 EQ 1]",
+                        "(ABORT,probecycle: the probe touched something during a protected move: "
+                        "the path is obstructed)",
+                        "o{label} endif"},
         .after_recorded_probe = {"(LOG,probecycle touch {n} %.6f#5061 #5062 #5063)"},
         .close_record = {"(LOGCLOSE)", "(PROBECLOSE)"},
         .end = {"G90", "M2"},
         .after_end = {},
+        .guard_alarm = {},
+        .file_end = {},
         .record_notes =
             {"Positions: LinuxCNC writes probecycle_log.txt (one line per recorded touch)",
              "and probecycle_probes.txt (PROBEOPEN: 9 numbers per probe) in its working",
              "directory. Import the log: the probe file drops a touch that trips at the",
              "same position as the one before it."},
+        .guard_notes =
+            {"Protected moves are G38.3, the probe armed: one that touches something stops",
+             "the program with an error (ABORT): the path is obstructed."},
     };
     return dialect;
 }
@@ -76,6 +109,17 @@ const Dialect& linuxcnc_dialect() {
 //   workpiece within the programmed travel for G38.2 and G38.4"; alarm 4: the
 //   probe was already triggered at the start. An alarm locks out G-code, so
 //   the rest of the program does not run.
+// - A protected move is G38.3 (README.md's list; grbl/motion_control.c,
+//   mc_probe_cycle): without contact no alarm, the probe position is where
+//   the axis stopped and grbl reports [PRB:...:0]; a contact stops the move,
+//   grbl reports [PRB:...:1] and goes on with the program: grbl cannot
+//   branch, so it cannot stop on an obstruction. Before every G38.2 and G38.3
+//   grbl checks the probe, and alarm 4 stops it when the probe is already
+//   triggered (alarm_codes_en_US.csv: "Probe fail. Probe is not in the
+//   expected initial state before starting probe cycle when G38.2 and G38.3
+//   is not triggered ..."): the next probing move from a probe still
+//   deflected against the obstruction raises it. The import refuses a
+//   console where a protected move reports :1.
 // - grbl/protocol.c: "(...)" and ";" comments are dropped before parsing;
 //   grbl has no message command ("MSG's NOT SUPPORTED", grbl/gcode.c), so a
 //   pause's instruction is a comment the sender shows, and no spindle
@@ -102,13 +146,24 @@ const Dialect& grbl_dialect() {
         .open_record = {},
         .before_probe = "",
         .after_probe = "",
+        .guard_word = "G38.3",
+        .before_guard = "",
+        .after_guard = {},
         .after_recorded_probe = {},
         .close_record = {},
         .end = {"G90", "M2"},
         .after_end = {},
+        .guard_alarm = {},
+        .file_end = {},
         .record_notes = {"Positions: grbl answers [PRB:x,y,z:1] after each probe (machine",
                          "positions; set $13=0 for mm). Save the sender's console to a file and",
                          "import that file."},
+        .guard_notes =
+            {"Protected moves are G38.3, the probe armed: grbl answers [PRB:...:0] after",
+             "one that touches nothing. It stops one that touches something ([PRB:...:1])",
+             "but cannot branch, so the program goes on; the next G38.2 or G38.3 then",
+             "stops it with ALARM:4 if the probe is still deflected. No probe follows the",
+             "last protected move: the import refuses a console where one answers :1."},
     };
     return dialect;
 }
@@ -149,10 +204,22 @@ const Dialect& grbl_dialect() {
 //   taken early can only miss this alarm, never raise a false one. The skip
 //   position is read right after the G31 as working Fanuc probing programs
 //   do (mojimould/mould_moji O919100.nc: IF[#5063LE...]GOTO800, #3000=141).
+// - A protected move is G31 to the move's end with the mirror of that
+//   check: the end kept in #101 as for a probe, then a jump to alarm 102
+//   (PROBE PATH OBSTRUCTED) when the skip position is 0.05 mm or more from
+//   it. Without a skip signal the skip position is the programmed end (Haas,
+//   NCT and Yaskawa above), so a skip position short of the end is a touch.
+//   The moving axis's own skip variable is read: #5061 X, #5062 Y, #5063 Z
+//   (15i p.564: 1st, 2nd, 3rd axis). A touch in the last 0.05 mm passes: the
+//   move ends there anyway, so the stylus is deflected by at most that. An
+//   early #5041 read (above) can raise this alarm falsely, never hide it.
+//   GE is one of macro B's comparison operators EQ NE GT GE LT LE (the
+//   tutorial "G-Code Macro Programming"; EQ, NE and LE in the working program
+//   above).
 // - #3000=n (TEXT) stops with alarm n (cncci.com, "Generating alarms for
 //   dangerous situations": "for most control models, must range between 100
-//   and 255"): 101, upper-case text. IF[...]GOTOn and the N label after M30:
-//   the same working program.
+//   and 255"): 101 and 102, upper-case text. IF[...]GOTOn and the N label
+//   after M30: the same working program.
 // - POPEN, DPRNT[...], PCLOS: Haas 96-8000 Rev AC p.116 ("DPRNT must be the
 //   only command in the block"; text "any character from A to Z or the
 //   letters (+,-,/,*, and the space). When an asterisk is output, it is
@@ -198,12 +265,18 @@ const Dialect& fanuc_dialect() {
         .after_probe = "IF[ABS[{skip}-#101]LT0.050]GOTO9001",
         .current_position = {"#5041", "#5042", "#5043"},
         .skip_position = {"#5061", "#5062", "#5063"},
+        .guard_word = "G31",
+        .before_guard = "#101={current}{distance}",
+        .after_guard = {"IF[ABS[{skip}-#101]GE0.050]GOTO9002"},
         .after_recorded_probe = {"#102={n}",
                                  "DPRNT[TOUCH#102[40]*X#5061[44]*Y#5062[44]*Z#5063[44]]"},
         .close_record = {"DPRNT[PROBECYCLE*END]", "PCLOS"},
         .end = {"G90", "M30"},
         .after_end = {"N9001", "DPRNT[PROBECYCLE*NO*TRIGGER]", "PCLOS",
-                      "#3000=101(PROBE DID NOT TRIGGER)", "%"},
+                      "#3000=101(PROBE DID NOT TRIGGER)"},
+        .guard_alarm = {"N9002", "DPRNT[PROBECYCLE*OBSTRUCTED]", "PCLOS",
+                        "#3000=102(PROBE PATH OBSTRUCTED)"},
+        .file_end = {"%"},
         .record_notes =
             {"Positions: DPRNT prints a line PROBECYCLE PLAN, one line TOUCH n X x Y y Z z",
              "per recorded touch (skip positions #5061-#5063, work coordinates) and",
@@ -216,6 +289,10 @@ const Dialect& fanuc_dialect() {
              "G31 use a fixed skip feed instead of F; the servo delay compensation of the skip",
              "position takes the servo lag out of #5061, so the fitted delay comes out",
              "smaller than the real one."},
+        .guard_notes =
+            {"Protected moves are G31 to the end of the move: when the skip position is not",
+             "that end, the probe touched something, and the program prints PROBECYCLE",
+             "OBSTRUCTED and stops with alarm 102 PROBE PATH OBSTRUCTED."},
         .orient_from_user = true,
     };
     return dialect;

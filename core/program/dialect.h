@@ -53,16 +53,32 @@ struct Dialect {
     // The variables {current} and {skip} stand for, per axis X, Y, Z.
     std::array<const char*, 3> current_position{};
     std::array<const char*, 3> skip_position{};
+    // A protected move (StepKind::guard): the probe armed on a move that must
+    // not trigger. The word, a line before it and lines after it ({current},
+    // {skip} and {distance} as for a probe; {label}: a number of the move's
+    // own, 1000 + its count from 1): a trigger means the path is obstructed,
+    // and the lines after stop the program where the control can branch.
+    const char* guard_word;
+    const char* before_guard;
+    std::vector<const char*> after_guard;
     // Lines after each recorded probe ({n}: its number, from 1).
     std::vector<const char*> after_recorded_probe;
     // Lines before the end that close the record.
     std::vector<const char*> close_record;
     // Back to absolute distances, and the end of the program.
     std::vector<const char*> end;
-    // Lines after the end (reached by a jump only), and the file's end.
+    // Lines after the end (reached by a jump only).
     std::vector<const char*> after_end;
+    // The branch an obstructed protected move jumps to, after after_end; only
+    // in a program with protected moves.
+    std::vector<const char*> guard_alarm;
+    // The file's last lines.
+    std::vector<const char*> file_end;
     // Header lines: where the positions go and what the import reads.
     std::vector<const char*> record_notes;
+    // Header lines of a program with protected moves: what the control does
+    // when one touches something.
+    std::vector<const char*> guard_notes;
     // No portable word turns the spindle to an angle: the ring program
     // needs the user's command for 180 deg (ProgramOptions).
     bool orient_from_user{false};

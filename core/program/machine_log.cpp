@@ -99,11 +99,14 @@ std::size_t axis_index(char axis) {
     return axis == 'X' ? 0 : axis == 'Y' ? 1 : 2;
 }
 
-// Probes in the order the positions stand for.
+// Probes in the order the positions stand for: with `every_probe` the
+// protected moves too (grbl reports each G38.3, LinuxCNC's PROBEOPEN file
+// holds each one's end).
 std::vector<const ProgramStep*> probes_of(const ProbingPlan& plan, bool every_probe) {
     std::vector<const ProgramStep*> probes;
     for (const ProgramStep& step : plan.steps) {
-        if (step.kind == StepKind::probe && (every_probe || step.recorded)) {
+        if ((step.kind == StepKind::probe && (every_probe || step.recorded)) ||
+            (step.kind == StepKind::guard && every_probe)) {
             probes.push_back(&step);
         }
     }
@@ -223,7 +226,8 @@ std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
     return positions;
 }
 
-std::vector<RecordedPosition> read_grbl_positions(std::string_view text) {
+std::vector<RecordedPosition> read_grbl_positions(std::string_view text, const ProbingPlan& plan) {
+    const std::vector<const ProgramStep*> probes = probes_of(plan, true);
     std::vector<RecordedPosition> positions;
     for (const auto& [number, line] : lines_of(text)) {
         if (const std::size_t alarm = line.find("ALARM:"); alarm != std::string_view::npos) {
@@ -249,14 +253,28 @@ std::vector<RecordedPosition> read_grbl_positions(std::string_view text) {
         if (!xyz || (success != "0" && success != "1")) {
             bad_line(number, line, "[PRB:x,y,z:1]");
         }
-        if (success == "0") {
+        // A report past the plan's probes is left to the count's check.
+        const bool guard =
+            positions.size() < probes.size() && probes[positions.size()]->kind == StepKind::guard;
+        const std::string report(line.substr(at, end - at + 1));
+        if (success == "0" && !guard) {
+            throw CsvError(number, "",
+                           log_message("log_no_trigger",
+                                       QT_TRANSLATE_NOOP("MachineLog",
+                                                         "the probe did not trigger (%1); "
+                                                         "nothing imported"),
+                                       {text_arg("report", report)}));
+        }
+        if (success == "1" && guard) {
             throw CsvError(
                 number, "",
-                log_message("log_no_trigger",
+                log_message("log_obstructed",
                             QT_TRANSLATE_NOOP("MachineLog",
-                                              "the probe did not trigger (%1); "
-                                              "nothing imported"),
-                            {text_arg("report", std::string(line.substr(at, end - at + 1)))}));
+                                              "the probe touched something during a protected "
+                                              "move (%1): its path is obstructed, and grbl, which "
+                                              "cannot stop a program on it, went on; check the "
+                                              "machine; nothing imported"),
+                            {text_arg("report", report)}));
         }
         positions.push_back({number, *xyz});
     }
@@ -354,6 +372,15 @@ std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const 
                     plan_mismatch(number, plan_from_letters(words[2]), expected);
                 }
                 plan_line = true;
+            } else if (words.size() == 2 && words[1] == "OBSTRUCTED") {
+                throw CsvError(
+                    number, "",
+                    log_message("log_dprnt_obstructed",
+                                QT_TRANSLATE_NOOP("MachineLog",
+                                                  "the program printed PROBECYCLE OBSTRUCTED: the "
+                                                  "probe touched something during a protected "
+                                                  "move and the control stopped with alarm 102; "
+                                                  "nothing imported")));
             } else if (words.size() == 3 && words[1] == "NO" && words[2] == "TRIGGER") {
                 throw CsvError(
                     number, "",
@@ -364,7 +391,8 @@ std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const 
                                                   "with alarm 101; nothing imported")));
             } else if (words.size() != 2 || words[1] != "END") {
                 bad_line(number, line,
-                         "'PROBECYCLE PLAN ...', 'PROBECYCLE END' or 'PROBECYCLE NO TRIGGER'");
+                         "'PROBECYCLE PLAN ...', 'PROBECYCLE END', 'PROBECYCLE NO TRIGGER' or "
+                         "'PROBECYCLE OBSTRUCTED'");
             }
             continue;
         }
@@ -407,9 +435,9 @@ std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const 
     return positions;
 }
 
-std::string lab_csv_from_positions(const ProbingPlan& plan,
-                                   const std::vector<RecordedPosition>& positions,
-                                   bool every_probe) {
+namespace {
+
+void refuse_cycle_plan(const ProbingPlan& plan) {
     if (plan.kind == ProgramKind::cycle) {
         throw InputError(log_message(
             "log_cycle_plan",
@@ -417,16 +445,58 @@ std::string lab_csv_from_positions(const ProbingPlan& plan,
                               "a cycle plan's positions have no table in the lab; import the log "
                               "of a delay or a ring program")));
     }
+}
+
+// The positions in the dialect's file, and whether they stand for every probe
+// (and protected move) or the recorded touches only.
+std::vector<RecordedPosition> read_positions(const ProbingPlan& plan, DialectId dialect,
+                                             std::string_view text, bool& every_probe) {
+    if (dialect == DialectId::grbl) {
+        every_probe = true;
+        return read_grbl_positions(text, plan);
+    }
+    if (dialect == DialectId::fanuc) {
+        every_probe = false;
+        return read_fanuc_positions(text, plan);
+    }
+    std::vector<RecordedPosition> positions = read_linuxcnc_positions(text, plan);
+    // The LOG file's first line that is not blank opens with "probecycle";
+    // otherwise it is the PROBEOPEN file.
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    every_probe = first == std::string_view::npos || text.substr(first, 10) != "probecycle";
+    return positions;
+}
+
+}  // namespace
+
+std::vector<RecordedPosition> match_recorded_touches(const ProbingPlan& plan,
+                                                     const std::vector<RecordedPosition>& positions,
+                                                     bool every_probe) {
     const std::vector<const ProgramStep*> probes = probes_of(plan, every_probe);
     check_matches_plan(probes, positions);
+    std::vector<RecordedPosition> recorded;
+    for (std::size_t i = 0; i < probes.size(); ++i) {
+        if (probes[i]->kind == StepKind::probe && probes[i]->recorded) {
+            recorded.push_back(positions[i]);
+        }
+    }
+    return recorded;
+}
+
+std::string lab_csv_from_positions(const ProbingPlan& plan,
+                                   const std::vector<RecordedPosition>& positions,
+                                   bool every_probe) {
+    refuse_cycle_plan(plan);
+    const std::vector<RecordedPosition> matched =
+        match_recorded_touches(plan, positions, every_probe);
+    const std::vector<const ProgramStep*> touches = plan.recorded();
     std::string csv =
         "# ProbeCycle: imported for plan " + plan_id(plan) + " (" + to_string(plan.kind) + ")\n";
     csv += plan.kind == ProgramKind::delay ? "axis,direction,feed_mm_min,measured_mm\n"
                                            : "orientation_deg,x_mm,y_mm\n";
-    for (std::size_t i = 0; i < probes.size(); ++i) {
-        const ProgramStep& probe = *probes[i];
-        if (!probe.recorded) continue;
-        const std::array<double, 3>& xyz = positions[i].xyz;
+    for (std::size_t i = 0; i < touches.size(); ++i) {
+        const ProgramStep& probe = *touches[i];
+        const std::array<double, 3>& xyz = matched[i].xyz;
         if (plan.kind == ProgramKind::delay) {
             csv += std::string(1, probe.axis) + "," + (probe.direction > 0 ? "+1" : "-1") + "," +
                    csv_value(probe.feed_mm_min) + "," + csv_value(xyz[axis_index(probe.axis)]) +
@@ -439,18 +509,20 @@ std::string lab_csv_from_positions(const ProbingPlan& plan,
     return csv;
 }
 
+std::vector<RecordedPosition> recorded_touch_positions(const ProbingPlan& plan, DialectId dialect,
+                                                       std::string_view text) {
+    bool every_probe = false;
+    const std::vector<RecordedPosition> positions =
+        read_positions(plan, dialect, text, every_probe);
+    return match_recorded_touches(plan, positions, every_probe);
+}
+
 std::string import_machine_log(const ProbingPlan& plan, DialectId dialect, std::string_view text) {
-    if (dialect == DialectId::grbl) {
-        return lab_csv_from_positions(plan, read_grbl_positions(text), true);
-    }
-    if (dialect == DialectId::fanuc) {
-        return lab_csv_from_positions(plan, read_fanuc_positions(text, plan), false);
-    }
-    const std::vector<RecordedPosition> positions = read_linuxcnc_positions(text, plan);
-    // The LOG file's first line that is not blank opens with "probecycle".
-    const std::size_t first = text.find_first_not_of(" \t\r\n");
-    const bool log_file = first != std::string_view::npos && text.substr(first, 10) == "probecycle";
-    return lab_csv_from_positions(plan, positions, !log_file);
+    refuse_cycle_plan(plan);
+    bool every_probe = false;
+    const std::vector<RecordedPosition> positions =
+        read_positions(plan, dialect, text, every_probe);
+    return lab_csv_from_positions(plan, positions, every_probe);
 }
 
 }  // namespace probecycle

@@ -26,36 +26,53 @@ struct RecordedPosition {
 
 // LinuxCNC: the program's LOG file ("probecycle plan <id> <kind>", then
 // "probecycle touch <n> <x> <y> <z>" per recorded touch; the plan's id must
-// be `expected_plan_id`), or the PROBEOPEN file (9 numbers per probe: every
-// probe, the locating and first touches too). Blank lines are skipped.
+// be `plan`'s), or the PROBEOPEN file (9 numbers per probe: every probe, the
+// locating and first touches too, and every protected move, whose G38.3 writes
+// its end point when it does not trip). Blank lines are skipped.
 std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
                                                       const ProbingPlan& plan);
 // grbl: a sender's console log; "[PRB:x,y,z:1]" wherever it stands on a
-// line is a probe (every probe, as in the program), ":0" or an "ALARM:"
-// line a probe that did not trigger; every other line is ignored.
-std::vector<RecordedPosition> read_grbl_positions(std::string_view text);
+// line is a probe (every probe and protected move, in the plan's order);
+// every other line is ignored. A probe that did not trigger (":0", or an
+// "ALARM:" line) and a protected move that did (":1": its path is obstructed)
+// are a CsvError naming the line.
+std::vector<RecordedPosition> read_grbl_positions(std::string_view text, const ProbingPlan& plan);
 
 // Fanuc-type: the DPRNT output of the program, as a serial terminal, a
 // memory card or a file caught it: "PROBECYCLE PLAN <id in letters> <KIND>",
 // then "TOUCH <n> X <x> Y <y> Z <z>" per recorded touch (the plan's id must
 // be `plan`'s; touches numbered from 1); "PROBECYCLE NO TRIGGER" (the
-// program's alarm branch) is a probe that did not trigger. Lines end with
+// program's alarm branch) is a probe that did not trigger, "PROBECYCLE
+// OBSTRUCTED" a protected move that did. Lines end with
 // CR, LF, CR LF or LF CR CR; control bytes (DC2/DC4 of POPEN/PCLOS, NUL)
 // and '%' are dropped; a number may have leading spaces, a sign and spaces
 // between its sign and its digits. Other lines (another program's output on
 // the same channel) are ignored.
 std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan);
 
+// The positions of the plan's recorded touches, in order, from `positions`:
+// every probe and protected move of the plan in order (`every_probe`) or its
+// recorded touches only. Throws CsvError naming the line: a missing or an
+// extra position, or an axis that moved where the plan moves another alone.
+std::vector<RecordedPosition> match_recorded_touches(const ProbingPlan& plan,
+                                                     const std::vector<RecordedPosition>& positions,
+                                                     bool every_probe);
+
 // The lab's CSV for the plan's recorded touches: `axis,direction,feed_mm_min,
 // measured_mm` for a delay plan, `orientation_deg,x_mm,y_mm` for a ring plan.
-// `positions` are every probe of the plan in order (`every_probe`) or its
-// recorded touches only. Throws CsvError naming the line; InputError for a
-// cycle plan (the lab has no table for it).
+// `positions` as for match_recorded_touches. Throws CsvError naming the line;
+// InputError for a cycle plan (the lab has no table for it).
 std::string lab_csv_from_positions(const ProbingPlan& plan,
                                    const std::vector<RecordedPosition>& positions,
                                    bool every_probe);
 
-// The whole import: the file in the dialect, matched to the plan.
+// The file in the dialect, matched to the plan: the positions of its recorded
+// touches, for a plan of any kind (a cycle's too). Throws CsvError as the import does.
+std::vector<RecordedPosition> recorded_touch_positions(const ProbingPlan& plan, DialectId dialect,
+                                                       std::string_view text);
+
+// The whole import: the file in the dialect, matched to the plan, as the
+// lab's CSV (InputError for a cycle plan).
 std::string import_machine_log(const ProbingPlan& plan, DialectId dialect, std::string_view text);
 
 }  // namespace probecycle

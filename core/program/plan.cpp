@@ -114,6 +114,27 @@ ProgramStep move_back(const AxisDirection& at, double distance_mm, double feed_m
     return step;
 }
 
+// A protected move along `along` (the probe armed, a move that must not trigger).
+ProgramStep guard_step(const AxisDirection& along, double distance_mm, double feed_mm_min,
+                       std::string text) {
+    ProgramStep step;
+    step.kind = StepKind::guard;
+    step.axis = along.axis;
+    step.direction = along.direction;
+    step.distance_mm = distance_mm;
+    step.feed_mm_min = feed_mm_min;
+    step.text = std::move(text);
+    return step;
+}
+
+// A plain move along `along` (feed 0: rapid).
+ProgramStep move_step(const AxisDirection& along, double distance_mm, double feed_mm_min,
+                      std::string text) {
+    ProgramStep step = guard_step(along, distance_mm, feed_mm_min, std::move(text));
+    step.kind = StepKind::move;
+    return step;
+}
+
 ProgramStep pause_step(std::string text) {
     ProgramStep step;
     step.kind = StepKind::pause;
@@ -188,6 +209,124 @@ void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection&
                                    c.return_feed_mm_min, "back to the " + back_to));
 }
 
+AxisDirection opposite(const AxisDirection& at) {
+    return {at.axis, -at.direction};
+}
+
+// The feature's touch points, by the side of the centre they lie on (the
+// model's order, cycle.h): a bore or boss X+, X-, Y+, Y-; a pocket or web both
+// sides along the chosen axis, + first.
+std::vector<AxisDirection> feature_sides(Feature feature, char axis) {
+    if (feature == Feature::bore || feature == Feature::boss) {
+        return {{'X', 1}, {'X', -1}, {'Y', 1}, {'Y', -1}};
+    }
+    return {{axis, 1}, {axis, -1}};
+}
+
+// Refuses what a feature's program cannot do: a pocket or web along Z, a boss
+// or web without a clearance to move over its wall, moves from the centre
+// longer than a plan holds.
+void check_feature_plan(const Scenario& scenario, const CyclePlanOptions& options) {
+    const Cycle& c = scenario.cycle;
+    const char* feature = to_string(c.feature);
+    if ((c.feature == Feature::pocket || c.feature == Feature::web) && options.touch.axis == 'Z') {
+        Message allowed = allowed_text(
+            "program_feature_axis",
+            QT_TRANSLATE_NOOP("FieldError",
+                              "X+, X-, Y+ or Y- for a %1 (touched from both sides along X or Y)"));
+        allowed.args = {text_arg("feature", feature)};
+        throw InputError(
+            FieldError{"axis", to_string(options.touch), std::move(allowed)}.to_message());
+    }
+    if (lifts_over(c.feature) && round_up_to(c.clearance_mm, kStep_mm) < kStep_mm) {
+        Message allowed = allowed_text(
+            "program_clearance",
+            QT_TRANSLATE_NOOP("FieldError",
+                              "at least %1 for a %2 (the probe moves over its wall between "
+                              "touches)"));
+        allowed.args = {arg("min_mm", ArgKind::length_mm, kStep_mm), text_arg("feature", feature)};
+        throw InputError(
+            FieldError{"cycle.clearance_mm", format_number(c.clearance_mm), std::move(allowed)}
+                .to_message());
+    }
+    if (start_radius_mm(c) > kMaxPlanDistance_mm) {
+        // The largest size whose start radius is the plan's longest move.
+        const double max_size = 2.0 * (lifts_over(c.feature) ? kMaxPlanDistance_mm - c.approach_mm
+                                                             : kMaxPlanDistance_mm + c.approach_mm);
+        Message allowed = allowed_text(
+            "program_feature_size",
+            QT_TRANSLATE_NOOP("FieldError",
+                              "at most %1 for a %2's program (its moves from the centre to the "
+                              "touches' starts are at most %3)"));
+        allowed.args = {arg("max_mm", ArgKind::length_mm, max_size), text_arg("feature", feature),
+                        arg("limit_mm", ArgKind::length_mm, kMaxPlanDistance_mm)};
+        throw InputError(FieldError{"cycle.feature_size_mm", format_number(c.feature_size_mm),
+                                    std::move(allowed)}
+                             .to_message());
+    }
+}
+
+// Issue 13: a feature's touches as the cycle model moves (cycle.h,
+// start_radius_mm and lifts_over; cycle.cpp, evaluate_into), each with the
+// scenario's strategy (add_point). Every move toward the part is a protected
+// move at the positioning feed. A pocket or bore: from the centre at the
+// measuring depth, out to each touch's start and back to the centre. A boss
+// or web: from above the centre at the clearance height, per side out over
+// its start, down by the clearance, the touch toward the centre, back to the
+// start, up by the clearance at the rapid feed (away from the part, as the
+// model lifts) and back over the centre. Unlike the model, which moves
+// straight from start to start, the probe goes back through (or over) the
+// centre between touches: every move runs along one axis, and the program
+// ends where it started.
+void add_feature_touches(ProbingPlan& plan, const Scenario& scenario,
+                         const CyclePlanOptions& options) {
+    const Cycle& c = scenario.cycle;
+    const bool outside = lifts_over(c.feature);
+    // Rounded to the programs' digits on the side that leaves more room to
+    // the wall: inside, a start no nearer the wall than the model's; outside,
+    // no nearer the side.
+    const double radius = outside ? round_up_to(start_radius_mm(c), kStep_mm)
+                                  : round_down_to(start_radius_mm(c), kStep_mm);
+    const double clearance = round_up_to(c.clearance_mm, kStep_mm);
+    const double feed = c.position_feed_mm_min;
+    const AxisDirection down{'Z', -1};
+    const std::string feature = to_string(c.feature);
+    const std::string along = c.feature == Feature::pocket || c.feature == Feature::web
+                                  ? std::string(" along ") + options.touch.axis
+                                  : std::string();
+    const std::string tolerance = "(within " + mm_text(search_beyond_mm(scenario)) + ")";
+    plan.steps.push_back(pause_step(
+        outside ? "check: the probe ball stands over the centre of the " + feature + along + " " +
+                      tolerance + ", " + mm_text(clearance) +
+                      " above the measuring depth; resume to start"
+                : "check: the probe ball stands at the centre of the " + feature + along + " " +
+                      tolerance + " at the measuring depth; resume to start"));
+    for (const AxisDirection& side : feature_sides(c.feature, options.touch.axis)) {
+        const std::string name = to_string(side);
+        if (!outside) {
+            // A start at the centre (a feature 2 approach distances wide, to
+            // the micrometre) needs no move out.
+            if (radius > 0.0) {
+                plan.steps.push_back(
+                    guard_step(side, radius, feed, "out to the start of the " + name + " touch"));
+            }
+            add_point(plan, scenario, side, c.approach_mm, 0.0, 0.0, "start");
+            if (radius > 0.0) {
+                plan.steps.push_back(
+                    guard_step(opposite(side), radius, feed, "back to the centre"));
+            }
+            continue;
+        }
+        plan.steps.push_back(
+            guard_step(side, radius, feed, "out over the start of the " + name + " side"));
+        plan.steps.push_back(guard_step(down, clearance, feed, "down to the measuring depth"));
+        // The side faces away from the centre: it is touched toward it.
+        add_point(plan, scenario, opposite(side), c.approach_mm, 0.0, 0.0, "start");
+        plan.steps.push_back(move_step(opposite(down), clearance, 0.0, "up by the clearance"));
+        plan.steps.push_back(guard_step(opposite(side), radius, feed, "back over the centre"));
+    }
+}
+
 void check_range(double value, double min, double max, const char* key, const char* unit) {
     if (!(value >= min && value <= max)) {
         throw InputError(
@@ -222,6 +361,11 @@ std::vector<const ProgramStep*> ProbingPlan::recorded() const {
         if (step.kind == StepKind::probe && step.recorded) out.push_back(&step);
     }
     return out;
+}
+
+bool ProbingPlan::has_guards() const {
+    return std::any_of(steps.begin(), steps.end(),
+                       [](const ProgramStep& step) { return step.kind == StepKind::guard; });
 }
 
 std::optional<AxisDirection> axis_direction_from_string(std::string_view text) {
@@ -357,15 +501,8 @@ ProbingPlan make_ring_plan(const Scenario& scenario, const RingPlanOptions& opti
 }
 
 ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& options) {
-    if (scenario.cycle.feature != Feature::surface) {
-        Message allowed = allowed_text(
-            "program_feature",
-            QT_TRANSLATE_NOOP("FieldError",
-                              "surface (a program for a feature's touches is not written yet)"));
-        throw InputError(
-            FieldError{"cycle.feature", to_string(scenario.cycle.feature), std::move(allowed)}
-                .to_message());
-    }
+    const Feature feature = scenario.cycle.feature;
+    if (feature != Feature::surface) check_feature_plan(scenario, options);
     ProbingPlan plan;
     plan.kind = ProgramKind::cycle;
     add_machine_values(plan, scenario);
@@ -373,6 +510,13 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
                {"cycle.strategy", "cycle.approach_mm", "cycle.probe_feed_mm_min",
                 "cycle.measure_feed_mm_min", "cycle.backoff_mm", "cycle.backoff_from",
                 "cycle.return_feed_mm_min"});
+    if (feature != Feature::surface) {
+        add_values(plan, scenario,
+                   {"cycle.feature", "cycle.feature_size_mm", "cycle.position_feed_mm_min"});
+        if (lifts_over(feature)) add_values(plan, scenario, {"cycle.clearance_mm"});
+        add_feature_touches(plan, scenario, options);
+        return plan;
+    }
     plan.steps.push_back(pause_step("check: the probe stands " +
                                     mm_text(scenario.cycle.approach_mm) +
                                     " in front of the surface, touching along " +
@@ -393,6 +537,8 @@ const char* to_word(StepKind kind) {
             return "probe";
         case StepKind::move:
             return "move";
+        case StepKind::guard:
+            return "guard";
     }
     return "probe";
 }
@@ -480,8 +626,10 @@ class PlanReader {
             step.kind = StepKind::probe;
         } else if (kind == "move") {
             step.kind = StepKind::move;
+        } else if (kind == "guard") {
+            step.kind = StepKind::guard;
         } else {
-            fail_word(where + ".step", kind, "pause, probe, move");
+            fail_word(where + ".step", kind, "pause, probe, move, guard");
             return step;
         }
         step.text = text(body, where, "text", kMaxPauseTextChars);
@@ -499,8 +647,9 @@ class PlanReader {
             fail_word(where + ".direction", direction, "1, -1");
         }
         step.distance_mm = number(body, where, "distance_mm", kStep_mm, kMaxPlanDistance_mm, "mm");
-        // A probe's feed is one the lab reads back (kMaxPlanFeed_mm_min); a
-        // move may be a rapid (0) or a return faster than any probe.
+        // A probe's feed is one the lab reads back and a protected move's a
+        // positioning feed (kMaxPlanFeed_mm_min); a plain move may be a rapid
+        // (0) or a return faster than any probe.
         const bool move = step.kind == StepKind::move;
         step.feed_mm_min = number(body, where, "feed_mm_min", move ? 0.0 : kMinPlanFeed_mm_min,
                                   move ? kMaxPlanFeed_mm_min * 2.0 : kMaxPlanFeed_mm_min, "mm/min");

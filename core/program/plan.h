@@ -28,6 +28,10 @@ enum class StepKind {
     pause,  // the operator does what `text` says, then resumes (cycle start)
     probe,  // a probing move: stops at the trigger, an alarm when none comes
     move,   // a plain move: rapid (feed 0) or at a feed
+    // A protected move: at a feed with the probe armed, a move that must not
+    // trigger. A trigger means the path is obstructed: the program stops with
+    // an alarm where the dialect can branch (dialect.h, guard_word).
+    guard,
 };
 
 struct ProgramStep {
@@ -35,12 +39,12 @@ struct ProgramStep {
     char axis{'X'};           // 'X', 'Y' or 'Z'
     int direction{-1};        // +1 or -1, the direction of travel
     double distance_mm{0.0};  // the length of the move (probe: the farthest it may go)
-    double feed_mm_min{0.0};  // 0: rapid (a move only)
+    double feed_mm_min{0.0};  // 0: rapid (a plain move only)
     // A probe whose trigger position the lab uses; the others locate the
     // surface or make the first touch of a two-touch point.
     bool recorded{false};
     double orientation_deg{0.0};  // ring: the spindle orientation of the touch
-    std::string text;             // pause: what the operator does; probe/move: a note
+    std::string text;             // pause: what the operator does; otherwise a note
 };
 
 // A scenario value the plan was made from, shown in the program's header.
@@ -56,6 +60,8 @@ struct ProbingPlan {
 
     // The recorded probes, in order.
     std::vector<const ProgramStep*> recorded() const;
+    // Whether a step is a protected move (StepKind::guard).
+    bool has_guards() const;
 };
 
 // One axis and direction of the delay test ("X-").
@@ -113,7 +119,20 @@ struct RingPlanOptions {
 };
 
 // The tuned cycle: the scenario's strategy, feeds, backoff and start distance
-// on a surface, along `axis` (the probe stands approach_mm in front of it).
+// (cycle.*), the touches of its feature (cycle.feature):
+// - a surface along `touch` (the probe stands approach_mm in front of it);
+// - a bore X+, X-, Y+, Y-, a pocket both walls along touch's axis (X or Y;
+//   its sign is not used: + first, as the model): from the centre at the
+//   measuring depth, a protected move (StepKind::guard, at
+//   cycle.position_feed_mm_min) out to each touch's start
+//   (start_radius_mm, cycle.h), the touch, a protected move back to the centre;
+// - a boss its X+, X-, Y+, Y- sides, a web both sides along touch's axis:
+//   from above the centre, cycle.clearance_mm over the measuring depth,
+//   per side a protected move out over the start, one down by the clearance,
+//   the touch toward the centre, a rapid up by the clearance, a protected move
+//   back over the centre.
+// The model moves straight from start to start; the programs go back through
+// the centre between touches.
 struct CyclePlanOptions {
     AxisDirection touch{'Z', -1};
 };
@@ -128,7 +147,9 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
 //    "values": {"cycle.probe_feed_mm_min": "2000", ...},
 //    "steps": [{"step": "pause", "text": "..."},
 //              {"step": "probe", "axis": "Z", "direction": -1, "distance_mm": 3.1,
-//               "feed_mm_min": 30, "recorded": true, "orientation_deg": 0, "text": ""}, ...]}
+//               "feed_mm_min": 30, "recorded": true, "orientation_deg": 0, "text": ""},
+//              {"step": "guard", "axis": "X", "direction": 1, "distance_mm": 20,
+//               "feed_mm_min": 3000, "text": ""}, ...]}
 std::string probing_plan_json(const ProbingPlan& plan);
 // Throws ScenarioError listing every problem, keyed by its dotted path
 // ("steps.3.feed_mm_min").

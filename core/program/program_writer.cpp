@@ -70,6 +70,46 @@ std::string comment_safe(std::string text) {
     return text;
 }
 
+// The tuned cycle on a feature (plan.h, CyclePlanOptions): the plan names the
+// feature in its values; a surface's plan does not. nullptr for another word.
+const char* feature_description(std::string_view feature) {
+    if (feature == "bore") {
+        return "the tuned cycle on a bore.\n"
+               "X+, X-, Y+ and Y- touched with the scenario's strategy, feeds, backoff and\n"
+               "start distance, from the centre at the measuring depth: a protected move\n"
+               "out to each touch's start and back to the centre.";
+    }
+    if (feature == "pocket") {
+        return "the tuned cycle on a pocket.\n"
+               "Both walls along one axis touched with the scenario's strategy, feeds,\n"
+               "backoff and start distance, from the centre at the measuring depth: a\n"
+               "protected move out to each touch's start and back to the centre.";
+    }
+    if (feature == "boss") {
+        return "the tuned cycle on a boss.\n"
+               "The X+, X-, Y+ and Y- sides touched toward the centre with the scenario's\n"
+               "strategy, feeds, backoff and start distance, from above the centre at the\n"
+               "clearance height: per side a protected move out over its start, a protected\n"
+               "move down by the clearance, the touch, a rapid up by the clearance and a\n"
+               "protected move back over the centre.";
+    }
+    if (feature == "web") {
+        return "the tuned cycle on a web.\n"
+               "Both sides along one axis touched toward the centre with the scenario's\n"
+               "strategy, feeds, backoff and start distance, from above the centre at the\n"
+               "clearance height: per side a protected move out over its start, a protected\n"
+               "move down by the clearance, the touch, a rapid up by the clearance and a\n"
+               "protected move back over the centre.";
+    }
+    return nullptr;
+}
+
+// The model moves straight from start to start (over the top of a boss or web).
+constexpr const char* kThroughTheCentre =
+    "\nThe model moves straight from one touch's start to the next; this program\n"
+    "goes back through the centre between touches, so it runs a little longer\n"
+    "than the model's cycle time.";
+
 const char* description(ProgramKind kind) {
     switch (kind) {
         case ProgramKind::delay:
@@ -87,6 +127,17 @@ const char* description(ProgramKind kind) {
                    "distance: a plain skip sequence, no macro call.";
     }
     return "";
+}
+
+std::string description(const ProbingPlan& plan) {
+    if (plan.kind == ProgramKind::cycle) {
+        for (const PlanValue& value : plan.values) {
+            const char* text =
+                value.key == "cycle.feature" ? feature_description(value.text) : nullptr;
+            if (text != nullptr) return std::string(text) + kThroughTheCentre;
+        }
+    }
+    return description(plan.kind);
 }
 
 std::size_t axis_index(char axis) {
@@ -128,15 +179,21 @@ class Writer {
         words.insert(words.begin(), step.axis);
         return words;
     }
-    // A probe's check line ({current}, {skip}, {distance}).
-    void probe_check(const char* pattern, const ProgramStep& step) {
+    // A probe's or protected move's check line ({current}, {skip},
+    // {distance}, {label}).
+    void probe_check(const char* pattern, const ProgramStep& step, std::size_t label = 0) {
         if (*pattern == '\0') return;
         const std::size_t axis = axis_index(step.axis);
         std::string distance = program_number(step.direction * step.distance_mm);
         if (distance[0] != '-') distance.insert(distance.begin(), '+');
-        line(replaced(replaced(replaced(pattern, "{current}", d_.current_position.at(axis)),
-                               "{skip}", d_.skip_position.at(axis)),
-                      "{distance}", distance));
+        std::string text = replaced(pattern, "{label}", std::to_string(label));
+        if (text.find("{current}") != std::string::npos) {
+            text = replaced(text, "{current}", d_.current_position.at(axis));
+        }
+        if (text.find("{skip}") != std::string::npos) {
+            text = replaced(text, "{skip}", d_.skip_position.at(axis));
+        }
+        line(replaced(text, "{distance}", distance));
     }
     const std::string& text() const { return out_; }
 
@@ -208,7 +265,7 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
     const std::string id = plan_id(plan);
     for (const char* start : dialect.program_start) w.line(start);
     w.comment_block(std::string("ProbeCycle program for ") + dialect.title + ": " +
-                    description(plan.kind));
+                    description(plan));
     w.comment("Plan " + id + " (keep the plan file: the import matches the positions to it).");
     w.comment("Date " + date + ".");
     w.comment("Scenario values and options used:");
@@ -220,6 +277,10 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
         "starts or a pause ends. A probing move that does not trigger stops the program\n"
         "with an alarm.");
     for (const char* note : dialect.record_notes) w.comment(note);
+    const bool guards = plan.has_guards();
+    if (guards) {
+        for (const char* note : dialect.guard_notes) w.comment(note);
+    }
     w.line(dialect.modes);
     std::string kind_upper = to_string(plan.kind);
     for (char& c : kind_upper) c = static_cast<char>(c - 'a' + 'A');
@@ -230,6 +291,7 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                      "{KIND}", kind_upper));
     }
     std::size_t recorded = 0;
+    std::size_t guard_count = 0;
     double orientation = 0.0;
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const ProgramStep& step = plan.steps[i];
@@ -268,6 +330,16 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                     }
                 }
                 break;
+            case StepKind::guard: {
+                // A number of the move's own: LinuxCNC's o-word of its branch.
+                const std::size_t label = 1000 + ++guard_count;
+                w.comment(step.text);
+                w.probe_check(dialect.before_guard, step, label);
+                w.line(std::string(dialect.guard_word) + " " + w.move_words(step) + " F" +
+                       program_feed(step.feed_mm_min));
+                for (const char* after : dialect.after_guard) w.probe_check(after, step, label);
+                break;
+            }
             case StepKind::move:
                 if (step.feed_mm_min > 0.0) {
                     w.line(std::string(dialect.feed_word) + " " + w.move_words(step) + " F" +
@@ -282,6 +354,10 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
     for (const char* close : dialect.close_record) w.line(close);
     for (const char* end : dialect.end) w.line(end);
     for (const char* after : dialect.after_end) w.line(after);
+    if (guards) {
+        for (const char* line : dialect.guard_alarm) w.line(line);
+    }
+    for (const char* line : dialect.file_end) w.line(line);
     return w.text();
 }
 

@@ -469,10 +469,6 @@
         <translation>от 2 до %1 различных подач</translation>
     </message>
     <message>
-        <source>surface (a program for a feature&apos;s touches is not written yet)</source>
-        <translation>surface (программа для касаний элемента пока не пишется)</translation>
-    </message>
-    <message>
         <source>one line of text, at most %1 characters</source>
         <translation>одна строка текста, не более %1 символов</translation>
     </message>
@@ -491,6 +487,18 @@
     <message>
         <source>no recorded probe; a plan needs one or more</source>
         <translation>нет записываемых касаний; плану нужно одно или больше</translation>
+    </message>
+    <message>
+        <source>X+, X-, Y+ or Y- for a %1 (touched from both sides along X or Y)</source>
+        <translation>X+, X-, Y+ или Y- для %1 (касания с обеих сторон вдоль X или Y)</translation>
+    </message>
+    <message>
+        <source>at least %1 for a %2 (the probe moves over its wall between touches)</source>
+        <translation>не менее %1 для %2 (между касаниями датчик проходит над ним)</translation>
+    </message>
+    <message>
+        <source>at most %1 for a %2&apos;s program (its moves from the centre to the touches&apos; starts are at most %3)</source>
+        <translation>не более %1 для программы %2 (её перемещения от центра к началу касаний не длиннее %3)</translation>
     </message>
 </context>
 <context>
@@ -569,6 +577,14 @@
     <message>
         <source>no line PROBECYCLE PLAN: is this the DPRNT output of a ProbeCycle program? Nothing imported</source>
         <translation>нет строки PROBECYCLE PLAN: это вывод DPRNT программы ProbeCycle? Ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>the probe touched something during a protected move (%1): its path is obstructed, and grbl, which cannot stop a program on it, went on; check the machine; nothing imported</source>
+        <translation>датчик коснулся чего-то во время защищённого перемещения (%1): на пути препятствие, а grbl, который не может остановить на этом программу, продолжил её; проверьте станок; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>the program printed PROBECYCLE OBSTRUCTED: the probe touched something during a protected move and the control stopped with alarm 102; nothing imported</source>
+        <translation>программа вывела PROBECYCLE OBSTRUCTED: датчик коснулся чего-то во время защищённого перемещения, и система ЧПУ остановилась с аварией 102; ничего не импортировано</translation>
     </message>
 </context>
 <context>
@@ -3468,6 +3484,18 @@
     <message>
         <source>The direction of travel of the touch.</source>
         <translation>Направление движения при касании.</translation>
+    </message>
+    <message>
+        <source>The scenario&apos;s cycle on its feature, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe starts at the feature&apos;s centre (over it for a boss or web) and every move toward the part is protected: a touch on the way is an obstruction. Every move is incremental from where the probe stands. Prove it out at reduced rapid override with the probe clear of the part.</source>
+        <translation>Цикл сценария на его элементе в виде простых измерительных перемещений: его стратегия, подачи, отвод и начальное расстояние — значения, настроенные здесь, а не вызов цикла производителя. Датчик начинает в центре элемента (над ним — для бобышки или стенки), и каждое перемещение к детали защищённое: касание на пути означает препятствие. Каждое перемещение задано в приращениях от текущего положения датчика. Проверьте программу на пониженной коррекции ускоренного хода, с датчиком вдали от детали.</translation>
+    </message>
+    <message>
+        <source>The axis the two walls are touched along, X or Y (both directions, + first).</source>
+        <translation>Ось, вдоль которой касаются обеих сторон, X или Y (в обоих направлениях, сначала +).</translation>
+    </message>
+    <message>
+        <source>Not used: a bore or boss is touched at X+, X-, Y+ and Y-.</source>
+        <translation>Не используется: отверстия и бобышки касаются в X+, X-, Y+ и Y-.</translation>
     </message>
 </context>
 <context>

@@ -469,10 +469,6 @@
         <translation>2 到 %1 个不同的进给率</translation>
     </message>
     <message>
-        <source>surface (a program for a feature&apos;s touches is not written yet)</source>
-        <translation>surface（尚不生成特征触测的程序）</translation>
-    </message>
-    <message>
         <source>one line of text, at most %1 characters</source>
         <translation>一行文本，最多 %1 个字符</translation>
     </message>
@@ -491,6 +487,18 @@
     <message>
         <source>no recorded probe; a plan needs one or more</source>
         <translation>没有记录的触测；计划至少需要一次</translation>
+    </message>
+    <message>
+        <source>X+, X-, Y+ or Y- for a %1 (touched from both sides along X or Y)</source>
+        <translation>对于 %1，须为 X+、X-、Y+ 或 Y-（沿 X 或 Y 从两侧触测）</translation>
+    </message>
+    <message>
+        <source>at least %1 for a %2 (the probe moves over its wall between touches)</source>
+        <translation>对于 %2，须至少为 %1（各次触测之间测头从其上方越过）</translation>
+    </message>
+    <message>
+        <source>at most %1 for a %2&apos;s program (its moves from the centre to the touches&apos; starts are at most %3)</source>
+        <translation>对于 %2 的程序，须至多为 %1（其从中心到各次触测起点的移动最长为 %3）</translation>
     </message>
 </context>
 <context>
@@ -569,6 +577,14 @@
     <message>
         <source>no line PROBECYCLE PLAN: is this the DPRNT output of a ProbeCycle program? Nothing imported</source>
         <translation>没有 PROBECYCLE PLAN 行：这是 ProbeCycle 程序的 DPRNT 输出吗？未导入任何内容</translation>
+    </message>
+    <message>
+        <source>the probe touched something during a protected move (%1): its path is obstructed, and grbl, which cannot stop a program on it, went on; check the machine; nothing imported</source>
+        <translation>测头在保护移动中触碰到物体（%1）：路径受阻，而 grbl 无法因此停止程序，仍继续执行；请检查机床；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>the program printed PROBECYCLE OBSTRUCTED: the probe touched something during a protected move and the control stopped with alarm 102; nothing imported</source>
+        <translation>程序输出了 PROBECYCLE OBSTRUCTED：测头在保护移动中触碰到物体，系统以报警 102 停止；未导入任何内容</translation>
     </message>
 </context>
 <context>
@@ -3468,6 +3484,18 @@
     <message>
         <source>The direction of travel of the touch.</source>
         <translation>触测的行程方向。</translation>
+    </message>
+    <message>
+        <source>The scenario&apos;s cycle on its feature, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe starts at the feature&apos;s centre (over it for a boss or web) and every move toward the part is protected: a touch on the way is an obstruction. Every move is incremental from where the probe stands. Prove it out at reduced rapid override with the probe clear of the part.</source>
+        <translation>场景中对其特征的循环，以普通测量移动写出：其策略、进给率、回退距离和起始距离，即您在此调优的值，而非厂商的循环调用。测头从特征中心出发（圆柱或凸台则在其上方），每个朝向工件的移动都是保护移动：途中的触碰即为障碍。每个移动都是从测头当前位置出发的增量移动。请在降低的快速倍率下、测头远离工件时试运行。</translation>
+    </message>
+    <message>
+        <source>The axis the two walls are touched along, X or Y (both directions, + first).</source>
+        <translation>沿其触测两侧的轴，X 或 Y（两个方向，先 +）。</translation>
+    </message>
+    <message>
+        <source>Not used: a bore or boss is touched at X+, X-, Y+ and Y-.</source>
+        <translation>不使用：孔或圆柱在 X+、X-、Y+ 和 Y- 处触测。</translation>
     </message>
 </context>
 <context>

@@ -38,6 +38,15 @@ TEST(ProgramCli, WritesTheGoldenProgramAndItsPlan) {
         EXPECT_EQ(ring.out, read(data("golden/program_ring" + suffix)));
         const CliRun cycle = run_on_golden_day("program cycle --dialect " + dialect);
         EXPECT_EQ(cycle.out, read(data("golden/program_cycle" + suffix)));
+        // A feature's cycle: the core's golden plans (program_test_plans.h).
+        const CliRun bore =
+            run_on_golden_day("program cycle --dialect " + dialect + " --set cycle.feature=bore");
+        EXPECT_EQ(bore.out, read(data("golden/program_cycle_bore" + suffix))) << bore.err;
+        const CliRun boss =
+            run_on_golden_day("program cycle --dialect " + dialect +
+                              " --set cycle.feature=boss --set cycle.strategy=single_touch --set "
+                              "cycle.probe_feed_mm_min=300");
+        EXPECT_EQ(boss.out, read(data("golden/program_cycle_boss" + suffix))) << boss.err;
     }
 }
 
@@ -125,8 +134,10 @@ TEST(ProgramCli, BadInputIsNamedWithWhatIsAllowed) {
         {"program delay --dialect grbl --feeds 100,100",
          "--feeds: got 100; allowed: from 2 to 20 different feeds"},
         {"program delay --dialect grbl --repeats 0", "--repeats: got '0'; allowed: a whole number"},
-        {"program cycle --dialect grbl --set cycle.feature=bore",
-         "cycle.feature: got bore; allowed: surface"},
+        {"program cycle --dialect grbl --set cycle.feature=pocket",
+         "--axis: got Z-; allowed: X+, X-, Y+ or Y- for a pocket"},
+        {"program cycle --dialect grbl --set cycle.feature=boss --set cycle.clearance_mm=0",
+         "cycle.clearance_mm: got 0; allowed: at least 0.001 mm for a boss"},
         {"program ring --dialect grbl --gauge-diameter-mm 6.5",
          "the gauge (6.5 mm) leaves the ball"},
         {"program ring --dialect fanuc",

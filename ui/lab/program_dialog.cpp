@@ -169,6 +169,11 @@ AxisDirection ProgramDialog::axis() const {
 
 void ProgramDialog::build_cycle_options(QFormLayout* form) {
     build_axis(form, CyclePlanOptions{}.touch);
+    // A bore or boss is touched at X+, X-, Y+ and Y- whatever the axis.
+    const Feature feature = scenario_.cycle.feature;
+    const bool used = feature != Feature::bore && feature != Feature::boss;
+    axis_->setEnabled(used);
+    axis_label_->setEnabled(used);
 }
 
 void ProgramDialog::build_delay_options(QFormLayout* form) {
@@ -264,14 +269,30 @@ void ProgramDialog::retranslate() {
         for (UnitSpinBox* box : {gauge_, ball_, tolerance_}) box->retranslate();
     } else if (kind_ == ProgramKind::cycle) {
         setWindowTitle(tr("Tuned cycle program"));
-        intro_->setText(
-            tr("The scenario's cycle on a surface, as plain probing moves: its strategy, feeds, "
-               "backoff and start distance, the values you tuned here, not a maker's cycle call. "
-               "The probe stands at the start distance in front of the surface. Every move is "
-               "incremental from where the probe stands. Prove it out at reduced rapid override "
-               "with the probe clear of the part."));
+        const Feature feature = scenario_.cycle.feature;
         axis_label_->setText(tr("Axis and direction"));
-        axis_->setToolTip(tr("The direction of travel of the touch."));
+        if (feature == Feature::surface) {
+            intro_->setText(
+                tr("The scenario's cycle on a surface, as plain probing moves: its strategy, "
+                   "feeds, backoff and start distance, the values you tuned here, not a maker's "
+                   "cycle call. The probe stands at the start distance in front of the surface. "
+                   "Every move is incremental from where the probe stands. Prove it out at "
+                   "reduced rapid override with the probe clear of the part."));
+            axis_->setToolTip(tr("The direction of travel of the touch."));
+        } else {
+            intro_->setText(
+                tr("The scenario's cycle on its feature, as plain probing moves: its strategy, "
+                   "feeds, backoff and start distance, the values you tuned here, not a maker's "
+                   "cycle call. The probe starts at the feature's centre (over it for a boss or "
+                   "web) and every move toward the part is protected: a touch on the way is an "
+                   "obstruction. Every move is incremental from where the probe stands. Prove it "
+                   "out at reduced rapid override with the probe clear of the part."));
+            axis_->setToolTip(feature == Feature::pocket || feature == Feature::web
+                                  ? tr("The axis the two walls are touched along, X or Y (both "
+                                       "directions, + first).")
+                                  : tr("Not used: a bore or boss is touched at X+, X-, Y+ and "
+                                       "Y-."));
+        }
     } else {
         setWindowTitle(tr("Delay-stability test program"));
         intro_->setText(
@@ -458,7 +479,8 @@ QString ProgramDialog::field_label(const std::string& key) const {
                                                       {"gauge_diameter_mm", gauge_label_},
                                                       {"ball_diameter_mm", ball_label_},
                                                       {"centre_tolerance_mm", tolerance_label_},
-                                                      {"--orient-180", orient_label_}};
+                                                      {"--orient-180", orient_label_},
+                                                      {"axis", axis_label_}};
     for (const auto& [name, label] : labels) {
         if (key == name && label) return label->text();
     }

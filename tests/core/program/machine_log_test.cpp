@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -14,6 +15,7 @@
 #include <optional>
 #include <random>
 #include <sstream>
+#include <tuple>
 
 #include "core/common/csv_reader.h"
 #include "core/common/input_error.h"
@@ -230,6 +232,155 @@ TEST(MachineLog, RingLogGivesTheRingCsvAndACyclePlanHasNoTable) {
 
     const ProbingPlan cycle = make_cycle_plan(Scenario{}, CyclePlanOptions{});
     EXPECT_THROW(import_machine_log(cycle, DialectId::grbl, prb(0, 0, -5)), InputError);
+}
+
+// A plan with protected moves (a cycle plan: no lab table, but its recorded
+// touches are matched as the import matches any plan's). grbl reports every
+// G38.3: ":0" where it touched nothing; a ":1" there is an obstruction, which
+// grbl itself cannot stop on. LinuxCNC's PROBEOPEN file holds a G38.3's end
+// too; its LOG and the Fanuc-type DPRNT output the recorded touches alone.
+TEST(MachineLog, ProtectedMovesAreMatchedAndATouchOnOneIsRefused) {
+    const ProbingPlan plan = program_test::guarded_plan();
+    // Out to X20 (line 1), the touch at X25.03 (2), back to the start and
+    // the centre (4), down to Z-10 (5).
+    const std::string console =
+        prb(20, 0, 0, 0) + prb(25.03, 0, 0) + "ok\n" + prb(0, 0, 0, 0) + prb(0, 0, -10, 0);
+    const std::vector<RecordedPosition> touches =
+        recorded_touch_positions(plan, DialectId::grbl, console);
+    ASSERT_EQ(touches.size(), 1u);
+    EXPECT_EQ(touches[0].line, 2u);
+    EXPECT_DOUBLE_EQ(touches[0].xyz[0], 25.03);
+    // The cycle has no table in the lab.
+    EXPECT_THROW(import_machine_log(plan, DialectId::grbl, console), InputError);
+
+    // A protected move that touched (line 4), and a probe that did not (line 2).
+    std::string obstructed = console;
+    obstructed.replace(obstructed.find(prb(0, 0, 0, 0)), prb(0, 0, 0, 0).size(), prb(3, 0, 0));
+    EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, obstructed); }), 4);
+    try {
+        recorded_touch_positions(plan, DialectId::grbl, obstructed);
+    } catch (const CsvError& e) {
+        EXPECT_NE(std::string(e.what()).find("during a protected move ([PRB:3.000,0.000,0.000:1])"),
+                  std::string::npos)
+            << e.what();
+    }
+    std::string no_trigger = console;
+    no_trigger.replace(no_trigger.find(prb(25.03, 0, 0)), prb(25.03, 0, 0).size(),
+                       prb(26, 0, 0, 0));
+    EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, no_trigger); }), 2);
+    // A console of the touch alone: its report stands where the first
+    // protected move's is due, and reads as a touch there.
+    EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, prb(25.03, 0, 0)); }),
+              1);
+
+    // LinuxCNC: the LOG file, and the PROBEOPEN file with every G38.3's end.
+    const std::string id = plan_id(plan);
+    const std::vector<RecordedPosition> logged = recorded_touch_positions(
+        plan, DialectId::linuxcnc,
+        "probecycle plan " + id + " cycle\nprobecycle touch 1 25.030000 0.000000 0.000000\n");
+    ASSERT_EQ(logged.size(), 1u);
+    EXPECT_EQ(logged[0].line, 2u);
+    EXPECT_DOUBLE_EQ(logged[0].xyz[0], 25.03);
+    const std::string probe_file =
+        "20.000000 0.000000 0.000000 0 0 0 0 0 0\n25.030000 0.000000 0.000000 0 0 0 0 0 0\n"
+        "0.000000 0.000000 0.000000 0 0 0 0 0 0\n0.000000 0.000000 -10.000000 0 0 0 0 0 0\n";
+    const std::vector<RecordedPosition> probed =
+        recorded_touch_positions(plan, DialectId::linuxcnc, probe_file);
+    ASSERT_EQ(probed.size(), 1u);
+    EXPECT_EQ(probed[0].line, 2u);
+    EXPECT_DOUBLE_EQ(probed[0].xyz[0], 25.03);
+
+    // Fanuc-type: the touch, and the obstruction's marker (line 2).
+    const std::string letters = id_letters(id);
+    const std::vector<RecordedPosition> printed = recorded_touch_positions(
+        plan, DialectId::fanuc,
+        "PROBECYCLE PLAN " + letters +
+            " CYCLE\nTOUCH   1 X  25.0300 Y   0.0000 Z   0.0000\nPROBECYCLE END\n");
+    ASSERT_EQ(printed.size(), 1u);
+    EXPECT_DOUBLE_EQ(printed[0].xyz[0], 25.03);
+    EXPECT_EQ(line_of([&] {
+                  recorded_touch_positions(
+                      plan, DialectId::fanuc,
+                      "PROBECYCLE PLAN " + letters + " CYCLE\nPROBECYCLE OBSTRUCTED\n");
+              }),
+              2);
+}
+
+// The golden bore's plan run on a bore of 50 mm (stylus centre) about X0 Y0:
+// every probe triggers at the wall and stops the model's overtravel past it,
+// every protected move ends where it was going. Each position as grbl and a
+// PROBEOPEN file give it (every probe and protected move, in order), and
+// whether it is a recorded touch.
+struct BoreRun {
+    std::vector<std::array<double, 3>> every_probe;
+    std::vector<std::array<double, 3>> recorded;
+};
+BoreRun run_on_a_bore(const ProbingPlan& plan, const Scenario& scenario) {
+    Scenario surface = scenario;
+    surface.cycle.feature = Feature::surface;
+    const CycleResult model = evaluate(surface);
+    const double wall = 0.5 * scenario.cycle.feature_size_mm;
+    BoreRun run;
+    std::array<double, 3> at{};
+    for (const ProgramStep& step : plan.steps) {
+        if (step.kind == StepKind::pause) continue;
+        const std::size_t axis = static_cast<std::size_t>(step.axis - 'X');
+        if (step.kind == StepKind::probe) {
+            at[axis] = step.direction * wall;
+            run.every_probe.push_back(at);
+            if (step.recorded) run.recorded.push_back(at);
+            at[axis] += step.direction * (step.recorded ? model.measuring_touch().overtravel_mm
+                                                        : model.first_touch().overtravel_mm);
+            continue;
+        }
+        at[axis] += step.direction * step.distance_mm;
+        if (step.kind == StepKind::guard) run.every_probe.push_back(at);
+    }
+    return run;
+}
+
+TEST(MachineLog, ABoresRecordedTouchesAreMatchedInALinuxCncLogAndAGrblConsole) {
+    const Scenario scenario = program_test::golden_bore();
+    const ProbingPlan plan = make_cycle_plan(scenario, CyclePlanOptions{});
+    const BoreRun run = run_on_a_bore(plan, scenario);
+    // 8 protected moves, 2 probes at each of the 4 touches.
+    ASSERT_EQ(run.every_probe.size(), 16u);
+    ASSERT_EQ(run.recorded.size(), 4u);
+    std::string console = "Grbl 1.1h ['$' for help]\n";
+    std::string probe_file;
+    std::size_t index = 0;
+    for (const ProgramStep& step : plan.steps) {
+        if (step.kind != StepKind::probe && step.kind != StepKind::guard) continue;
+        const std::array<double, 3>& xyz = run.every_probe[index++];
+        console += prb(xyz[0], xyz[1], xyz[2], step.kind == StepKind::probe ? 1 : 0) + "ok\n";
+        char line[160];
+        std::snprintf(line, sizeof line, "%f %f %f 0 0 0 0 0 0\n", xyz[0], xyz[1], xyz[2]);
+        probe_file += line;
+    }
+    std::string log = "probecycle plan " + plan_id(plan) + " cycle\n";
+    for (std::size_t i = 0; i < run.recorded.size(); ++i) {
+        char line[160];
+        std::snprintf(line, sizeof line, "probecycle touch %zu %.6f %.6f %.6f\n", i + 1,
+                      run.recorded[i][0], run.recorded[i][1], run.recorded[i][2]);
+        log += line;
+    }
+    const double expected[4][2] = {{25, 0}, {-25, 0}, {0, 25}, {0, -25}};
+    for (const auto& [name, dialect_id, text] :
+         {std::tuple{"grbl", DialectId::grbl, console},
+          std::tuple{"LinuxCNC LOG", DialectId::linuxcnc, log},
+          std::tuple{"LinuxCNC PROBEOPEN", DialectId::linuxcnc, probe_file}}) {
+        SCOPED_TRACE(name);
+        const std::vector<RecordedPosition> touches =
+            recorded_touch_positions(plan, dialect_id, text);
+        ASSERT_EQ(touches.size(), 4u);
+        for (std::size_t i = 0; i < 4; ++i) {
+            EXPECT_NEAR(touches[i].xyz[0], expected[i][0], 1e-6);
+            EXPECT_NEAR(touches[i].xyz[1], expected[i][1], 1e-6);
+        }
+    }
+    // The X+ touch's line in the console: after the banner, the protected move
+    // out (line 2) and the first touch (line 4), each answered "ok": line 6.
+    EXPECT_EQ(recorded_touch_positions(plan, DialectId::grbl, console)[0].line, 6u);
 }
 
 // One probing move on the simulated machine: the surface `surface_mm` along

@@ -5,7 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
 #include "core/common/input_error.h"
+#include "core/common/number_format.h"
 #include "core/cycle/cycle.h"
 #include "tests/core/program/program_test_plans.h"
 
@@ -95,6 +101,280 @@ TEST(ProbingPlan, AValueKeyWithANulKeepsItsText) {
     EXPECT_EQ(back.values.back().text, "7");
 }
 
+TEST(ProbingPlan, ProtectedMovesReadBackAsWritten) {
+    const ProbingPlan plan = program_test::guarded_plan();
+    const std::string text = probing_plan_json(plan);
+    // A protected move is written as a plain move is: no recorded flag, no orientation.
+    EXPECT_NE(text.find(R"({
+      "step": "guard",
+      "axis": "X",
+      "direction": 1,
+      "distance_mm": 20.0,
+      "feed_mm_min": 3000.0,
+      "text": "out to the X+ start"
+    })"),
+              std::string::npos)
+        << text;
+    const ProbingPlan back = parse_probing_plan(text);
+    EXPECT_EQ(probing_plan_json(back), text);
+    EXPECT_EQ(plan_id(back), plan_id(plan));
+    ASSERT_EQ(back.steps.size(), 6u);
+    EXPECT_EQ(back.steps[1].kind, StepKind::guard);
+    EXPECT_EQ(back.steps[5].kind, StepKind::guard);
+    EXPECT_EQ(back.steps[5].axis, 'Z');
+    EXPECT_EQ(back.steps[5].direction, -1);
+    EXPECT_FALSE(back.steps[5].recorded);
+    EXPECT_TRUE(back.has_guards());
+    // The recorded touches are the probes alone.
+    ASSERT_EQ(back.recorded().size(), 1u);
+    EXPECT_EQ(back.recorded()[0], &back.steps[2]);
+    EXPECT_FALSE(program_test::golden_plans()[0].plan.has_guards());
+}
+
+TEST(ProbingPlan, BadProtectedMovesNameTheKey) {
+    const std::string good = probing_plan_json(program_test::guarded_plan());
+    // The first protected move is steps.2; its fields as written.
+    const auto with = [&good](const std::string& from, const std::string& to) {
+        std::string text = good;
+        text.replace(text.find(from, text.find("\"step\": \"guard\"")), from.size(), to);
+        return first_error(text);
+    };
+    // A protected move runs at a feed, never at the rapid.
+    EXPECT_EQ(with("\"feed_mm_min\": 3000.0", "\"feed_mm_min\": 0"),
+              "steps.2.feed_mm_min: got 0; allowed: a number from 1 to 100000 mm/min");
+    EXPECT_EQ(with("\"distance_mm\": 20.0", "\"distance_mm\": 0"),
+              "steps.2.distance_mm: got 0; allowed: a number from 0.001 to 1000 mm");
+    EXPECT_EQ(with("\"direction\": 1", "\"direction\": 2"),
+              "steps.2.direction: got 2; allowed: one of 1, -1");
+    EXPECT_EQ(with("\"axis\": \"X\"", "\"axis\": \"A\""),
+              "steps.2.axis: got \"A\"; allowed: one of X, Y, Z");
+    // Only a probe is recorded.
+    EXPECT_EQ(with("\"direction\": 1", "\"direction\": 1, \"recorded\": true"),
+              "steps.2.recorded: got true; allowed: true or false (true on a probe only)");
+    EXPECT_EQ(with("\"step\": \"guard\"", "\"step\": \"gaurd\""),
+              "steps.2.step: got \"gaurd\"; allowed: one of pause, probe, move, guard");
+}
+
+// --- The tuned cycle on a feature ---
+
+double up(double distance_mm) {
+    return round_up_to(distance_mm, 0.001);  // the programs' digits, the safe side
+}
+
+struct ExpectedStep {
+    StepKind kind;
+    const char* along;  // axis and direction of travel
+    double distance_mm;
+    double feed_mm_min;
+    bool recorded;
+};
+
+void expect_steps(const ProbingPlan& plan, std::size_t first,
+                  const std::vector<ExpectedStep>& expected) {
+    ASSERT_LE(first + expected.size(), plan.steps.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const ProgramStep& step = plan.steps[first + i];
+        const ExpectedStep& want = expected[i];
+        SCOPED_TRACE("step " + std::to_string(first + i) + ": " + step.text);
+        EXPECT_EQ(step.kind, want.kind);
+        EXPECT_EQ(to_string(AxisDirection{step.axis, step.direction}), want.along);
+        EXPECT_NEAR(step.distance_mm, want.distance_mm, 1e-9);
+        EXPECT_EQ(step.feed_mm_min, want.feed_mm_min);
+        EXPECT_EQ(step.recorded, want.recorded);
+    }
+}
+
+// The model's touch on a surface from the feature's start distance: what
+// every touch of the feature does (the same sequence in another direction).
+CycleResult model_touch(const Scenario& scenario) {
+    Scenario surface = scenario;
+    surface.cycle.feature = Feature::surface;
+    return evaluate(surface);
+}
+
+// Where the plan leaves the probe (X, Y, Z from where it started) on a
+// machine where every probe stops the model's overtravel past a wall that
+// stands `distance - search` ahead.
+std::array<double, 3> end_of(const ProbingPlan& plan, const Scenario& scenario) {
+    const CycleResult model = model_touch(scenario);
+    const double search = 1.0;  // min(1 mm, half the overtravel limit)
+    std::array<double, 3> at{};
+    for (const ProgramStep& step : plan.steps) {
+        if (step.kind == StepKind::pause) continue;
+        double travel = step.distance_mm;
+        if (step.kind == StepKind::probe) {
+            travel += -search + (step.recorded ? model.measuring_touch().overtravel_mm
+                                               : model.first_touch().overtravel_mm);
+        }
+        at[step.axis - 'X'] += step.direction * travel;
+    }
+    return at;
+}
+
+TEST(CyclePlan, ABoreTwoTouchGoesOutFromItsCentreAndBackProtected) {
+    const Scenario bore = program_test::golden_bore();
+    const ProbingPlan plan = make_cycle_plan(bore, CyclePlanOptions{});
+    const Cycle& c = bore.cycle;
+    // 50 mm less two approach distances of 5: each start 20 mm from the centre.
+    EXPECT_DOUBLE_EQ(start_radius_mm(c), 20.0);
+    const CycleResult model = model_touch(bore);
+    const double s = c.approach_mm;
+    const double search = 1.0;
+    const double first = model.first_touch().overtravel_mm;
+    const double measuring = model.measuring_touch().overtravel_mm;
+    ASSERT_EQ(plan.steps.size(), 1u + 4u * 6u);
+    EXPECT_EQ(plan.steps[0].kind, StepKind::pause);
+    EXPECT_EQ(plan.steps[0].text,
+              "check: the probe ball stands at the centre of the bore (within 1 mm) at the "
+              "measuring depth; resume to start");
+    const char* walls[] = {"X+", "X-", "Y+", "Y-"};
+    const char* back[] = {"X-", "X+", "Y-", "Y+"};
+    for (std::size_t k = 0; k < 4; ++k) {
+        SCOPED_TRACE(walls[k]);
+        expect_steps(plan, 1 + 6 * k,
+                     {
+                         {StepKind::guard, walls[k], 20.0, 3000.0, false},
+                         // The fast touch searches 1 mm past the wall; the
+                         // backoff (2 mm) from where it stopped; the measuring
+                         // touch from backoff - overtravel in front of the wall.
+                         {StepKind::probe, walls[k], up(s + search), 2000.0, false},
+                         {StepKind::move, back[k], 2.0, 10000.0, false},
+                         {StepKind::probe, walls[k], up(c.backoff_mm - first + search), 30.0, true},
+                         {StepKind::move, back[k], up(s + measuring), 10000.0, false},
+                         {StepKind::guard, back[k], 20.0, 3000.0, false},
+                     });
+    }
+    EXPECT_EQ(plan.recorded().size(), 4u);
+    for (const double axis : end_of(plan, bore)) EXPECT_NEAR(axis, 0.0, 0.005);
+    // The plan names the feature and what its moves use.
+    std::vector<std::string> keys;
+    for (const PlanValue& value : plan.values) keys.push_back(value.key);
+    for (const char* key :
+         {"cycle.feature", "cycle.feature_size_mm", "cycle.position_feed_mm_min"}) {
+        EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
+    }
+    EXPECT_EQ(std::find(keys.begin(), keys.end(), "cycle.clearance_mm"), keys.end());
+}
+
+TEST(CyclePlan, ABossSingleTouchGoesOverEachSideDownAndTouchesTowardTheCentre) {
+    const Scenario boss = program_test::golden_boss();
+    const ProbingPlan plan = make_cycle_plan(boss, CyclePlanOptions{});
+    const Cycle& c = boss.cycle;
+    // 50 mm plus two approach distances of 5: each start 30 mm from the centre.
+    EXPECT_DOUBLE_EQ(start_radius_mm(c), 30.0);
+    const double overtravel = model_touch(boss).first_touch().overtravel_mm;
+    const double s = c.approach_mm;
+    ASSERT_EQ(plan.steps.size(), 1u + 4u * 6u);
+    EXPECT_EQ(plan.steps[0].text,
+              "check: the probe ball stands over the centre of the boss (within 1 mm), "
+              "10 mm above the measuring depth; resume to start");
+    const char* sides[] = {"X+", "X-", "Y+", "Y-"};
+    const char* inward[] = {"X-", "X+", "Y-", "Y+"};
+    for (std::size_t k = 0; k < 4; ++k) {
+        SCOPED_TRACE(sides[k]);
+        expect_steps(plan, 1 + 6 * k,
+                     {
+                         {StepKind::guard, sides[k], 30.0, 3000.0, false},
+                         {StepKind::guard, "Z-", 10.0, 3000.0, false},
+                         // The X+ side is touched moving X-.
+                         {StepKind::probe, inward[k], up(s + 1.0), 300.0, true},
+                         {StepKind::move, sides[k], up(s + overtravel), 10000.0, false},
+                         // Up at the rapid (away from the part, as the model lifts).
+                         {StepKind::move, "Z+", 10.0, 0.0, false},
+                         {StepKind::guard, inward[k], 30.0, 3000.0, false},
+                     });
+    }
+    EXPECT_EQ(plan.recorded().size(), 4u);
+    for (const double axis : end_of(plan, boss)) EXPECT_NEAR(axis, 0.0, 0.005);
+    EXPECT_EQ(plan.values.back().key, "cycle.clearance_mm");
+}
+
+// The kind and direction of every step after the pause ("G" a protected move,
+// "P" a probe, "M" a move, "R" a rapid), e.g. "GX+ PX+ MX- ...".
+std::string outline(const ProbingPlan& plan) {
+    std::string text;
+    for (std::size_t i = 1; i < plan.steps.size(); ++i) {
+        const ProgramStep& step = plan.steps[i];
+        const char kind = step.kind == StepKind::guard   ? 'G'
+                          : step.kind == StepKind::probe ? 'P'
+                          : step.feed_mm_min > 0.0       ? 'M'
+                                                         : 'R';
+        if (!text.empty()) text += ' ';
+        text += kind;
+        text += to_string(AxisDirection{step.axis, step.direction});
+    }
+    return text;
+}
+
+TEST(CyclePlan, APocketAndAWebAlongXAndAlongY) {
+    const struct {
+        Feature feature;
+        AxisDirection axis;
+        const char* outline;
+    } cases[] = {
+        // Both walls from the centre, + first (the sign of the axis is not used).
+        {Feature::pocket, {'X', 1}, "GX+ PX+ MX- PX+ MX- GX- GX- PX- MX+ PX- MX+ GX+"},
+        {Feature::pocket, {'Y', -1}, "GY+ PY+ MY- PY+ MY- GY- GY- PY- MY+ PY- MY+ GY+"},
+        // Both sides from above the centre, each touched toward it.
+        {Feature::web,
+         {'X', -1},
+         "GX+ GZ- PX- MX+ PX- MX+ RZ+ GX- GX- GZ- PX+ MX- PX+ MX- RZ+ GX+"},
+        {Feature::web, {'Y', 1}, "GY+ GZ- PY- MY+ PY- MY+ RZ+ GY- GY- GZ- PY+ MY- PY+ MY- RZ+ GY+"},
+    };
+    for (const auto& c : cases) {
+        Scenario scenario;
+        scenario.cycle.feature = c.feature;
+        scenario.cycle.feature_size_mm = 30.0;
+        SCOPED_TRACE(std::string(to_string(c.feature)) + " along " + to_string(c.axis));
+        const ProbingPlan plan = make_cycle_plan(scenario, CyclePlanOptions{c.axis});
+        EXPECT_EQ(outline(plan), c.outline);
+        // 15 mm less (a pocket) or plus (a web) the approach of 5 mm.
+        const double radius = c.feature == Feature::pocket ? 10.0 : 20.0;
+        EXPECT_DOUBLE_EQ(plan.steps[1].distance_mm, radius);
+        EXPECT_EQ(plan.recorded().size(), 2u);
+        EXPECT_NE(plan.steps[0].text.find(std::string("the ") + to_string(c.feature) + " along " +
+                                          c.axis.axis),
+                  std::string::npos)
+            << plan.steps[0].text;
+        for (const double axis : end_of(plan, scenario)) EXPECT_NEAR(axis, 0.0, 0.005);
+        // The plan file holds it, protected moves and all.
+        EXPECT_EQ(probing_plan_json(parse_probing_plan(probing_plan_json(plan))),
+                  probing_plan_json(plan));
+    }
+}
+
+TEST(CyclePlan, WhatAFeaturesProgramCannotDoIsRefusedNamingTheKey) {
+    const auto refusal = [](const Scenario& scenario, const CyclePlanOptions& options) {
+        try {
+            make_cycle_plan(scenario, options);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    Scenario pocket;
+    pocket.cycle.feature = Feature::pocket;
+    EXPECT_EQ(refusal(pocket, CyclePlanOptions{}),
+              "axis: got Z-; allowed: X+, X-, Y+ or Y- for a pocket (touched from both sides along "
+              "X or Y)");
+    // A bore or boss is touched at X+, X-, Y+, Y- whatever the axis.
+    Scenario bore;
+    bore.cycle.feature = Feature::bore;
+    EXPECT_EQ(refusal(bore, CyclePlanOptions{}), "no error");
+    Scenario web;
+    web.cycle.feature = Feature::web;
+    web.cycle.clearance_mm = 0.0;
+    EXPECT_EQ(refusal(web, CyclePlanOptions{{'X', 1}}),
+              "cycle.clearance_mm: got 0; allowed: at least 0.001 mm for a web (the probe moves "
+              "over its wall between touches)");
+    Scenario boss;
+    boss.cycle.feature = Feature::boss;
+    boss.cycle.feature_size_mm = 2000.0;
+    EXPECT_EQ(refusal(boss, CyclePlanOptions{}),
+              "cycle.feature_size_mm: got 2000; allowed: at most 1990 mm for a boss's program (its "
+              "moves from the centre to the touches' starts are at most 1000 mm)");
+}
+
 TEST(ProbingPlan, OptionsThatCannotWorkAreRefused) {
     const Scenario scenario;
     DelayPlanOptions one_feed;
@@ -103,16 +383,6 @@ TEST(ProbingPlan, OptionsThatCannotWorkAreRefused) {
     RingPlanOptions tiny;
     tiny.gauge_diameter_mm = 6.5;
     EXPECT_THROW(make_ring_plan(scenario, tiny), InputError);
-    Scenario bore = scenario;
-    bore.cycle.feature = Feature::bore;
-    try {
-        make_cycle_plan(bore, CyclePlanOptions{});
-        ADD_FAILURE();
-    } catch (const InputError& e) {
-        EXPECT_EQ(std::string(e.what()),
-                  "cycle.feature: got bore; allowed: surface (a program for a feature's touches "
-                  "is not written yet)");
-    }
     Scenario fast = scenario;
     fast.probe.overtravel_limit_mm = 0.5;
     DelayPlanOptions high;

@@ -32,9 +32,24 @@ inline ProgramOptions golden_options() {
 }
 
 struct NamedPlan {
-    std::string name;  // "delay", "ring", "cycle", "cycle_single"
+    std::string name;  // "delay", "ring", "cycle", "cycle_single", "cycle_bore", "cycle_boss"
     ProbingPlan plan;
 };
+
+// The tuned cycle on a bore: the default scenario (two-touch) on its 50 mm bore.
+inline Scenario golden_bore() {
+    Scenario bore;
+    bore.cycle.feature = Feature::bore;
+    return bore;
+}
+// On a boss, single-touch at 300 mm/min.
+inline Scenario golden_boss() {
+    Scenario boss;
+    boss.cycle.feature = Feature::boss;
+    boss.cycle.strategy = Strategy::single_touch;
+    boss.cycle.probe_feed_mm_min = 300.0;
+    return boss;
+}
 
 // Every program the tests write, from the default scenario.
 inline std::vector<NamedPlan> golden_plans() {
@@ -47,7 +62,40 @@ inline std::vector<NamedPlan> golden_plans() {
         {"ring", make_ring_plan(scenario, RingPlanOptions{})},
         {"cycle", make_cycle_plan(scenario, CyclePlanOptions{})},
         {"cycle_single", make_cycle_plan(single, CyclePlanOptions{{'X', 1}})},
+        {"cycle_bore", make_cycle_plan(golden_bore(), CyclePlanOptions{})},
+        {"cycle_boss", make_cycle_plan(golden_boss(), CyclePlanOptions{})},
     };
+}
+
+// A small plan with protected moves (StepKind::guard), as a feature's program
+// makes them: out from a centre to a touch's start, the touch, back to the
+// start and to the centre; then down along Z, protected too.
+inline ProbingPlan guarded_plan() {
+    const auto step = [](StepKind kind, char axis, int direction, double distance_mm,
+                         double feed_mm_min, std::string text) {
+        ProgramStep s;
+        s.kind = kind;
+        s.axis = axis;
+        s.direction = direction;
+        s.distance_mm = distance_mm;
+        s.feed_mm_min = feed_mm_min;
+        s.recorded = kind == StepKind::probe;
+        s.text = std::move(text);
+        return s;
+    };
+    ProbingPlan plan;
+    plan.kind = ProgramKind::cycle;
+    plan.values = {{"cycle.position_feed_mm_min", "3000"}};
+    ProgramStep pause;
+    pause.kind = StepKind::pause;
+    pause.text = "check: the probe stands at the centre; resume to start";
+    plan.steps = {pause,
+                  step(StepKind::guard, 'X', 1, 20.0, 3000.0, "out to the X+ start"),
+                  step(StepKind::probe, 'X', 1, 6.0, 2000.0, "X+ at 2000 mm/min"),
+                  step(StepKind::move, 'X', -1, 5.2, 10000.0, "back to the start"),
+                  step(StepKind::guard, 'X', -1, 20.0, 3000.0, "back to the centre"),
+                  step(StepKind::guard, 'Z', -1, 10.0, 3000.0, "down by the clearance")};
+    return plan;
 }
 
 // Z- at 100 and 1000 mm/min, twice each.

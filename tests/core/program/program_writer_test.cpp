@@ -84,11 +84,70 @@ TEST(ProgramWriter, GrblHasNoActiveCommentsAndNoParameters) {
     }
 }
 
+// A protected move in each dialect: LinuxCNC's G38.3 and an abort when #5070
+// reads 1 (a trip), grbl's G38.3 alone (grbl cannot branch), the Fanuc-type
+// G31 to the move's end and alarm 102 when the skip position is not that end,
+// each on the moving axis's own variables; the header says what each does.
+TEST(ProgramWriter, ProtectedMovesInEveryDialect) {
+    const ProbingPlan plan = program_test::guarded_plan();
+    const std::string linuxcnc = write_program(plan, linuxcnc_dialect(), program_test::kDate);
+    EXPECT_NE(linuxcnc.find("; out to the X+ start\n"
+                            "G38.3 X20.000 F3000\n"
+                            "o1001 if [#5070 EQ 1]\n"
+                            "(ABORT,probecycle: the probe touched something during a protected "
+                            "move: the path is obstructed)\n"
+                            "o1001 endif\n"
+                            "; touch 1: X+ at 2000 mm/min\n"
+                            "G38.2 X6.000 F2000\n"),
+              std::string::npos)
+        << linuxcnc;
+    EXPECT_NE(linuxcnc.find("G38.3 Z-10.000 F3000\no1003 if [#5070 EQ 1]\n"), std::string::npos);
+    EXPECT_NE(linuxcnc.find("; Protected moves are G38.3"), std::string::npos);
+
+    const std::string grbl = write_program(plan, grbl_dialect(), program_test::kDate);
+    EXPECT_NE(grbl.find("; out to the X+ start\nG38.3 X20.000 F3000\n; touch 1:"),
+              std::string::npos)
+        << grbl;
+    EXPECT_NE(grbl.find("; Protected moves are G38.3, the probe armed: grbl answers"),
+              std::string::npos);
+
+    const std::string fanuc = write_program(plan, fanuc_dialect(), program_test::kDate);
+    EXPECT_NE(fanuc.find("(OUT TO THE X+ START)\n"
+                         "#101=#5041+20.000\n"
+                         "G31 X20.000 F3000\n"
+                         "IF[ABS[#5061-#101]GE0.050]GOTO9002\n"),
+              std::string::npos)
+        << fanuc;
+    EXPECT_NE(fanuc.find("#101=#5043-10.000\n"
+                         "G31 Z-10.000 F3000\n"
+                         "IF[ABS[#5063-#101]GE0.050]GOTO9002\n"),
+              std::string::npos);
+    EXPECT_EQ(
+        fanuc.substr(fanuc.find("\nM30\n")),
+        "\nM30\nN9001\nDPRNT[PROBECYCLE*NO*TRIGGER]\nPCLOS\n#3000=101(PROBE DID NOT TRIGGER)\n"
+        "N9002\nDPRNT[PROBECYCLE*OBSTRUCTED]\nPCLOS\n#3000=102(PROBE PATH OBSTRUCTED)\n%\n");
+    EXPECT_NE(fanuc.find("(PROTECTED MOVES ARE G31 TO THE END OF THE MOVE, WHEN"),
+              std::string::npos)
+        << fanuc;
+
+    // A plan without protected moves has neither the notes nor the branch.
+    for (const Dialect* d : {&linuxcnc_dialect(), &grbl_dialect(), &fanuc_dialect()}) {
+        const std::string text =
+            write_program(program_test::golden_plans()[2].plan, *d, program_test::kDate);
+        EXPECT_EQ(text.find("rotected moves"), std::string::npos) << d->name;
+        EXPECT_EQ(text.find("ROTECTED MOVES"), std::string::npos) << d->name;
+        EXPECT_EQ(text.find("9002"), std::string::npos) << d->name;
+    }
+}
+
 // Fanuc-type: every G31 keeps its programmed end just before and alarms just
-// after when the skip position is that end; DPRNT texts are letters and '*'
-// only (Haas); no lower case anywhere (comments included).
+// after when the skip position is that end (a probe) or is not (a protected
+// move); DPRNT texts are letters and '*' only (Haas); no lower case anywhere
+// (comments included).
 TEST(ProgramWriter, FanucChecksEveryProbeAndPrintsLettersOnly) {
-    for (const auto& [name, plan] : program_test::golden_plans()) {
+    std::vector<program_test::NamedPlan> plans = program_test::golden_plans();
+    plans.push_back({"guarded", program_test::guarded_plan()});
+    for (const auto& [name, plan] : plans) {
         const std::string text = write_program(plan, fanuc_dialect(), program_test::kDate,
                                                program_test::golden_options());
         std::istringstream lines(text);
@@ -105,7 +164,11 @@ TEST(ProgramWriter, FanucChecksEveryProbeAndPrintsLettersOnly) {
                 ASSERT_GT(i, 0u);
                 ASSERT_LT(i + 1, all.size());
                 EXPECT_EQ(all[i - 1].rfind("#101=#504" + n, 0), 0u) << all[i - 1];
-                EXPECT_EQ(all[i + 1], "IF[ABS[#506" + n + "-#101]LT0.050]GOTO9001");
+                // A comparison of the skip position on the same axis: a probe's
+                // or a protected move's.
+                EXPECT_TRUE(all[i + 1] == "IF[ABS[#506" + n + "-#101]LT0.050]GOTO9001" ||
+                            all[i + 1] == "IF[ABS[#506" + n + "-#101]GE0.050]GOTO9002")
+                    << all[i + 1];
                 // The programmed end is the move's own distance.
                 EXPECT_EQ(all[i - 1].substr(10),
                           (line[5] == '-' ? "" : "+") + line.substr(5, line.find(" F") - 5));
@@ -126,8 +189,12 @@ TEST(ProgramWriter, FanucChecksEveryProbeAndPrintsLettersOnly) {
             }
         }
         std::size_t all_probes = 0;
-        for (const ProgramStep& step : plan.steps) all_probes += step.kind == StepKind::probe;
+        for (const ProgramStep& step : plan.steps) {
+            all_probes += step.kind == StepKind::probe || step.kind == StepKind::guard;
+        }
         EXPECT_EQ(probes, all_probes) << name;
+        EXPECT_EQ(text.find("GOTO9002") != std::string::npos, plan.has_guards()) << name;
+        EXPECT_EQ(text.find("\nN9002\n") != std::string::npos, plan.has_guards()) << name;
         EXPECT_EQ(text.rfind("%\nO1300 (PROBECYCLE)\n", 0), 0u);
         EXPECT_LT(text.find("\nM30\nN9001\n"), text.find("#3000=101(PROBE DID NOT TRIGGER)"));
         EXPECT_EQ(text.substr(text.size() - 2), "%\n");

@@ -3,10 +3,13 @@
 // package linuxcnc-uspace, runs every program the tests write
 // (`rs274 -g FILE`: batch mode, the canonical calls on stdout). It must read
 // every line without an error, and its STRAIGHT_PROBE calls must be the
-// plan's probes: the axis, the signed incremental distance from the position
-// before the probe (the plans precede every probe by a plain move or the
-// start), and the feed. The probing moves' ends in rs274 are its simulation,
-// so the moves after them are not compared.
+// plan's probes and protected moves (G38.3 prints as STRAIGHT_PROBE too): the
+// axis, the signed incremental distance from the position before it, and the
+// feed. rs274 simulates every probe as tripping at its end and backing off
+// 0.254 mm toward where it started (STRAIGHT_PROBE, src/emc/sai/saicanon.cc),
+// so the next move starts there; the plain moves are not compared. With
+// #5070 read as 1 (a trip), the abort branch after a protected move stops the
+// program.
 //
 // Without rs274 the test is skipped with a message; CI installs the package
 // (.ci/install-deps.sh) and sets PROBECYCLE_REQUIRE_RS274=1, which makes a
@@ -61,6 +64,21 @@ Rs274Run run(const std::string& command) {
     return result;
 }
 
+// How far rs274's simulated probe backs off after the trip, in mm
+// (saicanon.cc: 0.254 mm, 0.01 inch).
+constexpr double kRs274Backoff_mm = 0.254;
+
+// `rs274 -g FILE` in `dir`, with HOME there too: LinuxCNC 2.9's rs274 opens
+// $HOME/.tool.mmap with O_TRUNC and maps it shared (tool_mmap_creator,
+// src/emc/tooldata/tooldata_mmap.cc), so two runs at once under one HOME
+// (ctest -j) truncate each other's map and die with a bus error, and a run
+// would empty the tool table of a LinuxCNC running under that HOME. Later
+// versions give rs274 a file of its own (src/emc/sai/driver.cc).
+Rs274Run run_rs274(const std::string& rs274, const fs::path& dir, const fs::path& file) {
+    return run("cd '" + dir.string() + "' && HOME='" + dir.string() + "' " + rs274 + " -g '" +
+               file.string() + "' </dev/null 2>&1");
+}
+
 struct CanonProbe {
     char axis{'?'};
     double distance_mm{0.0};
@@ -99,12 +117,13 @@ std::vector<CanonProbe> probes_of(const std::string& output, std::size_t& logs) 
         if (name == "STRAIGHT_PROBE") {
             CanonProbe probe;
             int moved = 0;
-            for (int a = 0; a < 3; ++a) {
-                const double d =
-                    args.at(static_cast<std::size_t>(a)) - position[static_cast<std::size_t>(a)];
+            std::size_t axis = 0;
+            for (std::size_t a = 0; a < 3; ++a) {
+                const double d = args.at(a) - position[a];
                 if (std::abs(d) > 1e-9) {
                     probe.axis = "XYZ"[a];
                     probe.distance_mm = d;
+                    axis = a;
                     ++moved;
                 }
             }
@@ -112,6 +131,9 @@ std::vector<CanonProbe> probes_of(const std::string& output, std::size_t& logs) 
             probe.feed_mm_min = feed;
             probes.push_back(probe);
             position = {args.at(0), args.at(1), args.at(2)};
+            // saicanon.cc: the probe trips at the end and backs off 0.254 mm
+            // (in mm) toward where it came from.
+            if (moved == 1) position[axis] -= std::copysign(kRs274Backoff_mm, probe.distance_mm);
         }
     }
     return probes;
@@ -130,17 +152,20 @@ TEST(Rs274Check, EveryLinuxCncProgramReadsAndProbesAsPlanned) {
     std::random_device seed;
     const fs::path dir = fs::temp_directory_path() / ("probecycle_rs274_" + std::to_string(seed()));
     fs::create_directories(dir);
-    for (const auto& [name, plan] : program_test::golden_plans()) {
+    std::vector<program_test::NamedPlan> plans = program_test::golden_plans();
+    plans.push_back({"guarded", program_test::guarded_plan()});
+    for (const auto& [name, plan] : plans) {
         const fs::path file = dir / ("program_" + name + ".ngc");
         std::ofstream(file) << write_program(plan, linuxcnc_dialect(), program_test::kDate);
-        const Rs274Run result = run("cd '" + dir.string() + "' && " + rs274 + " -g '" +
-                                    file.string() + "' </dev/null 2>&1");
+        const Rs274Run result = run_rs274(rs274, dir, file);
         EXPECT_EQ(result.exit_code, 0) << name << ":\n" << result.output;
         std::size_t logs = 0;
         const std::vector<CanonProbe> probes = probes_of(result.output, logs);
         std::vector<const ProgramStep*> planned;
         for (const ProgramStep& step : plan.steps) {
-            if (step.kind == StepKind::probe) planned.push_back(&step);
+            if (step.kind == StepKind::probe || step.kind == StepKind::guard) {
+                planned.push_back(&step);
+            }
         }
         ASSERT_EQ(probes.size(), planned.size()) << name << ":\n" << result.output;
         for (std::size_t i = 0; i < probes.size(); ++i) {
@@ -155,16 +180,42 @@ TEST(Rs274Check, EveryLinuxCncProgramReadsAndProbesAsPlanned) {
     fs::remove_all(dir);
 }
 
+// A protected move that trips (#5070 read as 1, which rs274's simulation
+// never gives) stops the program at once with the abort's message.
+TEST(Rs274Check, AProtectedMoveThatTripsAbortsTheProgram) {
+    const std::string rs274 = find_rs274();
+    if (rs274.empty()) GTEST_SKIP() << "rs274 is not installed (apt-get install linuxcnc-uspace)";
+    std::string text =
+        write_program(program_test::guarded_plan(), linuxcnc_dialect(), program_test::kDate);
+    const std::size_t test = text.find("[#5070 EQ 1]");
+    ASSERT_NE(test, std::string::npos) << text;
+    text.replace(test, 12, "[1 EQ 1]");
+    std::random_device seed;
+    const fs::path dir =
+        fs::temp_directory_path() / ("probecycle_rs274_abort_" + std::to_string(seed()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "guarded.ngc";
+    std::ofstream(file) << text;
+    const Rs274Run result = run_rs274(rs274, dir, file);
+    EXPECT_NE(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("the path is obstructed"), std::string::npos) << result.output;
+    std::size_t logs = 0;
+    EXPECT_EQ(probes_of(result.output, logs).size(), 1u) << result.output;
+    fs::remove_all(dir);
+}
+
 TEST(Rs274Check, AnInterpreterErrorFailsTheCheck) {
     const std::string rs274 = find_rs274();
     if (rs274.empty()) GTEST_SKIP() << "rs274 is not installed (apt-get install linuxcnc-uspace)";
     std::random_device seed;
-    const fs::path file =
-        fs::temp_directory_path() / ("probecycle_rs274_bad_" + std::to_string(seed()) + ".ngc");
+    const fs::path dir =
+        fs::temp_directory_path() / ("probecycle_rs274_bad_" + std::to_string(seed()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "bad.ngc";
     std::ofstream(file) << "G21 G91\nG38.2 F30\nM2\n";  // a probe without an axis word
-    const Rs274Run result = run(rs274 + " -g '" + file.string() + "' </dev/null 2>&1");
+    const Rs274Run result = run_rs274(rs274, dir, file);
     EXPECT_NE(result.exit_code, 0) << result.output;
-    fs::remove(file);
+    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -138,15 +139,54 @@ TEST(ProgramDialog, TheTunedCycleIsTheCoresProgramInEveryDialect) {
 
 TEST(ProgramDialog, ATunedCycleTheCoreRefusesIsShownInPlace) {
     Scenario scenario;
-    scenario.cycle.feature = Feature::bore;  // a surface's program only, so far
+    // Two-touch with a backoff that leaves the probe deflected after the
+    // first touch's overtravel.
+    scenario.cycle.backoff_mm = 0.01;
     ProgramDialog cycle(ProgramKind::cycle, scenario);
     cycle.show();
     cycle.update_now();
     EXPECT_FALSE(cycle.can_save());
     EXPECT_TRUE(cycle.program_text().isEmpty());
     EXPECT_FALSE(cycle.findChild<QPushButton*>(QStringLiteral("program-save"))->isEnabled());
-    EXPECT_TRUE(shown_text(cycle, "program-problem").startsWith(QStringLiteral("cycle.feature")))
-        << shown_text(cycle, "program-problem").toStdString();
+    const QString shown = shown_text(cycle, "program-problem");
+    // The window shows the backoff in its own units (10.0 µm).
+    EXPECT_TRUE(shown.startsWith(QStringLiteral("the backoff ")) &&
+                shown.indexOf(QStringLiteral("does not clear the first touch's overtravel")) != -1)
+        << shown.toStdString();
+    EXPECT_NE(shown.indexOf(QStringLiteral("set cycle.backoff_mm to at least")), -1)
+        << shown.toStdString();
+}
+
+TEST(ProgramDialog, AFeaturesCycleIsTheCoresProgramAndItsAxisIsNamedWhenRefused) {
+    Scenario bore;
+    bore.cycle.feature = Feature::bore;
+    ProgramDialog cycle(ProgramKind::cycle, bore);
+    cycle.show();
+    cycle.set_dialect(DialectId::linuxcnc);
+    cycle.update_now();
+    ASSERT_TRUE(cycle.can_save()) << cycle.problem().toStdString();
+    EXPECT_EQ(
+        cycle.program_text().toStdString(),
+        write_program(make_cycle_plan(bore, CyclePlanOptions{}), linuxcnc_dialect(), cycle.date()));
+    EXPECT_NE(cycle.program_text().indexOf(QStringLiteral("G38.3")), -1);
+    // A bore is touched at X+, X-, Y+ and Y-: the axis is not used.
+    EXPECT_FALSE(cycle.findChild<QComboBox*>(QStringLiteral("program-axis"))->isEnabled());
+
+    // A pocket along Z is refused naming the dialog's field; along X it is written.
+    Scenario pocket;
+    pocket.cycle.feature = Feature::pocket;
+    ProgramDialog along(ProgramKind::cycle, pocket);
+    along.show();
+    along.update_now();
+    EXPECT_TRUE(along.findChild<QComboBox*>(QStringLiteral("program-axis"))->isEnabled());
+    EXPECT_FALSE(along.can_save());
+    EXPECT_TRUE(shown_text(along, "program-problem")
+                    .startsWith(QStringLiteral("Axis and direction: got Z-; allowed: X+, X-, Y+ "
+                                               "or Y- for a pocket")))
+        << shown_text(along, "program-problem").toStdString();
+    along.set_cycle_options(CyclePlanOptions{{'X', 1}});
+    along.update_now();
+    EXPECT_TRUE(along.can_save()) << along.problem().toStdString();
 }
 
 TEST(ProgramDialog, TheTabsOpenItWithTheirScenarioAndGauge) {
