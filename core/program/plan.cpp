@@ -150,24 +150,49 @@ std::string feed_text(double feed_mm_min) {
     return format_number(feed_mm_min) + " mm/min";
 }
 
+// How many times the cycle's measuring touch is made (cycle.repeats, whole).
+int measuring_repeats(const Scenario& scenario) {
+    return std::max(1, static_cast<int>(scenario.cycle.repeats));
+}
+
+// " 2 of 3" for the k-th of `repeats` measuring touches, "" for one.
+std::string repeat_text(int k, int repeats) {
+    if (repeats <= 1) return {};
+    // (Appended piece by piece: g++ 12 warns falsely of an overlapping
+    // memcpy in " " + std::to_string(k).)
+    std::string text(" ");
+    text += std::to_string(k);
+    text += " of ";
+    text += std::to_string(repeats);
+    return text;
+}
+
 // One point touched with the scenario's strategy from `distance_mm` before the
 // surface (the first move may need `extra_mm` more), then back to
-// `distance_mm` before it (its recorded probe carries `orientation_deg`).
-// Single-touch: one recorded touch at the probing feed. Two-touch: a fast
-// touch, the backoff, the measuring touch (recorded).
+// `distance_mm` before it (its recorded probes carry `orientation_deg`).
+// Single-touch: a recorded touch at the probing feed. Two-touch: a fast
+// touch, the backoff, the measuring touch (recorded). The measuring touch is
+// made `repeats` times, as the model averages them (cycle.repeats):
+// single-touch back to the start and again; two-touch backed off from where
+// the measuring touch stopped and again at the measuring feed.
 void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection& at,
                double distance_mm, double extra_mm, double orientation_deg,
-               const std::string& back_to) {
+               const std::string& back_to, int repeats) {
     const Cycle& c = scenario.cycle;
     const double beyond = search_beyond_mm(scenario);
     const std::string name = to_string(at);
     if (c.strategy == Strategy::single_touch) {
         const double overtravel = checked_overtravel_mm(scenario, c.probe_feed_mm_min, distance_mm);
-        plan.steps.push_back(probe_step(at, distance_mm + extra_mm + beyond, c.probe_feed_mm_min,
-                                        true, name + " at " + feed_text(c.probe_feed_mm_min)));
-        plan.steps.back().orientation_deg = orientation_deg;
-        plan.steps.push_back(move_back(at, distance_mm + overtravel, c.return_feed_mm_min,
-                                       "back to the " + back_to));
+        for (int k = 1; k <= repeats; ++k) {
+            // (The repeats start where the first did: no search for the surface.)
+            const double extra = k == 1 ? extra_mm : 0.0;
+            plan.steps.push_back(probe_step(
+                at, distance_mm + extra + beyond, c.probe_feed_mm_min, true,
+                name + repeat_text(k, repeats) + " at " + feed_text(c.probe_feed_mm_min)));
+            plan.steps.back().orientation_deg = orientation_deg;
+            plan.steps.push_back(move_back(at, distance_mm + overtravel, c.return_feed_mm_min,
+                                           "back to the " + back_to));
+        }
         return;
     }
     Scenario s = scenario;
@@ -201,12 +226,35 @@ void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection&
     plan.steps.push_back(probe_step(at, distance_mm + extra_mm + beyond, c.probe_feed_mm_min, false,
                                     name + " first touch at " + feed_text(c.probe_feed_mm_min)));
     plan.steps.push_back(move_back(at, backoff, c.return_feed_mm_min, "backoff"));
-    plan.steps.push_back(
-        probe_step(at, backoff - first_overtravel + beyond, c.measure_feed_mm_min, true,
-                   name + " measuring touch at " + feed_text(c.measure_feed_mm_min)));
+    plan.steps.push_back(probe_step(at, backoff - first_overtravel + beyond, c.measure_feed_mm_min,
+                                    true,
+                                    name + " measuring touch" + repeat_text(1, repeats) + " at " +
+                                        feed_text(c.measure_feed_mm_min)));
     plan.steps.back().orientation_deg = orientation_deg;
-    plan.steps.push_back(move_back(at, distance_mm + result.measuring_touch().overtravel_mm,
-                                   c.return_feed_mm_min, "back to the " + back_to));
+    const TouchResult& measuring = result.measuring_touch();
+    double last_overtravel = measuring.overtravel_mm;
+    if (repeats > 1) {
+        // The model's repeat (cycle.cpp): from the measuring touch's stop the
+        // backoff (longer by the stop's distance from the recorded trigger when
+        // the backoff is measured from the trigger), then the measuring touch
+        // from the backoff less its reference in front of the surface.
+        double repeat_backoff = c.backoff_mm;
+        if (c.backoff_from == BackoffFrom::trigger) {
+            repeat_backoff += std::max(0.0, measuring.overtravel_mm - measuring.recorded_mm);
+        }
+        const double repeat_distance = repeat_backoff - measuring.overtravel_mm;
+        last_overtravel = checked_overtravel_mm(scenario, c.measure_feed_mm_min, repeat_distance);
+        for (int k = 2; k <= repeats; ++k) {
+            plan.steps.push_back(move_back(at, repeat_backoff, c.return_feed_mm_min, "backoff"));
+            plan.steps.push_back(probe_step(at, repeat_distance + beyond, c.measure_feed_mm_min,
+                                            true,
+                                            name + " measuring touch" + repeat_text(k, repeats) +
+                                                " at " + feed_text(c.measure_feed_mm_min)));
+            plan.steps.back().orientation_deg = orientation_deg;
+        }
+    }
+    plan.steps.push_back(move_back(at, distance_mm + last_overtravel, c.return_feed_mm_min,
+                                   "back to the " + back_to));
 }
 
 AxisDirection opposite(const AxisDirection& at) {
@@ -281,6 +329,7 @@ void check_feature_plan(const Scenario& scenario, const CyclePlanOptions& option
 void add_feature_touches(ProbingPlan& plan, const Scenario& scenario,
                          const CyclePlanOptions& options) {
     const Cycle& c = scenario.cycle;
+    const int repeats = measuring_repeats(scenario);
     const bool outside = lifts_over(c.feature);
     // Rounded to the programs' digits on the side that leaves more room to
     // the wall: inside, a start no nearer the wall than the model's; outside,
@@ -310,7 +359,7 @@ void add_feature_touches(ProbingPlan& plan, const Scenario& scenario,
                 plan.steps.push_back(
                     guard_step(side, radius, feed, "out to the start of the " + name + " touch"));
             }
-            add_point(plan, scenario, side, c.approach_mm, 0.0, 0.0, "start");
+            add_point(plan, scenario, side, c.approach_mm, 0.0, 0.0, "start", repeats);
             if (radius > 0.0) {
                 plan.steps.push_back(
                     guard_step(opposite(side), radius, feed, "back to the centre"));
@@ -321,7 +370,7 @@ void add_feature_touches(ProbingPlan& plan, const Scenario& scenario,
             guard_step(side, radius, feed, "out over the start of the " + name + " side"));
         plan.steps.push_back(guard_step(down, clearance, feed, "down to the measuring depth"));
         // The side faces away from the centre: it is touched toward it.
-        add_point(plan, scenario, opposite(side), c.approach_mm, 0.0, 0.0, "start");
+        add_point(plan, scenario, opposite(side), c.approach_mm, 0.0, 0.0, "start", repeats);
         plan.steps.push_back(move_step(opposite(down), clearance, 0.0, "up by the clearance"));
         plan.steps.push_back(guard_step(opposite(side), radius, feed, "back over the centre"));
     }
@@ -493,8 +542,9 @@ ProbingPlan make_ring_plan(const Scenario& scenario, const RingPlanOptions& opti
             // The probe may stand the tolerance off centre, so a touch may
             // need that much more; the return is measured from the wall, so
             // it lands on the centre whatever the start.
+            // One measuring touch a point: the fit takes every point on its own.
             add_point(plan, scenario, at, to_wall, options.centre_tolerance_mm, orientation,
-                      "centre");
+                      "centre", 1);
         }
     }
     return plan;
@@ -510,6 +560,8 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
                {"cycle.strategy", "cycle.approach_mm", "cycle.probe_feed_mm_min",
                 "cycle.measure_feed_mm_min", "cycle.backoff_mm", "cycle.backoff_from",
                 "cycle.return_feed_mm_min"});
+    // The repeats when there are any (a plan of one touch a point reads as before).
+    if (measuring_repeats(scenario) > 1) add_values(plan, scenario, {"cycle.repeats"});
     if (feature != Feature::surface) {
         add_values(plan, scenario,
                    {"cycle.feature", "cycle.feature_size_mm", "cycle.position_feed_mm_min"});
@@ -521,7 +573,8 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
                                     mm_text(scenario.cycle.approach_mm) +
                                     " in front of the surface, touching along " +
                                     to_string(options.touch) + "; resume to start"));
-    add_point(plan, scenario, options.touch, scenario.cycle.approach_mm, 0.0, 0.0, "start");
+    add_point(plan, scenario, options.touch, scenario.cycle.approach_mm, 0.0, 0.0, "start",
+              measuring_repeats(scenario));
     return plan;
 }
 

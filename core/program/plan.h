@@ -132,7 +132,10 @@ struct RingPlanOptions {
 //   the touch toward the centre, a rapid up by the clearance, a protected move
 //   back over the centre.
 // The model moves straight from start to start; the programs go back through
-// the centre between touches.
+// the centre between touches. Each touch's measuring touch is made
+// cycle.repeats times, as the model averages them (single-touch: back to the
+// start and again; two-touch: backed off from where it stopped and again),
+// every one recorded.
 struct CyclePlanOptions {
     AxisDirection touch{'Z', -1};
 };

@@ -45,7 +45,7 @@ TEST(ProgramCli, WritesTheGoldenProgramAndItsPlan) {
         const CliRun boss =
             run_on_golden_day("program cycle --dialect " + dialect +
                               " --set cycle.feature=boss --set cycle.strategy=single_touch --set "
-                              "cycle.probe_feed_mm_min=300");
+                              "cycle.probe_feed_mm_min=300 --set cycle.repeats=2");
         EXPECT_EQ(boss.out, read(data("golden/program_cycle_boss" + suffix))) << boss.err;
     }
 }

@@ -264,7 +264,8 @@ TEST(CyclePlan, ABossSingleTouchGoesOverEachSideDownAndTouchesTowardTheCentre) {
     EXPECT_DOUBLE_EQ(start_radius_mm(c), 30.0);
     const double overtravel = model_touch(boss).first_touch().overtravel_mm;
     const double s = c.approach_mm;
-    ASSERT_EQ(plan.steps.size(), 1u + 4u * 6u);
+    // cycle.repeats 2: each side touched twice, back to the start in between.
+    ASSERT_EQ(plan.steps.size(), 1u + 4u * 8u);
     EXPECT_EQ(plan.steps[0].text,
               "check: the probe ball stands over the centre of the boss (within 1 mm), "
               "10 mm above the measuring depth; resume to start");
@@ -272,11 +273,13 @@ TEST(CyclePlan, ABossSingleTouchGoesOverEachSideDownAndTouchesTowardTheCentre) {
     const char* inward[] = {"X-", "X+", "Y-", "Y+"};
     for (std::size_t k = 0; k < 4; ++k) {
         SCOPED_TRACE(sides[k]);
-        expect_steps(plan, 1 + 6 * k,
+        expect_steps(plan, 1 + 8 * k,
                      {
                          {StepKind::guard, sides[k], 30.0, 3000.0, false},
                          {StepKind::guard, "Z-", 10.0, 3000.0, false},
                          // The X+ side is touched moving X-.
+                         {StepKind::probe, inward[k], up(s + 1.0), 300.0, true},
+                         {StepKind::move, sides[k], up(s + overtravel), 10000.0, false},
                          {StepKind::probe, inward[k], up(s + 1.0), 300.0, true},
                          {StepKind::move, sides[k], up(s + overtravel), 10000.0, false},
                          // Up at the rapid (away from the part, as the model lifts).
@@ -284,9 +287,50 @@ TEST(CyclePlan, ABossSingleTouchGoesOverEachSideDownAndTouchesTowardTheCentre) {
                          {StepKind::guard, inward[k], 30.0, 3000.0, false},
                      });
     }
-    EXPECT_EQ(plan.recorded().size(), 4u);
+    EXPECT_EQ(plan.recorded().size(), 8u);
+    EXPECT_EQ(plan.steps[3].text, "X- 1 of 2 at 300 mm/min");
+    EXPECT_EQ(plan.steps[5].text, "X- 2 of 2 at 300 mm/min");
     for (const double axis : end_of(plan, boss)) EXPECT_NEAR(axis, 0.0, 0.005);
     EXPECT_EQ(plan.values.back().key, "cycle.clearance_mm");
+}
+
+// cycle.repeats on a two-touch surface: the measuring touch again, backed off
+// from where it stopped, as the model repeats it (cycle.cpp); the plan says
+// the repeats among its values, and a plan of one touch does not.
+TEST(CyclePlan, RepeatsMakeTheMeasuringTouchAgainFromItsStop) {
+    Scenario scenario;
+    scenario.cycle.repeats = 3.0;
+    const ProbingPlan plan = make_cycle_plan(scenario, CyclePlanOptions{});
+    const Cycle& c = scenario.cycle;
+    const CycleResult model = model_touch(scenario);
+    const double s = c.approach_mm;
+    const double search = 1.0;
+    const double first = model.first_touch().overtravel_mm;
+    const double measuring = model.measuring_touch().overtravel_mm;
+    ASSERT_EQ(plan.steps.size(), 1u + 3u + 2u * 2u + 1u);
+    expect_steps(plan, 1,
+                 {
+                     {StepKind::probe, "Z-", up(s + search), 2000.0, false},
+                     {StepKind::move, "Z+", 2.0, 10000.0, false},
+                     {StepKind::probe, "Z-", up(c.backoff_mm - first + search), 30.0, true},
+                     // From the measuring touch's stop: the backoff, then the
+                     // measuring touch from backoff - its overtravel.
+                     {StepKind::move, "Z+", 2.0, 10000.0, false},
+                     {StepKind::probe, "Z-", up(c.backoff_mm - measuring + search), 30.0, true},
+                     {StepKind::move, "Z+", 2.0, 10000.0, false},
+                     {StepKind::probe, "Z-", up(c.backoff_mm - measuring + search), 30.0, true},
+                     {StepKind::move, "Z+", up(s + measuring), 10000.0, false},
+                 });
+    EXPECT_EQ(plan.recorded().size(), 3u);
+    EXPECT_EQ(plan.steps[3].text, "Z- measuring touch 1 of 3 at 30 mm/min");
+    EXPECT_EQ(plan.steps[7].text, "Z- measuring touch 3 of 3 at 30 mm/min");
+    for (const double axis : end_of(plan, scenario)) EXPECT_NEAR(axis, 0.0, 0.005);
+    const auto has_repeats = [](const ProbingPlan& p) {
+        return std::any_of(p.values.begin(), p.values.end(),
+                           [](const PlanValue& v) { return v.key == "cycle.repeats"; });
+    };
+    EXPECT_TRUE(has_repeats(plan));
+    EXPECT_FALSE(has_repeats(make_cycle_plan(Scenario{}, CyclePlanOptions{})));
 }
 
 // The kind and direction of every step after the pause ("G" a protected move,

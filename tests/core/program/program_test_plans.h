@@ -42,12 +42,13 @@ inline Scenario golden_bore() {
     bore.cycle.feature = Feature::bore;
     return bore;
 }
-// On a boss, single-touch at 300 mm/min.
+// On a boss, single-touch at 300 mm/min, each side touched twice (cycle.repeats).
 inline Scenario golden_boss() {
     Scenario boss;
     boss.cycle.feature = Feature::boss;
     boss.cycle.strategy = Strategy::single_touch;
     boss.cycle.probe_feed_mm_min = 300.0;
+    boss.cycle.repeats = 2.0;
     return boss;
 }
 

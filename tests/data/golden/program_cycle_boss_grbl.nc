@@ -7,7 +7,7 @@
 ; The model moves straight from one touch's start to the next; this program
 ; goes back through the centre between touches, so it runs a little longer
 ; than the model's cycle time.
-; Plan 840da13408e3ad92 (keep the plan file: the import matches the positions to it).
+; Plan a1257eb5cf1b675c (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -29,6 +29,7 @@
 ;   cycle.backoff_mm = 2
 ;   cycle.backoff_from = stop
 ;   cycle.return_feed_mm_min = 10000
+;   cycle.repeats = 2
 ;   cycle.feature = boss
 ;   cycle.feature_size_mm = 50
 ;   cycle.position_feed_mm_min = 3000
@@ -53,7 +54,10 @@ M0
 G38.3 X30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
-; touch 1: X- at 300 mm/min
+; touch 1: X- 1 of 2 at 300 mm/min
+G38.2 X-6.000 F300
+G1 X5.195 F10000 ; back to the start
+; touch 2: X- 2 of 2 at 300 mm/min
 G38.2 X-6.000 F300
 G1 X5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
@@ -63,7 +67,10 @@ G38.3 X-30.000 F3000
 G38.3 X-30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
-; touch 2: X+ at 300 mm/min
+; touch 3: X+ 1 of 2 at 300 mm/min
+G38.2 X6.000 F300
+G1 X-5.195 F10000 ; back to the start
+; touch 4: X+ 2 of 2 at 300 mm/min
 G38.2 X6.000 F300
 G1 X-5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
@@ -73,7 +80,10 @@ G38.3 X30.000 F3000
 G38.3 Y30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
-; touch 3: Y- at 300 mm/min
+; touch 5: Y- 1 of 2 at 300 mm/min
+G38.2 Y-6.000 F300
+G1 Y5.195 F10000 ; back to the start
+; touch 6: Y- 2 of 2 at 300 mm/min
 G38.2 Y-6.000 F300
 G1 Y5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
@@ -83,7 +93,10 @@ G38.3 Y-30.000 F3000
 G38.3 Y-30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
-; touch 4: Y+ at 300 mm/min
+; touch 7: Y+ 1 of 2 at 300 mm/min
+G38.2 Y6.000 F300
+G1 Y-5.195 F10000 ; back to the start
+; touch 8: Y+ 2 of 2 at 300 mm/min
 G38.2 Y6.000 F300
 G1 Y-5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
