@@ -608,7 +608,7 @@ std::vector<FieldError> validate(const Scenario& scenario) {
             "feature_narrower_than_approach",
             QT_TRANSLATE_NOOP("FieldError", "more than twice cycle.approach_mm (%1) for a %2"));
         allowed.args = {arg("min_size_mm", ArgKind::length_mm, 2.0 * c.approach_mm),
-                        text_arg("feature", to_string(c.feature))};
+                        feature_arg("feature", c.feature)};
         errors.push_back({"cycle.feature_size_mm", number_text(c.feature_size_mm), allowed});
     }
     // A count of measurements: a whole number (issue 14).
@@ -785,6 +785,29 @@ const char* to_string(Feature feature) {
             return "boss";
     }
     return "?";
+}
+
+MessageArg feature_arg(std::string name, Feature feature) {
+    const char* text = "?";
+    switch (feature) {
+        case Feature::surface:
+            text = QT_TRANSLATE_NOOP("Feature", "surface");
+            break;
+        case Feature::web:
+            text = QT_TRANSLATE_NOOP("Feature", "web");
+            break;
+        case Feature::pocket:
+            text = QT_TRANSLATE_NOOP("Feature", "pocket");
+            break;
+        case Feature::bore:
+            text = QT_TRANSLATE_NOOP("Feature", "bore");
+            break;
+        case Feature::boss:
+            text = QT_TRANSLATE_NOOP("Feature", "boss");
+            break;
+    }
+    return message_arg(std::move(name),
+                       make_message(std::string("feature_") + to_string(feature), "Feature", text));
 }
 
 std::optional<Strategy> strategy_from_string(std::string_view word) {

@@ -160,6 +160,9 @@ void apply_setting(Scenario& scenario, std::string_view assignment);
 const char* to_string(Strategy strategy);
 const char* to_string(BackoffFrom from);
 const char* to_string(Feature feature);
+// The feature's name ("bore") as a message argument, translated where it is
+// shown (the CLI prints the English word, the key file's).
+MessageArg feature_arg(std::string name, Feature feature);
 std::optional<Strategy> strategy_from_string(std::string_view word);
 std::optional<BackoffFrom> backoff_from_from_string(std::string_view word);
 std::optional<Feature> feature_from_string(std::string_view word);

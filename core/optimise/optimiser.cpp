@@ -607,7 +607,7 @@ Message impossible_message(Optimiser& optimiser, const Scenario& scenario, doubl
                   arg("feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min),
                   significant_arg("approach_mm", ArgKind::length_mm,
                                   s.approach_min_mm(kMinFeed_mm_min), 4),
-                  text_arg("feature", to_string(scenario.cycle.feature)),
+                  feature_arg("feature", scenario.cycle.feature),
                   arg("feature_size_mm", ArgKind::length_mm, scenario.cycle.feature_size_mm)};
         return m;
     }

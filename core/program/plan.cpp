@@ -276,13 +276,12 @@ std::vector<AxisDirection> feature_sides(Feature feature, char axis) {
 // longer than a plan holds.
 void check_feature_plan(const Scenario& scenario, const CyclePlanOptions& options) {
     const Cycle& c = scenario.cycle;
-    const char* feature = to_string(c.feature);
     if ((c.feature == Feature::pocket || c.feature == Feature::web) && options.touch.axis == 'Z') {
         Message allowed = allowed_text(
             "program_feature_axis",
             QT_TRANSLATE_NOOP("FieldError",
                               "X+, X-, Y+ or Y- for a %1 (touched from both sides along X or Y)"));
-        allowed.args = {text_arg("feature", feature)};
+        allowed.args = {feature_arg("feature", c.feature)};
         throw InputError(
             FieldError{"axis", to_string(options.touch), std::move(allowed)}.to_message());
     }
@@ -292,7 +291,8 @@ void check_feature_plan(const Scenario& scenario, const CyclePlanOptions& option
             QT_TRANSLATE_NOOP("FieldError",
                               "at least %1 for a %2 (the probe moves over its wall between "
                               "touches)"));
-        allowed.args = {arg("min_mm", ArgKind::length_mm, kStep_mm), text_arg("feature", feature)};
+        allowed.args = {arg("min_mm", ArgKind::length_mm, kStep_mm),
+                        feature_arg("feature", c.feature)};
         throw InputError(
             FieldError{"cycle.clearance_mm", format_number(c.clearance_mm), std::move(allowed)}
                 .to_message());
@@ -306,7 +306,8 @@ void check_feature_plan(const Scenario& scenario, const CyclePlanOptions& option
             QT_TRANSLATE_NOOP("FieldError",
                               "at most %1 for a %2's program (its moves from the centre to the "
                               "touches' starts are at most %3)"));
-        allowed.args = {arg("max_mm", ArgKind::length_mm, max_size), text_arg("feature", feature),
+        allowed.args = {arg("max_mm", ArgKind::length_mm, max_size),
+                        feature_arg("feature", c.feature),
                         arg("limit_mm", ArgKind::length_mm, kMaxPlanDistance_mm)};
         throw InputError(FieldError{"cycle.feature_size_mm", format_number(c.feature_size_mm),
                                     std::move(allowed)}

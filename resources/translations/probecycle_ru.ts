@@ -315,6 +315,29 @@
     </message>
 </context>
 <context>
+    <name>Feature</name>
+    <message>
+        <source>surface</source>
+        <translation>плоскость</translation>
+    </message>
+    <message>
+        <source>web</source>
+        <translation>стенка</translation>
+    </message>
+    <message>
+        <source>pocket</source>
+        <translation>паз</translation>
+    </message>
+    <message>
+        <source>bore</source>
+        <translation>отверстие</translation>
+    </message>
+    <message>
+        <source>boss</source>
+        <translation>бобышка</translation>
+    </message>
+</context>
+<context>
     <name>FieldError</name>
     <message>
         <source>%1: %2</source>
@@ -342,7 +365,7 @@
     </message>
     <message>
         <source>more than twice cycle.approach_mm (%1) for a %2</source>
-        <translation>больше удвоенного cycle.approach_mm (%1) для %2</translation>
+        <translation>больше удвоенного cycle.approach_mm (%1) для элемента «%2»</translation>
     </message>
     <message>
         <source>malformed JSON: %1</source>
@@ -490,15 +513,15 @@
     </message>
     <message>
         <source>X+, X-, Y+ or Y- for a %1 (touched from both sides along X or Y)</source>
-        <translation>X+, X-, Y+ или Y- для %1 (касания с обеих сторон вдоль X или Y)</translation>
+        <translation>X+, X-, Y+ или Y- для элемента «%1» (касания с обеих сторон вдоль X или Y)</translation>
     </message>
     <message>
         <source>at least %1 for a %2 (the probe moves over its wall between touches)</source>
-        <translation>не менее %1 для %2 (между касаниями датчик проходит над ним)</translation>
+        <translation>не менее %1 для элемента «%2» (между касаниями датчик проходит над ним)</translation>
     </message>
     <message>
         <source>at most %1 for a %2&apos;s program (its moves from the centre to the touches&apos; starts are at most %3)</source>
-        <translation>не более %1 для программы %2 (её перемещения от центра к началу касаний не длиннее %3)</translation>
+        <translation>не более %1 для программы элемента «%2» (её перемещения от центра к началу касаний не длиннее %3)</translation>
     </message>
 </context>
 <context>
@@ -599,7 +622,7 @@
     </message>
     <message>
         <source>no setting meets the requirements: a start distance of the part position uncertainty %1 plus the room to reach even %2 (%3) does not fit a %4 of %5</source>
-        <translation>ни одна настройка не удовлетворяет требованиям: расстояние подхода из неопределённости положения детали %1 и пути разгона даже до %2 (%3) не помещается в %4 размером %5</translation>
+        <translation>ни одна настройка не удовлетворяет требованиям: расстояние подхода из неопределённости положения детали %1 и пути разгона даже до %2 (%3) не помещается в элемент «%4» размером %5</translation>
     </message>
     <message>
         <source>no setting meets the target uncertainty %1 (cycle.target_uncertainty_mm): the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5)</source>

@@ -315,6 +315,29 @@
     </message>
 </context>
 <context>
+    <name>Feature</name>
+    <message>
+        <source>surface</source>
+        <translation>平面</translation>
+    </message>
+    <message>
+        <source>web</source>
+        <translation>凸台</translation>
+    </message>
+    <message>
+        <source>pocket</source>
+        <translation>槽</translation>
+    </message>
+    <message>
+        <source>bore</source>
+        <translation>孔</translation>
+    </message>
+    <message>
+        <source>boss</source>
+        <translation>圆柱</translation>
+    </message>
+</context>
+<context>
     <name>FieldError</name>
     <message>
         <source>%1: %2</source>

@@ -476,6 +476,17 @@ TEST_P(ProgramLanguage, TheDialogsAndTheirMessagesAreTranslated) {
         EXPECT_EQ(english_left(cycle.windowTitle()), QString());
     }
     save_screenshot(cycle, QStringLiteral("program_cycle"));
+    Scenario pocket;
+    pocket.cycle.feature = Feature::pocket;
+    ProgramDialog refused(ProgramKind::cycle, pocket);
+    refused.show();
+    refused.set_cycle_options(CyclePlanOptions{{'Z', -1}});
+    refused.update_now();
+    EXPECT_FALSE(refused.can_save());
+    if (!english) {
+        EXPECT_EQ(english_left(refused.problem()), QString()) << refused.problem().toStdString();
+    }
+    save_screenshot(refused, QStringLiteral("program_cycle_pocket_refused"));
 
     MachineLogDialog log(ProgramKind::ring);
     log.show();
