@@ -7,7 +7,10 @@
 // CSV that parse_delay_csv / parse_ring_csv read back: one row per recorded
 // touch of the plan, in order, with its axis, direction and feed (delay) or
 // its orientation (ring). A blank line before the log changes nothing (every
-// importer skips blank lines).
+// importer skips blank lines). For the cycle's slots the same log is also
+// matched (recorded_touch_positions) to the default cycle and to a bore's
+// (protected moves, two repeats at each point): the positions of exactly the
+// plan's recorded touches, or a CsvError.
 //
 // The seeds (fuzz/seeds/machine_log/, named for their first byte) are logs of
 // these plans in each format. The LinuxCNC LOG files and the DPRNT outputs
@@ -43,6 +46,28 @@ const std::array<ProbingPlan, 3>& plans() {
     return kPlans;
 }
 
+// A two-touch bore with cycle.repeats 2: protected moves between its touches.
+const ProbingPlan& bore_plan() {
+    static const ProbingPlan kPlan = [] {
+        Scenario bore;
+        bore.cycle.feature = Feature::bore;
+        bore.cycle.repeats = 2.0;
+        return make_cycle_plan(bore, CyclePlanOptions{});
+    }();
+    return kPlan;
+}
+
+// Matched to `plan`: as many positions as it records, or a CsvError.
+void check_recorded(const ProbingPlan& plan, DialectId dialect, std::string_view text) {
+    try {
+        if (recorded_touch_positions(plan, dialect, text).size() != plan.recorded().size()) {
+            std::abort();
+        }
+    } catch (const CsvError& e) {
+        (void)e.to_message();
+    }
+}
+
 // The CSV holds one row per recorded touch of the plan, each the touch's.
 void check_lab_csv(const ProbingPlan& plan, const std::string& csv) {
     const std::vector<const ProgramStep*> recorded = plan.recorded();
@@ -76,6 +101,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const DialectId dialect =
         std::array{DialectId::linuxcnc, DialectId::grbl, DialectId::fanuc}[pick % 3];
     const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
+    if (plan.kind == ProgramKind::cycle) {
+        check_recorded(plan, dialect, text);
+        check_recorded(bore_plan(), dialect, text);
+    }
     std::string csv;
     try {
         csv = import_machine_log(plan, dialect, text);
