@@ -88,37 +88,11 @@ void add_machine_values(ProbingPlan& plan, const Scenario& scenario) {
          "probe.interface_delay_s", "probe.pretravel_mm", "probe.overtravel_limit_mm"});
 }
 
-ProgramStep probe_step(const AxisDirection& at, double distance_mm, double feed_mm_min,
-                       bool recorded, std::string text) {
+// A step that moves along `along` (distance and feed as given).
+ProgramStep motion_step(StepKind kind, const AxisDirection& along, double distance_mm,
+                        double feed_mm_min, std::string text) {
     ProgramStep step;
-    step.kind = StepKind::probe;
-    step.axis = at.axis;
-    step.direction = at.direction;
-    step.distance_mm = round_up_to(distance_mm, kStep_mm);
-    step.feed_mm_min = feed_mm_min;
-    step.recorded = recorded;
-    step.text = std::move(text);
-    return step;
-}
-
-// A move away from the surface touched from `at` (feed 0: rapid).
-ProgramStep move_back(const AxisDirection& at, double distance_mm, double feed_mm_min,
-                      std::string text) {
-    ProgramStep step;
-    step.kind = StepKind::move;
-    step.axis = at.axis;
-    step.direction = -at.direction;
-    step.distance_mm = round_up_to(distance_mm, kStep_mm);
-    step.feed_mm_min = feed_mm_min;
-    step.text = std::move(text);
-    return step;
-}
-
-// A protected move along `along` (the probe armed, a move that must not trigger).
-ProgramStep guard_step(const AxisDirection& along, double distance_mm, double feed_mm_min,
-                       std::string text) {
-    ProgramStep step;
-    step.kind = StepKind::guard;
+    step.kind = kind;
     step.axis = along.axis;
     step.direction = along.direction;
     step.distance_mm = distance_mm;
@@ -127,12 +101,35 @@ ProgramStep guard_step(const AxisDirection& along, double distance_mm, double fe
     return step;
 }
 
+ProgramStep probe_step(const AxisDirection& at, double distance_mm, double feed_mm_min,
+                       bool recorded, std::string text) {
+    ProgramStep step = motion_step(StepKind::probe, at, round_up_to(distance_mm, kStep_mm),
+                                   feed_mm_min, std::move(text));
+    step.recorded = recorded;
+    return step;
+}
+
+AxisDirection opposite(const AxisDirection& at) {
+    return {at.axis, -at.direction};
+}
+
+// A move away from the surface touched from `at` (feed 0: rapid).
+ProgramStep move_back(const AxisDirection& at, double distance_mm, double feed_mm_min,
+                      std::string text) {
+    return motion_step(StepKind::move, opposite(at), round_up_to(distance_mm, kStep_mm),
+                       feed_mm_min, std::move(text));
+}
+
+// A protected move along `along` (the probe armed, a move that must not trigger).
+ProgramStep guard_step(const AxisDirection& along, double distance_mm, double feed_mm_min,
+                       std::string text) {
+    return motion_step(StepKind::guard, along, distance_mm, feed_mm_min, std::move(text));
+}
+
 // A plain move along `along` (feed 0: rapid).
 ProgramStep move_step(const AxisDirection& along, double distance_mm, double feed_mm_min,
                       std::string text) {
-    ProgramStep step = guard_step(along, distance_mm, feed_mm_min, std::move(text));
-    step.kind = StepKind::move;
-    return step;
+    return motion_step(StepKind::move, along, distance_mm, feed_mm_min, std::move(text));
 }
 
 ProgramStep pause_step(std::string text) {
@@ -255,10 +252,6 @@ void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection&
     }
     plan.steps.push_back(move_back(at, distance_mm + last_overtravel, c.return_feed_mm_min,
                                    "back to the " + back_to));
-}
-
-AxisDirection opposite(const AxisDirection& at) {
-    return {at.axis, -at.direction};
 }
 
 // The feature's touch points, by the side of the centre they lie on (the
