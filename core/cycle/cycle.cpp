@@ -387,18 +387,26 @@ const AxisKernel* active_kernel(const AxisKernel& kernel) {
     return kernel.active() ? &kernel : nullptr;
 }
 
+// A rest-to-rest move's time to the in-position check: the cache's, or
+// solved on the actual motion `motion()` gives (built only then) and kept.
+template <typename Motion>
+double filtered_move_time(MotionCache* cache, double distance_mm, double feed_mm_s, Motion motion) {
+    if (cache != nullptr) {
+        if (const auto known = cache->move_time_s(distance_mm, feed_mm_s)) return *known;
+    }
+    const double t = motion().in_position_time();
+    if (cache != nullptr) cache->store_move_time(distance_mm, feed_mm_s, t);
+    return t;
+}
+
 // block_time_s and approach_room_mm for a kernel already built (nullptr: the
 // ideal axis).
 double block_time(const MotionLimits& limits, const AxisKernel* kernel, double distance_mm,
                   double feed_mm_s, MotionCache* cache = nullptr) {
     if (kernel == nullptr) return move_time_s(limits, distance_mm, feed_mm_s);
-    if (cache != nullptr) {
-        if (const auto known = cache->move_time_s(distance_mm, feed_mm_s)) return *known;
-    }
-    const double t = AxisMotion(*kernel, move_command(plan_move(limits, distance_mm, feed_mm_s)))
-                         .in_position_time();
-    if (cache != nullptr) cache->store_move_time(distance_mm, feed_mm_s, t);
-    return t;
+    return filtered_move_time(cache, distance_mm, feed_mm_s, [&] {
+        return AxisMotion(*kernel, move_command(plan_move(limits, distance_mm, feed_mm_s)));
+    });
 }
 
 double approach_room(const Scenario& scenario, const MotionLimits& limits, const AxisKernel* kernel,
@@ -540,10 +548,9 @@ class CycleBuilder {
                 }
             }
             const int index = keep_motion(move_command(plan));
-            const std::optional<double> known = cache_.move_time_s(distance_mm, feed_mm_s);
-            const double duration =
-                known ? *known : motions_[static_cast<std::size_t>(index)].in_position_time();
-            if (!known) cache_.store_move_time(distance_mm, feed_mm_s, duration);
+            const double duration = filtered_move_time(
+                &cache_, distance_mm, feed_mm_s,
+                [&]() -> const AxisMotion& { return motions_[static_cast<std::size_t>(index)]; });
             add_filtered_motion(index, direction, duration);
             if (memo_.size() < memo_.capacity()) {
                 memo_.push_back({distance_mm, feed_mm_s, index, duration});
