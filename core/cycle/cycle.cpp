@@ -436,20 +436,21 @@ class CycleBuilder {
     // `kernel`: the dynamics after interpolation, or nullptr for the ideal axis.
     CycleBuilder(std::vector<PhaseRecord>& phases, std::vector<TimedSegment>& segments,
                  std::vector<AxisMotion>& motions, std::array<double, kPhaseCount>& phase_time,
-                 const AxisKernel* kernel, MotionCache& cache)
+                 const AxisKernel* kernel, MotionCache& cache, Detail detail)
         : phases_(phases),
           segments_(segments),
           motions_(motions),
           phase_time_(phase_time),
           kernel_(kernel),
-          cache_(cache) {}
+          cache_(cache),
+          full_(detail == Detail::full) {}
 
     double now() const { return t_; }
     double axis_mm() const { return axis_mm_; }
     void set_touch(int touch) { touch_ = touch; }
 
     void add_phase(Phase phase, double time_s, double distance_mm) {
-        phases_.push_back({phase, touch_, t_, time_s, distance_mm});
+        phases_.push_back({phase, touch_, t_, time_s, full_ ? distance_mm : 0.0});
         phase_time_[static_cast<std::size_t>(phase)] += time_s;
         t_ += time_s;
     }
@@ -468,10 +469,12 @@ class CycleBuilder {
             const double dt = std::min(seg.duration_s, remaining);
             state.accel_mm_s2 = seg.accel_mm_s2;
             if (seg.step_speed_mm_s >= 0.0) state.speed_mm_s = seg.step_speed_mm_s;
-            KinematicState start = state;
-            start.position_mm = 0.0;
-            segments_.push_back({seg_t, dt, axis_mm_ + direction * state.position_mm, direction,
-                                 start, seg.jerk_mm_s3, touch_});
+            if (full_) {
+                KinematicState start = state;
+                start.position_mm = 0.0;
+                segments_.push_back({seg_t, dt, axis_mm_ + direction * state.position_mm, direction,
+                                     start, seg.jerk_mm_s3, touch_});
+            }
             state = integrate(dt, state, seg.jerk_mm_s3);
             seg_t += dt;
             remaining -= dt;
@@ -487,20 +490,22 @@ class CycleBuilder {
         motions_.emplace_back(*kernel_, command);
         return static_cast<int>(motions_.size() - 1);
     }
-    // A kept motion as the next block, `duration_s` of it (to the in-position
-    // check); the next block starts where the command ended.
-    void add_filtered_motion(int index, double direction, double duration_s) {
-        const AxisMotion& motion = motions_[static_cast<std::size_t>(index)];
-        TimedSegment segment;
-        segment.start_s = motion_t_;
-        segment.duration_s = duration_s;
-        segment.axis_start_mm = axis_mm_;
-        segment.direction = direction;
-        segment.touch = touch_;
-        segment.motion = index;
-        segments_.push_back(segment);
+    // A block with dynamics, `duration_s` of it (to the in-position check):
+    // kept motion `index` (-1 in a summary, which has no timeline); the next block
+    // starts where the command ended, `end_mm` along the path.
+    void add_filtered_motion(int index, double direction, double duration_s, double end_mm) {
+        if (full_) {
+            TimedSegment segment;
+            segment.start_s = motion_t_;
+            segment.duration_s = duration_s;
+            segment.axis_start_mm = axis_mm_;
+            segment.direction = direction;
+            segment.touch = touch_;
+            segment.motion = index;
+            segments_.push_back(segment);
+        }
         motion_t_ += duration_s;
-        axis_mm_ += direction * motion.command().end_state().position_mm;
+        axis_mm_ += direction * end_mm;
     }
 
     std::size_t phase_count() const { return phases_.size(); }
@@ -542,18 +547,28 @@ class CycleBuilder {
             // one motion serves every repeat.
             for (const MoveMemo& memo : memo_) {
                 if (memo.distance_mm == distance_mm && memo.feed_mm_s == feed_mm_s) {
-                    add_filtered_motion(memo.motion, direction, memo.duration_s);
+                    add_filtered_motion(memo.motion, direction, memo.duration_s, memo.end_mm);
                     add_phase(phase, memo.duration_s, distance_mm);
                     return;
                 }
             }
-            const int index = keep_motion(move_command(plan));
-            const double duration = filtered_move_time(
-                &cache_, distance_mm, feed_mm_s,
-                [&]() -> const AxisMotion& { return motions_[static_cast<std::size_t>(index)]; });
-            add_filtered_motion(index, direction, duration);
+            const AxisCommand command = move_command(plan);
+            int index = -1;
+            double duration = 0.0;
+            if (full_) {
+                index = keep_motion(command);
+                duration =
+                    filtered_move_time(&cache_, distance_mm, feed_mm_s, [&]() -> const AxisMotion& {
+                        return motions_[static_cast<std::size_t>(index)];
+                    });
+            } else {  // the motion only for a solve the cache does not hold
+                duration = filtered_move_time(&cache_, distance_mm, feed_mm_s,
+                                              [&] { return AxisMotion(*kernel_, command); });
+            }
+            const double end_mm = command.end_state().position_mm;
+            add_filtered_motion(index, direction, duration, end_mm);
             if (memo_.size() < memo_.capacity()) {
-                memo_.push_back({distance_mm, feed_mm_s, index, duration});
+                memo_.push_back({distance_mm, feed_mm_s, index, duration, end_mm});
             }
             add_phase(phase, duration, distance_mm);
             return;
@@ -606,12 +621,15 @@ class CycleBuilder {
         touch.programmed_feed_mm_s = feed_mm_s;
         touch.touch_speed_mm_s = at_touch.speed_mm_s;
         touch.trigger_speed_mm_s = at_trigger.speed_mm_s;
-        touch.react_speed_mm_s = at_react.speed_mm_s;
         // Overtravel: pretravel + delay travel + stopping distance, past the surface.
         touch.overtravel_mm = at_react.position_mm + stop_distance - at_touch.position_mm;
         touch.recorded_mm = plan.state_at(t_record).position_mm - at_touch.position_mm;
-        touch.delay_travel_mm = plan.state_at(t_trigger + measurement_delay_s(m, p)).position_mm -
-                                at_trigger.position_mm;
+        if (full_) {  // as the touch with dynamics (Detail::summary)
+            touch.react_speed_mm_s = at_react.speed_mm_s;
+            touch.delay_travel_mm =
+                plan.state_at(t_trigger + measurement_delay_s(m, p)).position_mm -
+                at_trigger.position_mm;
+        }
         return touch;
     }
 
@@ -627,7 +645,13 @@ class CycleBuilder {
         const Machine& m = scenario.machine;
         const Probe& p = scenario.probe;
         const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
-        const AxisMotion approach = approach_motion(*kernel_, plan);
+        // The touch's motion is the approach until the axis reacts: built
+        // once, in place, then stopped there (AxisMotion::reset).
+        AxisCommand command;
+        command.append(plan, plan.duration_s());
+        const int index = keep_motion(command);
+        AxisMotion& motion = motions_[static_cast<std::size_t>(index)];
+        const AxisMotion& approach = motion;
         const double lag = kernel_->moment(1);
         const auto reach = [&](double position_mm) {
             return approach.time_at_position(position_mm,
@@ -646,24 +670,25 @@ class CycleBuilder {
         const double t_react = t_trigger + reaction_time_s(m, p);
         const double t_record = t_interface + (m.latched_input ? 0.0 : m.scan_period_s);
 
-        AxisCommand command;
+        // (Before the reaction the command is the approach's.)
+        const KinematicState at_trigger = approach.state(t_trigger);
+        command = {};
         command.append(plan, t_react);
         const KinematicState at_react_command = command.end_state();
         const SegmentPlan stop =
             plan_stop(limits, feed_mm_s, at_react_command.speed_mm_s, at_react_command.accel_mm_s2);
         command.append(stop, stop.duration_s());
         command.close();
-        const int index = keep_motion(command);
-        const AxisMotion& motion = motions_[static_cast<std::size_t>(index)];
+        motion.reset(command);
         const double t_settle = std::max(motion.in_position_time(), t_react);
         const double rest_mm = command.end_state().position_mm;
 
-        // (Before the reaction the command is the approach's.)
         const KinematicState& at_touch = touching;
-        const KinematicState at_trigger = approach.state(t_trigger);
-        const KinematicState at_interface = motion.state(t_interface);
-        const KinematicState at_react = motion.state(t_react);
-        add_filtered_motion(index, +1.0, t_settle);
+        // The states only the full result shows (the phases' distances, the
+        // react speed, the delay travel) are not solved for a summary.
+        const KinematicState at_interface = full_ ? motion.state(t_interface) : KinematicState{};
+        const KinematicState at_react = full_ ? motion.state(t_react) : KinematicState{};
+        add_filtered_motion(full_ ? index : -1, +1.0, t_settle, rest_mm);
 
         add_phase(names.approach, t_touch, distance_mm);
         add_phase(names.pretravel, t_trigger - t_touch, p.pretravel_mm);
@@ -677,11 +702,14 @@ class CycleBuilder {
         touch.programmed_feed_mm_s = feed_mm_s;
         touch.touch_speed_mm_s = at_touch.speed_mm_s;
         touch.trigger_speed_mm_s = at_trigger.speed_mm_s;
-        touch.react_speed_mm_s = at_react.speed_mm_s;
+        touch.react_speed_mm_s = at_react.speed_mm_s;  // 0 in a summary
         touch.overtravel_mm = rest_mm - distance_mm;
         touch.recorded_mm = motion.state(t_record).position_mm - distance_mm;
-        touch.delay_travel_mm = motion.state(t_trigger + measurement_delay_s(m, p)).position_mm -
-                                at_trigger.position_mm;
+        if (full_) {
+            touch.delay_travel_mm =
+                motion.state(t_trigger + measurement_delay_s(m, p)).position_mm -
+                at_trigger.position_mm;
+        }
         return touch;
     }
 
@@ -690,6 +718,7 @@ class CycleBuilder {
         double feed_mm_s;
         int motion;
         double duration_s;
+        double end_mm;
     };
     // A handful of distinct moves per cycle; fixed capacity, no allocation.
     struct MemoList {
@@ -709,6 +738,7 @@ class CycleBuilder {
     std::array<double, kPhaseCount>& phase_time_;
     const AxisKernel* kernel_;
     MotionCache& cache_;
+    bool full_{true};  // Detail::full: the timeline and every distance
     double t_{0.0};
     double motion_t_{0.0};
     double axis_mm_{0.0};
@@ -814,6 +844,7 @@ void MotionCache::bind(const MotionLimits& limits, const AxisDynamics& dynamics)
     if (limits_ && *limits_ == limits && dynamics_ == dynamics) return;
     limits_ = limits;
     dynamics_ = dynamics;
+    kernel_ = AxisKernel(dynamics);
     moves_ = {};
     rooms_ = {};
 }
@@ -852,7 +883,8 @@ void evaluate_into(const Scenario& scenario, CycleResult& r) {
     evaluate_into(scenario, r, cache);
 }
 
-void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache) {
+void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache, Detail detail) {
+    const bool full = detail == Detail::full;
     r.phases_.clear();
     r.segments_.clear();
     r.motions_.clear();
@@ -871,11 +903,9 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache)
     const bool two_touch = c.strategy == Strategy::two_touch;
     const int touches = touch_count(c.feature);
 
-    const AxisDynamics axis = scenario.axis_dynamics();
-    const AxisKernel kernel(axis);
-    const AxisKernel* dynamics = active_kernel(kernel);
-    cache.bind(limits, axis);
-    CycleBuilder b(r.phases_, r.segments_, r.motions_, r.phase_time_s_, dynamics, cache);
+    cache.bind(limits, scenario.axis_dynamics());
+    const AxisKernel* dynamics = active_kernel(cache.kernel());
+    CycleBuilder b(r.phases_, r.segments_, r.motions_, r.phase_time_s_, dynamics, cache, detail);
     // Issue 11, loose end 6: a feature's moves are protected, at the positioning
     // feed, from the centre (above it for a boss or web, which lifts over the
     // wall at the rapid feed, away from the part).
@@ -917,7 +947,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache)
     double repeat_backoff_cost_s = 0.0;
     if (two_touch) {
         measuring = back_off_and_measure(first, first_backoff_cost_s);
-        add_touch_warnings(scenario, measuring, 1, r.warnings_);
+        if (full) add_touch_warnings(scenario, measuring, 1, r.warnings_);
     }
     // Issue 14: the measuring touch made `repeats` times and averaged. Two-touch
     // backs off from the measuring touch and touches again at the measuring
@@ -943,7 +973,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache)
     }
     // domain.md, "Return": back to the start position, s + overtravel.
     b.add_move(Phase::return_move, limits, b.axis_mm(), return_v, -1.0);
-    add_touch_warnings(scenario, first, 0, r.warnings_);
+    if (full) add_touch_warnings(scenario, first, 0, r.warnings_);
     r.first_ = first;
     r.measuring_ = measuring;
 
@@ -1006,7 +1036,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache)
         if (c.backoff_mm < recommended - kBackoffTolerance_mm) {
             w.push_back({WarningCode::backoff_too_small, Severity::error, c.backoff_mm, recommended,
                          0.0, c.backoff_from == BackoffFrom::trigger ? 1.0 : 0.0});
-        } else if (c.backoff_mm - recommended > std::max(0.1 * recommended, 0.05)) {
+        } else if (full && c.backoff_mm - recommended > std::max(0.1 * recommended, 0.05)) {
             // Excess beyond 10 % (at least 0.05 mm) of the recommendation is reported.
             // Every backoff wastes: the first touch's, and each repeat's from
             // the measuring touch.
@@ -1054,6 +1084,8 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache)
                      speed_error_mm(m, p, measuring_programmed_v, calibration_v)});
     }
     order_by_severity(w);
+    // A summary's touches kept their motions only while they were solved.
+    if (!full) r.motions_.clear();
 }
 
 }  // namespace probecycle

@@ -19,6 +19,21 @@ namespace probecycle {
 
 class MotionCache;
 
+// How much of a CycleResult an evaluation fills in.
+enum class Detail {
+    full,
+    // What a sweep, the knee search, the optimiser and the overtravel fix
+    // read of each candidate: the total and phase times, the touches'
+    // overtravel, recorded position and trigger speed, the uncertainty, the
+    // recommended backoff and every error (valid(), invalid_codes()), bit for
+    // bit as `full`. Left out: the timeline (segments() and motions();
+    // state_at() is not available), the phases' distances, the touches'
+    // react_speed_mm_s and delay_travel_mm (all 0), and the notes and
+    // warnings that take solves of their own (backoff_excess,
+    // touch_while_accelerating).
+    summary,
+};
+
 enum class Phase {
     approach,
     pretravel,
@@ -187,7 +202,7 @@ class CycleResult {
     std::vector<Warning>& mutable_warnings() { return warnings_; }
 
   private:
-    friend void evaluate_into(const Scenario&, CycleResult&, MotionCache&);
+    friend void evaluate_into(const Scenario&, CycleResult&, MotionCache&, Detail);
     std::vector<PhaseRecord> phases_;
     std::vector<TimedSegment> segments_;
     std::vector<AxisMotion> motions_;
@@ -259,6 +274,8 @@ class MotionCache {
   public:
     // Empties the cache unless it holds `limits` and `dynamics`'s solves.
     void bind(const MotionLimits& limits, const AxisDynamics& dynamics);
+    // The bound dynamics' kernel, prepared once.
+    const AxisKernel& kernel() const { return kernel_; }
 
     // Time of a rest-to-rest move to the in-position check.
     std::optional<double> move_time_s(double distance_mm, double feed_mm_s) const;
@@ -282,6 +299,7 @@ class MotionCache {
     };
     std::optional<MotionLimits> limits_;
     AxisDynamics dynamics_{};
+    AxisKernel kernel_{};
     Table moves_;
     Table rooms_;
 };
@@ -292,7 +310,8 @@ class MotionCache {
 // a MotionCache, the solves of earlier evaluations of the same machine.
 CycleResult evaluate(const Scenario& scenario);
 void evaluate_into(const Scenario& scenario, CycleResult& result);
-void evaluate_into(const Scenario& scenario, CycleResult& result, MotionCache& cache);
+void evaluate_into(const Scenario& scenario, CycleResult& result, MotionCache& cache,
+                   Detail detail = Detail::full);
 
 // Number of touches of a feature (surface 1, web/pocket 2, bore/boss 4).
 int touch_count(Feature feature);

@@ -57,6 +57,9 @@ double ramp(int p, double tau) {
     return value;
 }
 
+// Decay exponents beyond this are negligible (AxisKernel::decay).
+constexpr double kNegligibleDecay = 60.0;
+
 double power(double x, int p) {
     double value = 1.0;
     for (int i = 0; i < p; ++i) value *= x;
@@ -102,6 +105,7 @@ AxisKernel::AxisKernel(const AxisDynamics& d) : in_position_mm_(d.in_position_mm
         lag_sum_s_ += lag_[static_cast<std::size_t>(i)];
         rate_[static_cast<std::size_t>(i)] = 1.0 / lag_[static_cast<std::size_t>(i)];
     }
+    slow_rate_ = lag_count_ == 2 ? std::min(rate_[0], rate_[1]) : rate_[0];
     // Two lags closer than this are one double pole: the partial fractions
     // would divide by their difference.
     double_pole_ =
@@ -134,6 +138,11 @@ AxisKernel::AxisKernel(const AxisDynamics& d) : in_position_mm_(d.in_position_mm
         mu = next;
     }
     moment_ = mu;
+    if (lags_only()) {
+        for (int n = 1; n <= 3; ++n) {
+            start_parts_[static_cast<std::size_t>(n - 1)] = lag_transient_parts(n, 0.0, decay(0.0));
+        }
+    }
 }
 
 inline AxisKernel::Decay AxisKernel::decay(double tau) const {
@@ -143,6 +152,11 @@ inline AxisKernel::Decay AxisKernel::decay(double tau) const {
         d.e2 = lag_count_ == 2 ? 1.0 : 0.0;
         return d;
     }
+    // Past kNegligibleDecay time constants of the slowest lag every
+    // exponential is under e^-60 (1e-26): its terms are below the rounding of
+    // any position, so they are 0 without calling exp (on a slow approach the
+    // breaks lie hundreds of time constants back).
+    if (tau * slow_rate_ > kNegligibleDecay) return d;
     if (lag_count_ >= 1) d.e1 = std::exp(-tau * rate_[0]);
     if (lag_count_ == 2) d.e2 = double_pole_ ? d.e1 : std::exp(-tau * rate_[1]);
     return d;
@@ -226,6 +240,16 @@ void AxisKernel::accumulate_tail(const std::array<double, 3>& steps, double age,
     }
 }
 
+void AxisKernel::accumulate_start(const std::array<double, 3>& steps, TailParts& parts) const {
+    // accumulate_tail at age 0 with one term of weight 1: the same products.
+    for (std::size_t n = 0; n < steps.size(); ++n) {
+        if (steps[n] == 0.0) continue;
+        parts.a1 += steps[n] * start_parts_[n].a1;
+        parts.a2 += steps[n] * start_parts_[n].a2;
+        parts.b += steps[n] * start_parts_[n].b;
+    }
+}
+
 // The tails' exponentials are decay(s): e2 is 0 with one lag and unused
 // (a2 = 0) with a double pole.
 KinematicState AxisKernel::tail_state(const TailParts& p, double s) const {
@@ -245,6 +269,16 @@ AxisKernel::TailParts AxisKernel::shifted(const TailParts& p, double s) const {
     // (a1 + b (s + s')) e^(-(s + s')/T1) = ((a1 + b s) + b s') e^(-s/T1) e^(-s'/T1).
     const Decay d = decay(s);
     return {(p.a1 + p.b * s) * d.e1, p.a2 * d.e2, p.b * d.e1};
+}
+
+AxisCommand& AxisCommand::operator=(const AxisCommand& other) {
+    if (this == &other) return *this;
+    std::copy_n(other.breaks_.begin(), other.count_, breaks_.begin());
+    count_ = other.count_;
+    t_s_ = other.t_s_;
+    state_ = other.state_;
+    jerk_ = other.jerk_;
+    return *this;
 }
 
 void AxisCommand::add_break(double speed, double accel, double jerk) {
@@ -285,12 +319,27 @@ void AxisCommand::close() {
 
 AxisMotion::AxisMotion(const AxisKernel& kernel, const AxisCommand& command)
     : kernel_(kernel), command_(command) {
+    sum_prefix(0);
+}
+
+void AxisMotion::reset(const AxisCommand& command) {
+    std::size_t same = 0;
+    const std::size_t shared = std::min(command.size(), command_.size());
+    while (same < shared && command.at(same).t_s == command_.at(same).t_s &&
+           command.at(same).step == command_.at(same).step) {
+        ++same;
+    }
+    command_ = command;
+    sum_prefix(same);
+}
+
+void AxisMotion::sum_prefix(std::size_t first) {
     if (!kernel_.lags_only()) return;
-    for (std::size_t i = 0; i < command_.size(); ++i) {
+    for (std::size_t i = first; i < command_.size(); ++i) {
         const AxisCommand::Break& b = command_.at(i);
         AxisKernel::TailParts parts;
         if (i > 0) parts = kernel_.shifted(prefix_[i - 1], b.t_s - command_.at(i - 1).t_s);
-        kernel_.accumulate_tail(b.step, 0.0, parts);
+        kernel_.accumulate_start(b.step, parts);
         prefix_[i] = parts;
     }
 }

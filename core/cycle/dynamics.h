@@ -89,6 +89,9 @@ class AxisKernel {
         double b{0.0};
     };
     void accumulate_tail(const std::array<double, 3>& steps, double age, TailParts& parts) const;
+    // The same at age 0 with lags alone (a break as it happens), from
+    // coefficients prepared with the kernel.
+    void accumulate_start(const std::array<double, 3>& steps, TailParts& parts) const;
     // Position, speed and acceleration of a tail at s >= 0 after where its
     // parts were taken (one pair of exponentials for all three).
     KinematicState tail_state(const TailParts& parts, double s) const;
@@ -115,6 +118,7 @@ class AxisKernel {
     int lag_count_{0};
     std::array<double, 2> lag_{};
     std::array<double, 2> rate_{};  // 1 / lag_: the exponentials' rates
+    double slow_rate_{0.0};         // the smaller rate (0 without lags)
     bool double_pole_{false};
     // A moving average over W turns a response g into (G(t) - G(t - W)) / W,
     // G its integral (the response to the next ramp): one term per subset of
@@ -124,6 +128,8 @@ class AxisKernel {
     std::array<double, 4> term_shift_{};
     std::array<double, 4> term_weight_{1.0, 0.0, 0.0, 0.0};
     std::array<double, 6> lag_moment_{1.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // of the lags alone
+    // Lags alone: the parts of a unit speed, acceleration and jerk step at age 0.
+    std::array<TailParts, 3> start_parts_{};
     std::array<double, 4> moment_{1.0, 0.0, 0.0, 0.0};
     double window_s_{0.0};
     double lag_sum_s_{0.0};
@@ -136,11 +142,16 @@ class AxisKernel {
 class AxisCommand {
   public:
     struct Break {
-        double t_s{0.0};
-        std::array<double, 3> step{};  // of speed, acceleration, jerk
-        KinematicState after{};        // the command's state just after the break
-        double jerk_after{0.0};
+        double t_s;
+        std::array<double, 3> step;  // of speed, acceleration, jerk
+        KinematicState after;        // the command's state just after the break
+        double jerk_after;
     };
+
+    AxisCommand() = default;
+    // Copies the breaks there are (commands are copied into every motion).
+    AxisCommand(const AxisCommand& other) { *this = other; }
+    AxisCommand& operator=(const AxisCommand& other);
 
     // Appends `duration_s` of the plan (cut there if shorter than the plan).
     void append(const SegmentPlan& plan, double duration_s);
@@ -156,7 +167,9 @@ class AxisCommand {
   private:
     void add_break(double speed, double accel, double jerk);
 
-    std::array<Break, 12> breaks_{};
+    // Only breaks_[0, count_) are set: Break has no initialisers, so a
+    // command is not 800 bytes of zeros to write and copy.
+    std::array<Break, 12> breaks_;
     std::size_t count_{0};
     double t_s_{0.0};
     KinematicState state_{};
@@ -168,6 +181,10 @@ class AxisMotion {
   public:
     AxisMotion() = default;
     AxisMotion(const AxisKernel& kernel, const AxisCommand& command);
+    // The same kernel on another command; the breaks it shares with the
+    // current one from the start keep their decaying parts (a touch is its
+    // approach cut where the axis reacts, then stopped).
+    void reset(const AxisCommand& command);
 
     // Actual position and speed at time t (acceleration is not computed).
     KinematicState state(double t_s) const;
@@ -185,6 +202,8 @@ class AxisMotion {
     const AxisCommand& command() const { return command_; }
 
   private:
+    // prefix_ from break `first` on (lags alone).
+    void sum_prefix(std::size_t first);
     // The polynomial part of the response at t_s to the breaks up to `last`
     // once all are settled: the moment expansion of the command.
     KinematicState settled_state(const AxisCommand::Break& last, double t_s) const;

@@ -43,7 +43,7 @@ std::optional<double> feed_for_overtravel(const Scenario& scenario, double feed_
     MotionCache cache;
     const auto under = [&](double feed) {
         s.cycle.probe_feed_mm_min = feed;
-        evaluate_into(s, r, cache);
+        evaluate_into(s, r, cache, Detail::summary);
         return r.overtravel_mm() < limit;
     };
     double lo = std::min(kKneeSearchFrom_mm_min, feed_mm_min);

@@ -11,15 +11,6 @@
 
 namespace probecycle {
 
-KinematicState integrate(double t_s, const KinematicState& s0, double jerk_mm_s3) {
-    return {
-        s0.position_mm +
-            t_s * (s0.speed_mm_s + t_s * (s0.accel_mm_s2 / 2.0 + t_s * jerk_mm_s3 / 6.0)),
-        s0.speed_mm_s + t_s * (s0.accel_mm_s2 + t_s * jerk_mm_s3 / 2.0),
-        s0.accel_mm_s2 + t_s * jerk_mm_s3,
-    };
-}
-
 void SegmentPlan::push(double duration_s, double accel_mm_s2, double jerk_mm_s3) {
     if (duration_s <= 0.0 || count == segments.size()) return;
     segments[count++] = {duration_s, accel_mm_s2, jerk_mm_s3};

@@ -33,7 +33,19 @@ struct KinematicState {
 };
 
 // Constant-jerk motion for time t from s0 (ruckig utils.hpp `integrate`).
-KinematicState integrate(double t_s, const KinematicState& s0, double jerk_mm_s3);
+// Inline: every state of a motion and every segment of a command takes one.
+inline KinematicState integrate(double t_s, const KinematicState& s0, double jerk_mm_s3) {
+    if (jerk_mm_s3 == 0.0) {  // the same values without the division by 6
+        return {s0.position_mm + t_s * (s0.speed_mm_s + t_s * (s0.accel_mm_s2 / 2.0)),
+                s0.speed_mm_s + t_s * s0.accel_mm_s2, s0.accel_mm_s2};
+    }
+    return {
+        s0.position_mm +
+            t_s * (s0.speed_mm_s + t_s * (s0.accel_mm_s2 / 2.0 + t_s * jerk_mm_s3 / 6.0)),
+        s0.speed_mm_s + t_s * (s0.accel_mm_s2 + t_s * jerk_mm_s3 / 2.0),
+        s0.accel_mm_s2 + t_s * jerk_mm_s3,
+    };
+}
 
 // A piece of a motion plan: constant jerk, starting with the given acceleration.
 // Position and speed are continuous across segments; acceleration may jump

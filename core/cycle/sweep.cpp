@@ -36,11 +36,11 @@ double cycle_time_at(const Scenario& base, double feed_mm_min, const SweepOption
                      CycleResult& scratch) {
     Scenario s = base;
     s.cycle.probe_feed_mm_min = feed_mm_min;
-    evaluate_into(s, scratch, scratch_cache());
+    evaluate_into(s, scratch, scratch_cache(), Detail::summary);
     if (options.recommended_backoff && s.cycle.strategy == Strategy::two_touch) {
         // The first touch does not depend on the backoff, so one pass tells it.
         s.cycle.backoff_mm = scratch.recommended_backoff_mm();
-        evaluate_into(s, scratch, scratch_cache());
+        evaluate_into(s, scratch, scratch_cache(), Detail::summary);
     }
     return scratch.total();
 }

@@ -714,7 +714,7 @@ Settings settings_of(const Scenario& scenario) {
 void evaluate_point(const Scenario& scenario, ModelPoint& point) {
     thread_local CycleResult result;
     thread_local MotionCache cache;  // the candidates share the machine
-    evaluate_into(scenario, result, cache);
+    evaluate_into(scenario, result, cache, Detail::summary);
     point.valid = result.valid();
     point.cycle_time_s = result.total();
     point.uncertainty_mm = result.uncertainty_mm();

@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/common/units.h"
@@ -1697,6 +1698,88 @@ TEST(MotionCache, EvaluationsThroughOneCacheAreThoseOfFreshOnes) {
         SCOPED_TRACE(i);
         expect_same_cycle(cached, evaluate(s));
     }
+}
+
+// Detail::summary (what a sweep reads): the same numbers as the full
+// evaluation, bit for bit, without the timeline and the notes that take
+// solves of their own; summaries and full evaluations share one cache.
+TEST(Detail, ASummaryIsTheFullEvaluationWithoutItsTimeline) {
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> log_feed(std::log(20.0), std::log(6000.0));
+    std::uniform_int_distribution<int> pick(0, 3);
+    const std::array<Feature, 4> features = {Feature::surface, Feature::bore, Feature::pocket,
+                                             Feature::boss};
+    const std::array<FilterKind, 4> filters = {FilterKind::none, FilterKind::linear,
+                                               FilterKind::exponential, FilterKind::bell};
+    MotionCache cache;
+    CycleResult summary;
+    CycleResult full;
+    int left_out = 0;  // notes and warnings the full results had that summaries leave out
+    for (int i = 0; i < 160; ++i) {
+        Scenario s;
+        s.cycle.strategy = i % 4 == 3 ? Strategy::single_touch : Strategy::two_touch;
+        s.cycle.feature = features[static_cast<std::size_t>(pick(rng))];
+        s.cycle.feature_size_mm = 40.0;
+        s.cycle.probe_feed_mm_min = std::round(std::exp(log_feed(rng)));
+        s.cycle.backoff_mm = i % 3 == 0 ? 1.0 : 3.0;
+        s.cycle.backoff_from = i % 5 == 0 ? BackoffFrom::trigger : BackoffFrom::stop;
+        s.cycle.repeats = 1 + i % 2;
+        s.cycle.approach_mm = i % 7 == 0 ? 0.05 : 2.0;  // some touches while accelerating
+        s.machine.accel_model = (i / 8) % 2 == 0 ? AccelModel::none : AccelModel::jerk_limited;
+        s.machine.filter = filters[static_cast<std::size_t>((i / 16) % 4)];
+        s.machine.filter_time_s = 0.032;
+        s.machine.servo_time_constant_s = (i / 64) % 2 == 0 ? 0.033 : 0.0;
+        s.machine.in_position_mm = 0.02;
+        ASSERT_TRUE(validate(s).empty()) << i;
+        SCOPED_TRACE(i);
+        evaluate_into(s, summary, cache, Detail::summary);
+        evaluate_into(s, full, cache);
+        const CycleResult fresh = evaluate(s);
+        expect_same_cycle(full, fresh);
+
+        EXPECT_EQ(summary.total(), fresh.total());
+        ASSERT_EQ(summary.phases().size(), fresh.phases().size());
+        for (std::size_t k = 0; k < fresh.phases().size(); ++k) {
+            EXPECT_EQ(summary.phases()[k].phase, fresh.phases()[k].phase);
+            EXPECT_EQ(summary.phases()[k].start_s, fresh.phases()[k].start_s);
+            EXPECT_EQ(summary.phases()[k].time_s, fresh.phases()[k].time_s);
+            EXPECT_EQ(summary.phases()[k].distance_mm, 0.0);
+        }
+        for (Phase phase : all_phases())
+            EXPECT_EQ(summary.phase_time(phase), fresh.phase_time(phase));
+        for (const auto& [a, b] :
+             {std::pair{&summary.first_touch(), &fresh.first_touch()},
+              std::pair{&summary.measuring_touch(), &fresh.measuring_touch()}}) {
+            EXPECT_EQ(a->overtravel_mm, b->overtravel_mm);
+            EXPECT_EQ(a->recorded_mm, b->recorded_mm);
+            EXPECT_EQ(a->trigger_speed_mm_s, b->trigger_speed_mm_s);
+            EXPECT_EQ(a->touch_speed_mm_s, b->touch_speed_mm_s);
+            EXPECT_EQ(a->react_speed_mm_s, 0.0);
+            EXPECT_EQ(a->delay_travel_mm, 0.0);
+        }
+        EXPECT_EQ(summary.overtravel_mm(), fresh.overtravel_mm());
+        EXPECT_EQ(summary.overtravel_touch(), fresh.overtravel_touch());
+        EXPECT_EQ(summary.uncertainty_mm(), fresh.uncertainty_mm());
+        EXPECT_EQ(summary.recommended_backoff_mm(), fresh.recommended_backoff_mm());
+        EXPECT_EQ(summary.invalid_codes(), fresh.invalid_codes());
+        EXPECT_TRUE(summary.segments().empty());
+        EXPECT_TRUE(summary.motions().empty());
+
+        // Every warning of the full result but the left-out ones, in order.
+        std::vector<WarningCode> expected;
+        for (const Warning& w : fresh.warnings()) {
+            if (w.code == WarningCode::backoff_excess ||
+                w.code == WarningCode::touch_while_accelerating) {
+                ++left_out;
+                continue;
+            }
+            expected.push_back(w.code);
+        }
+        std::vector<WarningCode> got;
+        for (const Warning& w : summary.warnings()) got.push_back(w.code);
+        EXPECT_EQ(got, expected);
+    }
+    EXPECT_GT(left_out, 20);  // the comparison above met both kinds often
 }
 
 TEST(MotionCache, KeepsTheSolvesOfOneMachineOnly) {

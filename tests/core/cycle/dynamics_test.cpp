@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -272,6 +273,66 @@ TEST(DynamicsCommand, TheCommandIsItsBreaks) {
     EXPECT_NEAR(braking.at(1).step[1], -2000.0, kTol);
     EXPECT_NEAR(braking.at(2).t_s, 1.005, kTol);
     EXPECT_NEAR(braking.end_state().position_mm, 10.025, kTol);
+}
+
+TEST(DynamicsCommand, ACopyHasTheSameBreaksAndEnd) {
+    AxisCommand command;
+    const SegmentPlan plan = plan_move(limits_of(AccelModel::jerk_limited), 10.0, 50.0);
+    command.append(plan, plan.duration_s());
+    command.close();
+    AxisCommand copy;
+    copy.append(plan_accelerate(no_plan(), 5.0, 1.0), 1.0);  // overwritten
+    copy = command;
+    const AxisCommand constructed(command);
+    for (const AxisCommand* c : std::array<const AxisCommand*, 2>{&copy, &constructed}) {
+        ASSERT_EQ(c->size(), command.size());
+        for (std::size_t i = 0; i < command.size(); ++i) {
+            EXPECT_EQ(c->at(i).t_s, command.at(i).t_s);
+            EXPECT_EQ(c->at(i).step, command.at(i).step);
+            EXPECT_EQ(c->at(i).after.position_mm, command.at(i).after.position_mm);
+            EXPECT_EQ(c->at(i).jerk_after, command.at(i).jerk_after);
+        }
+        EXPECT_EQ(c->end_s(), command.end_s());
+        EXPECT_EQ(c->end_state().position_mm, command.end_state().position_mm);
+    }
+}
+
+// A motion reset to another command is the motion built on it, bit for bit,
+// whichever breaks the two share (a touch: its approach cut and stopped).
+TEST(AxisMotion, AResetMotionIsTheMotionOfItsNewCommand) {
+    const std::array<AxisDynamics, 4> cases = {
+        dynamics(FilterKind::exponential, 0.032, 0.0, 0.033),
+        dynamics(FilterKind::exponential, 0.04, 0.0, 0.04),  // a double pole
+        dynamics(FilterKind::none, 0.0, 0.0, 0.02),
+        dynamics(FilterKind::linear, 0.05, 0.0, 0.01),
+    };
+    const MotionLimits limits = limits_of(AccelModel::jerk_limited);
+    for (const AxisDynamics& d : cases) {
+        const AxisKernel kernel(d);
+        const SegmentPlan plan = plan_accelerate(limits, 40.0, 100.0);
+        AxisCommand approach;
+        approach.append(plan, plan.duration_s());
+        for (double cut_s : {0.004, 0.05, 0.3}) {  // in the ramp and at cruise
+            SCOPED_TRACE(cut_s);
+            AxisCommand touch;
+            touch.append(plan, cut_s);
+            const KinematicState at_cut = touch.end_state();
+            touch.append(plan_stop(limits, 40.0, at_cut.speed_mm_s, at_cut.accel_mm_s2), 1.0);
+            touch.close();
+            AxisMotion reset(kernel, approach);
+            reset.reset(touch);
+            const AxisMotion built(kernel, touch);
+            for (double t = 0.0; t < 0.6; t += 0.0123) {
+                EXPECT_EQ(reset.state(t).position_mm, built.state(t).position_mm) << t;
+                EXPECT_EQ(reset.state(t).speed_mm_s, built.state(t).speed_mm_s) << t;
+            }
+            EXPECT_EQ(reset.in_position_time(), built.in_position_time());
+            // And back to the approach it was built on.
+            reset.reset(approach);
+            const AxisMotion open(kernel, approach);
+            EXPECT_EQ(reset.state(0.45).position_mm, open.state(0.45).position_mm);
+        }
+    }
 }
 
 // --- Step responses: the feed v commanded at once at t = 0 ---
