@@ -95,8 +95,66 @@ Scenario filtered_bore() {
     return s;
 }
 
+// The bore on the two other presets' dynamics (resources/presets): a
+// Mitsubishi-type G31 without acc/dec (the feed at once, a servo lag of
+// 30 ms alone) and linear acc/dec after interpolation (a 64 ms moving
+// average and a 20 ms servo); and the slowest combination the model has, a
+// bell filter (32 ms and 10 ms windows) after a jerk-limited plan, with a
+// 33 ms servo.
+Scenario mitsubishi_bore() {
+    Scenario s = two_touch_bore();
+    s.machine.accel_model = AccelModel::none;
+    s.machine.servo_time_constant_s = 0.03;
+    s.machine.in_position_mm = 0.01;
+    s.cycle.backoff_mm = 3.0;
+    return s;
+}
+Scenario linear_filter_bore() {
+    Scenario s = two_touch_bore();
+    s.machine.accel_model = AccelModel::none;
+    s.machine.filter = FilterKind::linear;
+    s.machine.filter_time_s = 0.064;
+    s.machine.servo_time_constant_s = 0.02;
+    s.machine.in_position_mm = 0.01;
+    s.cycle.backoff_mm = 3.0;
+    return s;
+}
+Scenario bell_jerk_bore() {
+    Scenario s = two_touch_bore();
+    s.machine.accel_model = AccelModel::jerk_limited;
+    s.machine.filter = FilterKind::bell;
+    s.machine.filter_time_s = 0.032;
+    s.machine.filter2_time_s = 0.01;
+    s.machine.servo_time_constant_s = 0.033;
+    s.machine.in_position_mm = 0.02;
+    s.cycle.backoff_mm = 3.5;  // over the recommended 3.23 mm: a valid cycle
+    return s;
+}
+Scenario as_surface(Scenario s) {
+    s.cycle.feature = Feature::surface;  // as BM_Sweep1000: the default surface
+    return s;
+}
+
 void BM_Evaluate(benchmark::State& state) {
     run_evaluate(state, two_touch_bore());
+}
+void BM_Evaluate_Mitsubishi(benchmark::State& state) {
+    run_evaluate(state, mitsubishi_bore());
+}
+void BM_Evaluate_LinearFilter(benchmark::State& state) {
+    run_evaluate(state, linear_filter_bore());
+}
+void BM_Evaluate_BellJerk(benchmark::State& state) {
+    run_evaluate(state, bell_jerk_bore());
+}
+void BM_Sweep1000_Mitsubishi(benchmark::State& state) {
+    run_sweep1000(state, as_surface(mitsubishi_bore()));
+}
+void BM_Sweep1000_LinearFilter(benchmark::State& state) {
+    run_sweep1000(state, as_surface(linear_filter_bore()));
+}
+void BM_Sweep1000_BellJerk(benchmark::State& state) {
+    run_sweep1000(state, as_surface(bell_jerk_bore()));
 }
 
 void BM_Evaluate_Filtered(benchmark::State& state) {
@@ -108,9 +166,7 @@ void BM_Sweep1000(benchmark::State& state) {
 }
 
 void BM_Sweep1000_Filtered(benchmark::State& state) {
-    Scenario scenario = filtered_bore();
-    scenario.cycle.feature = Feature::surface;  // as BM_Sweep1000: the default surface
-    run_sweep1000(state, scenario);
+    run_sweep1000(state, as_surface(filtered_bore()));
 }
 
 void BM_Analyse(benchmark::State& state) {
@@ -165,6 +221,12 @@ BENCHMARK(BM_Evaluate);
 BENCHMARK(BM_Evaluate_Filtered);
 BENCHMARK(BM_Sweep1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Sweep1000_Filtered)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Evaluate_Mitsubishi);
+BENCHMARK(BM_Sweep1000_Mitsubishi)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Evaluate_LinearFilter);
+BENCHMARK(BM_Sweep1000_LinearFilter)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Evaluate_BellJerk);
+BENCHMARK(BM_Sweep1000_BellJerk)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Analyse)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Optimise)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Optimise_BestOnly)->Unit(benchmark::kMillisecond);

@@ -138,9 +138,20 @@ AxisKernel::AxisKernel(const AxisDynamics& d) : in_position_mm_(d.in_position_mm
         mu = next;
     }
     moment_ = mu;
-    if (lags_only()) {
+    // The decaying parts of unit speed, acceleration and jerk steps once
+    // settled (at the age window_s_): one term per subset of the windows,
+    // each at the age less its shift (with lags alone, one term at age 0).
+    if (lag_count_ > 0) {
         for (int n = 1; n <= 3; ++n) {
-            start_parts_[static_cast<std::size_t>(n - 1)] = lag_transient_parts(n, 0.0, decay(0.0));
+            TailParts& parts = settled_parts_[static_cast<std::size_t>(n - 1)];
+            for (int k = 0; k < term_count_; ++k) {
+                const double age = window_s_ - term_shift_[static_cast<std::size_t>(k)];
+                const double weight = term_weight_[static_cast<std::size_t>(k)];
+                const TailParts term = lag_transient_parts(n + fir_count_, age, decay(age));
+                parts.a1 += weight * term.a1;
+                parts.a2 += weight * term.a2;
+                parts.b += weight * term.b;
+            }
         }
     }
 }
@@ -222,31 +233,12 @@ void AxisKernel::accumulate(const std::array<double, 3>& steps, double tau, bool
     }
 }
 
-void AxisKernel::accumulate_tail(const std::array<double, 3>& steps, double age,
-                                 TailParts& parts) const {
-    if (lag_count_ == 0) return;
-    for (int k = 0; k < term_count_; ++k) {
-        const double a = age - term_shift_[static_cast<std::size_t>(k)];
-        const double weight = term_weight_[static_cast<std::size_t>(k)];
-        const Decay d = decay(a);
-        for (int n = 1; n <= 3; ++n) {
-            const double step = steps[static_cast<std::size_t>(n - 1)];
-            if (step == 0.0) continue;
-            const TailParts term = lag_transient_parts(n + fir_count_, a, d);
-            parts.a1 += weight * step * term.a1;
-            parts.a2 += weight * step * term.a2;
-            parts.b += weight * step * term.b;
-        }
-    }
-}
-
-void AxisKernel::accumulate_start(const std::array<double, 3>& steps, TailParts& parts) const {
-    // accumulate_tail at age 0 with one term of weight 1: the same products.
+void AxisKernel::accumulate_settled(const std::array<double, 3>& steps, TailParts& parts) const {
     for (std::size_t n = 0; n < steps.size(); ++n) {
         if (steps[n] == 0.0) continue;
-        parts.a1 += steps[n] * start_parts_[n].a1;
-        parts.a2 += steps[n] * start_parts_[n].a2;
-        parts.b += steps[n] * start_parts_[n].b;
+        parts.a1 += steps[n] * settled_parts_[n].a1;
+        parts.a2 += steps[n] * settled_parts_[n].a2;
+        parts.b += steps[n] * settled_parts_[n].b;
     }
 }
 
@@ -334,12 +326,12 @@ void AxisMotion::reset(const AxisCommand& command) {
 }
 
 void AxisMotion::sum_prefix(std::size_t first) {
-    if (!kernel_.lags_only()) return;
+    if (kernel_.lag_count() == 0) return;  // moving averages alone settle without a tail
     for (std::size_t i = first; i < command_.size(); ++i) {
         const AxisCommand::Break& b = command_.at(i);
         AxisKernel::TailParts parts;
         if (i > 0) parts = kernel_.shifted(prefix_[i - 1], b.t_s - command_.at(i - 1).t_s);
-        kernel_.accumulate_start(b.step, parts);
+        kernel_.accumulate_settled(b.step, parts);
         prefix_[i] = parts;
     }
 }
@@ -359,30 +351,21 @@ KinematicState AxisMotion::settled_state(const AxisCommand::Break& last, double 
 KinematicState AxisMotion::state(double t_s) const {
     if (t_s <= 0.0) return {};
     const std::size_t count = command_.size();
-    if (kernel_.lags_only() && count > 0) {
-        if (t_s < command_.at(0).t_s) return {};
-        // Every break up to t is settled: the moment expansion of the command
-        // at t, plus the decaying parts of those breaks (prefix_).
-        std::size_t last = 0;
-        while (last + 1 < count && command_.at(last + 1).t_s <= t_s) ++last;
-        const AxisCommand::Break& b = command_.at(last);
-        KinematicState out = settled_state(b, t_s);
-        const KinematicState tail = kernel_.tail_state(prefix_[last], t_s - b.t_s);
-        out.position_mm = std::max(out.position_mm + tail.position_mm, 0.0);
-        out.speed_mm_s = std::max(out.speed_mm_s + tail.speed_mm_s, 0.0);
-        return out;
-    }
     const double window = kernel_.window_s();
-    // Breaks further back than the windows: the moment expansion of the
-    // command they make, plus their decaying terms.
+    // Breaks further back than the windows (with lags alone, every break up
+    // to t): the moment expansion of the command they make, plus their
+    // decaying parts, summed once per motion (prefix_).
     std::size_t settled = 0;
     while (settled < count && t_s - command_.at(settled).t_s >= window) ++settled;
     KinematicState out;
     if (settled > 0) {
-        out = settled_state(command_.at(settled - 1), t_s);
-        for (std::size_t i = 0; i < settled; ++i) {
-            const AxisCommand::Break& b = command_.at(i);
-            kernel_.accumulate(b.step, t_s - b.t_s, true, out.position_mm, out.speed_mm_s);
+        const AxisCommand::Break& b = command_.at(settled - 1);
+        out = settled_state(b, t_s);
+        if (kernel_.lag_count() > 0) {
+            const KinematicState tail =
+                kernel_.tail_state(prefix_[settled - 1], t_s - b.t_s - window);
+            out.position_mm += tail.position_mm;
+            out.speed_mm_s += tail.speed_mm_s;
         }
     }
     for (std::size_t i = settled; i < count; ++i) {
@@ -489,16 +472,9 @@ double AxisMotion::in_position_time() const {
 }
 
 AxisKernel::TailParts AxisMotion::tail_at(double t_ref) const {
-    if (kernel_.lags_only() && command_.size() > 0) {
-        const std::size_t last = command_.size() - 1;
-        return kernel_.shifted(prefix_[last], t_ref - command_.at(last).t_s);
-    }
-    AxisKernel::TailParts parts;
-    for (std::size_t i = 0; i < command_.size(); ++i) {
-        const AxisCommand::Break& b = command_.at(i);
-        kernel_.accumulate_tail(b.step, t_ref - b.t_s, parts);
-    }
-    return parts;
+    if (kernel_.lag_count() == 0 || command_.size() == 0) return {};
+    const std::size_t last = command_.size() - 1;
+    return kernel_.shifted(prefix_[last], t_ref - command_.at(last).t_s - kernel_.window_s());
 }
 
 double AxisMotion::tail_root(const AxisKernel::TailParts& parts, double level, bool speed) const {

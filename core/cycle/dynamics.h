@@ -79,8 +79,8 @@ class AxisKernel {
     void accumulate(const std::array<double, 3>& steps, double tau, bool transient_only,
                     double& position, double& speed) const;
 
-    // The decaying part of one break's response once it is settled (age >=
-    // window_s()), by exponential: at age + s it is
+    // The decaying part of a response once its breaks are settled (age >=
+    // window_s()), by exponential: s after where its parts were taken it is
     //   a1 e^(-s/T1) + a2 e^(-s/T2) + b s e^(-s/T1)
     // (b for two equal lags only), so a tail is solved without the breaks.
     struct TailParts {
@@ -88,10 +88,9 @@ class AxisKernel {
         double a2{0.0};
         double b{0.0};
     };
-    void accumulate_tail(const std::array<double, 3>& steps, double age, TailParts& parts) const;
-    // The same at age 0 with lags alone (a break as it happens), from
-    // coefficients prepared with the kernel.
-    void accumulate_start(const std::array<double, 3>& steps, TailParts& parts) const;
+    // Adds the parts of one break's steps (speed, acceleration, jerk) taken
+    // where it settles, from the unit steps' parts prepared with the kernel.
+    void accumulate_settled(const std::array<double, 3>& steps, TailParts& parts) const;
     // Position, speed and acceleration of a tail at s >= 0 after where its
     // parts were taken (one pair of exponentials for all three).
     KinematicState tail_state(const TailParts& parts, double s) const;
@@ -128,8 +127,8 @@ class AxisKernel {
     std::array<double, 4> term_shift_{};
     std::array<double, 4> term_weight_{1.0, 0.0, 0.0, 0.0};
     std::array<double, 6> lag_moment_{1.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // of the lags alone
-    // Lags alone: the parts of a unit speed, acceleration and jerk step at age 0.
-    std::array<TailParts, 3> start_parts_{};
+    // The parts of a unit speed, acceleration and jerk step at age window_s_.
+    std::array<TailParts, 3> settled_parts_{};
     std::array<double, 4> moment_{1.0, 0.0, 0.0, 0.0};
     double window_s_{0.0};
     double lag_sum_s_{0.0};
@@ -202,12 +201,13 @@ class AxisMotion {
     const AxisCommand& command() const { return command_; }
 
   private:
-    // prefix_ from break `first` on (lags alone).
+    // prefix_ from break `first` on.
     void sum_prefix(std::size_t first);
     // The polynomial part of the response at t_s to the breaks up to `last`
     // once all are settled: the moment expansion of the command.
     KinematicState settled_state(const AxisCommand::Break& last, double t_s) const;
-    // The tail of all breaks at t_ref (every one settled by then).
+    // The tail of all breaks at t_ref (every one settled by then: t_ref at
+    // least the last break's time plus window_s()).
     AxisKernel::TailParts tail_at(double t_ref) const;
     // The first s >= 0 at which the tail's error (or, with `speed`, its speed
     // deficit) is down to `level`.
@@ -215,9 +215,9 @@ class AxisMotion {
 
     AxisKernel kernel_{};
     AxisCommand command_{};
-    // Lags alone (kernel_.lags_only()): the decaying parts of breaks 0..i,
-    // taken at break i, so that a state needs one pair of exponentials
-    // however many breaks lie behind it.
+    // The decaying parts of breaks 0..i, taken where break i has settled (at
+    // t_i + window_s(); with lags alone at t_i), so that a state needs one
+    // pair of exponentials for all the settled breaks behind it.
     std::array<AxisKernel::TailParts, 12> prefix_{};
 };
 
