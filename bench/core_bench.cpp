@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "core/common/file_io.h"
 #include "core/common/units.h"
 #include "core/comparison/comparison.h"
 #include "core/comparison/comparison_simulator.h"
@@ -95,29 +97,22 @@ Scenario filtered_bore() {
     return s;
 }
 
-// The bore on the two other presets' dynamics (resources/presets): a
-// Mitsubishi-type G31 without acc/dec (the feed at once, a servo lag of
-// 30 ms alone) and linear acc/dec after interpolation (a 64 ms moving
-// average and a 20 ms servo); and the slowest combination the model has, a
-// bell filter (32 ms and 10 ms windows) after a jerk-limited plan, with a
-// 33 ms servo.
-Scenario mitsubishi_bore() {
+// The bore on the two other presets' machines, read from resources/presets
+// (so the figures follow the files): a Mitsubishi-type G31 without acc/dec
+// (the feed at once, a servo lag alone) and linear acc/dec after
+// interpolation (a moving average and a servo); and the slowest combination
+// the model has, a bell filter (32 ms and 10 ms windows) after a jerk-limited
+// plan, with a 33 ms servo.
+Scenario preset_bore(const char* preset) {
     Scenario s = two_touch_bore();
-    s.machine.accel_model = AccelModel::none;
-    s.machine.servo_time_constant_s = 0.03;
-    s.machine.in_position_mm = 0.01;
-    s.cycle.backoff_mm = 3.0;
-    return s;
+    s.cycle.backoff_mm = 3.0;  // over the recommended backoff of both presets: valid cycles
+    return merge_json(s, read_text_file(std::string(PROBECYCLE_PRESETS_DIR "/") + preset));
+}
+Scenario mitsubishi_bore() {
+    return preset_bore("machine_mitsubishi_g31.json");
 }
 Scenario linear_filter_bore() {
-    Scenario s = two_touch_bore();
-    s.machine.accel_model = AccelModel::none;
-    s.machine.filter = FilterKind::linear;
-    s.machine.filter_time_s = 0.064;
-    s.machine.servo_time_constant_s = 0.02;
-    s.machine.in_position_mm = 0.01;
-    s.cycle.backoff_mm = 3.0;
-    return s;
+    return preset_bore("machine_linear_after_interpolation.json");
 }
 Scenario bell_jerk_bore() {
     Scenario s = two_touch_bore();

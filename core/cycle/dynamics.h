@@ -97,8 +97,6 @@ class AxisKernel {
     // The same tail's parts taken `s` >= 0 later.
     TailParts shifted(const TailParts& parts, double s) const;
     int lag_count() const { return lag_count_; }
-    // Lags alone, no moving average: every break is settled at once.
-    bool lags_only() const { return fir_count_ == 0 && lag_count_ > 0; }
 
   private:
     struct Decay {
