@@ -645,72 +645,142 @@ class CycleBuilder {
         const Machine& m = scenario.machine;
         const Probe& p = scenario.probe;
         const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
-        // The touch's motion is the approach until the axis reacts: built
-        // once, in place, then stopped there (AxisMotion::reset).
-        AxisCommand command;
-        command.append(plan, plan.duration_s());
-        const int index = keep_motion(command);
-        AxisMotion& motion = motions_[static_cast<std::size_t>(index)];
-        const AxisMotion& approach = motion;
-        const double lag = kernel_->moment(1);
-        const auto reach = [&](double position_mm) {
-            return approach.time_at_position(position_mm,
-                                             time_at_distance_s(plan, position_mm) + lag);
-        };
-        const double t_touch = reach(distance_mm);
-        // The trigger a pretravel later, near the touch at its speed.
-        const KinematicState touching = approach.state(t_touch);
-        const double t_trigger =
-            p.pretravel_mm <= 0.0 ? t_touch
-            : touching.speed_mm_s > 0.0
-                ? approach.time_at_position(distance_mm + p.pretravel_mm,
-                                            t_touch + p.pretravel_mm / touching.speed_mm_s)
-                : reach(distance_mm + p.pretravel_mm);
-        const double t_interface = t_trigger + p.interface_delay_s;
-        const double t_react = t_trigger + reaction_time_s(m, p);
-        const double t_record = t_interface + (m.latched_input ? 0.0 : m.scan_period_s);
+        const MotionCache::TouchKey key{feed_mm_s, p.pretravel_mm, p.interface_delay_s,
+                                        reaction_time_s(m, p),
+                                        m.latched_input ? 0.0 : m.scan_period_s};
+        // Past the distance where the approach settles it cruises as its
+        // moment expansion: the touch is the one there, shifted
+        // (MotionCache::SolvedTouch).
+        std::optional<MotionCache::SolvedTouch> solved = cache_.touch(key, distance_mm);
+        int index = -1;  // the touch's kept motion (the timeline's; a summary's until it ends)
+        if (!solved) {
+            AxisCommand approach;
+            approach.append(plan, plan.duration_s());
+            const AxisCommand::Break& last = approach.at(approach.size() - 1);
+            const double settled_mm =
+                moment_expansion(*kernel_, last, last.t_s + kernel_->settled_age_s()).position_mm;
+            const bool settled = distance_mm > settled_mm;
+            index = keep_motion(approach);
+            solved = solve_filtered_touch(limits, plan, key, settled ? settled_mm : distance_mm,
+                                          motions_[static_cast<std::size_t>(index)]);
+            solved->reference = settled;
+            cache_.store_touch(key, *solved);
+        }
+        MotionCache::SolvedTouch& t = *solved;
+        bool stopped_here = index >= 0;  // the solved motion stops where this touch reacts
+        if (t.reference && distance_mm != t.distance_mm) {
+            // Shifted by the phases' lengths, so none turns negative by rounding.
+            const double pretravel_s = t.trigger_s - t.touch_s;
+            const double settling_s = t.settle_s - (t.trigger_s + key.reaction_s);
+            t.touch_s += (distance_mm - t.distance_mm) / t.touch_speed_mm_s;
+            t.trigger_s = t.touch_s + pretravel_s;
+            t.settle_s = t.trigger_s + key.reaction_s + settling_s;
+            t.rest_mm += distance_mm - t.distance_mm;
+            t.distance_mm = distance_mm;
+            stopped_here = false;
+        }
+        if (full_ && !stopped_here) {  // the timeline's motion, stopped where this touch reacts
+            AxisCommand command;
+            command.append(plan, t.trigger_s + key.reaction_s);
+            stop_command(limits, feed_mm_s, command);
+            if (index < 0) {
+                index = keep_motion(command);
+            } else {
+                motions_[static_cast<std::size_t>(index)].reset(command);
+            }
+        }
+        const double t_interface = t.trigger_s + p.interface_delay_s;
+        const double t_react = t.trigger_s + key.reaction_s;
 
-        // (Before the reaction the command is the approach's.)
-        const KinematicState at_trigger = approach.state(t_trigger);
-        command = {};
-        command.append(plan, t_react);
-        const KinematicState at_react_command = command.end_state();
-        const SegmentPlan stop =
-            plan_stop(limits, feed_mm_s, at_react_command.speed_mm_s, at_react_command.accel_mm_s2);
-        command.append(stop, stop.duration_s());
-        command.close();
-        motion.reset(command);
-        const double t_settle = std::max(motion.in_position_time(), t_react);
-        const double rest_mm = command.end_state().position_mm;
-
-        const KinematicState& at_touch = touching;
         // The states only the full result shows (the phases' distances, the
         // react speed, the delay travel) are not solved for a summary.
-        const KinematicState at_interface = full_ ? motion.state(t_interface) : KinematicState{};
-        const KinematicState at_react = full_ ? motion.state(t_react) : KinematicState{};
-        add_filtered_motion(full_ ? index : -1, +1.0, t_settle, rest_mm);
+        KinematicState at_trigger;
+        KinematicState at_interface;
+        KinematicState at_react;
+        double delay_travel_mm = 0.0;
+        if (full_) {
+            const AxisMotion& motion = motions_[static_cast<std::size_t>(index)];
+            at_trigger = motion.state(t.trigger_s);
+            at_interface = motion.state(t_interface);
+            at_react = motion.state(t_react);
+            delay_travel_mm = motion.state(t.trigger_s + measurement_delay_s(m, p)).position_mm -
+                              at_trigger.position_mm;
+        }
+        add_filtered_motion(index, +1.0, t.settle_s, t.rest_mm);
 
-        add_phase(names.approach, t_touch, distance_mm);
-        add_phase(names.pretravel, t_trigger - t_touch, p.pretravel_mm);
+        add_phase(names.approach, t.touch_s, distance_mm);
+        add_phase(names.pretravel, t.trigger_s - t.touch_s, p.pretravel_mm);
         add_phase(names.interface_delay, p.interface_delay_s,
                   at_interface.position_mm - at_trigger.position_mm);
         add_phase(names.controller_delay, t_react - t_interface,
                   at_react.position_mm - at_interface.position_mm);
-        add_phase(names.deceleration, t_settle - t_react, rest_mm - at_react.position_mm);
+        add_phase(names.deceleration, t.settle_s - t_react, t.rest_mm - at_react.position_mm);
 
         TouchResult touch;
         touch.programmed_feed_mm_s = feed_mm_s;
-        touch.touch_speed_mm_s = at_touch.speed_mm_s;
-        touch.trigger_speed_mm_s = at_trigger.speed_mm_s;
+        touch.touch_speed_mm_s = t.touch_speed_mm_s;
+        touch.trigger_speed_mm_s = t.trigger_speed_mm_s;
         touch.react_speed_mm_s = at_react.speed_mm_s;  // 0 in a summary
-        touch.overtravel_mm = rest_mm - distance_mm;
-        touch.recorded_mm = motion.state(t_record).position_mm - distance_mm;
-        if (full_) {
-            touch.delay_travel_mm =
-                motion.state(t_trigger + measurement_delay_s(m, p)).position_mm -
-                at_trigger.position_mm;
-        }
+        touch.overtravel_mm = t.rest_mm - distance_mm;
+        touch.recorded_mm = t.recorded_mm;
+        touch.delay_travel_mm = delay_travel_mm;  // 0 in a summary
         return touch;
+    }
+
+    // The command stops where the control reacts: at once, or braking as its
+    // plan does.
+    static void stop_command(const MotionLimits& limits, double feed_mm_s, AxisCommand& command) {
+        const KinematicState at_react = command.end_state();
+        const SegmentPlan stop =
+            plan_stop(limits, feed_mm_s, at_react.speed_mm_s, at_react.accel_mm_s2);
+        command.append(stop, stop.duration_s());
+        command.close();
+    }
+
+    // Solves a touch `distance_mm` in front of the surface on `motion`, the
+    // approach's actual motion, which it leaves stopped where the axis reacts
+    // (AxisMotion::reset).
+    MotionCache::SolvedTouch solve_filtered_touch(const MotionLimits& limits,
+                                                  const SegmentPlan& plan,
+                                                  const MotionCache::TouchKey& key,
+                                                  double distance_mm, AxisMotion& motion) const {
+        const AxisMotion& approach = motion;
+        const double lag = kernel_->moment(1);
+        const auto reach = [&](double position_mm, KinematicState& at) {
+            return approach.time_at_position(position_mm,
+                                             time_at_distance_s(plan, position_mm) + lag, at);
+        };
+        MotionCache::SolvedTouch t;
+        t.distance_mm = distance_mm;
+        KinematicState at_touch;
+        t.touch_s = reach(distance_mm, at_touch);
+        t.touch_speed_mm_s = at_touch.speed_mm_s;
+        // The trigger a pretravel later, near the touch at its speed.
+        const double pretravel_mm = key.pretravel_mm;
+        KinematicState at_trigger = at_touch;
+        if (pretravel_mm > 0.0) {
+            t.trigger_s = at_touch.speed_mm_s > 0.0
+                              ? approach.time_at_position(
+                                    distance_mm + pretravel_mm,
+                                    t.touch_s + pretravel_mm / at_touch.speed_mm_s, at_trigger)
+                              : reach(distance_mm + pretravel_mm, at_trigger);
+        } else {
+            t.trigger_s = t.touch_s;
+        }
+        t.trigger_speed_mm_s = at_trigger.speed_mm_s;
+        const double t_interface = t.trigger_s + key.interface_delay_s;
+        const double t_react = t.trigger_s + key.reaction_s;
+        const double t_record = t_interface + key.record_delay_s;
+
+        // (Before the reaction the command is the approach's.)
+        AxisCommand command;
+        command.append(plan, t_react);
+        stop_command(limits, key.feed_mm_s, command);
+        motion.reset(command);
+        t.settle_s = std::max(motion.in_position_time(), t_react);
+        t.rest_mm = command.end_state().position_mm;
+        t.recorded_mm = motion.state(t_record).position_mm - distance_mm;
+        return t;
     }
 
     struct MoveMemo {
@@ -847,6 +917,7 @@ void MotionCache::bind(const MotionLimits& limits, const AxisDynamics& dynamics)
     kernel_ = AxisKernel(dynamics);
     moves_ = {};
     rooms_ = {};
+    touch_count_ = 0;
 }
 
 std::optional<double> MotionCache::move_time_s(double distance_mm, double feed_mm_s) const {
@@ -863,6 +934,29 @@ std::optional<double> MotionCache::approach_room_mm(double feed_mm_s, double del
 
 void MotionCache::store_approach_room(double feed_mm_s, double delay_s, double room_mm) {
     rooms_.store(feed_mm_s, delay_s, room_mm);
+}
+
+std::optional<MotionCache::SolvedTouch> MotionCache::touch(const TouchKey& key,
+                                                           double distance_mm) {
+    for (std::size_t i = 0; i < touch_count_; ++i) {
+        const KeptTouch& kept = touches_[i];
+        if (!(kept.key == key)) continue;
+        const SolvedTouch& t = kept.touch;
+        if (distance_mm == t.distance_mm || (t.reference && distance_mm > t.distance_mm)) {
+            std::rotate(touches_.begin(), touches_.begin() + static_cast<std::ptrdiff_t>(i),
+                        touches_.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+            return touches_[0].touch;
+        }
+    }
+    return std::nullopt;
+}
+
+void MotionCache::store_touch(const TouchKey& key, const SolvedTouch& touch) {
+    touch_count_ = std::min(touch_count_ + 1, touches_.size());
+    std::move_backward(touches_.begin(),
+                       touches_.begin() + static_cast<std::ptrdiff_t>(touch_count_) - 1,
+                       touches_.begin() + static_cast<std::ptrdiff_t>(touch_count_));
+    touches_[0] = {key, touch};
 }
 
 std::optional<double> MotionCache::Table::find(double key1, double key2) const {

@@ -284,6 +284,41 @@ class MotionCache {
     std::optional<double> approach_room_mm(double feed_mm_s, double delay_s) const;
     void store_approach_room(double feed_mm_s, double delay_s, double room_mm);
 
+    // A touch's solve, kept by feed and probe timing. A touch whose approach
+    // has settled before it touches (every break of its command older than
+    // AxisKernel::settled_age_s()) moves as the command's moment expansion, a
+    // cruise: at any longer distance it is the same touch shifted in time
+    // and place. Such touches are solved once, at the distance where the
+    // approach settles (a `reference`), and shifted from there, so the
+    // measuring touch of a sweep (its distance changes with the first
+    // touch's overtravel) is solved once, and the result is the same with or
+    // without the cache. Other touches are kept for their exact distance.
+    struct TouchKey {
+        double feed_mm_s{0.0};
+        double pretravel_mm{0.0};
+        double interface_delay_s{0.0};
+        double reaction_s{0.0};      // trigger to reaction (reaction_time_s)
+        double record_delay_s{0.0};  // interface to recorded position (a scan, or 0 latched)
+        bool operator==(const TouchKey&) const = default;
+    };
+    struct SolvedTouch {
+        double distance_mm{0.0};  // from the approach's start to the surface
+        // From the approach's start: the touch, the trigger, and the end of
+        // the deceleration (the in-position check, or the reaction if later).
+        double touch_s{0.0};
+        double trigger_s{0.0};
+        double settle_s{0.0};
+        double touch_speed_mm_s{0.0};
+        double trigger_speed_mm_s{0.0};
+        double recorded_mm{0.0};  // past the surface
+        double rest_mm{0.0};      // from the approach's start
+        bool reference{false};    // settled: serves every longer distance
+    };
+    // The kept touch for `key` at `distance_mm`, or the reference to shift
+    // to it.
+    std::optional<SolvedTouch> touch(const TouchKey& key, double distance_mm);
+    void store_touch(const TouchKey& key, const SolvedTouch& touch);
+
   private:
     struct Entry {
         double key1{0.0};
@@ -302,6 +337,14 @@ class MotionCache {
     AxisKernel kernel_{};
     Table moves_;
     Table rooms_;
+    struct KeptTouch {
+        TouchKey key;
+        SolvedTouch touch;
+    };
+    // Most recently used first: a sweep's first touches, one per feed, do
+    // not push out its measuring touch.
+    std::array<KeptTouch, 8> touches_{};
+    std::size_t touch_count_{0};
 };
 
 // Evaluates the cycle: phases, overtravel, uncertainty, warnings that need no

@@ -106,6 +106,9 @@ AxisKernel::AxisKernel(const AxisDynamics& d) : in_position_mm_(d.in_position_mm
         rate_[static_cast<std::size_t>(i)] = 1.0 / lag_[static_cast<std::size_t>(i)];
     }
     slow_rate_ = lag_count_ == 2 ? std::min(rate_[0], rate_[1]) : rate_[0];
+    // decay() drops an age tau - shift with (tau - shift) * slow_rate_ >
+    // kNegligibleDecay; one time constant more keeps the test clear of rounding.
+    settled_age_s_ = window_s_ + (lag_count_ > 0 ? (kNegligibleDecay + 1.0) / slow_rate_ : 0.0);
     // Two lags closer than this are one double pole: the partial fractions
     // would divide by their difference.
     double_pole_ =
@@ -336,11 +339,12 @@ void AxisMotion::sum_prefix(std::size_t first) {
     }
 }
 
-KinematicState AxisMotion::settled_state(const AxisCommand::Break& last, double t_s) const {
+KinematicState moment_expansion(const AxisKernel& kernel, const AxisCommand::Break& last,
+                                double t_s) {
     const KinematicState c = integrate(t_s - last.t_s, last.after, last.jerk_after);
-    const double mu1 = kernel_.moment(1);
-    const double mu2 = kernel_.moment(2);
-    const double mu3 = kernel_.moment(3);
+    const double mu1 = kernel.moment(1);
+    const double mu2 = kernel.moment(2);
+    const double mu3 = kernel.moment(3);
     KinematicState out;
     out.position_mm =
         c.position_mm - mu1 * c.speed_mm_s + mu2 * c.accel_mm_s2 - mu3 * last.jerk_after;
@@ -360,7 +364,7 @@ KinematicState AxisMotion::state(double t_s) const {
     KinematicState out;
     if (settled > 0) {
         const AxisCommand::Break& b = command_.at(settled - 1);
-        out = settled_state(b, t_s);
+        out = moment_expansion(kernel_, b, t_s);
         if (kernel_.lag_count() > 0) {
             const KinematicState tail =
                 kernel_.tail_state(prefix_[settled - 1], t_s - b.t_s - window);
@@ -428,18 +432,31 @@ double decay_step(double value, double rate, double level) {
 }  // namespace
 
 double AxisMotion::time_at_position(double position_mm, double guess_s) const {
-    if (position_mm <= 0.0) return 0.0;
+    KinematicState at;
+    return time_at_position(position_mm, guess_s, at);
+}
+
+double AxisMotion::time_at_position(double position_mm, double guess_s, KinematicState& at) const {
+    if (position_mm <= 0.0) {
+        at = {};
+        return 0.0;
+    }
     const double scale = std::max(kernel_.window_s() + kernel_.lag_time_s(), 1e-6);
     // Positions set the overtravel and the recorded trigger, which the
     // published checks compare to 1e-14 mm: a last step under 1e-7 s leaves
     // an error under 1e-12 s.
-    return safeguarded_root(0.0, std::max(guess_s, 1e-9), 1e-12 * std::max(1.0, position_mm), 1e-7,
-                            scale, [&](double t) {
-                                const KinematicState s = state(t);
-                                const double f = s.position_mm - position_mm;
-                                const double step = s.speed_mm_s > 0.0 ? -f / s.speed_mm_s : 0.0;
-                                return std::pair{f, step};
-                            });
+    double last_t = -1.0;
+    const double t =
+        safeguarded_root(0.0, std::max(guess_s, 1e-9), 1e-12 * std::max(1.0, position_mm), 1e-7,
+                         scale, [&](double t_s) {
+                             at = state(t_s);
+                             last_t = t_s;
+                             const double f = at.position_mm - position_mm;
+                             const double step = at.speed_mm_s > 0.0 ? -f / at.speed_mm_s : 0.0;
+                             return std::pair{f, step};
+                         });
+    if (t != last_t) at = state(t);
+    return t;
 }
 
 double AxisMotion::in_position_time() const {

@@ -70,6 +70,12 @@ class AxisKernel {
     double window_s() const { return window_s_; }
     // Sum of the first-order lags' time constants (0 without lags).
     double lag_time_s() const { return lag_sum_s_; }
+    // The age past which a break's response is the moment expansion alone:
+    // its decaying parts are exactly 0 there (past kNegligibleDecay time
+    // constants of the slowest lag beyond the windows; the windows alone
+    // without lags). A motion all of whose breaks are older is the command's
+    // moment expansion, the same at any later time up to a shift.
+    double settled_age_s() const { return settled_age_s_; }
     double in_position_mm() const { return in_position_mm_; }
 
     // Adds to `position` and `speed` the response at age tau > 0 to the steps
@@ -130,6 +136,7 @@ class AxisKernel {
     std::array<double, 4> moment_{1.0, 0.0, 0.0, 0.0};
     double window_s_{0.0};
     double lag_sum_s_{0.0};
+    double settled_age_s_{0.0};
     double in_position_mm_{0.01};
 };
 
@@ -173,6 +180,13 @@ class AxisCommand {
     double jerk_{0.0};
 };
 
+// The actual position and speed at `t_s` once every break up to `last` is
+// older than the windows and no later break has come: the polynomial part of
+// the response, the moment expansion x - mu1 v + mu2 a - mu3 j of the command
+// (past kernel.settled_age_s() it is the whole response).
+KinematicState moment_expansion(const AxisKernel& kernel, const AxisCommand::Break& last,
+                                double t_s);
+
 // The actual motion of a command through a kernel.
 class AxisMotion {
   public:
@@ -189,6 +203,9 @@ class AxisMotion {
     // that never moves backward and goes on at least that far; `guess_s` a
     // time near it.
     double time_at_position(double position_mm, double guess_s) const;
+    // The same, with the actual state there (`at`), which the solve has
+    // mostly evaluated already.
+    double time_at_position(double position_mm, double guess_s, KinematicState& at) const;
     // First time from the command's end at which the following error is
     // under the in-position width (a closed command).
     double in_position_time() const;
@@ -201,9 +218,6 @@ class AxisMotion {
   private:
     // prefix_ from break `first` on.
     void sum_prefix(std::size_t first);
-    // The polynomial part of the response at t_s to the breaks up to `last`
-    // once all are settled: the moment expansion of the command.
-    KinematicState settled_state(const AxisCommand::Break& last, double t_s) const;
     // The tail of all breaks at t_ref (every one settled by then: t_ref at
     // least the last break's time plus window_s()).
     AxisKernel::TailParts tail_at(double t_ref) const;

@@ -1801,6 +1801,47 @@ TEST(MotionCache, KeepsTheSolvesOfOneMachineOnly) {
     EXPECT_FALSE(cache.approach_room_mm(50.0, 0.004).has_value());
 }
 
+TEST(MotionCache, KeepsTouchesByTimingAndDistanceTheMostRecentlyUsedLongest) {
+    Scenario s;
+    MotionCache cache;
+    cache.bind(s.motion_limits(), s.axis_dynamics());
+    const MotionCache::TouchKey key{0.5, 0.005, 0.002, 0.008, 0.004};
+    MotionCache::SolvedTouch exact;
+    exact.distance_mm = 0.0;
+    exact.touch_s = 0.25;
+    cache.store_touch(key, exact);
+    MotionCache::SolvedTouch reference;
+    reference.distance_mm = 1.5;
+    reference.touch_s = 3.0;
+    reference.reference = true;
+    cache.store_touch(key, reference);
+
+    ASSERT_TRUE(cache.touch(key, 0.0).has_value());  // its exact distance
+    EXPECT_EQ(cache.touch(key, 0.0)->touch_s, 0.25);
+    EXPECT_FALSE(cache.touch(key, 0.5).has_value());  // neither that nor settled
+    ASSERT_TRUE(cache.touch(key, 4.0).has_value());   // the reference, to be shifted
+    EXPECT_EQ(cache.touch(key, 4.0)->distance_mm, 1.5);
+    EXPECT_TRUE(cache.touch(key, 1.5).has_value());
+    EXPECT_FALSE(cache.touch(key, 1.4).has_value());  // shorter: not settled
+    MotionCache::TouchKey other = key;
+    other.record_delay_s = 0.0;  // a latched input: another touch
+    EXPECT_FALSE(cache.touch(other, 4.0).has_value());
+
+    // Eight are kept; a lookup keeps the reference among the most recent.
+    for (int i = 0; i < 7; ++i) {
+        MotionCache::TouchKey first = key;
+        first.feed_mm_s = 10.0 + i;
+        cache.store_touch(first, exact);
+        EXPECT_TRUE(cache.touch(key, 4.0).has_value()) << i;
+    }
+    EXPECT_FALSE(cache.touch(key, 0.0).has_value());  // the exact one, pushed out
+
+    Scenario lagging = s;
+    lagging.machine.servo_time_constant_s = 0.03;
+    cache.bind(lagging.motion_limits(), lagging.axis_dynamics());  // another machine: emptied
+    EXPECT_FALSE(cache.touch(key, 4.0).has_value());
+}
+
 TEST(MotionCache, ForgetsTheOldestWhenFull) {
     MotionCache cache;
     Scenario s;

@@ -974,6 +974,70 @@ TEST(DynamicsCycle, ATouchAtCruiseThroughAnExponentialFilter) {
                 t_e + tc * std::log(v_r * tc * (1.0 - std::exp(-t_e / tc)) / 0.01), kClose);
 }
 
+// A measuring touch whose approach has settled before it touches (61 time
+// constants of the slower lag after the feed was commanded) is solved once, at
+// the distance where the approach settles, and shifted (MotionCache): at any
+// backoff it is the hand-computed touch at cruise.
+//   Exponential 0.03 + servo 0.02: the actual lags the command by L = 0.05 s.
+//   approach    d2 / v + L, d2 = b - overtravel_1
+//   overtravel  p + v (tau_r + L) = 0.005 + 0.5 * (0.008 + 0.05) = 0.034 mm
+//   settling    v (T1^2 e^(-s/T1) - T2^2 e^(-s/T2)) / (T1 - T2) = w, by bisection
+TEST(DynamicsCycle, ASettledMeasuringTouchIsTheSameTouchAtEveryBackoff) {
+    const double v = 30.0 / 60.0;
+    const double t1 = 0.03;
+    const double t2 = 0.02;
+    const double w = 0.01;
+    const auto error = [&](double s) {
+        return v * (t1 * t1 * std::exp(-s / t1) - t2 * t2 * std::exp(-s / t2)) / (t1 - t2);
+    };
+    double lo = 0.0;
+    double hi = 1.0;
+    for (int i = 0; i < 200; ++i) (error(0.5 * (lo + hi)) > w ? lo : hi) = 0.5 * (lo + hi);
+    const double settling = 0.5 * (lo + hi);
+
+    MotionCache cache;
+    std::optional<CycleResult> first;
+    for (const double backoff : {3.0, 4.0, 6.0, 3.5}) {
+        SCOPED_TRACE(backoff);
+        Scenario s = single_touch(2000.0, 5.0);
+        s.cycle.strategy = Strategy::two_touch;
+        s.cycle.measure_feed_mm_min = 30.0;
+        s.cycle.backoff_mm = backoff;
+        s.machine.filter = FilterKind::exponential;
+        s.machine.filter_time_s = t1;
+        s.machine.servo_time_constant_s = t2;
+        s.machine.in_position_mm = w;
+        ASSERT_TRUE(validate(s).empty());
+        CycleResult r;
+        evaluate_into(s, r, cache);
+        const CycleResult fresh = evaluate(s);  // shifted the same way without a cache
+        EXPECT_EQ(r.total(), fresh.total());
+        EXPECT_EQ(r.phase_time(Phase::second_approach), fresh.phase_time(Phase::second_approach));
+        const double d2 = backoff - r.first_touch().overtravel_mm;
+        ASSERT_GT(d2 / v, 61.0 * t1);  // settled
+        EXPECT_NEAR(r.phase_time(Phase::second_approach), d2 / v + t1 + t2, kClose);
+        EXPECT_NEAR(r.measuring_touch().overtravel_mm, 0.034, kClose);
+        EXPECT_EQ(r.measuring_touch().trigger_speed_mm_s, v);
+        EXPECT_NEAR(r.phase_time(Phase::second_deceleration), settling, kClose);
+        // The timeline's motion touches the surface where the phases say.
+        const PhaseRecord* pretravel = nullptr;
+        for (const PhaseRecord& phase : r.phases()) {
+            if (phase.phase == Phase::second_pretravel) pretravel = &phase;
+        }
+        ASSERT_NE(pretravel, nullptr);
+        EXPECT_NEAR(r.state_at(pretravel->start_s).position_mm, 5.0, kClose);
+        if (!first) {
+            first = r;
+            continue;
+        }
+        for (const Phase phase : {Phase::second_pretravel, Phase::second_interface_delay,
+                                  Phase::second_controller_delay, Phase::second_deceleration}) {
+            EXPECT_NEAR(r.phase_time(phase), first->phase_time(phase), 1e-12) << to_string(phase);
+        }
+        EXPECT_NEAR(r.measuring_touch().recorded_mm, first->measuring_touch().recorded_mm, 1e-12);
+    }
+}
+
 TEST(DynamicsCycle, TheBellFilterAndTheServoAddTheirLagsToTheOvertravel) {
     // At cruise the drain adds v L: bell (W1 + W2)/2 + Tp.
     // W1 = 0.032, W2 = 0.016, Tp = 0.02: L = 0.044; 3000 mm/min = 50 mm/s;
