@@ -387,16 +387,20 @@ const AxisKernel* active_kernel(const AxisKernel& kernel) {
     return kernel.active() ? &kernel : nullptr;
 }
 
-// A rest-to-rest move's time to the in-position check: the cache's, or
-// solved on the actual motion `motion()` gives (built only then) and kept.
+// A rest-to-rest move's time to the in-position check and its command's end:
+// the cache's, or solved on the actual motion `motion()` gives (built only
+// then) and kept.
 template <typename Motion>
-double filtered_move_time(MotionCache* cache, double distance_mm, double feed_mm_s, Motion motion) {
+MotionCache::Move filtered_move(MotionCache* cache, double distance_mm, double feed_mm_s,
+                                Motion motion) {
     if (cache != nullptr) {
-        if (const auto known = cache->move_time_s(distance_mm, feed_mm_s)) return *known;
+        if (const auto known = cache->move(distance_mm, feed_mm_s)) return *known;
     }
-    const double t = motion().in_position_time();
-    if (cache != nullptr) cache->store_move_time(distance_mm, feed_mm_s, t);
-    return t;
+    const AxisMotion& solving = motion();
+    const MotionCache::Move solved{solving.in_position_time(),
+                                   solving.command().end_state().position_mm};
+    if (cache != nullptr) cache->store_move(distance_mm, feed_mm_s, solved);
+    return solved;
 }
 
 // block_time_s and approach_room_mm for a kernel already built (nullptr: the
@@ -404,9 +408,12 @@ double filtered_move_time(MotionCache* cache, double distance_mm, double feed_mm
 double block_time(const MotionLimits& limits, const AxisKernel* kernel, double distance_mm,
                   double feed_mm_s, MotionCache* cache = nullptr) {
     if (kernel == nullptr) return move_time_s(limits, distance_mm, feed_mm_s);
-    return filtered_move_time(cache, distance_mm, feed_mm_s, [&] {
-        return AxisMotion(*kernel, move_command(plan_move(limits, distance_mm, feed_mm_s)));
-    });
+    return filtered_move(cache, distance_mm, feed_mm_s,
+                         [&] {
+                             return AxisMotion(
+                                 *kernel, move_command(plan_move(limits, distance_mm, feed_mm_s)));
+                         })
+        .time_s;
 }
 
 double approach_room(const Scenario& scenario, const MotionLimits& limits, const AxisKernel* kernel,
@@ -541,7 +548,6 @@ class CycleBuilder {
     // A rest-to-rest move as one phase.
     void add_move(Phase phase, const MotionLimits& limits, double distance_mm, double feed_mm_s,
                   double direction) {
-        const SegmentPlan plan = plan_move(limits, distance_mm, feed_mm_s);
         if (kernel_ != nullptr) {
             // A feature repeats its moves (to and from the centre, across it):
             // one motion serves every repeat.
@@ -552,27 +558,28 @@ class CycleBuilder {
                     return;
                 }
             }
-            const AxisCommand command = move_command(plan);
+            const auto command = [&] {
+                return move_command(plan_move(limits, distance_mm, feed_mm_s));
+            };
             int index = -1;
-            double duration = 0.0;
+            MotionCache::Move solved;
             if (full_) {
-                index = keep_motion(command);
-                duration =
-                    filtered_move_time(&cache_, distance_mm, feed_mm_s, [&]() -> const AxisMotion& {
-                        return motions_[static_cast<std::size_t>(index)];
-                    });
-            } else {  // the motion only for a solve the cache does not hold
-                duration = filtered_move_time(&cache_, distance_mm, feed_mm_s,
-                                              [&] { return AxisMotion(*kernel_, command); });
+                index = keep_motion(command());
+                solved = filtered_move(&cache_, distance_mm, feed_mm_s, [&]() -> const AxisMotion& {
+                    return motions_[static_cast<std::size_t>(index)];
+                });
+            } else {  // the command and the motion only for a solve the cache does not hold
+                solved = filtered_move(&cache_, distance_mm, feed_mm_s,
+                                       [&] { return AxisMotion(*kernel_, command()); });
             }
-            const double end_mm = command.end_state().position_mm;
-            add_filtered_motion(index, direction, duration, end_mm);
+            add_filtered_motion(index, direction, solved.time_s, solved.end_mm);
             if (memo_.size() < memo_.capacity()) {
-                memo_.push_back({distance_mm, feed_mm_s, index, duration, end_mm});
+                memo_.push_back({distance_mm, feed_mm_s, index, solved.time_s, solved.end_mm});
             }
-            add_phase(phase, duration, distance_mm);
+            add_phase(phase, solved.time_s, distance_mm);
             return;
         }
+        const SegmentPlan plan = plan_move(limits, distance_mm, feed_mm_s);
         const double duration = plan.duration_s();
         add_motion(plan, direction, duration);
         add_phase(phase, duration, distance_mm);
@@ -920,12 +927,12 @@ void MotionCache::bind(const MotionLimits& limits, const AxisDynamics& dynamics)
     touch_count_ = 0;
 }
 
-std::optional<double> MotionCache::move_time_s(double distance_mm, double feed_mm_s) const {
+std::optional<MotionCache::Move> MotionCache::move(double distance_mm, double feed_mm_s) const {
     return moves_.find(distance_mm, feed_mm_s);
 }
 
-void MotionCache::store_move_time(double distance_mm, double feed_mm_s, double time_s) {
-    moves_.store(distance_mm, feed_mm_s, time_s);
+void MotionCache::store_move(double distance_mm, double feed_mm_s, const Move& move) {
+    moves_.store(distance_mm, feed_mm_s, move);
 }
 
 std::optional<double> MotionCache::approach_room_mm(double feed_mm_s, double delay_s) const {
@@ -939,34 +946,44 @@ void MotionCache::store_approach_room(double feed_mm_s, double delay_s, double r
 std::optional<MotionCache::SolvedTouch> MotionCache::touch(const TouchKey& key,
                                                            double distance_mm) {
     for (std::size_t i = 0; i < touch_count_; ++i) {
-        const KeptTouch& kept = touches_[i];
+        const std::uint8_t slot = touch_order_[i];
+        const KeptTouch& kept = touches_[slot];
         if (!(kept.key == key)) continue;
         const SolvedTouch& t = kept.touch;
         if (distance_mm == t.distance_mm || (t.reference && distance_mm > t.distance_mm)) {
-            std::rotate(touches_.begin(), touches_.begin() + static_cast<std::ptrdiff_t>(i),
-                        touches_.begin() + static_cast<std::ptrdiff_t>(i) + 1);
-            return touches_[0].touch;
+            std::copy_backward(touch_order_.begin(),
+                               touch_order_.begin() + static_cast<std::ptrdiff_t>(i),
+                               touch_order_.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+            touch_order_[0] = slot;
+            return t;
         }
     }
     return std::nullopt;
 }
 
 void MotionCache::store_touch(const TouchKey& key, const SolvedTouch& touch) {
+    // A free slot while there is one, else the least recently used.
+    const std::uint8_t slot = touch_count_ < touches_.size()
+                                  ? static_cast<std::uint8_t>(touch_count_)
+                                  : touch_order_[touches_.size() - 1];
     touch_count_ = std::min(touch_count_ + 1, touches_.size());
-    std::move_backward(touches_.begin(),
-                       touches_.begin() + static_cast<std::ptrdiff_t>(touch_count_) - 1,
-                       touches_.begin() + static_cast<std::ptrdiff_t>(touch_count_));
-    touches_[0] = {key, touch};
+    std::copy_backward(touch_order_.begin(),
+                       touch_order_.begin() + static_cast<std::ptrdiff_t>(touch_count_) - 1,
+                       touch_order_.begin() + static_cast<std::ptrdiff_t>(touch_count_));
+    touch_order_[0] = slot;
+    touches_[slot] = {key, touch};
 }
 
-std::optional<double> MotionCache::Table::find(double key1, double key2) const {
+template <typename Value>
+std::optional<Value> MotionCache::Table<Value>::find(double key1, double key2) const {
     for (std::size_t i = 0; i < count; ++i) {
         if (entries[i].key1 == key1 && entries[i].key2 == key2) return entries[i].value;
     }
     return std::nullopt;
 }
 
-void MotionCache::Table::store(double key1, double key2, double value) {
+template <typename Value>
+void MotionCache::Table<Value>::store(double key1, double key2, const Value& value) {
     entries[next] = {key1, key2, value};
     next = (next + 1) % entries.size();
     count = std::max(count, next == 0 ? entries.size() : next);

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -277,9 +278,15 @@ class MotionCache {
     // The bound dynamics' kernel, prepared once.
     const AxisKernel& kernel() const { return kernel_; }
 
-    // Time of a rest-to-rest move to the in-position check.
-    std::optional<double> move_time_s(double distance_mm, double feed_mm_s) const;
-    void store_move_time(double distance_mm, double feed_mm_s, double time_s);
+    // A rest-to-rest move: its time to the in-position check, and where its
+    // command ends (the next block starts there).
+    struct Move {
+        double time_s{0.0};
+        double end_mm{0.0};
+        bool operator==(const Move&) const = default;
+    };
+    std::optional<Move> move(double distance_mm, double feed_mm_s) const;
+    void store_move(double distance_mm, double feed_mm_s, const Move& move);
     // Approach room for a feed and a measurement delay.
     std::optional<double> approach_room_mm(double feed_mm_s, double delay_s) const;
     void store_approach_room(double feed_mm_s, double delay_s, double room_mm);
@@ -320,30 +327,32 @@ class MotionCache {
     void store_touch(const TouchKey& key, const SolvedTouch& touch);
 
   private:
-    struct Entry {
-        double key1{0.0};
-        double key2{0.0};
-        double value{0.0};
-    };
+    template <typename Value>
     struct Table {
+        struct Entry {
+            double key1{0.0};
+            double key2{0.0};
+            Value value{};
+        };
         std::array<Entry, 16> entries{};
         std::size_t count{0};
         std::size_t next{0};
-        std::optional<double> find(double key1, double key2) const;
-        void store(double key1, double key2, double value);
+        std::optional<Value> find(double key1, double key2) const;
+        void store(double key1, double key2, const Value& value);
     };
     std::optional<MotionLimits> limits_;
     AxisDynamics dynamics_{};
     AxisKernel kernel_{};
-    Table moves_;
-    Table rooms_;
+    Table<Move> moves_;
+    Table<double> rooms_;
     struct KeptTouch {
         TouchKey key;
         SolvedTouch touch;
     };
-    // Most recently used first: a sweep's first touches, one per feed, do
-    // not push out its measuring touch.
     std::array<KeptTouch, 8> touches_{};
+    // The kept touches' slots, most recently used first: a sweep's first
+    // touches, one per feed, do not push out its measuring touch.
+    std::array<std::uint8_t, 8> touch_order_{};
     std::size_t touch_count_{0};
 };
 

@@ -339,19 +339,6 @@ void AxisMotion::sum_prefix(std::size_t first) {
     }
 }
 
-KinematicState moment_expansion(const AxisKernel& kernel, const AxisCommand::Break& last,
-                                double t_s) {
-    const KinematicState c = integrate(t_s - last.t_s, last.after, last.jerk_after);
-    const double mu1 = kernel.moment(1);
-    const double mu2 = kernel.moment(2);
-    const double mu3 = kernel.moment(3);
-    KinematicState out;
-    out.position_mm =
-        c.position_mm - mu1 * c.speed_mm_s + mu2 * c.accel_mm_s2 - mu3 * last.jerk_after;
-    out.speed_mm_s = c.speed_mm_s - mu1 * c.accel_mm_s2 + mu2 * last.jerk_after;
-    return out;
-}
-
 KinematicState AxisMotion::state(double t_s) const {
     if (t_s <= 0.0) return {};
     const std::size_t count = command_.size();

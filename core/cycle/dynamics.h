@@ -184,8 +184,18 @@ class AxisCommand {
 // older than the windows and no later break has come: the polynomial part of
 // the response, the moment expansion x - mu1 v + mu2 a - mu3 j of the command
 // (past kernel.settled_age_s() it is the whole response).
-KinematicState moment_expansion(const AxisKernel& kernel, const AxisCommand::Break& last,
-                                double t_s);
+inline KinematicState moment_expansion(const AxisKernel& kernel, const AxisCommand::Break& last,
+                                       double t_s) {
+    const KinematicState c = integrate(t_s - last.t_s, last.after, last.jerk_after);
+    const double mu1 = kernel.moment(1);
+    const double mu2 = kernel.moment(2);
+    const double mu3 = kernel.moment(3);
+    KinematicState out;
+    out.position_mm =
+        c.position_mm - mu1 * c.speed_mm_s + mu2 * c.accel_mm_s2 - mu3 * last.jerk_after;
+    out.speed_mm_s = c.speed_mm_s - mu1 * c.accel_mm_s2 + mu2 * last.jerk_after;
+    return out;
+}
 
 // The actual motion of a command through a kernel.
 class AxisMotion {

@@ -1786,18 +1786,18 @@ TEST(MotionCache, KeepsTheSolvesOfOneMachineOnly) {
     Scenario s;
     MotionCache cache;
     cache.bind(s.motion_limits(), s.axis_dynamics());
-    cache.store_move_time(3.0, 50.0, 0.125);
+    cache.store_move(3.0, 50.0, {0.125, 3.0});
     cache.store_approach_room(50.0, 0.004, 0.2);
     cache.bind(s.motion_limits(), s.axis_dynamics());  // the same machine: kept
-    EXPECT_EQ(cache.move_time_s(3.0, 50.0), std::optional<double>(0.125));
+    EXPECT_EQ(cache.move(3.0, 50.0), std::optional<MotionCache::Move>({0.125, 3.0}));
     EXPECT_EQ(cache.approach_room_mm(50.0, 0.004), std::optional<double>(0.2));
-    EXPECT_FALSE(cache.move_time_s(3.0, 50.5).has_value());  // keyed by the exact inputs
+    EXPECT_FALSE(cache.move(3.0, 50.5).has_value());  // keyed by the exact inputs
     EXPECT_FALSE(cache.approach_room_mm(50.0, 0.005).has_value());
 
     Scenario other = s;
     other.machine.servo_time_constant_s = 0.03;
     cache.bind(other.motion_limits(), other.axis_dynamics());  // another machine: emptied
-    EXPECT_FALSE(cache.move_time_s(3.0, 50.0).has_value());
+    EXPECT_FALSE(cache.move(3.0, 50.0).has_value());
     EXPECT_FALSE(cache.approach_room_mm(50.0, 0.004).has_value());
 }
 
@@ -1846,10 +1846,11 @@ TEST(MotionCache, ForgetsTheOldestWhenFull) {
     MotionCache cache;
     Scenario s;
     cache.bind(s.motion_limits(), s.axis_dynamics());
-    for (int i = 0; i < 17; ++i) cache.store_move_time(1.0 + i, 50.0, 0.1 * i);
-    EXPECT_FALSE(cache.move_time_s(1.0, 50.0).has_value());  // the first, overwritten
+    for (int i = 0; i < 17; ++i) cache.store_move(1.0 + i, 50.0, {0.1 * i, 1.0 + i});
+    EXPECT_FALSE(cache.move(1.0, 50.0).has_value());  // the first, overwritten
     for (int i = 1; i < 17; ++i) {
-        EXPECT_EQ(cache.move_time_s(1.0 + i, 50.0), std::optional<double>(0.1 * i)) << i;
+        EXPECT_EQ(cache.move(1.0 + i, 50.0), std::optional<MotionCache::Move>({0.1 * i, 1.0 + i}))
+            << i;
     }
 }
 
