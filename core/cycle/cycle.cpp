@@ -798,8 +798,10 @@ class CycleBuilder {
         double end_mm;
     };
     // A handful of distinct moves per cycle; fixed capacity, no allocation.
+    // Only items[0, count) are set (MoveMemo has no initialisers: the list
+    // is not 320 bytes of zeros to write per evaluation).
     struct MemoList {
-        std::array<MoveMemo, 8> items{};
+        std::array<MoveMemo, 8> items;
         std::size_t count{0};
         const MoveMemo* begin() const { return items.data(); }
         const MoveMemo* end() const { return items.data() + count; }

@@ -409,11 +409,11 @@ double safeguarded_root(double lo, double t, double f_tolerance, double step_tol
 // down to `level`: on log(value / level) while the value is far from the
 // level (exact in one step for a single exponential), within a factor of 1.5
 // of it on the value itself, which converges as fast without a logarithm.
+// (The band is tested without dividing, so the branch does not wait for it.)
 double decay_step(double value, double rate, double level) {
     if (!(value > 0.0 && rate > 0.0)) return 0.0;
-    const double ratio = value / level;
-    if (ratio > 1.0 / 1.5 && ratio < 1.5) return (value - level) / rate;
-    return value / rate * std::log(ratio);
+    if (1.5 * value > level && value < 1.5 * level) return (value - level) / rate;
+    return value / rate * std::log(value / level);
 }
 
 }  // namespace
