@@ -6,7 +6,9 @@
 // replace()s, the chart layouts, and the event loop's paint of the window
 // until each of the four charts has painted. Two sliders: the feed (the feed
 // sweeps stay, markers, phases and motion move) and the time constant (every
-// curve of every chart changes). BM_Recompute is the core's share alone.
+// curve of every chart changes). BM_Recompute is the core's share alone;
+// BM_Recompute_Fanuc the same on the Fanuc-type preset's machine (dynamics
+// after interpolation), read from resources/presets.
 // BM_LaunchToFirstPaint runs `probecycle --time-startup` and times the
 // process from spawn to exit (it exits right after its first paint); the
 // counter first_paint_ms is the program's own figure from main() to paint.
@@ -21,9 +23,11 @@
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
+#include "core/common/file_io.h"
 #include "ui/cycle/computation.h"
 #include "ui/window/main_window.h"
 
@@ -132,14 +136,24 @@ void BM_SliderToCharts(benchmark::State& state) {
     run_slider(state);
 }
 
-void BM_Recompute(benchmark::State& state) {
+void run_recompute(benchmark::State& state, probecycle::Scenario scenario) {
     probecycle::ui::Computation computation(500);
-    probecycle::Scenario scenario;
     std::int64_t i = 0;
     for (auto _ : state) {
         scenario.cycle.probe_feed_mm_min = (i++ % 2 == 0) ? 1500.0 : 2500.0;
         benchmark::DoNotOptimize(computation.run(scenario).cycle().total());
     }
+}
+
+void BM_Recompute(benchmark::State& state) {
+    run_recompute(state, probecycle::Scenario{});
+}
+
+void BM_Recompute_Fanuc(benchmark::State& state) {
+    run_recompute(state, probecycle::merge_json(
+                             probecycle::Scenario{},
+                             probecycle::read_text_file(std::string(
+                                 PROBECYCLE_PRESETS_DIR "/machine_fanuc_exponential_servo.json"))));
 }
 
 void BM_LaunchToFirstPaint(benchmark::State& state) {
@@ -167,6 +181,7 @@ BENCHMARK(BM_SliderToCharts)
     ->Args({1920, 1080, 1})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Recompute)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Recompute_Fanuc)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LaunchToFirstPaint)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 int main(int argc, char** argv) {

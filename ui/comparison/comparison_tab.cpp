@@ -28,6 +28,7 @@
 
 #include "core/common/csv_reader.h"
 #include "core/common/file_io.h"
+#include "core/common/vector_state.h"
 #include "core/comparison/comparison_input.h"
 #include "core/comparison/comparison_project.h"
 #include "core/comparison/comparison_report.h"
@@ -450,6 +451,7 @@ bool ComparisonTab::run() {
                 read_input(current, [](const std::string& t) { return parse_block(t); });
         }
         current.clear();
+        clear_vector_upper_state();  // what Qt painted may have left them in use
         ComparisonResult result = run_comparison(input);
         input_ = std::move(input);
         result_ = std::move(result);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/common/vector_state.h"
+
 namespace probecycle::ui {
 
 Computation::Computation(std::size_t points_per_curve)
@@ -18,6 +20,7 @@ const Computed& Computation::run(const Scenario& scenario) {
     r.errors = validate(scenario);
     if (!r.errors.empty()) return r;
 
+    clear_vector_upper_state();  // what Qt painted may have left them in use
     r.analysis = analyse(scenario);
     variant_ = scenario;
     variant_.cycle.strategy = Strategy::single_touch;

@@ -14,6 +14,7 @@
 
 #include "core/common/input_error.h"
 #include "core/common/units.h"
+#include "core/common/vector_state.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
 #include "ui/common/quantity_edit.h"
@@ -172,6 +173,7 @@ void OptimisePanel::show_scenario(const Scenario& scenario) {
     OptimiseRequirements requirements;
     requirements.max_overtravel_fraction = overtravel_fraction();
     try {
+        clear_vector_upper_state();  // what Qt painted may have left them in use
         result_ = optimise(scenario, requirements);
         refusal_.reset();
     } catch (const InputError& e) {
