@@ -50,13 +50,6 @@ double AxisDynamics::lag_s() const {
 
 namespace {
 
-// tau^p / p! for p >= 0.
-double ramp(int p, double tau) {
-    double value = 1.0;
-    for (int i = 1; i <= p; ++i) value *= tau / i;
-    return value;
-}
-
 // Decay exponents beyond this are negligible (AxisKernel::decay).
 constexpr double kNegligibleDecay = 60.0;
 
@@ -64,6 +57,17 @@ double power(double x, int p) {
     double value = 1.0;
     for (int i = 0; i < p; ++i) value *= x;
     return value;
+}
+
+// 1 / p! for the ramps r_p a kernel meets: up to r_5, a jerk step's r_3
+// integrated once for each of two moving averages. (A table, not divisions:
+// the ramps are summed for every break in every state.)
+constexpr std::array<double, 6> kInverseFactorial = {1.0,       1.0,        1.0 / 2.0,
+                                                     1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0};
+
+// tau^p / p! for 0 <= p <= 5.
+double ramp(int p, double tau) {
+    return power(tau, p) * kInverseFactorial[static_cast<std::size_t>(p)];
 }
 
 }  // namespace
@@ -200,12 +204,13 @@ inline double AxisKernel::lag_transient(int m, double tau, const Decay& d) const
 }
 
 double AxisKernel::lag_polynomial(int m, double tau) const {
-    // The moment expansion: sum_k (-1)^k mu_k r_(m-k).
+    // The moment expansion sum_k (-1)^k mu_k r_(m-k), by Horner in tau: the
+    // coefficient of tau^j is (-1)^(m-j) mu_(m-j) / j!.
     double poly = 0.0;
-    double sign = 1.0;
-    for (int k = 0; k <= m; ++k) {
-        poly += sign * lag_moment_[static_cast<std::size_t>(k)] * ramp(m - k, tau);
-        sign = -sign;
+    for (int j = m; j >= 0; --j) {
+        const double mu = lag_moment_[static_cast<std::size_t>(m - j)];
+        poly = poly * tau +
+               ((m - j) % 2 == 0 ? mu : -mu) * kInverseFactorial[static_cast<std::size_t>(j)];
     }
     return poly;
 }
