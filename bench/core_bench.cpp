@@ -115,14 +115,11 @@ Scenario linear_filter_bore() {
     return preset_bore("machine_linear_after_interpolation.json");
 }
 Scenario bell_jerk_bore() {
-    Scenario s = two_touch_bore();
+    Scenario s = filtered_bore();  // its servo and in-position width
     s.machine.accel_model = AccelModel::jerk_limited;
     s.machine.filter = FilterKind::bell;
-    s.machine.filter_time_s = 0.032;
-    s.machine.filter2_time_s = 0.01;
-    s.machine.servo_time_constant_s = 0.033;
-    s.machine.in_position_mm = 0.02;
-    s.cycle.backoff_mm = 3.5;  // over the recommended 3.23 mm: a valid cycle
+    s.machine.filter2_time_s = 0.01;  // after the first window, filter_time_s (32 ms)
+    s.cycle.backoff_mm = 3.5;         // over the recommended 3.23 mm: a valid cycle
     return s;
 }
 Scenario as_surface(Scenario s) {

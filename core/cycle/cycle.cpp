@@ -358,19 +358,36 @@ constexpr TouchPhases kSecondTouch{Phase::second_approach, Phase::second_pretrav
                                    Phase::second_interface_delay, Phase::second_controller_delay,
                                    Phase::second_deceleration};
 
-// The command of a rest-to-rest move, and the actual motion of a touch's
-// approach (the plan accelerating and cruising on, uncut).
-AxisCommand move_command(const SegmentPlan& plan) {
+// The command of a touch's approach (the plan accelerating and cruising on,
+// uncut), of a rest-to-rest move, and of a touch: its approach until the
+// control reacts at `t_react_s`, then stopped (at once, or braking as its
+// plan does). The actual motion of a touch's approach.
+AxisCommand approach_command(const SegmentPlan& plan) {
     AxisCommand command;
     command.append(plan, plan.duration_s());
+    return command;
+}
+
+AxisCommand move_command(const SegmentPlan& plan) {
+    AxisCommand command = approach_command(plan);
+    command.close();
+    return command;
+}
+
+AxisCommand touch_command(const MotionLimits& limits, const SegmentPlan& plan, double feed_mm_s,
+                          double t_react_s) {
+    AxisCommand command;
+    command.append(plan, t_react_s);
+    const KinematicState at_react = command.end_state();
+    const SegmentPlan stop =
+        plan_stop(limits, feed_mm_s, at_react.speed_mm_s, at_react.accel_mm_s2);
+    command.append(stop, stop.duration_s());
     command.close();
     return command;
 }
 
 AxisMotion approach_motion(const AxisKernel& kernel, const SegmentPlan& plan) {
-    AxisCommand command;
-    command.append(plan, plan.duration_s());
-    return {kernel, command};
+    return {kernel, approach_command(plan)};
 }
 
 // Time from rest until a touch's approach covers `distance_mm`.
@@ -661,8 +678,7 @@ class CycleBuilder {
         std::optional<MotionCache::SolvedTouch> solved = cache_.touch(key, distance_mm);
         int index = -1;  // the touch's kept motion (the timeline's; a summary's until it ends)
         if (!solved) {
-            AxisCommand approach;
-            approach.append(plan, plan.duration_s());
+            const AxisCommand approach = approach_command(plan);
             const AxisCommand::Break& last = approach.at(approach.size() - 1);
             const double settled_mm =
                 moment_expansion(*kernel_, last, last.t_s + kernel_->settled_age_s()).position_mm;
@@ -686,18 +702,16 @@ class CycleBuilder {
             t.distance_mm = distance_mm;
             stopped_here = false;
         }
+        const double t_interface = t.trigger_s + p.interface_delay_s;
+        const double t_react = t.trigger_s + key.reaction_s;
         if (full_ && !stopped_here) {  // the timeline's motion, stopped where this touch reacts
-            AxisCommand command;
-            command.append(plan, t.trigger_s + key.reaction_s);
-            stop_command(limits, feed_mm_s, command);
+            const AxisCommand command = touch_command(limits, plan, feed_mm_s, t_react);
             if (index < 0) {
                 index = keep_motion(command);
             } else {
                 motions_[static_cast<std::size_t>(index)].reset(command);
             }
         }
-        const double t_interface = t.trigger_s + p.interface_delay_s;
-        const double t_react = t.trigger_s + key.reaction_s;
 
         // The states only the full result shows (the phases' distances, the
         // react speed, the delay travel) are not solved for a summary.
@@ -732,16 +746,6 @@ class CycleBuilder {
         touch.recorded_mm = t.recorded_mm;
         touch.delay_travel_mm = delay_travel_mm;  // 0 in a summary
         return touch;
-    }
-
-    // The command stops where the control reacts: at once, or braking as its
-    // plan does.
-    static void stop_command(const MotionLimits& limits, double feed_mm_s, AxisCommand& command) {
-        const KinematicState at_react = command.end_state();
-        const SegmentPlan stop =
-            plan_stop(limits, feed_mm_s, at_react.speed_mm_s, at_react.accel_mm_s2);
-        command.append(stop, stop.duration_s());
-        command.close();
     }
 
     // Solves a touch `distance_mm` in front of the surface on `motion`, the
@@ -780,9 +784,7 @@ class CycleBuilder {
         const double t_record = t_interface + key.record_delay_s;
 
         // (Before the reaction the command is the approach's.)
-        AxisCommand command;
-        command.append(plan, t_react);
-        stop_command(limits, key.feed_mm_s, command);
+        const AxisCommand command = touch_command(limits, plan, key.feed_mm_s, t_react);
         motion.reset(command);
         t.settle_s = std::max(motion.in_position_time(), t_react);
         t.rest_mm = command.end_state().position_mm;
