@@ -153,6 +153,37 @@ void BM_Evaluate_Filtered(benchmark::State& state) {
     run_evaluate(state, filtered_bore());
 }
 
+// A candidate evaluation as the sweeps, the knee search, the optimiser and the
+// fixes make them: the summary (Detail::summary) on a MotionCache already
+// bound to the machine, at another probing feed each time (256 feeds from
+// 100 to 2000 mm/min, more than the cache holds: every first touch, backoff
+// and return move is solved afresh; the positioning moves and the measuring
+// touch, which do not change with the feed, come from the cache).
+void BM_Evaluate_Filtered_Candidate(benchmark::State& state) {
+    Scenario scenario = filtered_bore();
+    const std::vector<double> feeds = log_feeds(100.0, 2000.0, 256);
+    CycleResult result;
+    MotionCache cache;
+    std::size_t i = 0;
+    for (auto _ : state) {
+        scenario.cycle.probe_feed_mm_min = feeds[i++ % feeds.size()];
+        evaluate_into(scenario, result, cache, Detail::summary);
+        benchmark::DoNotOptimize(result.total());
+    }
+}
+
+// The sweep on every interpolator plan with every filter after interpolation,
+// a 33 ms servo behind each (two-touch surface, 3.5 mm backoff): where the
+// 0.5 ms target holds beyond the presets.
+void BM_Sweep1000_Dynamics(benchmark::State& state, AccelModel plan, FilterKind filter) {
+    Scenario scenario = as_surface(filtered_bore());
+    scenario.machine.accel_model = plan;
+    scenario.machine.filter = filter;
+    scenario.machine.filter2_time_s = 0.01;  // bell: after the first window (32 ms)
+    scenario.cycle.backoff_mm = 3.5;
+    run_sweep1000(state, scenario);
+}
+
 void BM_Sweep1000(benchmark::State& state) {
     run_sweep1000(state, Scenario{});  // the default: two-touch surface
 }
@@ -218,6 +249,7 @@ BENCHMARK(BM_Sweep1000_Mitsubishi)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Evaluate_LinearFilter);
 BENCHMARK(BM_Sweep1000_LinearFilter)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Evaluate_BellJerk);
+BENCHMARK(BM_Evaluate_Filtered_Candidate);
 BENCHMARK(BM_Sweep1000_BellJerk)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Analyse)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Optimise)->Unit(benchmark::kMillisecond);
@@ -225,5 +257,20 @@ BENCHMARK(BM_Optimise_BestOnly)->Unit(benchmark::kMillisecond);
 
 BENCHMARK(BM_Compare200)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Compare10000)->Unit(benchmark::kMillisecond);
+
+// BM_Sweep1000_Dynamics/<plan>/<filter>, named by the scenario files' words.
+const bool kSweepMatrixRegistered = [] {
+    for (const AccelModel plan : {AccelModel::time_constant, AccelModel::constant_accel,
+                                  AccelModel::jerk_limited, AccelModel::none}) {
+        for (const FilterKind filter :
+             {FilterKind::none, FilterKind::linear, FilterKind::exponential, FilterKind::bell}) {
+            const std::string name =
+                std::string("BM_Sweep1000_Dynamics/") + to_string(plan) + "/" + to_string(filter);
+            benchmark::RegisterBenchmark(name.c_str(), BM_Sweep1000_Dynamics, plan, filter)
+                ->Unit(benchmark::kMicrosecond);
+        }
+    }
+    return true;
+}();
 
 BENCHMARK_MAIN();
