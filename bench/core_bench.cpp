@@ -156,9 +156,9 @@ void BM_Evaluate_Filtered(benchmark::State& state) {
 // A candidate evaluation as the sweeps, the knee search, the optimiser and the
 // fixes make them: the summary (Detail::summary) on a MotionCache already
 // bound to the machine, at another probing feed each time (256 feeds from
-// 100 to 2000 mm/min, more than the cache holds: every first touch, backoff
-// and return move is solved afresh; the positioning moves and the measuring
-// touch, which do not change with the feed, come from the cache).
+// 100 to 2000 mm/min, more than the cache holds: every first touch is solved
+// afresh; the moves and the measuring touch, which do not change with the
+// feed, come from the cache).
 void BM_Evaluate_Filtered_Candidate(benchmark::State& state) {
     Scenario scenario = filtered_bore();
     const std::vector<double> feeds = log_feeds(100.0, 2000.0, 256);
