@@ -172,15 +172,14 @@ void BM_Evaluate_Filtered_Candidate(benchmark::State& state) {
     }
 }
 
-// The sweep on every interpolator plan with every filter after interpolation,
-// a 33 ms servo behind each (two-touch surface, 3.5 mm backoff): where the
+// The sweep on every interpolator plan with every filter after interpolation:
+// BM_Sweep1000_BellJerk's surface (a 33 ms servo, the bell's windows 32 and
+// 10 ms, a 3.5 mm backoff) with the plan and the filter replaced. Where the
 // 0.5 ms target holds beyond the presets.
 void BM_Sweep1000_Dynamics(benchmark::State& state, AccelModel plan, FilterKind filter) {
-    Scenario scenario = as_surface(filtered_bore());
+    Scenario scenario = as_surface(bell_jerk_bore());
     scenario.machine.accel_model = plan;
     scenario.machine.filter = filter;
-    scenario.machine.filter2_time_s = 0.01;  // bell: after the first window (32 ms)
-    scenario.cycle.backoff_mm = 3.5;
     run_sweep1000(state, scenario);
 }
 
