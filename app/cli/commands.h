@@ -21,5 +21,7 @@ void add_compare_commands(CLI::App& app);
 void add_program_commands(CLI::App& app);
 // optimise (commands_optimise.cpp)
 void add_optimise_commands(CLI::App& app);
+// machine linuxcnc (commands_machine.cpp)
+void add_machine_commands(CLI::App& app);
 
 }  // namespace probecycle::cli

@@ -70,6 +70,7 @@ int run(int argc, char** argv) {
     cli::add_latency_commands(app);
     cli::add_compare_commands(app);
     cli::add_program_commands(app);
+    cli::add_machine_commands(app);
 
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
@@ -89,7 +90,7 @@ int run(int argc, char** argv) {
         return 2;
     }
     if (command == "calibrate" || command == "latency" || command == "compare" ||
-        command == "program") {
+        command == "program" || command == "machine") {
         const std::vector<std::string> verbs = subcommand_names(*app.get_subcommand(command));
         if (args.size() == 1) {
             std::cerr << "probecycle-cli " << command
@@ -101,6 +102,7 @@ int run(int argc, char** argv) {
                       << (command == "calibrate" ? "calibration"
                           : command == "latency" ? "latency command"
                           : command == "program" ? "program"
+                          : command == "machine" ? "control"
                                                  : "comparison command")
                       << " '" << args[1] << "'; allowed: " << joined(verbs) << '\n';
             return 2;

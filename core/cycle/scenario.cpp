@@ -699,11 +699,15 @@ Scenario scenario_from_json(std::string_view text) {
     return merge_json(Scenario{}, text);
 }
 
-std::string scenario_to_json(const Scenario& scenario) {
+namespace {
+
+// Every key of the sections `only` names (all of them when empty), as the file writes them.
+std::string sections_to_json(const Scenario& scenario, std::string_view only) {
     Json root = Json::object();
     for (const KeyEntry& e : key_table()) {
         const std::string_view key = e.info.key;
         const std::size_t dot = key.find('.');
+        if (!only.empty() && key.substr(0, dot) != only) continue;
         Json& body = root[std::string(key.substr(0, dot))];
         const std::string name(key.substr(dot + 1));
         auto& s = const_cast<Scenario&>(scenario);  // the accessors only read here
@@ -722,6 +726,16 @@ std::string scenario_to_json(const Scenario& scenario) {
         }
     }
     return root.dump(2) + "\n";
+}
+
+}  // namespace
+
+std::string scenario_to_json(const Scenario& scenario) {
+    return sections_to_json(scenario, {});
+}
+
+std::string scenario_section_to_json(const Scenario& scenario, std::string_view section) {
+    return sections_to_json(scenario, section);
 }
 
 void apply_setting(Scenario& scenario, std::string_view assignment) {

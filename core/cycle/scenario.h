@@ -153,6 +153,9 @@ Scenario scenario_from_json(std::string_view text);
 // change. Checked like scenario_from_json, all or nothing.
 Scenario merge_json(const Scenario& base, std::string_view partial_json);
 std::string scenario_to_json(const Scenario& scenario);
+// One section ("machine") as a scenario file holding only it, every key of it
+// written as scenario_to_json writes it: {"machine": {...}}.
+std::string scenario_section_to_json(const Scenario& scenario, std::string_view section);
 // `--set section.key=value`: a decimal number, true/false, or a bare enum word;
 // white space around the value is ignored.
 void apply_setting(Scenario& scenario, std::string_view assignment);

@@ -67,7 +67,9 @@ const std::vector<std::string> kCommands = {"",
                                             "program delay",
                                             "program ring",
                                             "program cycle",
-                                            "import"};
+                                            "import",
+                                            "machine",
+                                            "machine linuxcnc"};
 
 TEST(CliHelp, EveryCommandHasHelpOnStdoutAndExitsZero) {
     for (const std::string& command : kCommands) {

@@ -114,6 +114,7 @@ INSTANTIATE_TEST_SUITE_P(Cli, GoldenOutput, testing::Values(
     Golden{"latency_fit_scatter.json", "latency fit lab_delay_report.csv --interpolation-period-s 0.001 --report REPORT"},
     Golden{"latency_compensate.json", "latency compensate --touch braking --speed-fraction 0.3 --sweep 4"},
     Golden{"compare_run.json",        "compare run --plan comparison/plan.csv --reference-cmm comparison/reference_cmm.csv --test-omm comparison/test_omm.csv --reference-omm comparison/reference_omm.csv --c-axis 200,100 --block-c0 comparison/block_c0.csv --block-c180 comparison/block_c180.csv --tolerance 0.01 --report REPORT"},
+    Golden{"machine_linuxcnc.json",   "machine linuxcnc linuxcnc/mill_inch.ini"},
     Golden{"compare_cerrors.json",    "compare cerrors --block-c0 comparison/block_c0.csv --block-c180 comparison/block_c180.csv --c-axis 200,100"}),
     [](const testing::TestParamInfo<Golden>& case_info) {
         std::string name = fs::path(case_info.param.name).stem().string();
