@@ -552,6 +552,57 @@
     </message>
 </context>
 <context>
+    <name>LinuxCncIni</name>
+    <message>
+        <source>a decimal number</source>
+        <translation>десятичное число</translation>
+    </message>
+    <message>
+        <source>missing section; expected %1 (for %2)</source>
+        <translation>раздел отсутствует; ожидается %1 (для %2)</translation>
+    </message>
+    <message>
+        <source>missing; expected %1 (for %2)</source>
+        <translation>отсутствует; ожидается %1 (для %2)</translation>
+    </message>
+    <message>
+        <source>no value; expected %1 (for %2)</source>
+        <translation>нет значения; ожидается %1 (для %2)</translation>
+    </message>
+    <message>
+        <source>got %1; allowed: %2 (for %3)</source>
+        <translation>получено %1; допустимо: %2 (для %3)</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>строка %1: %2</translation>
+    </message>
+    <message>
+        <source>[%1]: %2</source>
+        <translation>[%1]: %2</translation>
+    </message>
+    <message>
+        <source>[%1] %2: %3</source>
+        <translation>[%1] %2: %3</translation>
+    </message>
+    <message>
+        <source>[%1] %2, line %3: %4</source>
+        <translation>[%1] %2, строка %3: %4</translation>
+    </message>
+    <message>
+        <source>#INCLUDE is not followed; LinuxCNC writes the configuration with its includes to NAME.ini.expanded beside the INI file when it starts: read that file</source>
+        <translation>#INCLUDE не обрабатывается; при запуске LinuxCNC записывает конфигурацию с подключёнными файлами в NAME.ini.expanded рядом с INI-файлом: прочитайте этот файл</translation>
+    </message>
+    <message>
+        <source>a whole number from %1 to %2 ns</source>
+        <translation>целое число от %1 до %2 нс</translation>
+    </message>
+    <message>
+        <source>one of %1, or a number of units per mm</source>
+        <translation>одно из: %1, или число единиц на мм</translation>
+    </message>
+</context>
+<context>
     <name>MachineLog</name>
     <message>
         <source>cannot read &apos;%1&apos;; expected %2</source>
@@ -3199,6 +3250,56 @@
     <message>
         <source>The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), with the values set here</source>
         <translation>Цикл как программа измерения для вашей ЧПУ (LinuxCNC, grbl, типа Fanuc) со значениями, заданными здесь</translation>
+    </message>
+    <message>
+        <source>LinuxCNC (1 ms servo period)</source>
+        <translation>LinuxCNC (период сервоцикла 1 мс)</translation>
+    </message>
+    <message>
+        <source>LinuxCNC 2.9 in exact stop (G61.1), as ProbeCycle&apos;s programs run it: constant acceleration (1000 mm/s²), the probe input read once per 1 ms servo period and braking two periods later, no filter after interpolation, ideal drives. Typical values: replace them with your machine&apos;s, or read them from its INI file with File &gt; Import Machine.</source>
+        <translation>LinuxCNC 2.9 в режиме точного останова (G61.1), как его используют программы ProbeCycle: постоянное ускорение (1000 мм/с²), вход щупа опрашивается раз в период сервоцикла 1 мс, торможение начинается двумя периодами позже, без фильтра после интерполяции, идеальные приводы. Типичные значения: замените их значениями вашего станка или прочитайте их из его INI-файла через «Файл &gt; Импорт станка».</translation>
+    </message>
+    <message>
+        <source>&amp;LinuxCNC INI…</source>
+        <translation>&amp;LinuxCNC INI…</translation>
+    </message>
+    <message>
+        <source>The machine from a LinuxCNC 2.9 configuration: the axes&apos; acceleration and speed limits and the servo period, as ProbeCycle&apos;s LinuxCNC programs (exact stop) meet them. The drives&apos; lag is not in the file and is set to none.</source>
+        <translation>Станок из конфигурации LinuxCNC 2.9: пределы ускорения и скорости осей и период сервоцикла так, как они действуют на программы ProbeCycle для LinuxCNC (точный останов). Запаздывания приводов в файле нет, оно принимается нулевым.</translation>
+    </message>
+    <message>
+        <source>&amp;Import Machine</source>
+        <translation>&amp;Импорт станка</translation>
+    </message>
+    <message>
+        <source>Could not import the machine</source>
+        <translation>Не удалось импортировать станок</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid LinuxCNC configuration:
+%2</source>
+        <translation>%1 — недопустимая конфигурация LinuxCNC:
+%2</translation>
+    </message>
+    <message>
+        <source>import the machine from %1</source>
+        <translation>импорт станка из %1</translation>
+    </message>
+    <message>
+        <source>%1: nothing to change, the machine is already this one</source>
+        <translation>%1: менять нечего, станок уже такой</translation>
+    </message>
+    <message>
+        <source>%1: machine imported (Undo restores): %2</source>
+        <translation>%1: станок импортирован (отмена возвращает прежние значения): %2</translation>
+    </message>
+    <message>
+        <source>Import the machine from a LinuxCNC INI file</source>
+        <translation>Импорт станка из INI-файла LinuxCNC</translation>
+    </message>
+    <message>
+        <source>LinuxCNC configuration (*.ini *.expanded);;All files (*)</source>
+        <translation>Конфигурация LinuxCNC (*.ini *.expanded);;Все файлы (*)</translation>
     </message>
 </context>
 <context>

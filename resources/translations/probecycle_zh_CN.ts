@@ -552,6 +552,57 @@
     </message>
 </context>
 <context>
+    <name>LinuxCncIni</name>
+    <message>
+        <source>a decimal number</source>
+        <translation>十进制数</translation>
+    </message>
+    <message>
+        <source>missing section; expected %1 (for %2)</source>
+        <translation>缺少该节；应包含 %1（用于 %2）</translation>
+    </message>
+    <message>
+        <source>missing; expected %1 (for %2)</source>
+        <translation>缺失；应为 %1（用于 %2）</translation>
+    </message>
+    <message>
+        <source>no value; expected %1 (for %2)</source>
+        <translation>没有值；应为 %1（用于 %2）</translation>
+    </message>
+    <message>
+        <source>got %1; allowed: %2 (for %3)</source>
+        <translation>值为 %1；允许：%2（用于 %3）</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>第 %1 行：%2</translation>
+    </message>
+    <message>
+        <source>[%1]: %2</source>
+        <translation>[%1]：%2</translation>
+    </message>
+    <message>
+        <source>[%1] %2: %3</source>
+        <translation>[%1] %2：%3</translation>
+    </message>
+    <message>
+        <source>[%1] %2, line %3: %4</source>
+        <translation>[%1] %2，第 %3 行：%4</translation>
+    </message>
+    <message>
+        <source>#INCLUDE is not followed; LinuxCNC writes the configuration with its includes to NAME.ini.expanded beside the INI file when it starts: read that file</source>
+        <translation>不处理 #INCLUDE；LinuxCNC 启动时会把展开了所有包含文件的配置写入 INI 文件旁的 NAME.ini.expanded：请读取该文件</translation>
+    </message>
+    <message>
+        <source>a whole number from %1 to %2 ns</source>
+        <translation>%1 到 %2 ns 之间的整数</translation>
+    </message>
+    <message>
+        <source>one of %1, or a number of units per mm</source>
+        <translation>以下之一：%1，或每毫米的单位数</translation>
+    </message>
+</context>
+<context>
     <name>MachineLog</name>
     <message>
         <source>cannot read &apos;%1&apos;; expected %2</source>
@@ -3199,6 +3250,56 @@
     <message>
         <source>The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), with the values set here</source>
         <translation>将此循环生成为适用于您的数控系统（LinuxCNC、grbl、Fanuc 类）的测量程序，使用此处设定的值</translation>
+    </message>
+    <message>
+        <source>LinuxCNC (1 ms servo period)</source>
+        <translation>LinuxCNC（1 ms 伺服周期）</translation>
+    </message>
+    <message>
+        <source>LinuxCNC 2.9 in exact stop (G61.1), as ProbeCycle&apos;s programs run it: constant acceleration (1000 mm/s²), the probe input read once per 1 ms servo period and braking two periods later, no filter after interpolation, ideal drives. Typical values: replace them with your machine&apos;s, or read them from its INI file with File &gt; Import Machine.</source>
+        <translation>准停模式（G61.1）下的 LinuxCNC 2.9，与 ProbeCycle 的程序运行方式相同：恒定加速度（1000 mm/s²），测头输入每个 1 ms 伺服周期读取一次，两个周期后开始制动，无插补后滤波器，理想驱动。典型值：请换成您机床的值，或用“文件 &gt; 导入机床”从其 INI 文件读取。</translation>
+    </message>
+    <message>
+        <source>&amp;LinuxCNC INI…</source>
+        <translation>LinuxCNC INI(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>The machine from a LinuxCNC 2.9 configuration: the axes&apos; acceleration and speed limits and the servo period, as ProbeCycle&apos;s LinuxCNC programs (exact stop) meet them. The drives&apos; lag is not in the file and is set to none.</source>
+        <translation>从 LinuxCNC 2.9 配置读取机床：各轴的加速度和速度限制以及伺服周期，按 ProbeCycle 的 LinuxCNC 程序（准停）所受的作用取值。驱动的滞后不在该文件中，设为无。</translation>
+    </message>
+    <message>
+        <source>&amp;Import Machine</source>
+        <translation>导入机床(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Could not import the machine</source>
+        <translation>无法导入机床</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid LinuxCNC configuration:
+%2</source>
+        <translation>%1 不是有效的 LinuxCNC 配置：
+%2</translation>
+    </message>
+    <message>
+        <source>import the machine from %1</source>
+        <translation>从 %1 导入机床</translation>
+    </message>
+    <message>
+        <source>%1: nothing to change, the machine is already this one</source>
+        <translation>%1：无需更改，机床已与之相同</translation>
+    </message>
+    <message>
+        <source>%1: machine imported (Undo restores): %2</source>
+        <translation>%1：已导入机床（撤销可恢复原值）：%2</translation>
+    </message>
+    <message>
+        <source>Import the machine from a LinuxCNC INI file</source>
+        <translation>从 LinuxCNC INI 文件导入机床</translation>
+    </message>
+    <message>
+        <source>LinuxCNC configuration (*.ini *.expanded);;All files (*)</source>
+        <translation>LinuxCNC 配置 (*.ini *.expanded);;所有文件 (*)</translation>
     </message>
 </context>
 <context>

@@ -34,6 +34,7 @@
 
 #include "core/common/file_io.h"
 #include "core/cycle/cycle_report.h"
+#include "core/program/linuxcnc_ini.h"
 #include "ui/common/app_icon.h"
 #include "ui/common/file_write.h"
 #include "ui/common/language.h"
@@ -81,6 +82,9 @@ const PresetDef kMachinePresets[] = {
     {":/presets/machine_linear_after_interpolation.json",
      QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Linear acc/dec after interpolation"),
      QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "The feed is commanded at once and averaged over 64 ms after interpolation, then a 20 ms servo lag: a touch during the ramp does not brake at once. Typical values: replace them with your machine's.")},
+    {":/presets/machine_linuxcnc.json",
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "LinuxCNC (1 ms servo period)"),
+     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "LinuxCNC 2.9 in exact stop (G61.1), as ProbeCycle's programs run it: constant acceleration (1000 mm/s²), the probe input read once per 1 ms servo period and braking two periods later, no filter after interpolation, ideal drives. Typical values: replace them with your machine's, or read them from its INI file with File > Import Machine.")},
 };
 const PresetDef kProbePresets[] = {
     {":/presets/probe_kinematic_optical.json",
@@ -330,6 +334,9 @@ void MainWindow::build_actions() {
     connect(export_pdf_, &QAction::triggered, this, &MainWindow::export_pdf_dialog);
     export_program_ = new QAction(this);
     connect(export_program_, &QAction::triggered, this, [this] { open_cycle_program_dialog(); });
+    import_linuxcnc_ = new QAction(this);
+    import_linuxcnc_->setObjectName(QStringLiteral("action-import-linuxcnc"));
+    connect(import_linuxcnc_, &QAction::triggered, this, &MainWindow::import_linuxcnc_dialog);
     quit_ = new QAction(this);
     quit_->setShortcut(QKeySequence::Quit);
     quit_->setMenuRole(QAction::QuitRole);
@@ -415,6 +422,10 @@ void MainWindow::build_menus() {
     file_menu_->addAction(save_);
     file_menu_->addAction(save_as_);
     file_menu_->addSeparator();
+    import_machine_menu_ = file_menu_->addMenu(QString());
+    import_machine_menu_->addAction(import_linuxcnc_);
+    import_machine_menu_->setToolTipsVisible(true);
+    file_menu_->addSeparator();
     file_menu_->addAction(export_csv_);
     file_menu_->addAction(export_png_);
     file_menu_->addAction(export_pdf_);
@@ -499,6 +510,11 @@ void MainWindow::retranslate() {
     export_program_->setToolTip(
         tr("The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), "
            "with the values set here"));
+    import_linuxcnc_->setText(tr("&LinuxCNC INI…"));
+    import_linuxcnc_->setToolTip(
+        tr("The machine from a LinuxCNC 2.9 configuration: the axes' acceleration and speed "
+           "limits and the servo period, as ProbeCycle's LinuxCNC programs (exact stop) meet "
+           "them. The drives' lag is not in the file and is set to none."));
     quit_->setText(tr("&Quit"));
     update_undo_texts();
     pin_->setText(tr("&Pin Baseline"));
@@ -521,6 +537,7 @@ void MainWindow::retranslate() {
 
     file_menu_->setTitle(tr("&File"));
     recent_menu_->setTitle(tr("Open &Recent"));
+    import_machine_menu_->setTitle(tr("&Import Machine"));
     edit_menu_->setTitle(tr("&Edit"));
     presets_menu_->setTitle(tr("&Presets"));
     machine_presets_menu_->setTitle(tr("&Machine (skip input, control)"));
@@ -1059,6 +1076,52 @@ bool MainWindow::apply_preset(const QString& resource_path) {
         },
         20000);
     return true;
+}
+
+bool MainWindow::import_linuxcnc_machine(const QString& path) {
+    // Read by core, as the CLI reads it: the same size limit and messages.
+    std::string text;
+    try {
+        text = read_text_file(QFile::encodeName(path).toStdString());
+    } catch (const FileError& e) {
+        report_error(QT_TR_NOOP("Could not import the machine"),
+                     tr("%1 could not be read: %2")
+                         .arg(QDir::toNativeSeparators(path), translate(e.reason())));
+        return false;
+    }
+    Scenario next = scenario_;
+    try {
+        next.machine = machine_from_linuxcnc_ini(text);
+    } catch (const LinuxCncIniError& e) {
+        QStringList problems;
+        for (const IniProblem& problem : e.problems()) problems << translate(problem.to_message());
+        report_error(QT_TR_NOOP("Could not import the machine"),
+                     tr("%1 is not a valid LinuxCNC configuration:\n%2")
+                         .arg(QDir::toNativeSeparators(path), problems.join(QLatin1Char('\n'))));
+        return false;
+    }
+    const QString name = QFileInfo(path).fileName();
+    const Scenario before = scenario_;
+    edit_scenario(next, [name] { return tr("import the machine from %1").arg(name); });
+    remember_folder_of(path);
+    // Say what it overwrote, as a preset does: Undo brings it back.
+    show_status(
+        [name, before, next] {
+            const QStringList changes = changed_keys(before, next);
+            return changes.isEmpty()
+                       ? tr("%1: nothing to change, the machine is already this one").arg(name)
+                       : tr("%1: machine imported (Undo restores): %2")
+                             .arg(name, changes.join(QStringLiteral("; ")));
+        },
+        20000);
+    return true;
+}
+
+void MainWindow::import_linuxcnc_dialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import the machine from a LinuxCNC INI file"), dialog_start(),
+        tr("LinuxCNC configuration (*.ini *.expanded);;All files (*)"));
+    if (!path.isEmpty()) import_linuxcnc_machine(path);
 }
 
 QString MainWindow::preset_name(const QString& resource_path) {

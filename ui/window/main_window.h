@@ -119,6 +119,11 @@ class MainWindow : public QMainWindow {
     bool apply_preset(const QString& resource_path);
     // What the last preset overwrote, "label: old -> new" per key.
     QStringList last_preset_changes() const { return last_preset_changes_; }
+    // File > Import Machine > LinuxCNC INI: the machine a LinuxCNC 2.9 INI
+    // file describes (core/program/linuxcnc_ini.h) replaces the scenario's,
+    // as one undoable edit. A file that cannot be read or is refused changes
+    // nothing and is reported through last_error(), every problem named.
+    bool import_linuxcnc_machine(const QString& path);
     QString current_file() const { return current_file_; }
     QString last_error() const { return last_error_; }
 
@@ -213,6 +218,7 @@ class MainWindow : public QMainWindow {
     void export_csv_dialog();
     void export_png_dialog();
     void export_pdf_dialog();
+    void import_linuxcnc_dialog();
     // `source` drawn at `width` pixels (vector-drawn widgets: no upscaled pixels).
     QPixmap render_widget(QWidget* source, int width) const;
 
@@ -256,6 +262,7 @@ class MainWindow : public QMainWindow {
 
     QMenu* file_menu_{nullptr};
     QMenu* recent_menu_{nullptr};
+    QMenu* import_machine_menu_{nullptr};
     QMenu* edit_menu_{nullptr};
     QMenu* presets_menu_{nullptr};
     QMenu* machine_presets_menu_{nullptr};
@@ -272,6 +279,7 @@ class MainWindow : public QMainWindow {
     QAction* export_png_{nullptr};
     QAction* export_pdf_{nullptr};
     QAction* export_program_{nullptr};
+    QAction* import_linuxcnc_{nullptr};
     QAction* quit_{nullptr};
     QAction* undo_action_{nullptr};
     QAction* redo_action_{nullptr};

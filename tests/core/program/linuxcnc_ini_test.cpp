@@ -129,6 +129,18 @@ TEST(LinuxCncIni, ItsMachineSectionIsAScenarioFile) {
     EXPECT_EQ(scenario_to_json(scenario_from_json(json)), scenario_to_json(s));
 }
 
+// The window's LinuxCNC preset is the sample mill's machine, but for the rapid
+// feed (a machine's own, which no preset sets).
+TEST(LinuxCncIni, ThePresetIsTheSampleMill) {
+    const std::filesystem::path preset =
+        std::filesystem::path(PROBECYCLE_RESOURCES_DIR) / "presets" / "machine_linuxcnc.json";
+    const Scenario from_preset = merge_json(Scenario{}, slurp(preset));
+    Scenario from_ini;
+    from_ini.machine = machine_from_linuxcnc_ini(data("mill_mm.ini"));
+    from_ini.machine.rapid_feed_mm_min = Scenario{}.machine.rapid_feed_mm_min;
+    EXPECT_EQ(scenario_to_json(from_preset), scenario_to_json(from_ini));
+}
+
 struct Units {
     const char* linear_units;
     double mm_per_unit;

@@ -46,6 +46,7 @@ constexpr const char* kPresets[] = {":/presets/machine_standard_skip.json",
                                     ":/presets/machine_high_speed_skip.json",
                                     ":/presets/machine_fanuc_exponential_servo.json",
                                     ":/presets/machine_mitsubishi_g31.json",
+                                    ":/presets/machine_linuxcnc.json",
                                     ":/presets/machine_linear_after_interpolation.json",
                                     ":/presets/machine_latched_input.json",
                                     ":/presets/probe_kinematic_optical.json",
@@ -625,6 +626,83 @@ TEST_F(MainWindowTest, BadFileNamesTheProblemAndKeepsTheCurrentScenario) {
     EXPECT_FALSE(window_->open_scenario(dir.filePath(QStringLiteral("missing.json"))));
     settle();
     EXPECT_EQ(json(), current);
+}
+
+// File > Import Machine > LinuxCNC INI: the machine section is replaced in one
+// undoable edit; the probe and the cycle stay as they were.
+TEST_F(MainWindowTest, ImportingALinuxCncIniIsOneUndoableEdit) {
+    drag_to_fraction(slider("cycle.probe_feed_mm_min"), 0.6);
+    const std::string before = json();
+    const Scenario edited = window_->scenario();
+    const int steps = window_->undo_stack()->count();
+
+    const QString ini = QStringLiteral(PROBECYCLE_TEST_DATA_DIR "/linuxcnc/mill_inch.ini");
+    ASSERT_TRUE(window_->import_linuxcnc_machine(ini)) << window_->last_error().toStdString();
+    settle();
+    const Machine& m = window_->scenario().machine;
+    EXPECT_EQ(m.accel_model, AccelModel::constant_accel);
+    EXPECT_EQ(m.max_accel_mm_s2, 635.0);
+    EXPECT_EQ(m.rapid_feed_mm_min, 3810.0);
+    EXPECT_EQ(m.scan_period_s, 0.0005);
+    EXPECT_EQ(m.controller_latency_s, 0.001);
+    EXPECT_EQ(scenario_to_json(
+                  Scenario{edited.machine, window_->scenario().probe, window_->scenario().cycle}),
+              before);
+    EXPECT_EQ(window_->undo_stack()->count(), steps + 1);
+    EXPECT_TRUE(window_->undo_stack()->undoText().contains(QStringLiteral("mill_inch.ini")))
+        << window_->undo_stack()->undoText().toStdString();
+    EXPECT_TRUE(window_->computed().valid());
+    EXPECT_TRUE(window_->has_unsaved_changes());
+
+    const std::string imported = json();
+    window_->undo_stack()->undo();
+    settle();
+    EXPECT_EQ(json(), before);
+    window_->undo_stack()->redo();
+    settle();
+    EXPECT_EQ(json(), imported);
+
+    // The action sits in File > Import Machine.
+    auto* action = window_->findChild<QAction*>(QStringLiteral("action-import-linuxcnc"));
+    ASSERT_NE(action, nullptr);
+    bool in_file_menu = false;
+    for (QAction* menu : window_->menuBar()->actions()) {
+        if (menu->menu() == nullptr) continue;
+        for (QAction* item : menu->menu()->actions()) {
+            if (item->menu() != nullptr && item->menu()->actions().contains(action)) {
+                in_file_menu = true;
+            }
+        }
+    }
+    EXPECT_TRUE(in_file_menu);
+}
+
+TEST_F(MainWindowTest, ABadLinuxCncIniIsRefusedAndChangesNothing) {
+    drag_to_fraction(slider("cycle.probe_feed_mm_min"), 0.6);
+    const std::string before = json();
+    const int steps = window_->undo_stack()->count();
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("mill.ini"));
+    {
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(
+            "[EMCMOT]\nSERVO_PERIOD = 1000000\n[TRAJ]\nLINEAR_UNITS = mm\n"
+            "[AXIS_X]\nMAX_VELOCITY = 100\nMAX_ACCELERATION = 0.5\n"
+            "[AXIS_Y]\nMAX_VELOCITY = 100\nMAX_ACCELERATION = 800\n"
+            "[AXIS_Z]\nMAX_VELOCITY = 100\nMAX_ACCELERATION = 800\n");
+    }
+    EXPECT_FALSE(window_->import_linuxcnc_machine(path));
+    const QString error = window_->last_error();
+    for (const char* part : {"mill.ini", "[AXIS_X] MAX_ACCELERATION, line 7", "0.5",
+                             "machine.max_accel_mm_s2", "mm/s^2"}) {
+        EXPECT_TRUE(error.contains(QLatin1String(part))) << part << " in " << error.toStdString();
+    }
+    EXPECT_FALSE(window_->import_linuxcnc_machine(dir.filePath(QStringLiteral("missing.ini"))));
+    EXPECT_TRUE(window_->last_error().contains(QStringLiteral("missing.ini")));
+    settle();
+    EXPECT_EQ(json(), before);
+    EXPECT_EQ(window_->undo_stack()->count(), steps);
 }
 
 // Issue 4: the Latency tab's Apply puts the fitted delay into the scenario
