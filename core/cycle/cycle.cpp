@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "core/common/number_format.h"
 #include "core/common/units.h"
@@ -91,6 +90,8 @@ const char* to_string(WarningCode code) {
             return "feed_over_probe_limit";
         case WarningCode::start_inside_uncertainty:
             return "start_inside_uncertainty";
+        case WarningCode::search_ends_too_soon:
+            return "search_ends_too_soon";
     }
     return "?";
 }
@@ -271,12 +272,36 @@ Message Warning::to_message() const {
                       arg("part_position_uncertainty_mm", ArgKind::length_mm, b, 3),
                       arg("needed_mm", ArgKind::length_mm, b + c, 3)};
             break;
+        case WarningCode::search_ends_too_soon:
+            m.text = d > 1.5
+                         ? QT_TRANSLATE_NOOP(
+                               "Warning",
+                               "The second touch's search ends %1 past where the first touch "
+                               "stopped, before its own stop %2 past the surface: it is braking "
+                               "when it touches, triggers below the measuring feed and stops at "
+                               "the search end; search at least %2 past the surface")
+                         : QT_TRANSLATE_NOOP(
+                               "Warning",
+                               "The search ends %1 past the farthest place the surface can be, "
+                               "before the first touch's stop %2 past it: the axis is braking "
+                               "when it touches, triggers below the feed and stops at the search "
+                               "end; search at least %2 past the surface");
+            m.args = {arg("search_beyond_mm", ArgKind::length_mm, a, 3),
+                      significant_arg("stop_mm", ArgKind::length_mm, b, 4),
+                      arg("touch", ArgKind::integer, d > 1.5 ? 2.0 : 1.0)};
+            break;
     }
     return m;
 }
 
 std::string Warning::message() const {
     return render(to_message());
+}
+
+double search_beyond_mm(const Scenario& scenario, double overtravel_mm) {
+    const double set = scenario.cycle.search_beyond_mm;
+    if (set > 0.0) return set;
+    return std::max(overtravel_mm, 0.5 * (overtravel_mm + scenario.probe.overtravel_limit_mm));
 }
 
 // domain.md, "One touch": interface response t_i, controller latency t_c and,
@@ -338,13 +363,6 @@ bool lifts_over(Feature feature) {
 }
 
 namespace {
-
-// Straight from the start of touch k - 1 to the start of touch k (k >= 1):
-// across the centre (2 rho) or, X- to Y+, a quarter turn (sqrt(2) rho).
-double between_starts_mm(const Cycle& cycle, int touch) {
-    const double rho = start_radius_mm(cycle);
-    return touch == 2 ? std::numbers::sqrt2 * rho : 2.0 * rho;
-}
 
 // Long enough for any touch: the approach plan is cut where the axis reacts.
 constexpr double kOpenCruise_s = 1.0e9;
@@ -1026,20 +1044,24 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     // wall at the rapid feed, away from the part).
     const double position_v = mm_min_to_mm_s(c.position_feed_mm_min);
     const bool lift = lifts_over(c.feature);
-    const auto up = [&] {
-        if (lift) b.add_move(Phase::lift, limits, c.clearance_mm, rapid_v, 0.0);
-    };
-    const auto down = [&] {
+    // Out from the centre to a touch's start (over it, then down to the
+    // measuring depth), and back (up over the wall, then over the centre).
+    const double radius = start_radius_mm(c);
+    const auto out_to_start = [&] {
+        if (radius > 0.0) b.add_move(Phase::position, limits, radius, position_v, 0.0);
         if (lift) b.add_move(Phase::lower, limits, c.clearance_mm, position_v, 0.0);
     };
-    if (touches > 1) {
-        b.add_move(Phase::position, limits, start_radius_mm(c), position_v, 0.0);
-        down();
-    }
+    const auto back_to_centre = [&] {
+        if (lift) b.add_move(Phase::lift, limits, c.clearance_mm, rapid_v, 0.0);
+        if (radius > 0.0) b.add_move(Phase::position, limits, radius, position_v, 0.0);
+    };
+    if (touches > 1) out_to_start();
     const std::size_t sequence_first_phase = b.phase_count();
     const std::size_t sequence_first_segment = b.segment_count();
     // One touch sequence: first touch, (backoff, second touch,) return to start.
-    const TouchResult first = b.add_touch(scenario, limits, probe_v, s, kFirstTouch);
+    TouchResult first = b.add_touch(scenario, limits, probe_v, s, kFirstTouch);
+    first.search_mm =
+        s + c.part_position_uncertainty_mm + search_beyond_mm(scenario, first.overtravel_mm);
     TouchResult measuring = first;
     // domain.md, "Strategies": the second touch starts b - overtravel_1 in
     // front of the surface (none left if the backoff is too short). From the
@@ -1062,6 +1084,8 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     double repeat_backoff_cost_s = 0.0;
     if (two_touch) {
         measuring = back_off_and_measure(first, first_backoff_cost_s);
+        measuring.search_mm = backoff_move_mm(c, c.backoff_mm, first) +
+                              search_beyond_mm(scenario, measuring.overtravel_mm);
         if (full) add_touch_warnings(scenario, measuring, 1, r.warnings_);
     }
     // Issue 14: the measuring touch made `repeats` times and averaged. Two-touch
@@ -1093,22 +1117,19 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     r.measuring_ = measuring;
 
     // The other touches of a feature differ only in direction: each is reached
-    // by protected moves (and a lift over a boss or web), then the same
-    // sequence again. The feature's first and last moves join the centre.
+    // from the centre by protected moves, then the same sequence again, then
+    // back to the centre.
     if (touches > 1) {
         const std::size_t sequence_phases = b.phase_count() - sequence_first_phase;
         const std::size_t sequence_segments = b.segment_count() - sequence_first_segment;
+        back_to_centre();
         for (int k = 1; k < touches; ++k) {
             b.set_touch(k);
-            up();
-            b.add_move(Phase::position, limits, between_starts_mm(c, k), position_v, 0.0);
-            down();
+            out_to_start();
             b.replay_sequence(sequence_first_phase, sequence_phases, sequence_first_segment,
                               sequence_segments);
+            back_to_centre();
         }
-        // Back to the centre.
-        up();
-        b.add_move(Phase::position, limits, start_radius_mm(c), position_v, 0.0);
     }
     const double worst_overtravel = std::max(first.overtravel_mm, measuring.overtravel_mm);
     // Two-touch: a faster first touch may overtravel less than the slow second
@@ -1189,6 +1210,17 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
         if (s < part_u + room - 1e-9) {
             w.push_back({WarningCode::start_inside_uncertainty, Severity::warning, s, part_u, room,
                          s <= part_u ? 1.0 : 0.0});
+        }
+    }
+    // A search must reach past its touch's stop (search_beyond_mm). The
+    // automatic value always does; a value set by hand is checked against
+    // the touch that stops farthest past its surface.
+    if (c.search_beyond_mm > 0.0) {
+        const bool second_worse = two_touch && measuring.overtravel_mm > first.overtravel_mm;
+        const double stop = second_worse ? measuring.overtravel_mm : first.overtravel_mm;
+        if (c.search_beyond_mm < stop) {
+            w.push_back({WarningCode::search_ends_too_soon, Severity::error, c.search_beyond_mm,
+                         stop, 0.0, second_worse ? 2.0 : 1.0});
         }
     }
     const double calibration_v = mm_min_to_mm_s(p.calibration_feed_mm_min);

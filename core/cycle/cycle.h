@@ -77,6 +77,9 @@ enum class WarningCode {
     no_valid_feed,
     feed_over_probe_limit,     // issue 14: an error
     start_inside_uncertainty,  // issue 14
+    // A probing move ends before the touch's stop past the farthest place its
+    // surface can be (cycle.search_beyond_mm): an error.
+    search_ends_too_soon,
 };
 const char* to_string(WarningCode code);
 
@@ -104,6 +107,9 @@ struct Warning {
     // start_inside_uncertainty: a = start distance, b = part position uncertainty,
     //                           c = distance to reach the probing feed, d = 1 when the
     //                           start lies inside the uncertainty itself
+    // search_ends_too_soon:     a = cycle.search_beyond_mm, b = the stop it must reach
+    //                           past the surface (the touch's overtravel), d = the touch
+    //                           (1 first, 2 second)
     double a{0.0}, b{0.0}, c{0.0}, d{0.0};
     // The message: code, template and the numbers above as named arguments.
     Message to_message() const;
@@ -162,6 +168,12 @@ struct TouchResult {
     // measurement_delay_s) at the axis's real speed: what calibration takes
     // as v * tau when the touch is at full feed.
     double delay_travel_mm{0.0};
+    // The probing move's length from the touch's start: to the farthest place
+    // the surface can be, plus search_beyond_mm(). The first touch's farthest
+    // surface is the nominal one plus the part position uncertainty; a
+    // second touch's is where the first stopped (its search covers the whole
+    // backoff move, whatever the first touch's real overtravel was).
+    double search_mm{0.0};
 };
 
 class CycleResult {
@@ -219,6 +231,17 @@ class CycleResult {
     TouchResult first_{};
     TouchResult measuring_{};
 };
+
+// How far a touch's search goes past the farthest place its surface can be:
+// cycle.search_beyond_mm, or when that is 0, halfway from the touch's stop
+// (`overtravel_mm` past the surface) to the probe's overtravel limit (never
+// short of the stop). A control plans a probing move to stop at its end, so a
+// search that ends before the touch's stop is already braking when it
+// touches: the trigger comes below the feed and the axis stops at the search
+// end, not where the model puts it. Halfway to the limit leaves a margin past
+// the stop and keeps a probe that fails to trigger at that surface inside
+// its stylus's range.
+double search_beyond_mm(const Scenario& scenario, double overtravel_mm);
 
 // --- Small closed forms (domain.md, "One touch"), each testable alone. ---
 // Travel between trigger and the controller's reaction, worst case (full scan).
@@ -368,11 +391,13 @@ void evaluate_into(const Scenario& scenario, CycleResult& result, MotionCache& c
 // Number of touches of a feature (surface 1, web/pocket 2, bore/boss 4).
 int touch_count(Feature feature);
 
-// The moves of a feature as real cycles make them (issue 11, loose end 6). A
-// pocket or bore starts and ends at the feature centre; each touch starts
-// `approach` inside the wall. A boss or web starts above its centre at the
-// clearance height; each touch starts outside, and the probe lifts over the
-// wall between touches. Touches go X+, X-, Y+, Y- (pocket and web X+, X-).
+// The moves of a feature as real cycles and our programs make them. A pocket
+// or bore starts and ends at the feature centre; each touch starts `approach`
+// inside the wall, reached from the centre and left back to it. A boss or web
+// starts above its centre at the clearance height; each touch starts outside:
+// out over it, down by the clearance, the touch, up by the clearance (over the
+// wall) and back over the centre. Every move runs along one axis and stops
+// at its end. Touches go X+, X-, Y+, Y- (pocket and web X+, X-).
 // The distance from the centre to a touch's start position: D/2 - approach
 // inside a pocket or bore, D/2 + approach outside a boss or web.
 double start_radius_mm(const Cycle& cycle);

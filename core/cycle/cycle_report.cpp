@@ -29,6 +29,14 @@ Json warnings_json(const std::vector<Warning>& warnings) {
     return list;
 }
 
+Json touch_json(const TouchResult& touch) {
+    return {{"programmed_feed_mm_min", mm_s_to_mm_min(touch.programmed_feed_mm_s)},
+            {"trigger_speed_mm_min", mm_s_to_mm_min(touch.trigger_speed_mm_s)},
+            {"overtravel_mm", touch.overtravel_mm},
+            {"recorded_mm", touch.recorded_mm},
+            {"search_mm", touch.search_mm}};
+}
+
 }  // namespace
 
 std::string evaluation_to_json(const Analysis& analysis) {
@@ -52,6 +60,11 @@ std::string evaluation_to_json(const Analysis& analysis) {
         analysis.knee_feed_mm_min ? Json(*analysis.knee_feed_mm_min) : Json(nullptr);
     out["knee_cycle_time_s"] =
         analysis.knee_cycle_time_s ? Json(*analysis.knee_cycle_time_s) : Json(nullptr);
+    // The touches the model distinguishes (the same one twice for
+    // single-touch): where each stops, where the control records it, and how
+    // far its probing move searches from its start.
+    out["first_touch"] = touch_json(r.first_touch());
+    out["measuring_touch"] = touch_json(r.measuring_touch());
     Json phases = Json::array();
     for (const PhaseRecord& p : r.phases()) {
         phases.push_back({{"name", to_string(p.phase)},

@@ -19,6 +19,8 @@ const char* to_string(FixKind kind) {
             return "feed_for_overtravel";
         case FixKind::approach_to_reach_feed:
             return "approach_to_reach_feed";
+        case FixKind::search_past_stop:
+            return "search_past_stop";
     }
     return "?";
 }
@@ -90,6 +92,16 @@ std::optional<Scenario> candidate(const Scenario& scenario, const Analysis& anal
                 s.cycle.part_position_uncertainty_mm + approach_room_mm(s, feed_mm_s), 0.01);
             return s;
         }
+        case FixKind::search_past_stop: {
+            // The stop farthest past its surface, rounded up to the editor's
+            // 0.01 mm so the value shown clears the error.
+            double stop = cycle.first_touch().overtravel_mm;
+            if (s.cycle.strategy == Strategy::two_touch) {
+                stop = std::max(stop, cycle.measuring_touch().overtravel_mm);
+            }
+            s.cycle.search_beyond_mm = round_up_to(stop, 0.01);
+            return s;
+        }
         case FixKind::none:
             break;
     }
@@ -113,6 +125,8 @@ std::vector<FixKind> kinds_for(const Warning& warning) {
                                     : FixKind::backoff_to_recommended};
         case WarningCode::start_inside_uncertainty:
             return {FixKind::approach_to_reach_feed};
+        case WarningCode::search_ends_too_soon:
+            return {FixKind::search_past_stop};
         default:
             break;
     }
@@ -137,7 +151,8 @@ std::optional<Fix> fix_for(const Scenario& scenario, const Analysis& analysis,
         // A fix that changes nothing fixes nothing.
         if (fixed->cycle.backoff_mm == scenario.cycle.backoff_mm &&
             fixed->cycle.probe_feed_mm_min == scenario.cycle.probe_feed_mm_min &&
-            fixed->cycle.approach_mm == scenario.cycle.approach_mm) {
+            fixed->cycle.approach_mm == scenario.cycle.approach_mm &&
+            fixed->cycle.search_beyond_mm == scenario.cycle.search_beyond_mm) {
             continue;
         }
         if (warning.code == WarningCode::feed_beyond_knee) {

@@ -21,6 +21,7 @@ enum class FixKind {
     feed_to_knee,            // the probing feed down to the knee
     feed_for_overtravel,     // the probing feed down to overtravel under 80 % of the limit
     approach_to_reach_feed,  // start far enough out to touch at full feed
+    search_past_stop,        // every search reaches past its touch's stop
 };
 const char* to_string(FixKind kind);
 

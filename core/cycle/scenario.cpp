@@ -304,6 +304,18 @@ const std::vector<KeyEntry>& key_table() {
                     "lies. 0 means a known part."),
                 QT_TRANSLATE_NOOP("Parameter", "Part position uncertainty")},
                PC_NUMBER(cycle, part_position_uncertainty_mm)),
+        number({"cycle.search_beyond_mm", "mm", 0.0, 100.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "How far each probing move searches past the farthest place its surface can "
+                    "be (the nominal surface plus the part position uncertainty; for a second "
+                    "touch or a repeat, where the touch before stopped) before the control gives "
+                    "up. It must reach past the touch's stop: a search that ends sooner is "
+                    "braking when it touches, triggers below the feed and stops at its end. 0 "
+                    "means automatic: halfway from the touch's stop to the probe's overtravel "
+                    "limit."),
+                QT_TRANSLATE_NOOP("Parameter", "Search beyond surface")},
+               PC_NUMBER(cycle, search_beyond_mm)),
         number(
             {"cycle.probe_feed_mm_min", "mm/min", 1.0, 100000.0,
              QT_TRANSLATE_NOOP(

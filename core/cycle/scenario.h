@@ -62,6 +62,12 @@ struct Cycle {
     // How far the surface may lie from nominal; the start distance must cover
     // it plus the distance to reach the probing feed (issue 14). 0 = a known part.
     double part_position_uncertainty_mm{0.0};
+    // How far a probing move searches past the farthest place its surface can
+    // be: the nominal surface plus the part position uncertainty, or for a
+    // second touch or a repeat where the touch before stopped. It must reach
+    // past the touch's stop (search_ends_too_soon). 0 = automatic
+    // (search_beyond_mm() in cycle.h).
+    double search_beyond_mm{0.0};
     // Feed of the (first) touch; single-touch measures at it.
     double probe_feed_mm_min{2000.0};
     // Feed of the second, measuring touch of two-touch.

@@ -28,6 +28,15 @@ namespace probecycle {
 //   (spindle orientation) needs a spindle encoder, so the ring program asks
 //   the operator to orient the spindle at a pause instead.
 // - G21 (mm), G91 (incremental), G94 (units per minute), G0, G1: g-code.adoc.
+// - G61.1, exact stop ("movement will stop at the end of each programmed
+//   segment", g-code.adoc, "G61, G61.1 Exact Path Mode"): every move starts
+//   and ends at rest, as the model's moves do, and is planned at the full
+//   [AXIS_n] MAX_ACCELERATION. Under the default G64 LinuxCNC 2.9 plans every
+//   move at half of it, keeping the other half for blending (tp/tc.c,
+//   tcGetOverallMaxAccel); later versions halve it only during a blend. On
+//   our test machine a G38.2 at 3000 mm/min with 800 mm/s^2 in the INI
+//   braked over 1.5625 mm under G61.1 and 3.125 mm under G64. The program
+//   ends with G64, LinuxCNC's default, for whatever runs next.
 // - A protected move is G38.3 (g-code.adoc, "G38.n Straight Probe": "probe
 //   toward workpiece, stop on contact", no error without a trip; after it
 //   "Parameter 5070 is set to 1 if the probe succeeded and 0 if the probe
@@ -61,7 +70,7 @@ const Dialect& linuxcnc_dialect() {
         .comment_open = ";",
         .comment_close = "",
         .program_start = {},
-        .modes = "G21 G91 G94",
+        .modes = "G21 G91 G94 G61.1",
         .probe_word = "G38.2",
         .rapid_word = "G0",
         .feed_word = "G1",
@@ -79,7 +88,7 @@ const Dialect& linuxcnc_dialect() {
                         "o{label} endif"},
         .after_recorded_probe = {"(LOG,probecycle touch {n} %.6f#5061 #5062 #5063)"},
         .close_record = {"(LOGCLOSE)", "(PROBECLOSE)"},
-        .end = {"G90", "M2"},
+        .end = {"G90 G64", "M2"},
         .after_end = {},
         .guard_alarm = {},
         .file_end = {},

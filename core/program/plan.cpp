@@ -24,18 +24,33 @@ constexpr std::size_t kMaxDepth = 3;  // root > steps > step
 // (up, where more room is the safe side), so that the program and the plan
 // agree to the digit.
 constexpr double kStep_mm = 0.001;
-// How far a probing move may go past where the surface is expected before
-// the control gives up with an alarm: a little, and never more than half the
-// stylus's overtravel range.
-constexpr double kMaxSearchBeyond_mm = 1.0;
-
 Message program_message(const char* code, const char* text, std::vector<MessageArg> args) {
     return Message{code, "Program", text, std::move(args)};
 }
 
-double search_beyond_mm(const Scenario& scenario) {
-    return round_up_to(std::min(kMaxSearchBeyond_mm, 0.5 * scenario.probe.overtravel_limit_mm),
-                       kStep_mm);
+// How far a touch at `feed_mm_min` that stops `overtravel_mm` past its
+// surface searches past the farthest place that surface can be: the model's
+// (search_beyond_mm, cycle.h). Every probing move is that far past the
+// farthest surface, so the control never brakes for the move's end before the
+// touch has stopped where the model puts it. InputError when
+// cycle.search_beyond_mm is set and does not reach the stop.
+double checked_search_beyond_mm(const Scenario& scenario, double feed_mm_min,
+                                double overtravel_mm) {
+    const double set = scenario.cycle.search_beyond_mm;
+    if (set > 0.0 && set < overtravel_mm) {
+        Message allowed = allowed_text(
+            "program_search_beyond",
+            QT_TRANSLATE_NOOP("FieldError",
+                              "at least %1, the stop of the touch at %2 past its surface (a "
+                              "search that ends sooner is braking when it touches), or 0 for "
+                              "automatic"));
+        allowed.args = {significant_arg("stop_mm", ArgKind::length_mm, overtravel_mm, 4),
+                        arg("feed_mm_min", ArgKind::feed_mm_min, feed_mm_min)};
+        throw InputError(
+            FieldError{"cycle.search_beyond_mm", format_number(set), std::move(allowed)}
+                .to_message());
+    }
+    return search_beyond_mm(scenario, overtravel_mm);
 }
 
 // The model's single touch at `feed_mm_min` from `approach_mm`.
@@ -165,30 +180,37 @@ std::string repeat_text(int k, int repeats) {
 }
 
 // One point touched with the scenario's strategy from `distance_mm` before the
-// surface (the first move may need `extra_mm` more), then back to
+// nominal surface, which may lie up to `uncertainty_mm` farther, then back to
 // `distance_mm` before it (its recorded probes carry `orientation_deg`).
 // Single-touch: a recorded touch at the probing feed. Two-touch: a fast
 // touch, the backoff, the measuring touch (recorded). The measuring touch is
 // made `repeats` times, as the model averages them (cycle.repeats):
 // single-touch back to the start and again; two-touch backed off from where
 // the measuring touch stopped and again at the measuring feed.
+// Every search ends checked_search_beyond_mm() past the farthest place its
+// surface can be: the first past the nominal surface plus the uncertainty;
+// every later one past where the touch before stopped, so it covers the whole
+// move back from there (the backoff, or the return of a single-touch repeat)
+// even where the real overtravel differs from the model's.
 void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection& at,
-               double distance_mm, double extra_mm, double orientation_deg,
+               double distance_mm, double uncertainty_mm, double orientation_deg,
                const std::string& back_to, int repeats) {
     const Cycle& c = scenario.cycle;
-    const double beyond = search_beyond_mm(scenario);
     const std::string name = to_string(at);
     if (c.strategy == Strategy::single_touch) {
         const double overtravel = checked_overtravel_mm(scenario, c.probe_feed_mm_min, distance_mm);
+        const double beyond = checked_search_beyond_mm(scenario, c.probe_feed_mm_min, overtravel);
+        const double back = distance_mm + overtravel;
         for (int k = 1; k <= repeats; ++k) {
-            // (The repeats start where the first did: no search for the surface.)
-            const double extra = k == 1 ? extra_mm : 0.0;
+            // A repeat starts where the first did, from where it stopped.
+            const double farthest =
+                k == 1 ? distance_mm + uncertainty_mm : round_up_to(back, kStep_mm);
             plan.steps.push_back(probe_step(
-                at, distance_mm + extra + beyond, c.probe_feed_mm_min, true,
+                at, farthest + beyond, c.probe_feed_mm_min, true,
                 name + repeat_text(k, repeats) + " at " + feed_text(c.probe_feed_mm_min)));
             plan.steps.back().orientation_deg = orientation_deg;
-            plan.steps.push_back(move_back(at, distance_mm + overtravel, c.return_feed_mm_min,
-                                           "back to the " + back_to));
+            plan.steps.push_back(
+                move_back(at, back, c.return_feed_mm_min, "back to the " + back_to));
         }
         return;
     }
@@ -220,15 +242,22 @@ void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection&
              significant_arg("overtravel_mm", ArgKind::length_mm, first_overtravel, 4),
              arg("recommended_mm", ArgKind::length_mm, result.recommended_backoff_mm())}));
     }
-    plan.steps.push_back(probe_step(at, distance_mm + extra_mm + beyond, c.probe_feed_mm_min, false,
+    const TouchResult& measuring = result.measuring_touch();
+    const double first_beyond =
+        checked_search_beyond_mm(scenario, c.probe_feed_mm_min, first_overtravel);
+    const double measuring_beyond =
+        checked_search_beyond_mm(scenario, c.measure_feed_mm_min, measuring.overtravel_mm);
+    plan.steps.push_back(probe_step(at, distance_mm + uncertainty_mm + first_beyond,
+                                    c.probe_feed_mm_min, false,
                                     name + " first touch at " + feed_text(c.probe_feed_mm_min)));
     plan.steps.push_back(move_back(at, backoff, c.return_feed_mm_min, "backoff"));
-    plan.steps.push_back(probe_step(at, backoff - first_overtravel + beyond, c.measure_feed_mm_min,
-                                    true,
+    // From the backoff's end the surface lies at most the backoff away (the
+    // probe stopped past it).
+    plan.steps.push_back(probe_step(at, round_up_to(backoff, kStep_mm) + measuring_beyond,
+                                    c.measure_feed_mm_min, true,
                                     name + " measuring touch" + repeat_text(1, repeats) + " at " +
                                         feed_text(c.measure_feed_mm_min)));
     plan.steps.back().orientation_deg = orientation_deg;
-    const TouchResult& measuring = result.measuring_touch();
     double last_overtravel = measuring.overtravel_mm;
     if (repeats > 1) {
         // The model's repeat (cycle.cpp): from the measuring touch's stop the
@@ -241,10 +270,13 @@ void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection&
         }
         const double repeat_distance = repeat_backoff - measuring.overtravel_mm;
         last_overtravel = checked_overtravel_mm(scenario, c.measure_feed_mm_min, repeat_distance);
+        const double repeat_beyond =
+            checked_search_beyond_mm(scenario, c.measure_feed_mm_min, last_overtravel);
         for (int k = 2; k <= repeats; ++k) {
             plan.steps.push_back(move_back(at, repeat_backoff, c.return_feed_mm_min, "backoff"));
-            plan.steps.push_back(probe_step(at, repeat_distance + beyond, c.measure_feed_mm_min,
-                                            true,
+            plan.steps.push_back(probe_step(at,
+                                            round_up_to(repeat_backoff, kStep_mm) + repeat_beyond,
+                                            c.measure_feed_mm_min, true,
                                             name + " measuring touch" + repeat_text(k, repeats) +
                                                 " at " + feed_text(c.measure_feed_mm_min)));
             plan.steps.back().orientation_deg = orientation_deg;
@@ -337,13 +369,17 @@ void add_feature_touches(ProbingPlan& plan, const Scenario& scenario,
     const std::string along = c.feature == Feature::pocket || c.feature == Feature::web
                                   ? std::string(" along ") + options.touch.axis
                                   : std::string();
-    const std::string tolerance = "(within " + mm_text(search_beyond_mm(scenario)) + ")";
-    plan.steps.push_back(pause_step(
-        outside ? "check: the probe ball stands over the centre of the " + feature + along + " " +
-                      tolerance + ", " + mm_text(clearance) +
-                      " above the measuring depth; resume to start"
-                : "check: the probe ball stands at the centre of the " + feature + along + " " +
-                      tolerance + " at the measuring depth; resume to start"));
+    // The searches reach the part position uncertainty past each nominal
+    // wall: how far off centre the probe may stand.
+    const double uncertainty = c.part_position_uncertainty_mm;
+    const std::string tolerance =
+        uncertainty > 0.0 ? " (within " + mm_text(uncertainty) + ")" : std::string();
+    plan.steps.push_back(
+        pause_step(outside ? "check: the probe ball stands over the centre of the " + feature +
+                                 along + tolerance + ", " + mm_text(clearance) +
+                                 " above the measuring depth; resume to start"
+                           : "check: the probe ball stands at the centre of the " + feature +
+                                 along + tolerance + " at the measuring depth; resume to start"));
     for (const AxisDirection& side : feature_sides(c.feature, options.touch.axis)) {
         const std::string name = to_string(side);
         if (!outside) {
@@ -353,7 +389,7 @@ void add_feature_touches(ProbingPlan& plan, const Scenario& scenario,
                 plan.steps.push_back(
                     guard_step(side, radius, feed, "out to the start of the " + name + " touch"));
             }
-            add_point(plan, scenario, side, c.approach_mm, 0.0, 0.0, "start", repeats);
+            add_point(plan, scenario, side, c.approach_mm, uncertainty, 0.0, "start", repeats);
             if (radius > 0.0) {
                 plan.steps.push_back(
                     guard_step(opposite(side), radius, feed, "back to the centre"));
@@ -364,7 +400,8 @@ void add_feature_touches(ProbingPlan& plan, const Scenario& scenario,
             guard_step(side, radius, feed, "out over the start of the " + name + " side"));
         plan.steps.push_back(guard_step(down, clearance, feed, "down to the measuring depth"));
         // The side faces away from the centre: it is touched toward it.
-        add_point(plan, scenario, opposite(side), c.approach_mm, 0.0, 0.0, "start", repeats);
+        add_point(plan, scenario, opposite(side), c.approach_mm, uncertainty, 0.0, "start",
+                  repeats);
         plan.steps.push_back(move_step(opposite(down), clearance, 0.0, "up by the clearance"));
         plan.steps.push_back(guard_step(opposite(side), radius, feed, "back over the centre"));
     }
@@ -466,7 +503,13 @@ ProbingPlan make_delay_plan(const Scenario& scenario, const DelayPlanOptions& op
             round_up_to(approach_room_mm(scenario, feed / 60.0) + options.margin_mm, kStep_mm));
         overtravel_mm.push_back(checked_overtravel_mm(scenario, feed, start_mm.back()));
     }
-    const double beyond = search_beyond_mm(scenario);
+    // Every search ends checked_search_beyond_mm() past the farthest place the
+    // surface can be: the locating touch's past the placement, every later
+    // one's past where the touch before stopped (the whole retract).
+    std::vector<double> beyond_mm;
+    for (std::size_t f = 0; f < feeds.size(); ++f) {
+        beyond_mm.push_back(checked_search_beyond_mm(scenario, feeds[f], overtravel_mm[f]));
+    }
     {
         const AxisDirection& group = options.touch;
         const std::string name = to_string(group);
@@ -476,19 +519,23 @@ ProbingPlan make_delay_plan(const Scenario& scenario, const DelayPlanOptions& op
                        "; resume to start"));
         const double locate_overtravel =
             checked_overtravel_mm(scenario, feeds.front(), options.placement_mm);
-        plan.steps.push_back(probe_step(group, options.placement_mm, feeds.front(), false,
-                                        "locate the surface at " + feed_text(feeds.front())));
+        plan.steps.push_back(
+            probe_step(group,
+                       options.placement_mm +
+                           checked_search_beyond_mm(scenario, feeds.front(), locate_overtravel),
+                       feeds.front(), false, "locate the surface at " + feed_text(feeds.front())));
         double stop_beyond = locate_overtravel;  // where the previous touch left the probe
         for (std::size_t f = 0; f < feeds.size(); ++f) {
             for (int r = 0; r < options.repeats; ++r) {
-                plan.steps.push_back(move_back(group, start_mm[f] + stop_beyond, 0.0,
+                const double retract = start_mm[f] + stop_beyond;
+                plan.steps.push_back(move_back(group, retract, 0.0,
                                                "to " + mm_text(start_mm[f]) +
                                                    " before the surface: room to reach " +
                                                    feed_text(feeds[f]) + " plus the margin"));
-                plan.steps.push_back(probe_step(group, start_mm[f] + beyond, feeds[f], true,
-                                                name + " at " + feed_text(feeds[f]) + ", " +
-                                                    std::to_string(r + 1) + " of " +
-                                                    std::to_string(options.repeats)));
+                plan.steps.push_back(
+                    probe_step(group, round_up_to(retract, kStep_mm) + beyond_mm[f], feeds[f], true,
+                               name + " at " + feed_text(feeds[f]) + ", " + std::to_string(r + 1) +
+                                   " of " + std::to_string(options.repeats)));
                 stop_beyond = overtravel_mm[f];
             }
         }
@@ -567,7 +614,8 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
                                     mm_text(scenario.cycle.approach_mm) +
                                     " in front of the surface, touching along " +
                                     to_string(options.touch) + "; resume to start"));
-    add_point(plan, scenario, options.touch, scenario.cycle.approach_mm, 0.0, 0.0, "start",
+    add_point(plan, scenario, options.touch, scenario.cycle.approach_mm,
+              scenario.cycle.part_position_uncertainty_mm, 0.0, "start",
               measuring_repeats(scenario));
     return plan;
 }

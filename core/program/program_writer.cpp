@@ -104,11 +104,12 @@ const char* feature_description(std::string_view feature) {
     return nullptr;
 }
 
-// The model moves straight from start to start (over the top of a boss or web).
-constexpr const char* kThroughTheCentre =
-    "\nThe model moves straight from one touch's start to the next; this program\n"
-    "goes back through the centre between touches, so it runs a little longer\n"
-    "than the model's cycle time.";
+// How far every probing move searches (plan.h, checked_search_beyond_mm).
+constexpr const char* kSearchNote =
+    "\nEvery probing move searches past the farthest place its surface can be by\n"
+    "more than the touch's stop (cycle.search_beyond_mm), and every later one\n"
+    "covers the whole move back before it: the axis is never braking for the\n"
+    "move's end when it touches.";
 
 const char* description(ProgramKind kind) {
     switch (kind) {
@@ -134,10 +135,10 @@ std::string description(const ProbingPlan& plan) {
         for (const PlanValue& value : plan.values) {
             const char* text =
                 value.key == "cycle.feature" ? feature_description(value.text) : nullptr;
-            if (text != nullptr) return std::string(text) + kThroughTheCentre;
+            if (text != nullptr) return std::string(text) + kSearchNote;
         }
     }
-    return description(plan.kind);
+    return std::string(description(plan.kind)) + kSearchNote;
 }
 
 std::size_t axis_index(char axis) {

@@ -53,6 +53,8 @@ const KeyText kKeyTexts[] = {
     {"cycle.approach_mm", QT_TRANSLATE_NOOP("Parameter", "mm"), 1.0, 3, SliderScale::none, 0.0, 0.0, nullptr},
     {"cycle.part_position_uncertainty_mm", QT_TRANSLATE_NOOP("Parameter", "mm"), 1.0, 3, SliderScale::none, 0.0, 0.0,
      QT_TRANSLATE_NOOP("Parameter", "known part")},
+    {"cycle.search_beyond_mm", QT_TRANSLATE_NOOP("Parameter", "mm"), 1.0, 3, SliderScale::none, 0.0, 0.0,
+     QT_TRANSLATE_NOOP("Parameter", "automatic")},
     {"cycle.probe_feed_mm_min", QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::log, 10.0, 10000.0, nullptr},
     {"cycle.measure_feed_mm_min", QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
     {"cycle.backoff_mm", QT_TRANSLATE_NOOP("Parameter", "mm"), 1.0, 3, SliderScale::linear, 0.0, 10.0, nullptr},

@@ -130,6 +130,8 @@ QString warning_title(WarningCode code) {
         case WarningCode::start_inside_uncertainty:
             return tr_warning(
                 QT_TRANSLATE_NOOP("Warning", "Start within the part's position uncertainty"));
+        case WarningCode::search_ends_too_soon:
+            return tr_warning(QT_TRANSLATE_NOOP("Warning", "Search ends before the stop"));
     }
     return QString::fromUtf8(to_string(code));
 }

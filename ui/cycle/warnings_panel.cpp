@@ -134,6 +134,9 @@ QString fix_text(const Fix& fix) {
             return WarningsPanel::tr("Drop feed to %1").arg(format_feed(c.probe_feed_mm_min));
         case FixKind::approach_to_reach_feed:
             return WarningsPanel::tr("Start %1 out").arg(format_mm(c.approach_mm));
+        case FixKind::search_past_stop:
+            return WarningsPanel::tr("Search %1 past the surface")
+                .arg(format_mm(c.search_beyond_mm));
         case FixKind::none:
             break;
     }

@@ -1311,6 +1311,8 @@ bool MainWindow::apply_fix_for(const QString& warning_code) {
                 return tr("drop feed for the overtravel");
             case FixKind::approach_to_reach_feed:
                 return tr("start far enough out to reach the feed");
+            case FixKind::search_past_stop:
+                return tr("search past the touch's stop");
             case FixKind::none:
                 break;
         }

@@ -291,7 +291,8 @@ TEST(CsvReport, SummaryHasEvaluatesKeysRoundedToTheModelsDigits) {
         }
         std::set<std::string> want;
         for (const auto& [key, value] : j.items()) {
-            if (key != "phases" && key != "warnings") want.insert(key);
+            // The phases, the warnings and the touches have tables of their own.
+            if (key != "phases" && key != "warnings" && !value.is_object()) want.insert(key);
         }
         EXPECT_EQ(keys, want);
     }

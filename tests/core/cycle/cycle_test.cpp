@@ -108,14 +108,15 @@ std::vector<Phase> cycle_sequence(Strategy strategy, Feature feature) {
     const bool lift = feature == Feature::boss || feature == Feature::web;
     const std::vector<Phase> one = touch_sequence(strategy);
     if (n == 1) return one;
+    // Each touch from the centre and back to it (over and down, up and back
+    // for a boss or web).
     for (int i = 0; i < n; ++i) {
-        if (i > 0 && lift) out.push_back(Phase::lift);
         out.push_back(Phase::position);
         if (lift) out.push_back(Phase::lower);
         out.insert(out.end(), one.begin(), one.end());
+        if (lift) out.push_back(Phase::lift);
+        out.push_back(Phase::position);
     }
-    if (lift) out.push_back(Phase::lift);
-    out.push_back(Phase::position);
     return out;
 }
 
@@ -165,6 +166,7 @@ TEST(WarningNames, Exact) {
     EXPECT_STREQ(to_string(WarningCode::calibration_feed_mismatch), "calibration_feed_mismatch");
     EXPECT_STREQ(to_string(WarningCode::feed_over_probe_limit), "feed_over_probe_limit");
     EXPECT_STREQ(to_string(WarningCode::start_inside_uncertainty), "start_inside_uncertainty");
+    EXPECT_STREQ(to_string(WarningCode::search_ends_too_soon), "search_ends_too_soon");
     EXPECT_STREQ(to_string(Severity::info), "info");
     EXPECT_STREQ(to_string(Severity::warning), "warning");
     EXPECT_STREQ(to_string(Severity::error), "error");
@@ -574,23 +576,23 @@ INSTANTIATE_TEST_SUITE_P(
                                      Feature::boss),
                      testing::Values(Strategy::single_touch, Strategy::two_touch)));
 
-// Issue 11, loose end 6, by hand. Contact points 50 mm apart, 5 mm approach.
-TEST(FeatureCycle, PocketFromItsCentreAcrossAndBack) {
+// By hand. Contact points 50 mm apart, 5 mm approach.
+TEST(FeatureCycle, PocketFromItsCentreToEachStartAndBack) {
     Scenario s = surface(Strategy::single_touch, 3000.0);
     s.cycle.feature = Feature::pocket;
     s.cycle.feature_size_mm = 50.0;
     const CycleResult r = evaluate(s);
-    // Centre to the X+ start: 25 - 5 = 20 mm; across to the X- start: 40 mm; back: 20 mm.
+    // Centre to the X+ start: 25 - 5 = 20 mm and back, then the same to the
+    // X- start: the probe stops at the centre between the touches, as the
+    // programs move.
     std::vector<double> moves;
     for (const PhaseRecord& p : r.phases()) {
         if (p.phase == Phase::position) moves.push_back(p.distance_mm);
     }
-    ASSERT_EQ(moves.size(), 3u) << describe(r);
-    EXPECT_NEAR(moves[0], 20.0, 1e-12);
-    EXPECT_NEAR(moves[1], 40.0, 1e-12);
-    EXPECT_NEAR(moves[2], 20.0, 1e-12);
+    ASSERT_EQ(moves.size(), 4u) << describe(r);
+    for (double move : moves) EXPECT_NEAR(move, 20.0, 1e-12);
     // At 3000 mm/min (50 mm/s), T = 0.06 s: a long move takes d / v + T.
-    EXPECT_NEAR(r.phase_time(Phase::position), 80.0 / 50.0 + 3 * 0.06, 1e-9);
+    EXPECT_NEAR(r.phase_time(Phase::position), 4 * (20.0 / 50.0 + 0.06), 1e-9);
     EXPECT_EQ(r.phase_time(Phase::lift), 0.0);
 }
 
@@ -600,9 +602,8 @@ TEST(FeatureCycle, BossLiftsOverTheWallBetweenTouches) {
     s.cycle.feature_size_mm = 50.0;
     s.cycle.clearance_mm = 10.0;
     const CycleResult r = evaluate(s);
-    // Starts 25 + 5 = 30 mm from the centre: out 30, across 60 (X+ to X-),
-    // 30 sqrt 2 (X- to Y+), 60 (Y+ to Y-), back 30; down 10 before each touch,
-    // up 10 after each.
+    // Starts 25 + 5 = 30 mm from the centre: for each side out 30 over its
+    // start, down 10, the touch, up 10, back 30 over the centre.
     std::vector<double> moves;
     int lifts = 0;
     int lowers = 0;
@@ -611,12 +612,9 @@ TEST(FeatureCycle, BossLiftsOverTheWallBetweenTouches) {
         lifts += p.phase == Phase::lift ? 1 : 0;
         lowers += p.phase == Phase::lower ? 1 : 0;
     }
-    ASSERT_EQ(moves.size(), 5u) << describe(r);
-    EXPECT_NEAR(moves[0], 30.0, 1e-12);
-    EXPECT_NEAR(moves[1], 60.0, 1e-12);
-    EXPECT_NEAR(moves[2], 30.0 * std::sqrt(2.0), 1e-12);
-    EXPECT_NEAR(moves[3], 60.0, 1e-12);
-    EXPECT_NEAR(moves[4], 30.0, 1e-12);
+    ASSERT_EQ(moves.size(), 8u) << describe(r);
+    for (double move : moves) EXPECT_NEAR(move, 30.0, 1e-12);
+    EXPECT_NEAR(r.phase_time(Phase::position), 8 * (30.0 / 50.0 + 0.06), 1e-9);
     EXPECT_EQ(lifts, 4);
     EXPECT_EQ(lowers, 4);
     // Down at 50 mm/s: 10 / 50 + 0.06 s. Up at the 30000 mm/min rapid, which
@@ -1102,6 +1100,77 @@ TEST(Warnings, StartInsideThePartsPositionUncertainty) {
     s.cycle.part_position_uncertainty_mm = 0.0;
     s.cycle.approach_mm = 1.5;
     EXPECT_EQ(find_warning(evaluate(s), WarningCode::start_inside_uncertainty), nullptr);
+}
+
+// Where each touch's probing move ends, by hand. At 3000 mm/min (T = 0.06 s)
+// the first touch stops 1.905 mm past the surface (pretravel 0.005, 50 mm/s
+// through 8 ms of delays, 1.5 mm of braking), the measuring touch at 30
+// mm/min 0.024 mm past it; the probe's limit is 5 mm.
+TEST(Search, EachTouchSearchesPastItsStopFromTheFarthestSurface) {
+    Scenario s = clean_two_touch();  // backoff 2.105 mm
+    CycleResult r = evaluate(s);
+    ASSERT_NEAR(r.first_touch().overtravel_mm, 1.905, 1e-12);
+    ASSERT_NEAR(r.measuring_touch().overtravel_mm, 0.024, 1e-12);
+    // Automatic: halfway from the stop to the limit, past the farthest surface:
+    // the nominal one for the first touch, the first touch's stop (the whole
+    // backoff away) for the measuring touch.
+    EXPECT_NEAR(search_beyond_mm(s, 1.905), 3.4525, 1e-12);
+    EXPECT_NEAR(r.first_touch().search_mm, 5.0 + 3.4525, 1e-12);
+    EXPECT_NEAR(r.measuring_touch().search_mm, 2.105 + 2.512, 1e-12);
+    // The part may lie 0.75 mm farther: the first search goes that much farther.
+    s.cycle.part_position_uncertainty_mm = 0.75;
+    s.cycle.approach_mm = 5.0;
+    r = evaluate(s);
+    EXPECT_NEAR(r.first_touch().search_mm, 5.75 + 3.4525, 1e-12);
+    EXPECT_NEAR(r.measuring_touch().search_mm, 2.105 + 2.512, 1e-12);
+    // Backed off from the recorded trigger, the backoff move is longer by the
+    // stop's distance from it, and the measuring search covers it too.
+    s.cycle.backoff_from = BackoffFrom::trigger;
+    r = evaluate(s);
+    const TouchResult& first = r.first_touch();
+    EXPECT_NEAR(r.measuring_touch().search_mm,
+                2.105 + first.overtravel_mm - first.recorded_mm + 2.512, 1e-12);
+    // Set by hand, every search goes that far past its farthest surface.
+    s = clean_two_touch();
+    s.cycle.search_beyond_mm = 2.0;
+    r = evaluate(s);
+    EXPECT_NEAR(r.first_touch().search_mm, 7.0, 1e-12);
+    EXPECT_NEAR(r.measuring_touch().search_mm, 4.105, 1e-12);
+    EXPECT_EQ(find_warning(r, WarningCode::search_ends_too_soon), nullptr) << describe(r);
+    // A probe whose limit its stop already overruns searches to the stop.
+    EXPECT_DOUBLE_EQ(search_beyond_mm(Scenario{}, 6.0), 6.0);
+}
+
+TEST(Search, ASearchSetByHandThatEndsBeforeTheStopIsAnError) {
+    Scenario s = clean_two_touch();
+    s.cycle.search_beyond_mm = 1.5;
+    CycleResult r = evaluate(s);
+    const Warning* w = find_warning(r, WarningCode::search_ends_too_soon);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_EQ(w->severity, Severity::error);
+    EXPECT_FALSE(r.valid());
+    EXPECT_NEAR(w->a, 1.5, 1e-12);
+    EXPECT_NEAR(w->b, 1.905, 1e-12);
+    EXPECT_EQ(w->d, 1.0);
+    EXPECT_EQ(w->message(),
+              "The search ends 1.500 mm past the farthest place the surface can be, before the "
+              "first touch's stop 1.905 mm past it: the axis is braking when it touches, "
+              "triggers below the feed and stops at the search end; search at least 1.905 mm "
+              "past the surface");
+    // A measuring touch faster than the first stops farther: that touch is named.
+    s = surface(Strategy::two_touch, 300.0);
+    s.cycle.measure_feed_mm_min = 3000.0;
+    s.cycle.backoff_mm = evaluate(s).recommended_backoff_mm();
+    s.cycle.search_beyond_mm = 1.0;
+    r = evaluate(s);
+    w = find_warning(r, WarningCode::search_ends_too_soon);
+    ASSERT_NE(w, nullptr) << describe(r);
+    EXPECT_EQ(w->d, 2.0);
+    EXPECT_NEAR(w->b, 1.905, 1e-12);
+    EXPECT_EQ(w->to_message().args.back().number, 2.0);  // the touch, a whole number
+    // Automatic never ends too soon.
+    s.cycle.search_beyond_mm = 0.0;
+    EXPECT_EQ(find_warning(evaluate(s), WarningCode::search_ends_too_soon), nullptr);
 }
 
 TEST(Warnings, CalibrationFeedMismatch) {

@@ -146,6 +146,19 @@ TEST(Fixes, WarningsWithoutAFixOfferNone) {
     EXPECT_FALSE(fix_for(s, a, *w));
 }
 
+// A search set by hand to 1 mm past the surface ends before the default
+// two-touch's first stop, 1.272 mm past it at 2000 mm/min: the fix searches
+// that far, rounded up to the editor's 0.01 mm.
+TEST(Fixes, SearchEndingBeforeTheStopSearchesPastIt) {
+    Scenario s;
+    s.cycle.search_beyond_mm = 1.0;
+    const std::optional<Fix> fix = fix_of(s, WarningCode::search_ends_too_soon);
+    ASSERT_TRUE(fix.has_value());
+    EXPECT_EQ(fix->kind, FixKind::search_past_stop);
+    EXPECT_DOUBLE_EQ(fix->scenario.cycle.search_beyond_mm, 1.28);
+    EXPECT_EQ(find(evaluate(fix->scenario), WarningCode::search_ends_too_soon), nullptr);
+}
+
 // Every fix offered on every example and preset, both strategies, from slow to
 // past the limit, clears the warning it fixes in the full analysis, and the
 // scenario it makes is valid input.
@@ -166,11 +179,14 @@ TEST(Fixes, EveryFixOnEveryExampleAndPresetClearsItsWarning) {
             const Scenario with_preset = merge_json(base, slurp(preset));
             for (Strategy strategy : {Strategy::single_touch, Strategy::two_touch}) {
                 for (double feed : {300.0, 3000.0, 6000.0, 9500.0, 15000.0}) {
+                    // A start too close to reach the feed; a search set
+                    // by hand to 1 mm past the surface.
                     for (double approach : {0.2, 5.0}) {
                         Scenario s = with_preset;
                         s.cycle.strategy = strategy;
                         s.cycle.probe_feed_mm_min = feed;
                         s.cycle.approach_mm = approach;
+                        s.cycle.search_beyond_mm = approach > 1.0 ? 1.0 : 0.0;
                         if (!validate(s).empty()) continue;
                         const Analysis a = analyse(s);
                         for (const Warning& w : a.cycle.warnings()) {
@@ -192,8 +208,9 @@ TEST(Fixes, EveryFixOnEveryExampleAndPresetClearsItsWarning) {
     }
     // Every kind of fix was exercised, not a handful.
     EXPECT_GT(offered, 100);
-    for (FixKind kind : {FixKind::backoff_to_recommended, FixKind::feed_to_knee,
-                         FixKind::feed_for_overtravel, FixKind::approach_to_reach_feed}) {
+    for (FixKind kind :
+         {FixKind::backoff_to_recommended, FixKind::feed_to_knee, FixKind::feed_for_overtravel,
+          FixKind::approach_to_reach_feed, FixKind::search_past_stop}) {
         EXPECT_GT(by_kind[kind], 0) << to_string(kind);
     }
 }

@@ -116,6 +116,7 @@ const std::vector<std::string> kNumericKeys = {
     "probe.calibration_feed_mm_min",
     "cycle.feature_size_mm",
     "cycle.approach_mm",
+    "cycle.search_beyond_mm",
     "cycle.probe_feed_mm_min",
     "cycle.measure_feed_mm_min",
     "cycle.backoff_mm",
@@ -294,8 +295,8 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
          {"strategy", "feature", "feature_size_mm", "approach_mm", "probe_feed_mm_min",
           "measure_feed_mm_min", "backoff_mm", "backoff_from", "return_feed_mm_min",
           "position_feed_mm_min", "clearance_mm", "target_uncertainty_mm", "knee_tolerance",
-          "part_position_uncertainty_mm", "repeats", "parts_per_year", "cycles_per_part",
-          "machine_rate_per_hour"}},
+          "part_position_uncertainty_mm", "search_beyond_mm", "repeats", "parts_per_year",
+          "cycles_per_part", "machine_rate_per_hour"}},
     };
     EXPECT_EQ(j.size(), expected.size());
     for (const auto& [section, keys] : expected) {
@@ -658,7 +659,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 38u);
+    ASSERT_EQ(scenario_keys().size(), 39u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);

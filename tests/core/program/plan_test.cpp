@@ -18,22 +18,6 @@
 namespace probecycle {
 namespace {
 
-TEST(ProbingPlan, EveryDelayTouchStartsFarEnoughOutToBeAtFullSpeed) {
-    const Scenario scenario;
-    DelayPlanOptions options;
-    const ProbingPlan plan = make_delay_plan(scenario, options);
-    EXPECT_EQ(plan.recorded().size(), 25u);  // 30 ... 2000 mm/min (2000 is the scenario's), 5 each
-    const double beyond = 1.0;
-    for (const ProgramStep* step : plan.recorded()) {
-        const double start = step->distance_mm - beyond;
-        EXPECT_GE(start,
-                  approach_room_mm(scenario, step->feed_mm_min / 60.0) + options.margin_mm - 1e-9);
-        EXPECT_EQ(step->axis, 'Z');
-        EXPECT_EQ(step->direction, -1);
-    }
-    EXPECT_EQ(plan.steps.front().kind, StepKind::pause);
-}
-
 TEST(ProbingPlan, DefaultFeedsAddTheScenariosOwn) {
     Scenario scenario;
     scenario.cycle.probe_feed_mm_min = 1500.0;
@@ -192,23 +176,58 @@ CycleResult model_touch(const Scenario& scenario) {
     return evaluate(surface);
 }
 
-// Where the plan leaves the probe (X, Y, Z from where it started) on a
-// machine where every probe stops the model's overtravel past a wall that
-// stands `distance - search` ahead.
-std::array<double, 3> end_of(const ProbingPlan& plan, const Scenario& scenario) {
-    const CycleResult model = model_touch(scenario);
-    const double search = 1.0;  // min(1 mm, half the overtravel limit)
-    std::array<double, 3> at{};
+// Where a probe moving in `direction` along its axis meets the part, from
+// where the plan starts (the feature's centre, or a surface's start), with
+// the part `offset_mm` farther than nominal along the direction of travel.
+double wall_at(const Scenario& scenario, int direction, double offset_mm = 0.0) {
+    const Cycle& c = scenario.cycle;
+    if (c.feature == Feature::surface) return direction * (c.approach_mm + offset_mm);
+    const double half = 0.5 * c.feature_size_mm;
+    return (lifts_over(c.feature) ? -direction * half : direction * half) + direction * offset_mm;
+}
+
+// A plan run on a machine whose part stands where `wall(axis, direction)`
+// says a probe moving that way meets it, and where every probe stops where
+// the model's single touch at its feed, from its real distance, stops. Every
+// search must reach past that stop: a search that ends sooner would be
+// braking when it touches (it would trigger below the feed and stop at its
+// end). Where the plan leaves the probe (X, Y, Z from where it started), and
+// how far from its wall each probe started.
+struct PlanRun {
+    std::array<double, 3> end{};
+    std::vector<double> start_mm;
+};
+template <typename Wall>
+PlanRun run_plan(const ProbingPlan& plan, const Scenario& scenario, Wall wall) {
+    PlanRun run;
     for (const ProgramStep& step : plan.steps) {
         if (step.kind == StepKind::pause) continue;
+        const std::size_t i = static_cast<std::size_t>(step.axis - 'X');
         double travel = step.distance_mm;
         if (step.kind == StepKind::probe) {
-            travel += -search + (step.recorded ? model.measuring_touch().overtravel_mm
-                                               : model.first_touch().overtravel_mm);
+            const double to_wall = (wall(step.axis, step.direction) - run.end[i]) * step.direction;
+            Scenario touch = scenario;
+            touch.cycle.strategy = Strategy::single_touch;
+            touch.cycle.feature = Feature::surface;
+            touch.cycle.repeats = 1.0;
+            touch.cycle.probe_feed_mm_min = step.feed_mm_min;
+            touch.cycle.approach_mm = std::max(0.0, to_wall);
+            const double overtravel = evaluate(touch).overtravel_mm();
+            EXPECT_GT(step.distance_mm, to_wall + overtravel)
+                << step.text << ": the search ends before the stop";
+            run.start_mm.push_back(to_wall);
+            travel = to_wall + overtravel;
         }
-        at[step.axis - 'X'] += step.direction * travel;
+        run.end[i] += step.direction * travel;
     }
-    return at;
+    return run;
+}
+
+// The same on the nominal part.
+std::array<double, 3> end_of(const ProbingPlan& plan, const Scenario& scenario) {
+    return run_plan(plan, scenario,
+                    [&](char, int direction) { return wall_at(scenario, direction); })
+        .end;
 }
 
 TEST(CyclePlan, ABoreTwoTouchGoesOutFromItsCentreAndBackProtected) {
@@ -219,30 +238,35 @@ TEST(CyclePlan, ABoreTwoTouchGoesOutFromItsCentreAndBackProtected) {
     EXPECT_DOUBLE_EQ(start_radius_mm(c), 20.0);
     const CycleResult model = model_touch(bore);
     const double s = c.approach_mm;
-    const double search = 1.0;
     const double first = model.first_touch().overtravel_mm;
     const double measuring = model.measuring_touch().overtravel_mm;
+    // Halfway from each touch's stop to the 5 mm overtravel limit.
+    const double first_beyond = 0.5 * (first + bore.probe.overtravel_limit_mm);
+    const double measuring_beyond = 0.5 * (measuring + bore.probe.overtravel_limit_mm);
+    EXPECT_DOUBLE_EQ(search_beyond_mm(bore, first), first_beyond);
     ASSERT_EQ(plan.steps.size(), 1u + 4u * 6u);
     EXPECT_EQ(plan.steps[0].kind, StepKind::pause);
     EXPECT_EQ(plan.steps[0].text,
-              "check: the probe ball stands at the centre of the bore (within 1 mm) at the "
-              "measuring depth; resume to start");
+              "check: the probe ball stands at the centre of the bore at the measuring depth; "
+              "resume to start");
     const char* walls[] = {"X+", "X-", "Y+", "Y-"};
     const char* back[] = {"X-", "X+", "Y-", "Y+"};
     for (std::size_t k = 0; k < 4; ++k) {
         SCOPED_TRACE(walls[k]);
-        expect_steps(plan, 1 + 6 * k,
-                     {
-                         {StepKind::guard, walls[k], 20.0, 3000.0, false},
-                         // The fast touch searches 1 mm past the wall; the
-                         // backoff (2 mm) from where it stopped; the measuring
-                         // touch from backoff - overtravel in front of the wall.
-                         {StepKind::probe, walls[k], up(s + search), 2000.0, false},
-                         {StepKind::move, back[k], 2.0, 10000.0, false},
-                         {StepKind::probe, walls[k], up(c.backoff_mm - first + search), 30.0, true},
-                         {StepKind::move, back[k], up(s + measuring), 10000.0, false},
-                         {StepKind::guard, back[k], 20.0, 3000.0, false},
-                     });
+        expect_steps(
+            plan, 1 + 6 * k,
+            {
+                {StepKind::guard, walls[k], 20.0, 3000.0, false},
+                // The fast touch searches past the wall by more
+                // than its stop; the backoff (2 mm) from where it
+                // stopped; the measuring touch searches the whole
+                // backoff and past its own stop.
+                {StepKind::probe, walls[k], up(s + first_beyond), 2000.0, false},
+                {StepKind::move, back[k], 2.0, 10000.0, false},
+                {StepKind::probe, walls[k], up(c.backoff_mm + measuring_beyond), 30.0, true},
+                {StepKind::move, back[k], up(s + measuring), 10000.0, false},
+                {StepKind::guard, back[k], 20.0, 3000.0, false},
+            });
     }
     EXPECT_EQ(plan.recorded().size(), 4u);
     for (const double axis : end_of(plan, bore)) EXPECT_NEAR(axis, 0.0, 0.005);
@@ -264,11 +288,12 @@ TEST(CyclePlan, ABossSingleTouchGoesOverEachSideDownAndTouchesTowardTheCentre) {
     EXPECT_DOUBLE_EQ(start_radius_mm(c), 30.0);
     const double overtravel = model_touch(boss).first_touch().overtravel_mm;
     const double s = c.approach_mm;
+    const double beyond = search_beyond_mm(boss, overtravel);
     // cycle.repeats 2: each side touched twice, back to the start in between.
     ASSERT_EQ(plan.steps.size(), 1u + 4u * 8u);
     EXPECT_EQ(plan.steps[0].text,
-              "check: the probe ball stands over the centre of the boss (within 1 mm), "
-              "10 mm above the measuring depth; resume to start");
+              "check: the probe ball stands over the centre of the boss, 10 mm above the "
+              "measuring depth; resume to start");
     const char* sides[] = {"X+", "X-", "Y+", "Y-"};
     const char* inward[] = {"X-", "X+", "Y-", "Y+"};
     for (std::size_t k = 0; k < 4; ++k) {
@@ -278,9 +303,10 @@ TEST(CyclePlan, ABossSingleTouchGoesOverEachSideDownAndTouchesTowardTheCentre) {
                          {StepKind::guard, sides[k], 30.0, 3000.0, false},
                          {StepKind::guard, "Z-", 10.0, 3000.0, false},
                          // The X+ side is touched moving X-.
-                         {StepKind::probe, inward[k], up(s + 1.0), 300.0, true},
+                         {StepKind::probe, inward[k], up(s + beyond), 300.0, true},
                          {StepKind::move, sides[k], up(s + overtravel), 10000.0, false},
-                         {StepKind::probe, inward[k], up(s + 1.0), 300.0, true},
+                         // The repeat searches the whole return from its stop.
+                         {StepKind::probe, inward[k], up(up(s + overtravel) + beyond), 300.0, true},
                          {StepKind::move, sides[k], up(s + overtravel), 10000.0, false},
                          // Up at the rapid (away from the part, as the model lifts).
                          {StepKind::move, "Z+", 10.0, 0.0, false},
@@ -304,21 +330,22 @@ TEST(CyclePlan, RepeatsMakeTheMeasuringTouchAgainFromItsStop) {
     const Cycle& c = scenario.cycle;
     const CycleResult model = model_touch(scenario);
     const double s = c.approach_mm;
-    const double search = 1.0;
     const double first = model.first_touch().overtravel_mm;
     const double measuring = model.measuring_touch().overtravel_mm;
+    const double first_beyond = search_beyond_mm(scenario, first);
+    const double measuring_beyond = search_beyond_mm(scenario, measuring);
     ASSERT_EQ(plan.steps.size(), 1u + 3u + 2u * 2u + 1u);
     expect_steps(plan, 1,
                  {
-                     {StepKind::probe, "Z-", up(s + search), 2000.0, false},
+                     {StepKind::probe, "Z-", up(s + first_beyond), 2000.0, false},
                      {StepKind::move, "Z+", 2.0, 10000.0, false},
-                     {StepKind::probe, "Z-", up(c.backoff_mm - first + search), 30.0, true},
+                     {StepKind::probe, "Z-", up(c.backoff_mm + measuring_beyond), 30.0, true},
                      // From the measuring touch's stop: the backoff, then the
-                     // measuring touch from backoff - its overtravel.
+                     // measuring touch over the whole backoff again.
                      {StepKind::move, "Z+", 2.0, 10000.0, false},
-                     {StepKind::probe, "Z-", up(c.backoff_mm - measuring + search), 30.0, true},
+                     {StepKind::probe, "Z-", up(c.backoff_mm + measuring_beyond), 30.0, true},
                      {StepKind::move, "Z+", 2.0, 10000.0, false},
-                     {StepKind::probe, "Z-", up(c.backoff_mm - measuring + search), 30.0, true},
+                     {StepKind::probe, "Z-", up(c.backoff_mm + measuring_beyond), 30.0, true},
                      {StepKind::move, "Z+", up(s + measuring), 10000.0, false},
                  });
     EXPECT_EQ(plan.recorded().size(), 3u);
@@ -417,6 +444,159 @@ TEST(CyclePlan, WhatAFeaturesProgramCannotDoIsRefusedNamingTheKey) {
     EXPECT_EQ(refusal(boss, CyclePlanOptions{}),
               "cycle.feature_size_mm: got 2000; allowed: at most 1990 mm for a boss's program (its "
               "moves from the centre to the touches' starts are at most 1000 mm)");
+}
+
+TEST(ProbingPlan, EveryDelayTouchStartsFarEnoughOutToBeAtFullSpeed) {
+    const Scenario scenario;
+    DelayPlanOptions options;
+    const ProbingPlan plan = make_delay_plan(scenario, options);
+    EXPECT_EQ(plan.recorded().size(), 25u);  // 30 ... 2000 mm/min (2000 is the scenario's), 5 each
+    EXPECT_EQ(plan.steps.front().kind, StepKind::pause);
+    // The surface anywhere within the placement: at it, and half as far.
+    for (const double placement : {options.placement_mm, 0.5 * options.placement_mm}) {
+        SCOPED_TRACE(placement);
+        const PlanRun run =
+            run_plan(plan, scenario, [&](char, int direction) { return direction * placement; });
+        std::size_t probe = 0;
+        for (const ProgramStep& step : plan.steps) {
+            if (step.kind != StepKind::probe) continue;
+            const double start = run.start_mm[probe++];
+            if (!step.recorded) continue;
+            SCOPED_TRACE(step.text);
+            EXPECT_GE(start, approach_room_mm(scenario, step.feed_mm_min / 60.0) +
+                                 options.margin_mm - 1e-9);
+            EXPECT_EQ(step.axis, 'Z');
+            EXPECT_EQ(step.direction, -1);
+        }
+    }
+}
+
+// The defect a real controller found: a search that ended 1 mm past the
+// nominal surface, less than the axis needs to brake, so LinuxCNC touched
+// while already braking, stopped at the search end, and the next search,
+// computed from the predicted stop, ended short of the surface. Every search
+// of every plan must reach past its touch's stop, wherever the part lies
+// within its uncertainty: on slow and fast machines, at slow feeds and where
+// braking takes several mm, every feature and strategy, with repeats, and
+// the delay and ring programs.
+TEST(ProbingPlan, EverySearchReachesPastItsStopWhereverThePartLies) {
+    struct Machine {
+        const char* name;
+        Scenario scenario;
+    };
+    std::vector<Machine> machines;
+    machines.push_back({"time constant 60 ms", Scenario{}});
+    for (const double accel : {400.0, 800.0}) {
+        // A LinuxCNC machine in exact stop: its servo period scans the probe
+        // and two more periods pass before it brakes.
+        Scenario linuxcnc;
+        linuxcnc.machine.accel_model = AccelModel::constant_accel;
+        linuxcnc.machine.max_accel_mm_s2 = accel;
+        linuxcnc.machine.scan_period_s = 0.001;
+        linuxcnc.machine.controller_latency_s = 0.002;
+        linuxcnc.probe.interface_delay_s = 0.0;
+        machines.push_back(
+            {accel == 400.0 ? "LinuxCNC 400 mm/s^2" : "LinuxCNC 800 mm/s^2", linuxcnc});
+    }
+    Scenario fanuc;  // acc/dec after interpolation and a servo lag
+    fanuc.machine.accel_model = AccelModel::none;
+    fanuc.machine.filter = FilterKind::exponential;
+    fanuc.machine.filter_time_s = 0.032;
+    fanuc.machine.servo_time_constant_s = 0.033;
+    fanuc.machine.controller_latency_s = 0.018;
+    machines.push_back({"Fanuc-type", fanuc});
+    int plans = 0;
+    for (Machine& machine : machines) {
+        machine.scenario.probe.overtravel_limit_mm = 12.0;
+        for (const double feed : {300.0, 2400.0, 4000.0}) {
+            for (const Strategy strategy : {Strategy::single_touch, Strategy::two_touch}) {
+                for (const Feature feature : {Feature::surface, Feature::bore, Feature::boss,
+                                              Feature::pocket, Feature::web}) {
+                    Scenario s = machine.scenario;
+                    s.cycle.strategy = strategy;
+                    s.cycle.feature = feature;
+                    s.cycle.probe_feed_mm_min = feed;
+                    s.cycle.measure_feed_mm_min = 100.0;
+                    s.cycle.part_position_uncertainty_mm = 0.5;
+                    s.cycle.approach_mm = 0.5 + approach_room_mm(s, feed / 60.0) + 0.5;
+                    s.cycle.feature_size_mm = 2.0 * s.cycle.approach_mm + 40.0;
+                    s.cycle.repeats = feature == Feature::bore ? 2.0 : 1.0;
+                    s.cycle.backoff_mm = evaluate(s).recommended_backoff_mm() + 0.3;
+                    SCOPED_TRACE(std::string(machine.name) + ", " + to_string(feature) + ", " +
+                                 to_string(strategy) + " at " + format_number(feed));
+                    const ProbingPlan plan = make_cycle_plan(s, CyclePlanOptions{{'X', 1}});
+                    ++plans;
+                    // The part nearer, at nominal and farther, by up to its
+                    // uncertainty. (Back where it started on the nominal part;
+                    // elsewhere each return is measured from the real wall.)
+                    for (const double offset : {-0.5, 0.0, 0.5}) {
+                        SCOPED_TRACE(offset);
+                        const PlanRun run = run_plan(plan, s, [&](char, int direction) {
+                            return wall_at(s, direction, offset);
+                        });
+                        if (offset != 0.0) continue;
+                        for (const double axis : run.end) EXPECT_NEAR(axis, 0.0, 0.005);
+                    }
+                    if (HasFailure()) return;
+                }
+            }
+            Scenario s = machine.scenario;
+            s.cycle.probe_feed_mm_min = feed;
+            DelayPlanOptions delay;
+            delay.touch = {'Y', 1};
+            delay.repeats = 2;
+            const ProbingPlan delay_plan = make_delay_plan(s, delay);
+            ++plans;
+            for (const double wall : {delay.placement_mm, 0.3 * delay.placement_mm}) {
+                run_plan(delay_plan, s, [&](char, int direction) { return direction * wall; });
+            }
+            RingPlanOptions ring;
+            const double to_wall = 0.5 * (ring.gauge_diameter_mm - ring.ball_diameter_mm);
+            Scenario from_centre = s;
+            from_centre.cycle.approach_mm = to_wall;
+            s.cycle.backoff_mm = evaluate(from_centre).recommended_backoff_mm() + 0.3;
+            const ProbingPlan ring_plan = make_ring_plan(s, ring);
+            ++plans;
+            // The probe left off the gauge's centre, within the tolerance.
+            for (const double off : {-ring.centre_tolerance_mm, ring.centre_tolerance_mm}) {
+                const PlanRun run = run_plan(ring_plan, s, [&](char axis, int direction) {
+                    return direction * to_wall - (axis == 'X' ? off : 0.0);
+                });
+                EXPECT_NEAR(run.end[0], -off, 0.005);  // on the gauge's centre
+            }
+            if (HasFailure()) return;
+        }
+    }
+    EXPECT_EQ(plans, 4 * 3 * (2 * 5 + 2));
+}
+
+// cycle.search_beyond_mm set by hand is the searches' length past the
+// farthest surface; one that does not reach a touch's stop is refused naming
+// the key, as the model's error (search_ends_too_soon) says.
+TEST(CyclePlan, ASearchSetByHandIsUsedOrRefusedWhenItEndsTooSoon) {
+    Scenario scenario;  // two-touch at 2000 mm/min: the first touch stops 1.272 mm past
+    scenario.cycle.search_beyond_mm = 1.5;
+    scenario.cycle.part_position_uncertainty_mm = 0.25;
+    scenario.cycle.approach_mm = 6.0;
+    const ProbingPlan plan = make_cycle_plan(scenario, CyclePlanOptions{});
+    expect_steps(plan, 1,
+                 {
+                     {StepKind::probe, "Z-", 6.0 + 0.25 + 1.5, 2000.0, false},
+                     {StepKind::move, "Z+", 2.0, 10000.0, false},
+                     {StepKind::probe, "Z-", 2.0 + 1.5, 30.0, true},
+                 });
+    scenario.cycle.search_beyond_mm = 1.0;
+    try {
+        make_cycle_plan(scenario, CyclePlanOptions{});
+        ADD_FAILURE() << "a search that ends before the stop was written";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "cycle.search_beyond_mm: got 1; allowed: at least 1.272 mm, the stop of the "
+                  "touch at 2000 mm/min past its surface (a search that ends sooner is braking "
+                  "when it touches), or 0 for automatic");
+    }
+    EXPECT_THROW(make_delay_plan(scenario, DelayPlanOptions{}), InputError);
+    EXPECT_THROW(make_ring_plan(scenario, RingPlanOptions{}), InputError);
 }
 
 TEST(ProbingPlan, OptionsThatCannotWorkAreRefused) {

@@ -2,10 +2,11 @@
 ; X+, X-, Y+ and Y- touched with the scenario's strategy, feeds, backoff and
 ; start distance, from the centre at the measuring depth: a protected move
 ; out to each touch's start and back to the centre.
-; The model moves straight from one touch's start to the next; this program
-; goes back through the centre between touches, so it runs a little longer
-; than the model's cycle time.
-; Plan 13491629b7814df5 (keep the plan file: the import matches the positions to it).
+; Every probing move searches past the farthest place its surface can be by
+; more than the touch's stop (cycle.search_beyond_mm), and every later one
+; covers the whole move back before it: the axis is never braking for the
+; move's end when it touches.
+; Plan c6e3fb866db5ae52 (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -44,45 +45,45 @@
 ; stops it with ALARM:4 if the probe is still deflected. No probe follows the
 ; last protected move: the import refuses a console where one answers :1.
 G21 G91 G94
-; check: the probe ball stands at the centre of the bore (within 1 mm) at the measuring depth; resume to start
+; check: the probe ball stands at the centre of the bore at the measuring depth; resume to start
 M0
 ; out to the start of the X+ touch
 G38.3 X20.000 F3000
 ; X+ first touch at 2000 mm/min
-G38.2 X6.000 F2000
+G38.2 X8.136 F2000
 G1 X-2.000 F10000 ; backoff
 ; touch 1: X+ measuring touch at 30 mm/min
-G38.2 X1.729 F30
+G38.2 X4.512 F30
 G1 X-5.024 F10000 ; back to the start
 ; back to the centre
 G38.3 X-20.000 F3000
 ; out to the start of the X- touch
 G38.3 X-20.000 F3000
 ; X- first touch at 2000 mm/min
-G38.2 X-6.000 F2000
+G38.2 X-8.136 F2000
 G1 X2.000 F10000 ; backoff
 ; touch 2: X- measuring touch at 30 mm/min
-G38.2 X-1.729 F30
+G38.2 X-4.512 F30
 G1 X5.024 F10000 ; back to the start
 ; back to the centre
 G38.3 X20.000 F3000
 ; out to the start of the Y+ touch
 G38.3 Y20.000 F3000
 ; Y+ first touch at 2000 mm/min
-G38.2 Y6.000 F2000
+G38.2 Y8.136 F2000
 G1 Y-2.000 F10000 ; backoff
 ; touch 3: Y+ measuring touch at 30 mm/min
-G38.2 Y1.729 F30
+G38.2 Y4.512 F30
 G1 Y-5.024 F10000 ; back to the start
 ; back to the centre
 G38.3 Y-20.000 F3000
 ; out to the start of the Y- touch
 G38.3 Y-20.000 F3000
 ; Y- first touch at 2000 mm/min
-G38.2 Y-6.000 F2000
+G38.2 Y-8.136 F2000
 G1 Y2.000 F10000 ; backoff
 ; touch 4: Y- measuring touch at 30 mm/min
-G38.2 Y-1.729 F30
+G38.2 Y-4.512 F30
 G1 Y5.024 F10000 ; back to the start
 ; back to the centre
 G38.3 Y20.000 F3000

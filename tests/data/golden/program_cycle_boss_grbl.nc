@@ -4,10 +4,11 @@
 ; clearance height: per side a protected move out over its start, a protected
 ; move down by the clearance, the touch, a rapid up by the clearance and a
 ; protected move back over the centre.
-; The model moves straight from one touch's start to the next; this program
-; goes back through the centre between touches, so it runs a little longer
-; than the model's cycle time.
-; Plan a1257eb5cf1b675c (keep the plan file: the import matches the positions to it).
+; Every probing move searches past the farthest place its surface can be by
+; more than the touch's stop (cycle.search_beyond_mm), and every later one
+; covers the whole move back before it: the axis is never braking for the
+; move's end when it touches.
+; Plan 9612a217e061444d (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -48,17 +49,17 @@
 ; stops it with ALARM:4 if the probe is still deflected. No probe follows the
 ; last protected move: the import refuses a console where one answers :1.
 G21 G91 G94
-; check: the probe ball stands over the centre of the boss (within 1 mm), 10 mm above the measuring depth; resume to start
+; check: the probe ball stands over the centre of the boss, 10 mm above the measuring depth; resume to start
 M0
 ; out over the start of the X+ side
 G38.3 X30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
 ; touch 1: X- 1 of 2 at 300 mm/min
-G38.2 X-6.000 F300
+G38.2 X-7.598 F300
 G1 X5.195 F10000 ; back to the start
 ; touch 2: X- 2 of 2 at 300 mm/min
-G38.2 X-6.000 F300
+G38.2 X-7.793 F300
 G1 X5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
 ; back over the centre
@@ -68,10 +69,10 @@ G38.3 X-30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
 ; touch 3: X+ 1 of 2 at 300 mm/min
-G38.2 X6.000 F300
+G38.2 X7.598 F300
 G1 X-5.195 F10000 ; back to the start
 ; touch 4: X+ 2 of 2 at 300 mm/min
-G38.2 X6.000 F300
+G38.2 X7.793 F300
 G1 X-5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
 ; back over the centre
@@ -81,10 +82,10 @@ G38.3 Y30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
 ; touch 5: Y- 1 of 2 at 300 mm/min
-G38.2 Y-6.000 F300
+G38.2 Y-7.598 F300
 G1 Y5.195 F10000 ; back to the start
 ; touch 6: Y- 2 of 2 at 300 mm/min
-G38.2 Y-6.000 F300
+G38.2 Y-7.793 F300
 G1 Y5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
 ; back over the centre
@@ -94,10 +95,10 @@ G38.3 Y-30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
 ; touch 7: Y+ 1 of 2 at 300 mm/min
-G38.2 Y6.000 F300
+G38.2 Y7.598 F300
 G1 Y-5.195 F10000 ; back to the start
 ; touch 8: Y+ 2 of 2 at 300 mm/min
-G38.2 Y6.000 F300
+G38.2 Y7.793 F300
 G1 Y-5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
 ; back over the centre

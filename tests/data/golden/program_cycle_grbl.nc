@@ -1,7 +1,11 @@
 ; ProbeCycle program for grbl: the tuned cycle.
 ; One surface touched with the scenario's strategy, feeds, backoff and start
 ; distance: a plain skip sequence, no macro call.
-; Plan f2830e022a6309c3 (keep the plan file: the import matches the positions to it).
+; Every probing move searches past the farthest place its surface can be by
+; more than the touch's stop (cycle.search_beyond_mm), and every later one
+; covers the whole move back before it: the axis is never braking for the
+; move's end when it touches.
+; Plan 6238e380a8bda47c (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -35,10 +39,10 @@ G21 G91 G94
 ; check: the probe stands 5 mm in front of the surface, touching along Z-; resume to start
 M0
 ; Z- first touch at 2000 mm/min
-G38.2 Z-6.000 F2000
+G38.2 Z-8.136 F2000
 G1 Z2.000 F10000 ; backoff
 ; touch 1: Z- measuring touch at 30 mm/min
-G38.2 Z-1.729 F30
+G38.2 Z-4.512 F30
 G1 Z5.024 F10000 ; back to the start
 G90
 M2

@@ -1,7 +1,11 @@
 ; ProbeCycle program for grbl: the tuned cycle.
 ; One surface touched with the scenario's strategy, feeds, backoff and start
 ; distance: a plain skip sequence, no macro call.
-; Plan c716bcd70bd0b121 (keep the plan file: the import matches the positions to it).
+; Every probing move searches past the farthest place its surface can be by
+; more than the touch's stop (cycle.search_beyond_mm), and every later one
+; covers the whole move back before it: the axis is never braking for the
+; move's end when it touches.
+; Plan e4ea2210f7ef1be4 (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -35,7 +39,7 @@ G21 G91 G94
 ; check: the probe stands 5 mm in front of the surface, touching along X+; resume to start
 M0
 ; touch 1: X+ at 300 mm/min
-G38.2 X6.000 F300
+G38.2 X7.598 F300
 G1 X-5.195 F10000 ; back to the start
 G90
 M2
