@@ -11,6 +11,7 @@ export QT_QPA_PLATFORM=offscreen
 # The LinuxCNC programs must pass LinuxCNC's own interpreter (rs274, from
 # linuxcnc-uspace): here a missing rs274 fails the test instead of skipping it.
 export PROBECYCLE_REQUIRE_RS274=1
+export PROBECYCLE_REQUIRE_LINUXCNC=1  # tests/linuxcnc: a missing LinuxCNC fails, not skips
 
 tools/check_format.sh
 
