@@ -523,6 +523,10 @@
         <source>at most %1 for a %2&apos;s program (its moves from the centre to the touches&apos; starts are at most %3)</source>
         <translation>не более %1 для программы элемента «%2» (её перемещения от центра к началу касаний не длиннее %3)</translation>
     </message>
+    <message>
+        <source>at least %1, the stop of the touch at %2 past its surface (a search that ends sooner is braking when it touches), or 0 for automatic</source>
+        <translation>не менее %1 — точки остановки касания на %2 за поверхностью (поиск, который заканчивается раньше, касается уже при торможении), или 0 — автоматически</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -1166,6 +1170,18 @@
         <source>hours only</source>
         <translation>только часы</translation>
     </message>
+    <message>
+        <source>How far each probing move searches past the farthest place its surface can be (the nominal surface plus the part position uncertainty; for a second touch or a repeat, where the touch before stopped) before the control gives up. It must reach past the touch&apos;s stop: a search that ends sooner is braking when it touches, triggers below the feed and stops at its end. 0 means automatic: halfway from the touch&apos;s stop to the probe&apos;s overtravel limit.</source>
+        <translation>Насколько каждое перемещение поиска продолжается за самое дальнее возможное положение поверхности (номинальная поверхность плюс неопределённость положения детали; для второго касания или повтора — точка остановки предыдущего касания), прежде чем система ЧПУ прекратит поиск. Поиск должен заканчиваться за точкой остановки касания: поиск, который заканчивается раньше, касается уже при торможении, срабатывает на скорости ниже подачи и останавливается в конце поиска. 0 — автоматически: посередине между точкой остановки касания и пределом перебега щупа.</translation>
+    </message>
+    <message>
+        <source>Search beyond surface</source>
+        <translation>Поиск за поверхностью</translation>
+    </message>
+    <message>
+        <source>automatic</source>
+        <translation>автоматически</translation>
+    </message>
 </context>
 <context>
     <name>PdfReport</name>
@@ -1381,6 +1397,18 @@
     <message>
         <source>Start within the part&apos;s position uncertainty</source>
         <translation>Начало в зоне неопределённости детали</translation>
+    </message>
+    <message>
+        <source>The second touch&apos;s search ends %1 past where the first touch stopped, before its own stop %2 past the surface: it is braking when it touches, triggers below the measuring feed and stops at the search end; search at least %2 past the surface</source>
+        <translation>Поиск второго касания заканчивается в %1 за точкой остановки первого касания, раньше его собственной остановки в %2 за поверхностью: касание происходит при торможении, срабатывание — ниже скорости измерительной подачи, остановка — в конце поиска; задайте поиск не менее %2 за поверхностью</translation>
+    </message>
+    <message>
+        <source>The search ends %1 past the farthest place the surface can be, before the first touch&apos;s stop %2 past it: the axis is braking when it touches, triggers below the feed and stops at the search end; search at least %2 past the surface</source>
+        <translation>Поиск заканчивается в %1 за самым дальним возможным положением поверхности, раньше остановки первого касания в %2 за ним: ось касается уже при торможении, срабатывает ниже подачи и останавливается в конце поиска; задайте поиск не менее %2 за поверхностью</translation>
+    </message>
+    <message>
+        <source>Search ends before the stop</source>
+        <translation>Поиск заканчивается до остановки</translation>
     </message>
 </context>
 <context>
@@ -3301,6 +3329,10 @@
         <source>LinuxCNC configuration (*.ini *.expanded);;All files (*)</source>
         <translation>Конфигурация LinuxCNC (*.ini *.expanded);;Все файлы (*)</translation>
     </message>
+    <message>
+        <source>search past the touch&apos;s stop</source>
+        <translation>поиск за точку остановки касания</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>
@@ -3765,6 +3797,10 @@
     <message>
         <source>Note</source>
         <translation>Примечание</translation>
+    </message>
+    <message>
+        <source>Search %1 past the surface</source>
+        <translation>Поиск на %1 за поверхность</translation>
     </message>
 </context>
 </TS>

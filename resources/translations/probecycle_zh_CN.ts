@@ -523,6 +523,10 @@
         <source>at most %1 for a %2&apos;s program (its moves from the centre to the touches&apos; starts are at most %3)</source>
         <translation>对于 %2 的程序，须至多为 %1（其从中心到各次触测起点的移动最长为 %3）</translation>
     </message>
+    <message>
+        <source>at least %1, the stop of the touch at %2 past its surface (a search that ends sooner is braking when it touches), or 0 for automatic</source>
+        <translation>至少 %1，即 %2 下触测在表面之后的停止位置（更早结束的搜索在触碰时已在减速），或 0 表示自动</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -1166,6 +1170,18 @@
         <source>hours only</source>
         <translation>仅小时</translation>
     </message>
+    <message>
+        <source>How far each probing move searches past the farthest place its surface can be (the nominal surface plus the part position uncertainty; for a second touch or a repeat, where the touch before stopped) before the control gives up. It must reach past the touch&apos;s stop: a search that ends sooner is braking when it touches, triggers below the feed and stops at its end. 0 means automatic: halfway from the touch&apos;s stop to the probe&apos;s overtravel limit.</source>
+        <translation>每次探测移动在其表面可能所在的最远位置（名义表面加上零件位置不确定度；对第二次触测或重复触测，为前一次触测的停止位置）之后继续搜索的距离，超过后数控系统放弃。它必须超过该次触测的停止位置：更早结束的搜索在触碰时已在减速，触发速度低于进给率并停在搜索终点。0 表示自动：取该次触测停止位置与测头过行程极限的中点。</translation>
+    </message>
+    <message>
+        <source>Search beyond surface</source>
+        <translation>超出表面的搜索距离</translation>
+    </message>
+    <message>
+        <source>automatic</source>
+        <translation>自动</translation>
+    </message>
 </context>
 <context>
     <name>PdfReport</name>
@@ -1381,6 +1397,18 @@
     <message>
         <source>Start within the part&apos;s position uncertainty</source>
         <translation>起点位于零件位置不确定度内</translation>
+    </message>
+    <message>
+        <source>The second touch&apos;s search ends %1 past where the first touch stopped, before its own stop %2 past the surface: it is braking when it touches, triggers below the measuring feed and stops at the search end; search at least %2 past the surface</source>
+        <translation>第二次触测的搜索在第一次触测停止位置之后 %1 处结束，早于其自身在表面之后 %2 的停止位置：触碰时已在减速，触发速度低于测量进给率并停在搜索终点；请至少搜索到表面之后 %2</translation>
+    </message>
+    <message>
+        <source>The search ends %1 past the farthest place the surface can be, before the first touch&apos;s stop %2 past it: the axis is braking when it touches, triggers below the feed and stops at the search end; search at least %2 past the surface</source>
+        <translation>搜索在表面可能所在的最远位置之后 %1 处结束，早于第一次触测在其之后 %2 的停止位置：触碰时轴已在减速，触发速度低于进给率并停在搜索终点；请至少搜索到表面之后 %2</translation>
+    </message>
+    <message>
+        <source>Search ends before the stop</source>
+        <translation>搜索在停止位置之前结束</translation>
     </message>
 </context>
 <context>
@@ -3301,6 +3329,10 @@
         <source>LinuxCNC configuration (*.ini *.expanded);;All files (*)</source>
         <translation>LinuxCNC 配置 (*.ini *.expanded);;所有文件 (*)</translation>
     </message>
+    <message>
+        <source>search past the touch&apos;s stop</source>
+        <translation>搜索超过触测停止位置</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>
@@ -3765,6 +3797,10 @@
     <message>
         <source>Note</source>
         <translation>提示</translation>
+    </message>
+    <message>
+        <source>Search %1 past the surface</source>
+        <translation>搜索到表面之后 %1</translation>
     </message>
 </context>
 </TS>
