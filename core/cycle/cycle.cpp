@@ -472,6 +472,11 @@ double approach_room(const Scenario& scenario, const MotionLimits& limits, const
     return room;
 }
 
+// Trigger to reaction after the mean scan wait, half a period: the timeline's.
+double mean_reaction_s(const MotionCache::TouchKey& key) {
+    return key.reaction_s - 0.5 * key.scan_s;
+}
+
 // Appends phases and motion to a result under construction.
 class CycleBuilder {
   public:
@@ -636,8 +641,12 @@ class CycleBuilder {
         const double t_touch = time_at_distance_s(plan, distance_mm);
         const double t_trigger = time_at_distance_s(plan, distance_mm + p.pretravel_mm);
         const double t_interface = t_trigger + p.interface_delay_s;
-        const double t_react = t_trigger + reaction_time_s(m, p);
-        const double t_record = t_interface + (m.latched_input ? 0.0 : m.scan_period_s);
+        // The timeline waits the mean scan; the overtravel and the recorded
+        // position take the worst case, a full scan.
+        const double t_react_worst = t_trigger + reaction_time_s(m, p);
+        const double t_react = t_react_worst - 0.5 * m.scan_period_s;
+        const double record_scan_s = m.latched_input ? 0.0 : m.scan_period_s;
+        const double t_record = t_interface + record_scan_s;
 
         const KinematicState at_touch = plan.state_at(t_touch);
         const KinematicState at_trigger = plan.state_at(t_trigger);
@@ -646,6 +655,12 @@ class CycleBuilder {
         const SegmentPlan stop =
             plan_stop(limits, feed_mm_s, at_react.speed_mm_s, at_react.accel_mm_s2);
         const double stop_time = stop.duration_s();
+        const KinematicState at_react_worst = plan.state_at(t_react_worst);
+        const double worst_stop_mm =
+            at_react_worst.position_mm +
+            plan_stop(limits, feed_mm_s, at_react_worst.speed_mm_s, at_react_worst.accel_mm_s2)
+                .end_state({0.0, at_react_worst.speed_mm_s, at_react_worst.accel_mm_s2})
+                .position_mm;
 
         add_motion(plan, +1.0, t_react);
         const double stop_distance = add_motion(stop, +1.0, stop_time, at_react.speed_mm_s);
@@ -664,8 +679,11 @@ class CycleBuilder {
         touch.touch_speed_mm_s = at_touch.speed_mm_s;
         touch.trigger_speed_mm_s = at_trigger.speed_mm_s;
         // Overtravel: pretravel + delay travel + stopping distance, past the surface.
-        touch.overtravel_mm = at_react.position_mm + stop_distance - at_touch.position_mm;
+        touch.overtravel_mm = worst_stop_mm - at_touch.position_mm;
         touch.recorded_mm = plan.state_at(t_record).position_mm - at_touch.position_mm;
+        touch.mean_overtravel_mm = at_react.position_mm + stop_distance - at_touch.position_mm;
+        touch.mean_recorded_mm =
+            plan.state_at(t_interface + 0.5 * record_scan_s).position_mm - at_touch.position_mm;
         if (full_) {  // as the touch with dynamics (Detail::summary)
             touch.react_speed_mm_s = at_react.speed_mm_s;
             touch.delay_travel_mm =
@@ -687,9 +705,12 @@ class CycleBuilder {
         const Machine& m = scenario.machine;
         const Probe& p = scenario.probe;
         const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
-        const MotionCache::TouchKey key{feed_mm_s, p.pretravel_mm, p.interface_delay_s,
-                                        reaction_time_s(m, p),
-                                        m.latched_input ? 0.0 : m.scan_period_s};
+        const MotionCache::TouchKey key{
+            feed_mm_s,           p.pretravel_mm,
+            p.interface_delay_s, reaction_time_s(m, p),
+            m.scan_period_s,     m.latched_input ? 0.0 : m.scan_period_s};
+        // The timeline reacts after the mean scan wait (TouchResult).
+        const double reaction_s = mean_reaction_s(key);
         // Past the distance where the approach settles it cruises as its
         // moment expansion: the touch is the one there, shifted
         // (MotionCache::SolvedTouch).
@@ -712,16 +733,17 @@ class CycleBuilder {
         if (t.reference && distance_mm != t.distance_mm) {
             // Shifted by the phases' lengths, so none turns negative by rounding.
             const double pretravel_s = t.trigger_s - t.touch_s;
-            const double settling_s = t.settle_s - (t.trigger_s + key.reaction_s);
+            const double settling_s = t.settle_s - (t.trigger_s + reaction_s);
             t.touch_s += (distance_mm - t.distance_mm) / t.touch_speed_mm_s;
             t.trigger_s = t.touch_s + pretravel_s;
-            t.settle_s = t.trigger_s + key.reaction_s + settling_s;
+            t.settle_s = t.trigger_s + reaction_s + settling_s;
             t.rest_mm += distance_mm - t.distance_mm;
+            t.worst_rest_mm += distance_mm - t.distance_mm;
             t.distance_mm = distance_mm;
             stopped_here = false;
         }
         const double t_interface = t.trigger_s + p.interface_delay_s;
-        const double t_react = t.trigger_s + key.reaction_s;
+        const double t_react = t.trigger_s + reaction_s;
         if (full_ && !stopped_here) {  // the timeline's motion, stopped where this touch reacts
             const AxisCommand command = touch_command(limits, plan, feed_mm_s, t_react);
             if (index < 0) {
@@ -760,8 +782,10 @@ class CycleBuilder {
         touch.touch_speed_mm_s = t.touch_speed_mm_s;
         touch.trigger_speed_mm_s = t.trigger_speed_mm_s;
         touch.react_speed_mm_s = at_react.speed_mm_s;  // 0 in a summary
-        touch.overtravel_mm = t.rest_mm - distance_mm;
+        touch.overtravel_mm = t.worst_rest_mm - distance_mm;
         touch.recorded_mm = t.recorded_mm;
+        touch.mean_overtravel_mm = t.rest_mm - distance_mm;
+        touch.mean_recorded_mm = t.mean_recorded_mm;
         touch.delay_travel_mm = delay_travel_mm;  // 0 in a summary
         return touch;
     }
@@ -798,15 +822,21 @@ class CycleBuilder {
         }
         t.trigger_speed_mm_s = at_trigger.speed_mm_s;
         const double t_interface = t.trigger_s + key.interface_delay_s;
-        const double t_react = t.trigger_s + key.reaction_s;
-        const double t_record = t_interface + key.record_delay_s;
+        const double t_react = t.trigger_s + mean_reaction_s(key);
+        const double t_react_worst = t.trigger_s + key.reaction_s;
+        // Both records come before the worst reaction, where the approach is
+        // still the touch's motion.
+        t.recorded_mm = approach.state(t_interface + key.record_delay_s).position_mm - distance_mm;
+        t.mean_recorded_mm =
+            approach.state(t_interface + 0.5 * key.record_delay_s).position_mm - distance_mm;
+        t.worst_rest_mm =
+            touch_command(limits, plan, key.feed_mm_s, t_react_worst).end_state().position_mm;
 
         // (Before the reaction the command is the approach's.)
         const AxisCommand command = touch_command(limits, plan, key.feed_mm_s, t_react);
         motion.reset(command);
         t.settle_s = std::max(motion.in_position_time(), t_react);
         t.rest_mm = command.end_state().position_mm;
-        t.recorded_mm = motion.state(t_record).position_mm - distance_mm;
         return t;
     }
 
@@ -844,17 +874,28 @@ class CycleBuilder {
     int touch_{0};
 };
 
+// Which of a touch's figures: the worst case, which the checks, the
+// recommended backoff and the programs take, or after the mean scan wait,
+// which the timeline takes (TouchResult).
+enum class TouchCase { worst, mean };
+
 // Where the backoff is measured from, beyond the surface (issue 11): where the
 // first touch stopped, or where the control recorded it.
-double backoff_reference_mm(const Cycle& cycle, const TouchResult& first) {
-    return cycle.backoff_from == BackoffFrom::stop ? first.overtravel_mm : first.recorded_mm;
+double backoff_reference_mm(const Cycle& cycle, const TouchResult& first, TouchCase which) {
+    const bool mean = which == TouchCase::mean;
+    if (cycle.backoff_from == BackoffFrom::stop) {
+        return mean ? first.mean_overtravel_mm : first.overtravel_mm;
+    }
+    return mean ? first.mean_recorded_mm : first.recorded_mm;
 }
 
 // The backoff move's length: from the stop to `backoff_mm` in front of the
 // reference (exactly the backoff from the stop: the same move at every feed).
-double backoff_move_mm(const Cycle& cycle, double backoff_mm, const TouchResult& first) {
+double backoff_move_mm(const Cycle& cycle, double backoff_mm, const TouchResult& first,
+                       TouchCase which) {
     if (cycle.backoff_from == BackoffFrom::stop) return backoff_mm;
-    return backoff_mm + first.overtravel_mm - first.recorded_mm;
+    return which == TouchCase::mean ? backoff_mm + first.mean_overtravel_mm - first.mean_recorded_mm
+                                    : backoff_mm + first.overtravel_mm - first.recorded_mm;
 }
 
 // Time for the backoff move and the second approach, the part of a two-touch
@@ -865,9 +906,9 @@ double backoff_cost_s(const Scenario& scenario, const MotionLimits& limits,
                       const AxisKernel* kernel, double backoff_mm, const TouchResult& first,
                       MotionCache& cache) {
     const Cycle& c = scenario.cycle;
-    const double reference = backoff_reference_mm(c, first);
+    const double reference = backoff_reference_mm(c, first, TouchCase::mean);
     const double measure_v = mm_min_to_mm_s(c.measure_feed_mm_min);
-    return block_time(limits, kernel, backoff_move_mm(c, backoff_mm, first),
+    return block_time(limits, kernel, backoff_move_mm(c, backoff_mm, first, TouchCase::mean),
                       mm_min_to_mm_s(c.return_feed_mm_min), &cache) +
            approach_time_s(limits, kernel, measure_v, std::max(0.0, backoff_mm - reference));
 }
@@ -1070,9 +1111,10 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     // `cost_s`: the time the backoff sets, the backoff move and the second
     // approach (backoff_cost_s, here taken from the phases as they are made).
     const auto back_off_and_measure = [&](const TouchResult& from, double& cost_s) {
-        const double reference = backoff_reference_mm(c, from);
+        const double reference = backoff_reference_mm(c, from, TouchCase::mean);
         const double t_backoff = b.now();
-        b.add_move(Phase::backoff, limits, backoff_move_mm(c, c.backoff_mm, from), return_v, -1.0);
+        b.add_move(Phase::backoff, limits, backoff_move_mm(c, c.backoff_mm, from, TouchCase::mean),
+                   return_v, -1.0);
         const double backoff_s = b.now() - t_backoff;
         const double distance = std::max(0.0, c.backoff_mm - reference);
         const std::size_t approach_phase = b.phase_count();
@@ -1084,7 +1126,8 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     double repeat_backoff_cost_s = 0.0;
     if (two_touch) {
         measuring = back_off_and_measure(first, first_backoff_cost_s);
-        measuring.search_mm = backoff_move_mm(c, c.backoff_mm, first) +
+        // The backoff as the programs move it, from the worst-case figures.
+        measuring.search_mm = backoff_move_mm(c, c.backoff_mm, first, TouchCase::worst) +
                               search_beyond_mm(scenario, measuring.overtravel_mm);
         if (full) add_touch_warnings(scenario, measuring, 1, r.warnings_);
     }
@@ -1151,7 +1194,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     // Issue 12: rounded up to the editors' digits, so the value shown is the
     // value that clears backoff_too_small.
     const double needed =
-        backoff_reference_mm(c, r.first_) +
+        backoff_reference_mm(c, r.first_, TouchCase::worst) +
         std::max(p.reseat_mm, approach_room(scenario, limits, dynamics, measure_v, &cache));
     r.recommended_backoff_mm_ = round_up_to(needed, kBackoffStep_mm);
 

@@ -159,11 +159,21 @@ struct TouchResult {
     double touch_speed_mm_s{0.0};    // when the stylus meets the surface
     double trigger_speed_mm_s{0.0};  // when the probe triggers (after pretravel)
     double react_speed_mm_s{0.0};    // when the controller reacts and braking starts
-    double overtravel_mm{0.0};       // beyond the surface, where the axis stops
+    // Beyond the surface, where the axis stops: worst case, after a full
+    // scan period (the stylus must survive it; the searches and the
+    // recommended backoff must clear it).
+    double overtravel_mm{0.0};
     // Beyond the surface, where the control records the touch (the skip
     // position): the trigger plus the interface delay's travel plus, with a
     // scanned input, a full scan period's (worst case, as the overtravel).
     double recorded_mm{0.0};
+    // The same two after the mean scan wait, half a period: where the touch
+    // stops and is recorded on average. The cycle's timeline (its phases and
+    // total, the moves that follow the touch) takes these, so the cycle time
+    // is the one a control averages to; a fixed backoff leaves the second
+    // touch the backoff less this stop to approach.
+    double mean_overtravel_mm{0.0};
+    double mean_recorded_mm{0.0};
     // Travel from the trigger through the measurement delay (see
     // measurement_delay_s) at the axis's real speed: what calibration takes
     // as v * tau when the touch is at full feed.
@@ -327,22 +337,30 @@ class MotionCache {
         double feed_mm_s{0.0};
         double pretravel_mm{0.0};
         double interface_delay_s{0.0};
-        double reaction_s{0.0};      // trigger to reaction (reaction_time_s)
+        double reaction_s{0.0};      // trigger to reaction, worst case (reaction_time_s)
+        double scan_s{0.0};          // the scan period in it: on average half of it passes
         double record_delay_s{0.0};  // interface to recorded position (a scan, or 0 latched)
         bool operator==(const TouchKey&) const = default;
     };
     struct SolvedTouch {
         double distance_mm{0.0};  // from the approach's start to the surface
         // From the approach's start: the touch, the trigger, and the end of
-        // the deceleration (the in-position check, or the reaction if later).
+        // the deceleration (the in-position check, or the reaction if later)
+        // after the mean scan wait.
         double touch_s{0.0};
         double trigger_s{0.0};
         double settle_s{0.0};
         double touch_speed_mm_s{0.0};
         double trigger_speed_mm_s{0.0};
-        double recorded_mm{0.0};  // past the surface
-        double rest_mm{0.0};      // from the approach's start
-        bool reference{false};    // settled: serves every longer distance
+        // Past the surface, where the control records the touch: after a full
+        // scan (worst case) and after the mean wait.
+        double recorded_mm{0.0};
+        double mean_recorded_mm{0.0};
+        // From the approach's start, where the axis comes to rest: after the
+        // mean scan wait (the timeline's) and after a full scan.
+        double rest_mm{0.0};
+        double worst_rest_mm{0.0};
+        bool reference{false};  // settled: serves every longer distance
     };
     // The kept touch for `key` at `distance_mm`, or the reference to shift
     // to it.

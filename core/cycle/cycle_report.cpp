@@ -33,6 +33,7 @@ Json touch_json(const TouchResult& touch) {
     return {{"programmed_feed_mm_min", mm_s_to_mm_min(touch.programmed_feed_mm_s)},
             {"trigger_speed_mm_min", mm_s_to_mm_min(touch.trigger_speed_mm_s)},
             {"overtravel_mm", touch.overtravel_mm},
+            {"mean_overtravel_mm", touch.mean_overtravel_mm},
             {"recorded_mm", touch.recorded_mm},
             {"search_mm", touch.search_mm}};
 }

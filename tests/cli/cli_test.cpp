@@ -230,13 +230,14 @@ TEST_F(CycleCli, EvaluatePrintsTheDocumentedKeys) {
 }
 
 TEST_F(CycleCli, EvaluateSingleTouchFileMatchesTheHandComputation) {
-    // 3000 mm/min, T = 0.06 s: approach 0.13 s, pretravel 0.0001 s, delays 0.002 + 0.006 s,
-    // braking 0.06 s; overtravel 0.005 + 50 * 0.008 + 1.5 = 1.905 mm; return 6.905 mm at
-    // 10000 mm/min, a triangle: 2 sqrt(6.905 * 0.06 / 166.67).
+    // 3000 mm/min, T = 0.06 s: approach 0.13 s, pretravel 0.0001 s, delays 0.002 + 0.004 s
+    // (the latency and the mean scan wait), braking 0.06 s; overtravel (worst, a full scan)
+    // 0.005 + 50 * 0.008 + 1.5 = 1.905 mm, on average 1.805 mm; return 6.805 mm at
+    // 10000 mm/min, a triangle: 2 sqrt(6.805 * 0.06 / 166.67).
     const json j = run_json({"evaluate", data_file("scenario_single_touch_3000.json")});
     expect_evaluation_shape(j);
-    const double ret = 2.0 * std::sqrt(6.905 * 0.06 / (10000.0 / 60.0));
-    const double total = 0.13 + 0.0001 + 0.002 + 0.006 + 0.06 + ret;
+    const double ret = 2.0 * std::sqrt(6.805 * 0.06 / (10000.0 / 60.0));
+    const double total = 0.13 + 0.0001 + 0.002 + 0.004 + 0.06 + ret;
     EXPECT_NEAR(j["cycle_time_s"].get<double>(), total, 1e-6 * total);
     EXPECT_NEAR(j["overtravel_mm"].get<double>(), 1.905, 1e-6);
     EXPECT_NEAR(j["trigger_speed_mm_min"].get<double>(), 3000.0, 1e-6);
@@ -246,8 +247,8 @@ TEST_F(CycleCli, EvaluateSingleTouchFileMatchesTheHandComputation) {
     EXPECT_EQ(phase_names(j),
               (std::vector<std::string>{"approach", "pretravel", "interface_delay",
                                         "controller_delay", "deceleration", "return"}));
-    const double times[] = {0.13, 0.0001, 0.002, 0.006, 0.06, ret};
-    const double distances[] = {5.0, 0.005, 0.1, 0.3, 1.5, 6.905};
+    const double times[] = {0.13, 0.0001, 0.002, 0.004, 0.06, ret};
+    const double distances[] = {5.0, 0.005, 0.1, 0.2, 1.5, 6.805};
     for (std::size_t k = 0; k < 6; ++k) {
         EXPECT_NEAR(j["phases"][k]["time_s"].get<double>(), times[k], 1e-6 * times[k]) << k;
         EXPECT_NEAR(j["phases"][k]["distance_mm"].get<double>(), distances[k], 1e-6 * distances[k])

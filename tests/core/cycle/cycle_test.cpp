@@ -288,8 +288,10 @@ void expect_phases(const CycleResult& r, const std::vector<PhaseExpectation>& ex
 
 TEST(SingleTouch, SurfaceAt3000PhaseByPhase) {
     // v = 50 mm/s, T = 0.06: ramp 1.5 mm in 0.06 s, 3.5 mm cruise in 0.07 s.
-    // Overtravel 0.005 + 50 * (0.002 + 0.002 + 0.004) + 50 * 0.06 / 2 = 1.905 mm.
-    // Return 6.905 mm at 166.67 mm/s < v*T = 10 mm: 2 * sqrt(d * T / v).
+    // Overtravel (worst case, a full 4 ms scan) 0.005 + 50 * (0.002 + 0.002 +
+    // 0.004) + 50 * 0.06 / 2 = 1.905 mm. The timeline waits the mean scan, 2
+    // ms: the controller delay is 4 ms and the axis stops 1.805 mm past.
+    // Return 6.805 mm at 166.67 mm/s < v*T = 10 mm: 2 * sqrt(d * T / v).
     const CycleResult r = evaluate(surface(Strategy::single_touch, 3000.0));
     const double v_ret = 10000.0 / 60.0;
     // clang-format off
@@ -298,13 +300,17 @@ TEST(SingleTouch, SurfaceAt3000PhaseByPhase) {
         {Phase::approach,           0.13,                                       5.0},
         {Phase::pretravel,          0.0001,                                     0.005},
         {Phase::interface_delay,    0.002,                                      0.1},
-        {Phase::controller_delay,   0.006,                                      0.3},
+        {Phase::controller_delay,   0.004,                                      0.2},
         {Phase::deceleration,       0.06,                                       1.5},
-        {Phase::return_move,        2.0 * std::sqrt(6.905 * 0.06 / v_ret),      6.905},
+        {Phase::return_move,        2.0 * std::sqrt(6.805 * 0.06 / v_ret),      6.805},
     });
     // clang-format on
     EXPECT_NEAR(r.overtravel_mm(), 1.905, 1e-12);
     EXPECT_NEAR(r.first_touch().overtravel_mm, 1.905, 1e-12);
+    EXPECT_NEAR(r.first_touch().mean_overtravel_mm, 1.805, 1e-12);
+    // Recorded after the interface delay and a full scan (worst), or half of it.
+    EXPECT_NEAR(r.first_touch().recorded_mm, 0.005 + 50.0 * 0.006, 1e-12);
+    EXPECT_NEAR(r.first_touch().mean_recorded_mm, 0.005 + 50.0 * 0.004, 1e-12);
     EXPECT_NEAR(r.trigger_speed_mm_s(), 50.0, 1e-12);
     EXPECT_NEAR(r.first_touch().touch_speed_mm_s, 50.0, 1e-12);
     EXPECT_NEAR(r.first_touch().react_speed_mm_s, 50.0, 1e-12);
@@ -319,9 +325,11 @@ TEST(SingleTouch, SurfaceAt3000PhaseByPhase) {
 }
 
 TEST(TwoTouch, SurfaceAt3000Then30PhaseByPhase) {
-    // First touch as above (overtravel 1.905 mm); backoff 2.5 mm leaves 0.595 mm to the
-    // surface, approached at 0.5 mm/s (ramp 0.015 mm in 0.06 s): 0.06 + 0.58 / 0.5 = 1.22 s.
-    // Second overtravel 0.005 + 0.5 * 0.008 + 0.015 = 0.024 mm; return 5.024 mm.
+    // First touch as above (overtravel 1.905 mm, on average 1.805 mm); the
+    // backoff 2.5 mm from where it stopped leaves on average 0.695 mm to the
+    // surface, approached at 0.5 mm/s (ramp 0.015 mm in 0.06 s): 0.06 + 0.68 /
+    // 0.5 = 1.42 s. Second overtravel 0.005 + 0.5 * 0.008 + 0.015 = 0.024 mm,
+    // on average 0.023 mm; return 5.023 mm.
     const CycleResult r = evaluate(surface(Strategy::two_touch, 3000.0, 2.5));
     const double v_ret = 10000.0 / 60.0;
     // clang-format off
@@ -330,15 +338,15 @@ TEST(TwoTouch, SurfaceAt3000Then30PhaseByPhase) {
         {Phase::approach,                 0.13,                                    5.0},
         {Phase::pretravel,                0.0001,                                  0.005},
         {Phase::interface_delay,          0.002,                                   0.1},
-        {Phase::controller_delay,         0.006,                                   0.3},
+        {Phase::controller_delay,         0.004,                                   0.2},
         {Phase::deceleration,             0.06,                                    1.5},
         {Phase::backoff,                  kUnchecked,                              2.5},
-        {Phase::second_approach,          1.22,                                    0.595},
+        {Phase::second_approach,          1.42,                                    0.695},
         {Phase::second_pretravel,         0.01,                                    0.005},
         {Phase::second_interface_delay,   0.002,                                   0.001},
-        {Phase::second_controller_delay,  0.006,                                   0.003},
+        {Phase::second_controller_delay,  0.004,                                   0.002},
         {Phase::second_deceleration,      0.06,                                    0.015},
-        {Phase::return_move,              2.0 * std::sqrt(5.024 * 0.06 / v_ret),   5.024},
+        {Phase::return_move,              2.0 * std::sqrt(5.023 * 0.06 / v_ret),   5.023},
     });
     // clang-format on
     EXPECT_NEAR(r.first_touch().overtravel_mm, 1.905, 1e-12);
@@ -410,22 +418,29 @@ TEST(Cycle, TouchDuringAccelerationTriggersSlowerAndKeepsAccelerating) {
     const double a = 100.0 / 0.06;
     const double t_touch = std::sqrt(2.0 * 0.75 / a);
     const double t_trigger = std::sqrt(2.0 * 0.755 / a);
-    const double t_react = t_trigger + 0.008;
+    // The timeline reacts after the mean scan wait (6 ms in all), the
+    // overtravel after a full scan (8 ms).
+    const double t_react = t_trigger + 0.006;
     const double x_react = 0.5 * a * t_react * t_react;
     const double v_react = a * t_react;
+    const double t_worst = t_trigger + 0.008;
+    const double x_worst = 0.5 * a * t_worst * t_worst;
+    const double v_worst = a * t_worst;
     EXPECT_NEAR(r.first_touch().touch_speed_mm_s, 50.0, 1e-9);
     EXPECT_NEAR(r.first_touch().trigger_speed_mm_s, a * t_trigger, 1e-9);
     EXPECT_NEAR(r.first_touch().react_speed_mm_s, v_react, 1e-9);
     EXPECT_NEAR(r.trigger_speed_mm_s(), a * t_trigger, 1e-9);
     // Overtravel: to the reaction point, then v^2 / (2 a).
-    EXPECT_NEAR(r.overtravel_mm(), x_react - 0.75 + v_react * v_react / (2.0 * a), 1e-9);
+    EXPECT_NEAR(r.overtravel_mm(), x_worst - 0.75 + v_worst * v_worst / (2.0 * a), 1e-9);
+    EXPECT_NEAR(r.first_touch().mean_overtravel_mm, x_react - 0.75 + v_react * v_react / (2.0 * a),
+                1e-9);
     // clang-format off
     expect_phases(r, {
         // phase                    time [s]                   distance [mm]
         {Phase::approach,           t_touch,                   0.75},
         {Phase::pretravel,          t_trigger - t_touch,       0.005},
         {Phase::interface_delay,    0.002,                     0.5 * a * (std::pow(t_trigger + 0.002, 2) - t_trigger * t_trigger)},
-        {Phase::controller_delay,   0.006,                     x_react - 0.5 * a * std::pow(t_trigger + 0.002, 2)},
+        {Phase::controller_delay,   0.004,                     x_react - 0.5 * a * std::pow(t_trigger + 0.002, 2)},
         {Phase::deceleration,       v_react / a,               v_react * v_react / (2.0 * a)},
         {Phase::return_move,        kUnchecked,                x_react + v_react * v_react / (2.0 * a)},
     });
@@ -651,10 +666,10 @@ TEST(StateAt, SingleTouchAt3000) {
     const CycleState touch = r.state_at(0.13);
     EXPECT_NEAR(touch.position_mm, 5.0, 1e-9);
     EXPECT_NEAR(touch.velocity_mm_s, 50.0, 1e-9);
-    // Stopped 1.905 mm beyond it.
-    const double t_stop = 0.13 + 0.0001 + 0.002 + 0.006 + 0.06;
+    // Stopped, after the mean scan wait, 1.805 mm beyond it.
+    const double t_stop = 0.13 + 0.0001 + 0.002 + 0.004 + 0.06;
     const CycleState stop = r.state_at(t_stop);
-    EXPECT_NEAR(stop.position_mm, 6.905, 1e-9);
+    EXPECT_NEAR(stop.position_mm, 6.805, 1e-9);
     EXPECT_NEAR(stop.velocity_mm_s, 0.0, 1e-9);
     // Returning: moving away from the surface.
     const CycleState back = r.state_at(0.5 * (t_stop + r.total()));
@@ -675,7 +690,7 @@ TEST(StateAt, TwoTouchBacksOffThenMeetsTheSurfaceAgain) {
     const CycleState mid_backoff = r.state_at(backoff->start_s + 0.5 * backoff->time_s);
     EXPECT_LT(mid_backoff.velocity_mm_s, 0.0);
     const CycleState backed = r.state_at(backoff->start_s + backoff->time_s);
-    EXPECT_NEAR(backed.position_mm, 5.0 + 1.905 - 2.5, 1e-9);
+    EXPECT_NEAR(backed.position_mm, 5.0 + 1.805 - 2.5, 1e-9);
     const CycleState met = r.state_at(second->start_s + second->time_s);
     EXPECT_NEAR(met.position_mm, 5.0, 1e-9);
     EXPECT_NEAR(met.velocity_mm_s, 0.5, 1e-9);
@@ -804,14 +819,16 @@ TEST(RecommendedBackoff, LeavesTheSecondTouchRoomToReachTheMeasuringFeed) {
 // 2000 mm/min (33.33 mm/s) the control records the touch after pretravel,
 // interface delay and a full scan: 0.005 + 33.33 (0.002 + 0.004) = 0.205 mm past
 // the surface; the axis stops at 1.27167 mm. A 2 mm backoff from there moves
-// 2 + 1.27167 - 0.205 = 3.06667 mm and starts the second touch 1.795 mm out.
+// 2 + 1.27167 - 0.205 = 3.06667 mm. On average (half a scan, 2 ms, less of
+// both) it is recorded 0.13833 mm past and starts the second touch 1.86167 mm out.
 TEST(BackoffFrom, TheRecordedTriggerPosition) {
     Scenario s;
     s.cycle.backoff_from = BackoffFrom::trigger;
     const CycleResult r = evaluate(s);
     EXPECT_NEAR(r.first_touch().recorded_mm, 0.205, 1e-12);
+    EXPECT_NEAR(r.first_touch().mean_recorded_mm, 0.005 + 0.4 / 3.0, 1e-12);
     EXPECT_NEAR(find_phase(r, Phase::backoff)->distance_mm, 2.0 + 1.27166667 - 0.205, 1e-8);
-    EXPECT_NEAR(find_phase(r, Phase::second_approach)->distance_mm, 2.0 - 0.205, 1e-12);
+    EXPECT_NEAR(find_phase(r, Phase::second_approach)->distance_mm, 2.0 - 0.005 - 0.4 / 3.0, 1e-12);
     // Recommended: 0.205 + max(reseat 0.2, reach 0.5 mm/s x 0.03 s) = 0.405 mm.
     EXPECT_NEAR(r.recommended_backoff_mm(), 0.405, 1e-12);
     EXPECT_NE(find_warning(r, WarningCode::backoff_excess), nullptr);
@@ -841,8 +858,10 @@ TEST(BackoffFrom, TheRecordedTriggerPosition) {
     from_stop.cycle.backoff_mm = evaluate(from_stop).recommended_backoff_mm();
     from_trigger.cycle.backoff_mm = evaluate(from_trigger).recommended_backoff_mm();
     EXPECT_NEAR(evaluate(from_stop).total(), evaluate(from_trigger).total(), 0.002);
-    EXPECT_NEAR(find_phase(evaluate(from_trigger), Phase::second_approach)->distance_mm, 0.2,
-                kBackoffStep_mm);
+    // The reseat distance, and the half scan by which the mean stop falls short
+    // of the worst.
+    EXPECT_NEAR(find_phase(evaluate(from_trigger), Phase::second_approach)->distance_mm,
+                0.2 + 0.2 / 3.0, kBackoffStep_mm);
 }
 
 // A recommendation written back rounded to the editors' 0.001 mm is followed
@@ -924,10 +943,11 @@ TEST(Warnings, TouchWhileAcceleratingOnTheFirstTouch) {
 }
 
 TEST(Warnings, TouchWhileAcceleratingOnTheSecondTouch) {
-    // Second approach 0.005 mm, the trigger 0.005 mm later, short of the
-    // 0.015 mm needed to reach 30 mm/min.
+    // Second approach 0.005 mm from where the first touch stops on average
+    // (1.805 mm past), the trigger 0.005 mm later, short of the 0.015 mm
+    // needed to reach 30 mm/min.
     Scenario s = clean_two_touch();
-    s.cycle.backoff_mm = 1.905 + 0.005;
+    s.cycle.backoff_mm = 1.805 + 0.005;
     const CycleResult r = evaluate(s);
     const Warning* w = find_warning(r, WarningCode::touch_while_accelerating, 1);
     ASSERT_NE(w, nullptr) << describe(r);
@@ -993,9 +1013,10 @@ TEST(Repeats, TwoTouchBacksOffFromTheMeasuringTouchAndMeasuresAgain) {
     expected.push_back(Phase::return_move);
     EXPECT_EQ(phases_of(r), expected) << describe(r);
     // A repeat backs off b from where the measuring touch stopped and
-    // approaches b less that touch's overtravel at the measuring feed.
+    // approaches b less that touch's overtravel (on average) at the measuring
+    // feed.
     const double b = s.cycle.backoff_mm;
-    const double o2 = once.measuring_touch().overtravel_mm;
+    const double o2 = once.measuring_touch().mean_overtravel_mm;
     std::vector<const PhaseRecord*> backoffs;
     std::vector<const PhaseRecord*> approaches;
     for (const PhaseRecord& p : r.phases()) {
@@ -1369,13 +1390,16 @@ TEST_F(RandomCycles, FormulasOfATouchAtFullSpeed) {
         EXPECT_NEAR(first.react_speed_mm_s, v, rel_tol(v));
         const double ot = s.probe.pretravel_mm + v * t_react + stop_distance_mm(limits, v, v);
         EXPECT_NEAR(first.overtravel_mm, ot, rel_tol(ot, 1e-9));
+        // The timeline waits half a scan on average.
+        const double wait = s.machine.controller_latency_s + 0.5 * s.machine.scan_period_s;
+        const double mean_ot = ot - 0.5 * v * s.machine.scan_period_s;
+        EXPECT_NEAR(first.mean_overtravel_mm, mean_ot, rel_tol(mean_ot, 1e-9));
         // clang-format off
         const struct { Phase phase; double time_s; double distance_mm; } expected[] = {
             {Phase::approach,         reach_time_s(limits, v) + (s_approach - reach_distance_mm(limits, v)) / v, s_approach},
             {Phase::pretravel,        s.probe.pretravel_mm / v,            s.probe.pretravel_mm},
             {Phase::interface_delay,  s.probe.interface_delay_s,           v * s.probe.interface_delay_s},
-            {Phase::controller_delay, s.machine.controller_latency_s + s.machine.scan_period_s,
-                                      v * (s.machine.controller_latency_s + s.machine.scan_period_s)},
+            {Phase::controller_delay, wait,                                v * wait},
             {Phase::deceleration,     stop_time_s(limits, v, v),           stop_distance_mm(limits, v, v)},
         };
         // clang-format on
@@ -1404,8 +1428,8 @@ TEST_F(RandomCycles, SecondTouchAndReturn) {
         const bool reseated = s.cycle.strategy == Strategy::single_touch ||
                               s.cycle.backoff_mm >= r.first_touch().overtravel_mm;
         if (reseated) {
-            // Stopped `overtravel` beyond the surface.
-            const double d_return = s.cycle.approach_mm + m.overtravel_mm;
+            // Stopped, on average, `mean_overtravel` beyond the surface.
+            const double d_return = s.cycle.approach_mm + m.mean_overtravel_mm;
             EXPECT_NEAR(ret->distance_mm, d_return, rel_tol(d_return, 1e-9));
         }
         // Uncertainty of the measuring touch.
@@ -1429,7 +1453,7 @@ TEST_F(RandomCycles, SecondTouchAndReturn) {
         EXPECT_GE(backoff->time_s, move_time_s(limits, s.cycle.backoff_mm,
                                                mm_min_to_mm_s(s.machine.rapid_feed_mm_min)) *
                                        (1 - 1e-12));
-        const double gap = s.cycle.backoff_mm - r.first_touch().overtravel_mm;
+        const double gap = s.cycle.backoff_mm - r.first_touch().mean_overtravel_mm;
         if (gap < reach_distance_mm(limits, vm) * 1.001) return;
         const PhaseRecord* second = find_phase(r, Phase::second_approach);
         ASSERT_NE(second, nullptr);
@@ -1547,7 +1571,7 @@ TEST_F(RandomCycles, StateAlongTheCycle) {
         const CycleState start = r.state_at(0.0);
         EXPECT_EQ(start.position_mm, 0.0);
         EXPECT_EQ(start.velocity_mm_s, 0.0);
-        // Surface at the end of the approach; stop at approach + overtravel.
+        // Surface at the end of the approach; stop at approach + the mean overtravel.
         const PhaseRecord& approach = *find_phase(r, Phase::approach);
         const CycleState touch = r.state_at(approach.start_s + approach.time_s);
         EXPECT_NEAR(touch.position_mm, s.cycle.approach_mm, 1e-9 * (1 + s.cycle.approach_mm));
@@ -1555,7 +1579,8 @@ TEST_F(RandomCycles, StateAlongTheCycle) {
         const PhaseRecord* decel = find_phase(r, Phase::deceleration);
         ASSERT_NE(decel, nullptr);
         const CycleState stop = r.state_at(decel->start_s + decel->time_s);
-        EXPECT_NEAR(stop.position_mm, s.cycle.approach_mm + r.first_touch().overtravel_mm, 1e-9);
+        EXPECT_NEAR(stop.position_mm, s.cycle.approach_mm + r.first_touch().mean_overtravel_mm,
+                    1e-9);
         EXPECT_NEAR(stop.velocity_mm_s, 0.0, 1e-9 * v_max);
         const CycleState end = r.state_at(r.total());
         EXPECT_NEAR(end.position_mm, 0.0, 1e-9);
@@ -1610,9 +1635,10 @@ TEST_F(RandomCycles, StateAlongTheCycle) {
                           v_max * dt * (1 + 1e-9) + 1e-9)
                     << "t=" << t;
             }
-            // A backoff longer than approach + overtravel goes behind the start.
+            // A backoff longer than approach + the (mean) overtravel goes
+            // behind the start.
             EXPECT_GE(st.position_mm,
-                      std::min(0.0, s.cycle.approach_mm + r.first_touch().overtravel_mm -
+                      std::min(0.0, s.cycle.approach_mm + r.first_touch().mean_overtravel_mm -
                                         s.cycle.backoff_mm) -
                           1e-9);
             EXPECT_LE(st.position_mm, s.cycle.approach_mm + r.overtravel_mm() + 1e-9);
@@ -1874,7 +1900,7 @@ TEST(MotionCache, KeepsTouchesByTimingAndDistanceTheMostRecentlyUsedLongest) {
     Scenario s;
     MotionCache cache;
     cache.bind(s.motion_limits(), s.axis_dynamics());
-    const MotionCache::TouchKey key{0.5, 0.005, 0.002, 0.008, 0.004};
+    const MotionCache::TouchKey key{0.5, 0.005, 0.002, 0.008, 0.004, 0.004};
     MotionCache::SolvedTouch exact;
     exact.distance_mm = 0.0;
     exact.touch_s = 0.25;

@@ -916,12 +916,13 @@ TEST(DynamicsCycle, ATouchAtCruiseThroughALinearFilterIsHandComputable) {
     // in-position 0.01. At cruise x_a = v (t - W/2), so
     //   approach   D/v + W/2 = 0.65 s
     //   pretravel  p/v = 0.00015 s
-    //   delays     t_i, then t_c + t_s
+    //   delays     t_i, then t_c + t_s/2 (the mean scan wait)
     //   overtravel p + v (tau_r + W/2) = 0.005 + 33.333 * 0.058 = 1.938333 mm
+    //              (the worst case, a full scan), on average v t_s/2 less
     //   recorded   p + v (t_i + t_s) = 0.205 mm
     //   settling   W - sqrt(2 W w / v) after the reaction.
-    // The return, D + overtravel at 10000 mm/min, lasts t_e = 0.1316 s > W,
-    // so it settles at t_e + W - sqrt(2 W w / v_r).
+    // The return, D + the mean overtravel at 10000 mm/min, lasts t_e = 0.1312 s
+    // > W, so it settles at t_e + W - sqrt(2 W w / v_r).
     const double v = 2000.0 / 60.0;
     const double w = 0.1;
     Scenario s = single_touch(2000.0, 20.0);
@@ -939,13 +940,16 @@ TEST(DynamicsCycle, ATouchAtCruiseThroughALinearFilterIsHandComputable) {
     EXPECT_NEAR(r.phase_time(Phase::approach), 20.0 / v + 0.05, kClose);
     EXPECT_NEAR(r.phase_time(Phase::pretravel), 0.005 / v, kClose);
     EXPECT_NEAR(r.phase_time(Phase::interface_delay), 0.002, kClose);
-    EXPECT_NEAR(r.phase_time(Phase::controller_delay), 0.006, kClose);
+    EXPECT_NEAR(r.phase_time(Phase::controller_delay), 0.004, kClose);
     EXPECT_NEAR(r.phase_time(Phase::deceleration), w - std::sqrt(2.0 * w * 0.01 / v), kClose);
+    const double mean_overtravel = overtravel - v * 0.002;
+    EXPECT_NEAR(r.first_touch().mean_overtravel_mm, mean_overtravel, kClose);
+    EXPECT_NEAR(r.first_touch().mean_recorded_mm, 0.005 + v * 0.004, kClose);
     const double v_r = 10000.0 / 60.0;
-    const double back = (20.0 + overtravel) / v_r + w - std::sqrt(2.0 * w * 0.01 / v_r);
+    const double back = (20.0 + mean_overtravel) / v_r + w - std::sqrt(2.0 * w * 0.01 / v_r);
     EXPECT_NEAR(r.phase_time(Phase::return_move), back, kClose);
     EXPECT_NEAR(r.total(),
-                20.0 / v + 0.05 + 0.005 / v + 0.008 + w - std::sqrt(2.0 * w * 0.01 / v) + back,
+                20.0 / v + 0.05 + 0.005 / v + 0.006 + w - std::sqrt(2.0 * w * 0.01 / v) + back,
                 kClose);
     EXPECT_FALSE(has_warning(r, WarningCode::touch_while_accelerating));
 }
@@ -955,8 +959,9 @@ TEST(DynamicsCycle, ATouchAtCruiseThroughAnExponentialFilter) {
     //   approach   D/v + T = 1.53 s
     //   overtravel p + v (tau_r + T) = 0.005 + 33.333 * 0.038 = 1.271667 mm
     //   settling   v T e^(-s/T) = w: s = T ln(v T / w) = 0.03 ln 100
-    //   return     d = D + overtravel at v_r = 166.667 mm/s: t_e = d/v_r and
-    //              s = T ln(v_r T (1 - e^(-t_e/T)) / w) after it.
+    //   return     d = D + the mean overtravel (v t_s/2 less) at v_r =
+    //              166.667 mm/s: t_e = d/v_r and s = T ln(v_r T (1 -
+    //              e^(-t_e/T)) / w) after it.
     const double v = 2000.0 / 60.0;
     const double tc = 0.03;
     Scenario s = single_touch(2000.0, 50.0);
@@ -969,7 +974,7 @@ TEST(DynamicsCycle, ATouchAtCruiseThroughAnExponentialFilter) {
     EXPECT_NEAR(r.phase_time(Phase::approach), 50.0 / v + tc, kClose);
     EXPECT_NEAR(r.phase_time(Phase::deceleration), tc * std::log(100.0), kClose);
     const double v_r = 10000.0 / 60.0;
-    const double t_e = (50.0 + overtravel) / v_r;
+    const double t_e = (50.0 + overtravel - v * 0.002) / v_r;
     EXPECT_NEAR(r.phase_time(Phase::return_move),
                 t_e + tc * std::log(v_r * tc * (1.0 - std::exp(-t_e / tc)) / 0.01), kClose);
 }
@@ -1013,7 +1018,7 @@ TEST(DynamicsCycle, ASettledMeasuringTouchIsTheSameTouchAtEveryBackoff) {
         const CycleResult fresh = evaluate(s);  // shifted the same way without a cache
         EXPECT_EQ(r.total(), fresh.total());
         EXPECT_EQ(r.phase_time(Phase::second_approach), fresh.phase_time(Phase::second_approach));
-        const double d2 = backoff - r.first_touch().overtravel_mm;
+        const double d2 = backoff - r.first_touch().mean_overtravel_mm;
         ASSERT_GT(d2 / v, 61.0 * t1);  // settled
         EXPECT_NEAR(r.phase_time(Phase::second_approach), d2 / v + t1 + t2, kClose);
         EXPECT_NEAR(r.measuring_touch().overtravel_mm, 0.034, kClose);
