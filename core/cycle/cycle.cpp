@@ -41,6 +41,8 @@ const char* to_string(Phase phase) {
             return "lift";
         case Phase::lower:
             return "lower";
+        case Phase::block_change:
+            return "block_change";
     }
     return "?";
 }
@@ -62,6 +64,7 @@ const std::array<Phase, kPhaseCount>& all_phases() {
         Phase::position,
         Phase::lift,
         Phase::lower,
+        Phase::block_change,
     };
     return phases;
 }
@@ -483,14 +486,15 @@ class CycleBuilder {
     // `kernel`: the dynamics after interpolation, or nullptr for the ideal axis.
     CycleBuilder(std::vector<PhaseRecord>& phases, std::vector<TimedSegment>& segments,
                  std::vector<AxisMotion>& motions, std::array<double, kPhaseCount>& phase_time,
-                 const AxisKernel* kernel, MotionCache& cache, Detail detail)
+                 const AxisKernel* kernel, MotionCache& cache, Detail detail, double block_change_s)
         : phases_(phases),
           segments_(segments),
           motions_(motions),
           phase_time_(phase_time),
           kernel_(kernel),
           cache_(cache),
-          full_(detail == Detail::full) {}
+          full_(detail == Detail::full),
+          block_change_s_(block_change_s) {}
 
     double now() const { return t_; }
     double axis_mm() const { return axis_mm_; }
@@ -555,6 +559,29 @@ class CycleBuilder {
         axis_mm_ += direction * end_mm;
     }
 
+    // The control's block change after a move (machine.block_change_s): the
+    // axis stands where the move left it, or with dynamics goes on settling
+    // inside the in-position width.
+    void add_block_change() {
+        if (block_change_s_ <= 0.0) return;
+        if (full_) {
+            TimedSegment* last = segments_.empty() ? nullptr : &segments_.back();
+            if (last != nullptr && last->motion >= 0 &&
+                last->start_s + last->duration_s == motion_t_) {
+                last->duration_s += block_change_s_;
+            } else {
+                TimedSegment rest;
+                rest.start_s = motion_t_;
+                rest.duration_s = block_change_s_;
+                rest.axis_start_mm = axis_mm_;
+                rest.touch = touch_;
+                segments_.push_back(rest);
+            }
+        }
+        motion_t_ += block_change_s_;
+        add_phase(Phase::block_change, block_change_s_, 0.0);
+    }
+
     std::size_t phase_count() const { return phases_.size(); }
     double phase_time(std::size_t index) const { return phases_[index].time_s; }
     std::size_t segment_count() const { return segments_.size(); }
@@ -585,9 +612,26 @@ class CycleBuilder {
         motion_t_ += sequence_s;
     }
 
-    // A rest-to-rest move as one phase.
+    // A rest-to-rest move as one phase, then the block change.
     void add_move(Phase phase, const MotionLimits& limits, double distance_mm, double feed_mm_s,
                   double direction) {
+        add_move_only(phase, limits, distance_mm, feed_mm_s, direction);
+        add_block_change();
+    }
+
+    // A touch, then the block change.
+    TouchResult add_touch(const Scenario& scenario, const MotionLimits& limits, double feed_mm_s,
+                          double distance_mm, const TouchPhases& names) {
+        const TouchResult touch =
+            kernel_ != nullptr ? add_filtered_touch(scenario, limits, feed_mm_s, distance_mm, names)
+                               : add_ideal_touch(scenario, limits, feed_mm_s, distance_mm, names);
+        add_block_change();
+        return touch;
+    }
+
+  private:
+    void add_move_only(Phase phase, const MotionLimits& limits, double distance_mm,
+                       double feed_mm_s, double direction) {
         if (kernel_ != nullptr) {
             // A feature repeats its moves (to and from the centre, across it):
             // one motion serves every repeat.
@@ -630,11 +674,8 @@ class CycleBuilder {
     // (worst case: a full scan), then braking. The axis follows its planned
     // acceleration until it reacts, so a touch while still accelerating
     // triggers at the real, lower speed.
-    TouchResult add_touch(const Scenario& scenario, const MotionLimits& limits, double feed_mm_s,
-                          double distance_mm, const TouchPhases& names) {
-        if (kernel_ != nullptr) {
-            return add_filtered_touch(scenario, limits, feed_mm_s, distance_mm, names);
-        }
+    TouchResult add_ideal_touch(const Scenario& scenario, const MotionLimits& limits,
+                                double feed_mm_s, double distance_mm, const TouchPhases& names) {
         const Machine& m = scenario.machine;
         const Probe& p = scenario.probe;
         const SegmentPlan plan = plan_accelerate(limits, feed_mm_s, kOpenCruise_s);
@@ -693,7 +734,6 @@ class CycleBuilder {
         return touch;
     }
 
-  private:
     // The touch with dynamics after interpolation (issue 11): the actual
     // position touches and triggers; the control reacts after the trigger
     // chain, the interpolator then stops its command (at once, or braking as
@@ -868,6 +908,7 @@ class CycleBuilder {
     const AxisKernel* kernel_;
     MotionCache& cache_;
     bool full_{true};  // Detail::full: the timeline and every distance
+    double block_change_s_{0.0};
     double t_{0.0};
     double motion_t_{0.0};
     double axis_mm_{0.0};
@@ -1079,7 +1120,8 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
 
     cache.bind(limits, scenario.axis_dynamics());
     const AxisKernel* dynamics = active_kernel(cache.kernel());
-    CycleBuilder b(r.phases_, r.segments_, r.motions_, r.phase_time_s_, dynamics, cache, detail);
+    CycleBuilder b(r.phases_, r.segments_, r.motions_, r.phase_time_s_, dynamics, cache, detail,
+                   m.block_change_s);
     // Issue 11, loose end 6: a feature's moves are protected, at the positioning
     // feed, from the centre (above it for a boss or web, which lifts over the
     // wall at the rapid feed, away from the part).
@@ -1112,10 +1154,11 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     // approach (backoff_cost_s, here taken from the phases as they are made).
     const auto back_off_and_measure = [&](const TouchResult& from, double& cost_s) {
         const double reference = backoff_reference_mm(c, from, TouchCase::mean);
-        const double t_backoff = b.now();
+        const std::size_t backoff_phase = b.phase_count();
         b.add_move(Phase::backoff, limits, backoff_move_mm(c, c.backoff_mm, from, TouchCase::mean),
                    return_v, -1.0);
-        const double backoff_s = b.now() - t_backoff;
+        // (The move itself: its block change does not change with the backoff.)
+        const double backoff_s = b.phase_time(backoff_phase);
         const double distance = std::max(0.0, c.backoff_mm - reference);
         const std::size_t approach_phase = b.phase_count();
         const TouchResult touch = b.add_touch(scenario, limits, measure_v, distance, kSecondTouch);

@@ -51,8 +51,11 @@ enum class Phase {
     position,     // protected move at the positioning feed (between touches, from/to the centre)
     lift,         // boss/web: up to the clearance height, at the rapid feed (away from the part)
     lower,        // boss/web: down to the measuring depth, protected, at the positioning feed
+    // After each move, the control's block change (machine.block_change_s):
+    // the axis at rest.
+    block_change,
 };
-constexpr std::size_t kPhaseCount = 15;
+constexpr std::size_t kPhaseCount = 16;
 const char* to_string(Phase phase);  // the exact file/CSV names ("return" for return_move)
 // Every phase in its canonical order.
 const std::array<Phase, kPhaseCount>& all_phases();

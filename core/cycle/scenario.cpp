@@ -166,6 +166,16 @@ const std::vector<KeyEntry>& key_table() {
                     "starts then. The overtravel is still where the axis comes to rest."),
                 QT_TRANSLATE_NOOP("Parameter", "In-position width")},
                PC_NUMBER(machine, in_position_mm)),
+        number({"machine.block_change_s", "s", 0.0, 1.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Time the control adds at each block change, after a move ends and before "
+                    "the next starts: block processing, the wait for the in-position check and, "
+                    "after a probing move, for the skip position to be read. Every move of the "
+                    "cycle (touches, backoffs, returns, positioning moves) adds it once. 0 means "
+                    "none."),
+                QT_TRANSLATE_NOOP("Parameter", "Block change time")},
+               PC_NUMBER(machine, block_change_s)),
         number(
             {"machine.rapid_feed_mm_min", "mm/min", 100.0, 200000.0,
              QT_TRANSLATE_NOOP(

@@ -34,6 +34,9 @@ struct Machine {
     double filter2_time_s{0.01};
     double servo_time_constant_s{0.0};
     double in_position_mm{0.01};
+    // The control's block change: time each move of the cycle adds after it
+    // ends, before the next starts (Phase::block_change). 0 = none.
+    double block_change_s{0.0};
     double rapid_feed_mm_min{30000.0};
     double scan_period_s{0.004};
     double controller_latency_s{0.002};

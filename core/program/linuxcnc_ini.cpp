@@ -197,6 +197,12 @@ class Reader {
         return nullptr;
     }
 
+    // The section, or nullptr when the file has none (nothing to name).
+    const IniSection* optional_section(const std::string& name) const {
+        const auto it = file_.sections.find(name);
+        return it != file_.sections.end() ? &it->second : nullptr;
+    }
+
     // The value of a key, or nullopt after naming it missing or empty
     // (`required`) with what it must be.
     std::optional<IniValue> value(const std::string& section_name, const IniSection& section,
@@ -253,6 +259,20 @@ constexpr const char* kRapidKey = "machine.rapid_feed_mm_min";
 constexpr const char* kAccelKey = "machine.max_accel_mm_s2";
 constexpr const char* kPeriodGives = "machine.scan_period_s, machine.controller_latency_s";
 constexpr const char* kUnitsGives = "machine.max_accel_mm_s2, machine.rapid_feed_mm_min";
+constexpr const char* kBlockChangeGives = "machine.block_change_s";
+// [TASK] CYCLE_TIME when the file has none: LinuxCNC's own default,
+// DEFAULT_EMC_TASK_CYCLE_TIME in src/emc/nml_intf/emccfg.h.
+constexpr double kDefaultTaskCycle_s = 0.100;
+constexpr double kMinTaskCycle_s = 0.0001;
+constexpr double kMaxTaskCycle_s = 0.5;
+// The block change, fitted to LinuxCNC 2.9 running our programs (tests/linuxcnc,
+// servo periods of 0.5, 1 and 2 ms, task cycles of 1, 2 and 10 ms): two servo
+// periods at each move's ends, and on average 1.6 task cycles of waiting for
+// the next block (after a probing move the interpreter waits for the motion
+// to end before it reads the skip position). Per block the measurements lay
+// within about 1 ms (2 ms at a 10 ms task cycle) of it.
+constexpr double kBlockServoPeriods = 2.0;
+constexpr double kBlockTaskCycles = 1.6;
 
 }  // namespace
 
@@ -335,6 +355,21 @@ Machine machine_from_linuxcnc_ini(std::string_view text) {
         }
     }
 
+    // [TASK] CYCLE_TIME, the task's period: how long a block waits for the next.
+    Message cycle_allowed = range_allowed(kMinTaskCycle_s, kMaxTaskCycle_s, "s");
+    double task_cycle_s = kDefaultTaskCycle_s;
+    if (const IniSection* task = reader.optional_section("TASK")) {
+        if (const auto entry = reader.value("TASK", *task, "CYCLE_TIME", cycle_allowed,
+                                            kBlockChangeGives, false)) {
+            const std::optional<double> seconds = parse_decimal(*entry->value);
+            if (seconds && *seconds >= kMinTaskCycle_s && *seconds <= kMaxTaskCycle_s) {
+                task_cycle_s = *seconds;
+            } else {
+                reader.refuse("TASK", "CYCLE_TIME", *entry, cycle_allowed, kBlockChangeGives);
+            }
+        }
+    }
+
     // [TRAJ] LINEAR_UNITS, and the optional cap on every move's speed.
     Message units_allowed = ini_message(
         "unknown_word", QT_TRANSLATE_NOOP("LinuxCncIni", "one of %1, or a number of units per mm"),
@@ -412,6 +447,8 @@ Machine machine_from_linuxcnc_ini(std::string_view text) {
     machine.scan_period_s = *period_ns / 1e9;
     machine.controller_latency_s = 2.0 * machine.scan_period_s;
     machine.latched_input = false;
+    machine.block_change_s =
+        rounded(kBlockServoPeriods * machine.scan_period_s + kBlockTaskCycles * task_cycle_s);
     return machine;
 }
 

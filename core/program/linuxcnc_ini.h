@@ -17,6 +17,10 @@
 //   ns); after the period that sees it the planner brakes two periods later:
 //   overtravel = d + 2*v*Ts + v^2/(2a), d in [0, v*Ts]. So the scan period is
 //   Ts, the controller latency 2*Ts, and the input is not latched.
+// - Each block costs about two servo periods more than its trapezoid, and the
+//   next waits on average 1.6 task cycles ([TASK] CYCLE_TIME; LinuxCNC's
+//   default 0.1 s where the file has none): machine.block_change_s (fitted,
+//   linuxcnc_ini.cpp).
 // - Lengths are in [TRAJ] LINEAR_UNITS.
 // The INI says nothing about the drives' following error: the servo time
 // constant is 0 and there is no filter after interpolation. The other keys

@@ -1182,6 +1182,14 @@
         <source>automatic</source>
         <translation>автоматически</translation>
     </message>
+    <message>
+        <source>Time the control adds at each block change, after a move ends and before the next starts: block processing, the wait for the in-position check and, after a probing move, for the skip position to be read. Every move of the cycle (touches, backoffs, returns, positioning moves) adds it once. 0 means none.</source>
+        <translation>Время, которое система ЧПУ добавляет при каждой смене кадра — после окончания перемещения и до начала следующего: обработка кадра, ожидание контроля достижения позиции и, после измерительного перемещения, чтения позиции пропуска. Каждое перемещение цикла (касания, отводы, возвраты, позиционирование) добавляет его один раз. 0 — нет.</translation>
+    </message>
+    <message>
+        <source>Block change time</source>
+        <translation>Время смены кадра</translation>
+    </message>
 </context>
 <context>
     <name>PdfReport</name>
@@ -1251,6 +1259,10 @@
     <message>
         <source>Lower</source>
         <translation>Опускание</translation>
+    </message>
+    <message>
+        <source>Block changes</source>
+        <translation>Смены кадров</translation>
     </message>
 </context>
 <context>

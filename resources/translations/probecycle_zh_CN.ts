@@ -1182,6 +1182,14 @@
         <source>automatic</source>
         <translation>自动</translation>
     </message>
+    <message>
+        <source>Time the control adds at each block change, after a move ends and before the next starts: block processing, the wait for the in-position check and, after a probing move, for the skip position to be read. Every move of the cycle (touches, backoffs, returns, positioning moves) adds it once. 0 means none.</source>
+        <translation>数控系统在每次程序段切换时增加的时间，即一个移动结束后、下一个开始之前：程序段处理、等待到位检测，以及探测移动之后等待读取跳跃位置。循环中的每个移动（触测、回退、返回、定位移动）各增加一次。0 表示无。</translation>
+    </message>
+    <message>
+        <source>Block change time</source>
+        <translation>程序段切换时间</translation>
+    </message>
 </context>
 <context>
     <name>PdfReport</name>
@@ -1251,6 +1259,10 @@
     <message>
         <source>Lower</source>
         <translation>下降</translation>
+    </message>
+    <message>
+        <source>Block changes</source>
+        <translation>程序段切换</translation>
     </message>
 </context>
 <context>

@@ -28,6 +28,7 @@ TEST(MachineCli, PrintsEveryMachineKeyOfTheMillInMillimetres) {
               "    \"filter2_time_s\": 0.01,\n"
               "    \"servo_time_constant_s\": 0.0,\n"
               "    \"in_position_mm\": 0.01,\n"
+              "    \"block_change_s\": 0.0036,\n"
               "    \"rapid_feed_mm_min\": 6000.0,\n"
               "    \"scan_period_s\": 0.001,\n"
               "    \"controller_latency_s\": 0.002,\n"

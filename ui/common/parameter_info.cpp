@@ -37,6 +37,8 @@ const KeyText kKeyTexts[] = {
     {"machine.servo_time_constant_s", QT_TRANSLATE_NOOP("Parameter", "ms"), 1000.0, 1, SliderScale::none, 0.0, 0.0,
      QT_TRANSLATE_NOOP("Parameter", "ideal servo")},
     {"machine.in_position_mm", QT_TRANSLATE_NOOP("Parameter", "µm"), 1000.0, 1, SliderScale::none, 0.0, 0.0, nullptr},
+    {"machine.block_change_s", QT_TRANSLATE_NOOP("Parameter", "ms"), 1000.0, 2, SliderScale::none, 0.0, 0.0,
+     QT_TRANSLATE_NOOP("Parameter", "none")},
     {"machine.rapid_feed_mm_min", QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
     {"machine.scan_period_s", QT_TRANSLATE_NOOP("Parameter", "ms"), 1000.0, 3, SliderScale::log, 1e-6, 0.02, nullptr},
     {"machine.controller_latency_s", QT_TRANSLATE_NOOP("Parameter", "ms"), 1000.0, 3, SliderScale::none, 0.0, 0.0, nullptr},

@@ -239,6 +239,9 @@ QString phase_label(Phase phase) {
         case Phase::lower:
             text = QT_TRANSLATE_NOOP("Phase", "Lower");
             break;
+        case Phase::block_change:
+            text = QT_TRANSLATE_NOOP("Phase", "Block changes");
+            break;
     }
     return text != nullptr ? QCoreApplication::translate("Phase", text)
                            : QString::fromUtf8(to_string(phase));

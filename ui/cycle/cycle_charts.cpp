@@ -72,6 +72,8 @@ QColor phase_colour(Phase phase) {
             return {0xd7, 0xb5, 0xa6};
         case Phase::lower:
             return {0x9c, 0x9e, 0xde};
+        case Phase::block_change:
+            return {0x5a, 0x5a, 0x5a};
     }
     return Qt::gray;
 }

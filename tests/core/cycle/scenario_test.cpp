@@ -106,6 +106,7 @@ const std::vector<std::string> kNumericKeys = {
     "machine.max_accel_mm_s2",
     "machine.max_jerk_mm_s3",
     "machine.rapid_feed_mm_min",
+    "machine.block_change_s",
     "machine.scan_period_s",
     "machine.controller_latency_s",
     "probe.pretravel_mm",
@@ -287,7 +288,8 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
         {"machine",
          {"accel_model", "time_constant_s", "max_accel_mm_s2", "max_jerk_mm_s3", "filter",
           "filter_time_s", "filter2_time_s", "servo_time_constant_s", "in_position_mm",
-          "rapid_feed_mm_min", "scan_period_s", "controller_latency_s", "latched_input"}},
+          "block_change_s", "rapid_feed_mm_min", "scan_period_s", "controller_latency_s",
+          "latched_input"}},
         {"probe",
          {"pretravel_mm", "interface_delay_s", "repeatability_2sigma_mm", "overtravel_limit_mm",
           "reseat_mm", "calibration_feed_mm_min", "max_feed_mm_min"}},
@@ -659,7 +661,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 39u);
+    ASSERT_EQ(scenario_keys().size(), 40u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);

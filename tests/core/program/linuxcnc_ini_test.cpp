@@ -211,6 +211,26 @@ TEST(LinuxCncIni, TheServoPeriodGivesTheScanAndTwoPeriodsOfLatency) {
     EXPECT_EQ(m.controller_latency_s, 0.0005);
 }
 
+// Two servo periods and 1.6 task cycles a block (measured on LinuxCNC 2.9);
+// without [TASK] CYCLE_TIME, LinuxCNC's default 0.1 s.
+TEST(LinuxCncIni, TheBlockChangeFromTheServoPeriodAndTheTaskCycle) {
+    EXPECT_DOUBLE_EQ(machine_from_linuxcnc_ini(data("mill_mm.ini")).block_change_s,
+                     2 * 0.001 + 1.6 * 0.001);
+    EXPECT_DOUBLE_EQ(machine_from_linuxcnc_ini(std::string("[TASK]\nCYCLE_TIME = 0.010\n") + kBase)
+                         .block_change_s,
+                     2 * 0.001 + 1.6 * 0.010);
+    EXPECT_DOUBLE_EQ(machine_from_linuxcnc_ini(kBase).block_change_s, 2 * 0.001 + 1.6 * 0.1);
+    EXPECT_DOUBLE_EQ(
+        machine_from_linuxcnc_ini(std::string("[TASK]\nTASK = milltask\n") + kBase).block_change_s,
+        2 * 0.001 + 1.6 * 0.1);
+    EXPECT_EQ(refusal(std::string("[TASK]\nCYCLE_TIME = 1 ms\n") + kBase),
+              "[TASK] CYCLE_TIME, line 2: got 1 ms; allowed: a number from 0.0001 to 0.5 s (for "
+              "machine.block_change_s)");
+    EXPECT_EQ(refusal(std::string("[TASK]\nCYCLE_TIME = 0\n") + kBase),
+              "[TASK] CYCLE_TIME, line 2: got 0; allowed: a number from 0.0001 to 0.5 s (for "
+              "machine.block_change_s)");
+}
+
 struct Refusal {
     const char* what;
     std::string text;
