@@ -18,10 +18,11 @@ declare -A seeds=(
   [project_json]="tests/data/golden/project.probecycle"
   [probing_plan]="fuzz/seeds/probing_plan/*.json"
   [machine_log]="fuzz/seeds/machine_log/*"
+  [linuxcnc_ini]="tests/data/linuxcnc/*.ini fuzz/seeds/linuxcnc_ini/*.ini"
 )
 status=0
 for target in scenario_json ring_csv delay_csv comparison_points project_json probing_plan \
-    machine_log; do
+    machine_log linuxcnc_ini; do
   work=$(mktemp -d)
   # shellcheck disable=SC2086
   cp ${seeds[$target]} "$work"/
