@@ -189,9 +189,10 @@ const std::vector<KeyEntry>& key_table() {
              QT_TRANSLATE_NOOP(
                  "Parameter",
                  "Period at which the control scans the skip input (about 4 ms on a standard "
-                 "input, 4 µs on a high-speed input). The wait for the next scan is the "
-                 "single-touch uncertainty (trigger speed × scan period) and, worst case, adds a "
-                 "full period of travel to the overtravel."),
+                 "input, 4 µs on a high-speed input). The wait for the next scan, from nothing "
+                 "to a full period, is the single-touch uncertainty (trigger speed × scan "
+                 "period); the overtravel takes the worst case, a full period of travel, and the "
+                 "cycle time the mean wait, half a period."),
              QT_TRANSLATE_NOOP("Parameter", "Scan period")},
             PC_NUMBER(machine, scan_period_s)),
         number({"machine.controller_latency_s", "s", 0.0, 0.5,
@@ -279,8 +280,8 @@ const std::vector<KeyEntry>& key_table() {
             {"cycle.feature", "", 0.0, 0.0,
              QT_TRANSLATE_NOOP("Parameter",
                                "A surface needs one touch, a web or pocket two opposite touches, "
-                               "a bore or boss four, with positioning moves at the rapid feed "
-                               "between them."),
+                               "a bore or boss four; the probe moves out from the feature's "
+                               "centre to each touch and back at the positioning feed."),
              QT_TRANSLATE_NOOP("Parameter", "Feature"), KeyKind::word},
             enum_words<Feature>(kFeatures),
             [](const Scenario& s) { return std::string(to_string(s.cycle.feature)); },
@@ -292,7 +293,7 @@ const std::vector<KeyEntry>& key_table() {
                     "Parameter",
                     "Distance between opposite stylus-centre contact points: web or pocket width, "
                     "bore or boss diameter less the ball diameter. Sets the positioning moves "
-                    "from the centre and between touches; unused for a surface."),
+                    "out from the centre to each touch and back; unused for a surface."),
                 QT_TRANSLATE_NOOP("Parameter", "Feature size")},
                PC_NUMBER(cycle, feature_size_mm)),
         number(
@@ -339,8 +340,8 @@ const std::vector<KeyEntry>& key_table() {
                 QT_TRANSLATE_NOOP(
                     "Parameter",
                     "Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets "
-                    "the two-touch uncertainty; the second approach, backoff less the first "
-                    "overtravel, is travelled at it."),
+                    "the two-touch uncertainty; the second approach, the backoff less where the "
+                    "first touch stopped (on average), is travelled at it."),
                 QT_TRANSLATE_NOOP("Parameter", "Measuring feedrate")},
                PC_NUMBER(cycle, measure_feed_mm_min)),
         number({"cycle.backoff_mm", "mm", 0.0, 1000.0,
@@ -387,8 +388,8 @@ const std::vector<KeyEntry>& key_table() {
                 QT_TRANSLATE_NOOP(
                     "Parameter",
                     "Web, pocket, bore, boss: feed of the protected positioning moves (probe "
-                    "armed, so a collision stops the axis) from the feature's centre to the "
-                    "first touch, between touches and back to the centre."),
+                    "armed, so a collision stops the axis) from the feature's centre out to each "
+                    "touch and back to the centre."),
                 QT_TRANSLATE_NOOP("Parameter", "Positioning feed")},
                PC_NUMBER(cycle, position_feed_mm_min)),
         number({"cycle.clearance_mm", "mm", 0.0, 1000.0,

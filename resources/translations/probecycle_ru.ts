@@ -755,10 +755,6 @@
         <translation>Период опроса</translation>
     </message>
     <message>
-        <source>Period at which the control scans the skip input (about 4 ms on a standard input, 4 µs on a high-speed input). The wait for the next scan is the single-touch uncertainty (trigger speed × scan period) and, worst case, adds a full period of travel to the overtravel.</source>
-        <translation>Период, с которым ЧПУ опрашивает вход пропуска (около 4 мс на стандартном входе, 4 мкс на быстром). Ожидание следующего опроса даёт неопределённость однократного касания (скорость срабатывания × период опроса) и в худшем случае добавляет к перебегу путь за целый период.</translation>
-    </message>
-    <message>
         <source>Machine response time</source>
         <translation>Время отклика станка</translation>
     </message>
@@ -849,10 +845,6 @@
     <message>
         <source>Measuring feedrate</source>
         <translation>Измерительная подача</translation>
-    </message>
-    <message>
-        <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the second approach, backoff less the first overtravel, is travelled at it.</source>
-        <translation>Подача второго, измерительного касания при двукратном касании (обычно 30 мм/мин). Определяет неопределённость двукратного касания; на ней проходится второй подвод: отвод за вычетом перебега первого касания.</translation>
     </message>
     <message>
         <source>Backoff</source>
@@ -959,10 +951,6 @@
         <translation>Стратегия</translation>
     </message>
     <message>
-        <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four, with positioning moves at the rapid feed between them.</source>
-        <translation>Плоскости нужно одно касание, стенке или пазу — два противоположных, отверстию или бобышке — четыре, с позиционированием на ускоренной подаче между ними.</translation>
-    </message>
-    <message>
         <source>Feature</source>
         <translation>Элемент</translation>
     </message>
@@ -1001,14 +989,6 @@
     <message>
         <source>Rapid feed: a boss or web lifts over its wall at it, away from the part. Moves toward the part are protected, at the positioning feed.</source>
         <translation>Ускоренная подача: на ней щуп поднимается над стенкой бобышки или перемычки, прочь от детали. Перемещения к детали защищённые, на подаче позиционирования.</translation>
-    </message>
-    <message>
-        <source>Distance between opposite stylus-centre contact points: web or pocket width, bore or boss diameter less the ball diameter. Sets the positioning moves from the centre and between touches; unused for a surface.</source>
-        <translation>Расстояние между противоположными точками контакта по центру шарика: ширина стенки или паза, диаметр отверстия или бобышки минус диаметр шарика. Определяет позиционирующие перемещения от центра и между касаниями; для плоскости не используется.</translation>
-    </message>
-    <message>
-        <source>Web, pocket, bore, boss: feed of the protected positioning moves (probe armed, so a collision stops the axis) from the feature&apos;s centre to the first touch, between touches and back to the centre.</source>
-        <translation>Перемычка, паз, отверстие, бобышка: подача защищённых позиционирующих перемещений (датчик включён, столкновение останавливает ось) от центра элемента к первому касанию, между касаниями и обратно к центру.</translation>
     </message>
     <message>
         <source>Positioning feed</source>
@@ -1189,6 +1169,26 @@
     <message>
         <source>Block change time</source>
         <translation>Время смены кадра</translation>
+    </message>
+    <message>
+        <source>Period at which the control scans the skip input (about 4 ms on a standard input, 4 µs on a high-speed input). The wait for the next scan, from nothing to a full period, is the single-touch uncertainty (trigger speed × scan period); the overtravel takes the worst case, a full period of travel, and the cycle time the mean wait, half a period.</source>
+        <translation>Период, с которым ЧПУ опрашивает вход пропуска (около 4 мс на стандартном входе, 4 мкс на быстром). Ожидание следующего опроса, от нуля до целого периода, даёт неопределённость однократного касания (скорость срабатывания × период опроса); в перебег входит худший случай, путь за целый период, а во время цикла — среднее ожидание, полпериода.</translation>
+    </message>
+    <message>
+        <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four; the probe moves out from the feature&apos;s centre to each touch and back at the positioning feed.</source>
+        <translation>Плоскости нужно одно касание, стенке или пазу — два противоположных, отверстию или бобышке — четыре; щуп выходит из центра элемента к каждому касанию и возвращается обратно на подаче позиционирования.</translation>
+    </message>
+    <message>
+        <source>Distance between opposite stylus-centre contact points: web or pocket width, bore or boss diameter less the ball diameter. Sets the positioning moves out from the centre to each touch and back; unused for a surface.</source>
+        <translation>Расстояние между противоположными точками контакта по центру шарика: ширина стенки или паза, диаметр отверстия или бобышки минус диаметр шарика. Определяет позиционирующие перемещения от центра к каждому касанию и обратно; для плоскости не используется.</translation>
+    </message>
+    <message>
+        <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the second approach, the backoff less where the first touch stopped (on average), is travelled at it.</source>
+        <translation>Подача второго, измерительного касания при двукратном касании (обычно 30 мм/мин). Определяет неопределённость двукратного касания; на ней проходится второй подвод: отвод за вычетом среднего перебега первого касания.</translation>
+    </message>
+    <message>
+        <source>Web, pocket, bore, boss: feed of the protected positioning moves (probe armed, so a collision stops the axis) from the feature&apos;s centre out to each touch and back to the centre.</source>
+        <translation>Перемычка, паз, отверстие, бобышка: подача защищённых позиционирующих перемещений (датчик включён, столкновение останавливает ось) от центра элемента к каждому касанию и обратно к центру.</translation>
     </message>
 </context>
 <context>
@@ -2506,16 +2506,8 @@
         <translation>Одно касание по фазам</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Approach&lt;/b&gt;: from the start position to the surface at the probing feed. &lt;b&gt;Pretravel&lt;/b&gt;: the stylus deflects until the probe triggers. &lt;b&gt;Interface delay&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: the probe&apos;s interface passes the signal on. &lt;b&gt;Controller delay&lt;/b&gt;: the control&apos;s latency t&lt;sub&gt;c&lt;/sub&gt; plus, at worst, a whole scan period t&lt;sub&gt;s&lt;/sub&gt; until it sees the signal. &lt;b&gt;Deceleration&lt;/b&gt;: the axis brakes to rest. Two-touch then &lt;b&gt;backs off&lt;/b&gt;, touches again slowly (the &lt;b&gt;2nd&lt;/b&gt; phases) and &lt;b&gt;returns&lt;/b&gt; to the start; a bore or boss adds the &lt;b&gt;positioning&lt;/b&gt; moves between its touches.</source>
-        <translation>&lt;b&gt;Подвод&lt;/b&gt;: от начальной точки до поверхности на подаче поиска. &lt;b&gt;Предход&lt;/b&gt;: наконечник щупа отклоняется, пока датчик не сработает. &lt;b&gt;Задержка интерфейса&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: интерфейс датчика передаёт сигнал дальше. &lt;b&gt;Задержка ЧПУ&lt;/b&gt;: задержка системы ЧПУ t&lt;sub&gt;c&lt;/sub&gt; плюс, в худшем случае, целый период опроса t&lt;sub&gt;s&lt;/sub&gt;, пока она не увидит сигнал. &lt;b&gt;Торможение&lt;/b&gt;: ось тормозит до остановки. Затем при двукратном касании следуют &lt;b&gt;отвод&lt;/b&gt;, повторное медленное касание (фазы &lt;b&gt;2-го&lt;/b&gt; касания) и &lt;b&gt;возврат&lt;/b&gt; в начальную точку; отверстие или бобышка добавляют &lt;b&gt;позиционирование&lt;/b&gt; между касаниями.</translation>
-    </message>
-    <message>
         <source>The formulas</source>
         <translation>Формулы</translation>
-    </message>
-    <message>
-        <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T). Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). Uncertainty (k = 2) U = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
-        <translation>Перебег = предход + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + тормозной путь (v&amp;middot;T/2 при постоянной времени T). Разброс опроса R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 при входе с защёлкой). Неопределённость (k = 2) U = &amp;radic;(R&amp;sup2;/3 + повторяемость&amp;sup2;). Рекомендуемый отвод = перебег первого касания + большее из пути восстановления датчика и пути разгона второго касания до его подачи, с округлением вверх до микрометра. Подсказка каждого параметра говорит, где он входит в модель.</translation>
     </message>
     <message>
         <source>Reading the charts</source>
@@ -2552,6 +2544,14 @@
     <message>
         <source>ProbeCycle guide</source>
         <translation>Руководство ProbeCycle</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Approach&lt;/b&gt;: from the start position to the surface at the probing feed. &lt;b&gt;Pretravel&lt;/b&gt;: the stylus deflects until the probe triggers. &lt;b&gt;Interface delay&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: the probe&apos;s interface passes the signal on. &lt;b&gt;Controller delay&lt;/b&gt;: the control&apos;s latency t&lt;sub&gt;c&lt;/sub&gt; plus the wait until it scans the input, anything from nothing to a whole scan period t&lt;sub&gt;s&lt;/sub&gt;: the cycle time takes the mean wait, t&lt;sub&gt;s&lt;/sub&gt;/2, the overtravel the worst case, t&lt;sub&gt;s&lt;/sub&gt;. &lt;b&gt;Deceleration&lt;/b&gt;: the axis brakes to rest. Two-touch then &lt;b&gt;backs off&lt;/b&gt;, touches again slowly (the &lt;b&gt;2nd&lt;/b&gt; phases) and &lt;b&gt;returns&lt;/b&gt; to the start; a web, pocket, bore or boss adds the &lt;b&gt;positioning&lt;/b&gt; moves out from its centre to each touch and back. With a block change time, every move adds it (&lt;b&gt;block change&lt;/b&gt;).</source>
+        <translation>&lt;b&gt;Подвод&lt;/b&gt;: от начальной точки до поверхности на подаче поиска. &lt;b&gt;Предход&lt;/b&gt;: наконечник щупа отклоняется, пока датчик не сработает. &lt;b&gt;Задержка интерфейса&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: интерфейс датчика передаёт сигнал дальше. &lt;b&gt;Задержка ЧПУ&lt;/b&gt;: задержка системы ЧПУ t&lt;sub&gt;c&lt;/sub&gt; плюс ожидание, пока она не опросит вход, — от нуля до целого периода опроса t&lt;sub&gt;s&lt;/sub&gt;: время цикла учитывает среднее ожидание t&lt;sub&gt;s&lt;/sub&gt;/2, перебег — худший случай t&lt;sub&gt;s&lt;/sub&gt;. &lt;b&gt;Торможение&lt;/b&gt;: ось тормозит до остановки. Затем при двукратном касании следуют &lt;b&gt;отвод&lt;/b&gt;, повторное медленное касание (фазы &lt;b&gt;2-го&lt;/b&gt; касания) и &lt;b&gt;возврат&lt;/b&gt; в начальную точку; стенка, паз, отверстие или бобышка добавляют &lt;b&gt;позиционирование&lt;/b&gt; от центра к каждому касанию и обратно. Если задано время смены кадра, его добавляет каждое перемещение (&lt;b&gt;смена кадра&lt;/b&gt;).</translation>
+    </message>
+    <message>
+        <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T), the worst case; on average the axis stops v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 short of it, and a two-touch cycle&apos;s second approach is the backoff less that mean stop. Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). Uncertainty (k = 2) U = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
+        <translation>Перебег = предход + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + тормозной путь (v&amp;middot;T/2 при постоянной времени T), худший случай; в среднем ось останавливается, не доходя до этой точки v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2, и второй подвод двукратного касания равен отводу за вычетом этой средней остановки. Разброс опроса R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 при входе с защёлкой). Неопределённость (k = 2) U = &amp;radic;(R&amp;sup2;/3 + повторяемость&amp;sup2;). Рекомендуемый отвод = перебег первого касания + большее из пути восстановления датчика и пути разгона второго касания до его подачи, с округлением вверх до микрометра. Подсказка каждого параметра говорит, где он входит в модель.</translation>
     </message>
 </context>
 <context>

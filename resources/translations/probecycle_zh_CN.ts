@@ -755,10 +755,6 @@
         <translation>扫描周期</translation>
     </message>
     <message>
-        <source>Period at which the control scans the skip input (about 4 ms on a standard input, 4 µs on a high-speed input). The wait for the next scan is the single-touch uncertainty (trigger speed × scan period) and, worst case, adds a full period of travel to the overtravel.</source>
-        <translation>数控系统扫描跳跃输入的周期（标准输入约 4 ms，高速输入约 4 µs）。等待下一次扫描即一次触发的测量不确定度（触发速度 × 扫描周期），最坏情况下还会使过行程增加一个完整周期的行程。</translation>
-    </message>
-    <message>
         <source>Machine response time</source>
         <translation>机床响应时间</translation>
     </message>
@@ -849,10 +845,6 @@
     <message>
         <source>Measuring feedrate</source>
         <translation>测量进给率</translation>
-    </message>
-    <message>
-        <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the second approach, backoff less the first overtravel, is travelled at it.</source>
-        <translation>二次触发中第二次（测量）触测的进给率（通常 30 mm/min）。决定二次触发的不确定度；第二次接近（回退距离减去第一次过行程）以此进给率完成。</translation>
     </message>
     <message>
         <source>Backoff</source>
@@ -959,10 +951,6 @@
         <translation>策略</translation>
     </message>
     <message>
-        <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four, with positioning moves at the rapid feed between them.</source>
-        <translation>平面需要一次触测，凸台或槽需要两次相对的触测，孔或圆柱需要四次，各次之间以快移速度定位。</translation>
-    </message>
-    <message>
         <source>Feature</source>
         <translation>特征</translation>
     </message>
@@ -1001,14 +989,6 @@
     <message>
         <source>Rapid feed: a boss or web lifts over its wall at it, away from the part. Moves toward the part are protected, at the positioning feed.</source>
         <translation>快移速度：测量圆柱或凸台时以此速度抬起越过侧壁（远离工件）。朝向工件的移动为保护移动，使用定位进给率。</translation>
-    </message>
-    <message>
-        <source>Distance between opposite stylus-centre contact points: web or pocket width, bore or boss diameter less the ball diameter. Sets the positioning moves from the centre and between touches; unused for a surface.</source>
-        <translation>相对两个测针球心接触点之间的距离：凸台或槽的宽度、孔或圆柱直径减去测球直径。它决定从中心出发以及各次触测之间的定位移动；测量平面时不使用。</translation>
-    </message>
-    <message>
-        <source>Web, pocket, bore, boss: feed of the protected positioning moves (probe armed, so a collision stops the axis) from the feature&apos;s centre to the first touch, between touches and back to the centre.</source>
-        <translation>凸台、槽、孔、圆柱：保护定位移动的进给率（测头已启用，碰撞会使轴停止），用于从特征中心到第一次触测、各次触测之间以及返回中心。</translation>
     </message>
     <message>
         <source>Positioning feed</source>
@@ -1189,6 +1169,26 @@
     <message>
         <source>Block change time</source>
         <translation>程序段切换时间</translation>
+    </message>
+    <message>
+        <source>Period at which the control scans the skip input (about 4 ms on a standard input, 4 µs on a high-speed input). The wait for the next scan, from nothing to a full period, is the single-touch uncertainty (trigger speed × scan period); the overtravel takes the worst case, a full period of travel, and the cycle time the mean wait, half a period.</source>
+        <translation>数控系统扫描跳跃输入的周期（标准输入约 4 ms，高速输入约 4 µs）。等待下一次扫描的时间在零到一个完整周期之间，它决定一次触发的不确定度（触发速度 × 扫描周期）；过行程按最坏情况计入一个完整周期的行程，循环时间按平均等待计入半个周期。</translation>
+    </message>
+    <message>
+        <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four; the probe moves out from the feature&apos;s centre to each touch and back at the positioning feed.</source>
+        <translation>平面需要一次触测，凸台或槽需要两次相对的触测，孔或圆柱需要四次；测头以定位进给率从特征中心移到每次触测处并返回。</translation>
+    </message>
+    <message>
+        <source>Distance between opposite stylus-centre contact points: web or pocket width, bore or boss diameter less the ball diameter. Sets the positioning moves out from the centre to each touch and back; unused for a surface.</source>
+        <translation>相对两个测针球心接触点之间的距离：凸台或槽的宽度、孔或圆柱直径减去测球直径。它决定从中心到每次触测处并返回的定位移动；测量平面时不使用。</translation>
+    </message>
+    <message>
+        <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the second approach, the backoff less where the first touch stopped (on average), is travelled at it.</source>
+        <translation>二次触发中第二次（测量）触测的进给率（通常 30 mm/min）。决定二次触发的不确定度；第二次接近（回退距离减去第一次触测的平均过行程）以此进给率完成。</translation>
+    </message>
+    <message>
+        <source>Web, pocket, bore, boss: feed of the protected positioning moves (probe armed, so a collision stops the axis) from the feature&apos;s centre out to each touch and back to the centre.</source>
+        <translation>凸台、槽、孔、圆柱：保护定位移动的进给率（测头已启用，碰撞会使轴停止），用于从特征中心移到每次触测处并返回中心。</translation>
     </message>
 </context>
 <context>
@@ -2506,16 +2506,8 @@
         <translation>一次触测的各个阶段</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Approach&lt;/b&gt;: from the start position to the surface at the probing feed. &lt;b&gt;Pretravel&lt;/b&gt;: the stylus deflects until the probe triggers. &lt;b&gt;Interface delay&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: the probe&apos;s interface passes the signal on. &lt;b&gt;Controller delay&lt;/b&gt;: the control&apos;s latency t&lt;sub&gt;c&lt;/sub&gt; plus, at worst, a whole scan period t&lt;sub&gt;s&lt;/sub&gt; until it sees the signal. &lt;b&gt;Deceleration&lt;/b&gt;: the axis brakes to rest. Two-touch then &lt;b&gt;backs off&lt;/b&gt;, touches again slowly (the &lt;b&gt;2nd&lt;/b&gt; phases) and &lt;b&gt;returns&lt;/b&gt; to the start; a bore or boss adds the &lt;b&gt;positioning&lt;/b&gt; moves between its touches.</source>
-        <translation>&lt;b&gt;接近&lt;/b&gt;：以探测进给率从起始位置到表面。&lt;b&gt;预行程&lt;/b&gt;：测针偏转直到测头触发。&lt;b&gt;接口延迟&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;：测头接口传出信号。&lt;b&gt;控制器延迟&lt;/b&gt;：数控系统的延迟 t&lt;sub&gt;c&lt;/sub&gt;，最坏情况下再加一个完整的扫描周期 t&lt;sub&gt;s&lt;/sub&gt;，直到系统检测到信号。&lt;b&gt;减速&lt;/b&gt;：轴制动到停止。二次触发随后&lt;b&gt;回退&lt;/b&gt;，再慢速触测一次（&lt;b&gt;第二次&lt;/b&gt;各阶段），然后&lt;b&gt;返回&lt;/b&gt;起始位置；孔或凸台在各触测之间还有&lt;b&gt;定位&lt;/b&gt;移动。</translation>
-    </message>
-    <message>
         <source>The formulas</source>
         <translation>公式</translation>
-    </message>
-    <message>
-        <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T). Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). Uncertainty (k = 2) U = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
-        <translation>过行程 = 预行程 + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + 制动距离（时间常数为 T 时为 v&amp;middot;T/2）。扫描范围 R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;（锁存输入时为 0）。不确定度（k = 2）U = &amp;radic;(R&amp;sup2;/3 + 重复性&amp;sup2;)。推荐回退距离 = 第一次触测的过行程 + 测头复位距离与第二次触测加速到其进给率所需距离中的较大者，向上取整到微米。每个参数的提示说明它在模型中的作用。</translation>
     </message>
     <message>
         <source>Reading the charts</source>
@@ -2552,6 +2544,14 @@
     <message>
         <source>ProbeCycle guide</source>
         <translation>ProbeCycle 指南</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Approach&lt;/b&gt;: from the start position to the surface at the probing feed. &lt;b&gt;Pretravel&lt;/b&gt;: the stylus deflects until the probe triggers. &lt;b&gt;Interface delay&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: the probe&apos;s interface passes the signal on. &lt;b&gt;Controller delay&lt;/b&gt;: the control&apos;s latency t&lt;sub&gt;c&lt;/sub&gt; plus the wait until it scans the input, anything from nothing to a whole scan period t&lt;sub&gt;s&lt;/sub&gt;: the cycle time takes the mean wait, t&lt;sub&gt;s&lt;/sub&gt;/2, the overtravel the worst case, t&lt;sub&gt;s&lt;/sub&gt;. &lt;b&gt;Deceleration&lt;/b&gt;: the axis brakes to rest. Two-touch then &lt;b&gt;backs off&lt;/b&gt;, touches again slowly (the &lt;b&gt;2nd&lt;/b&gt; phases) and &lt;b&gt;returns&lt;/b&gt; to the start; a web, pocket, bore or boss adds the &lt;b&gt;positioning&lt;/b&gt; moves out from its centre to each touch and back. With a block change time, every move adds it (&lt;b&gt;block change&lt;/b&gt;).</source>
+        <translation>&lt;b&gt;接近&lt;/b&gt;：以探测进给率从起始位置到表面。&lt;b&gt;预行程&lt;/b&gt;：测针偏转直到测头触发。&lt;b&gt;接口延迟&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;：测头接口传出信号。&lt;b&gt;控制器延迟&lt;/b&gt;：数控系统的延迟 t&lt;sub&gt;c&lt;/sub&gt;，加上等待系统扫描输入的时间，从零到一个完整的扫描周期 t&lt;sub&gt;s&lt;/sub&gt; 不等：循环时间取平均等待 t&lt;sub&gt;s&lt;/sub&gt;/2，过行程取最坏情况 t&lt;sub&gt;s&lt;/sub&gt;。&lt;b&gt;减速&lt;/b&gt;：轴制动到停止。二次触发随后&lt;b&gt;回退&lt;/b&gt;，再慢速触测一次（&lt;b&gt;第二次&lt;/b&gt;各阶段），然后&lt;b&gt;返回&lt;/b&gt;起始位置；凸台、槽、孔或圆柱还有从中心到每次触测处并返回的&lt;b&gt;定位&lt;/b&gt;移动。设置了程序段切换时间时，每次移动都加上这一时间（&lt;b&gt;程序段切换&lt;/b&gt;）。</translation>
+    </message>
+    <message>
+        <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T), the worst case; on average the axis stops v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 short of it, and a two-touch cycle&apos;s second approach is the backoff less that mean stop. Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). Uncertainty (k = 2) U = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
+        <translation>过行程 = 预行程 + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + 制动距离（时间常数为 T 时为 v&amp;middot;T/2），这是最坏情况；平均而言，轴比它少走 v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 就停止，二次触发的第二次接近等于回退距离减去这一平均停止距离。扫描范围 R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;（锁存输入时为 0）。不确定度（k = 2）U = &amp;radic;(R&amp;sup2;/3 + 重复性&amp;sup2;)。推荐回退距离 = 第一次触测的过行程 + 测头复位距离与第二次触测加速到其进给率所需距离中的较大者，向上取整到微米。每个参数的提示说明它在模型中的作用。</translation>
     </message>
 </context>
 <context>

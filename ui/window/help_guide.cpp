@@ -31,16 +31,21 @@ QString help_guide_html(const QString& readme_path) {
             "<b>Approach</b>: from the start position to the surface at the probing feed. "
             "<b>Pretravel</b>: the stylus deflects until the probe triggers. <b>Interface "
             "delay</b> t<sub>i</sub>: the probe's interface passes the signal on. "
-            "<b>Controller delay</b>: the control's latency t<sub>c</sub> plus, at worst, a "
-            "whole scan period t<sub>s</sub> until it sees the signal. <b>Deceleration</b>: "
-            "the axis brakes to rest. Two-touch then <b>backs off</b>, touches again slowly "
-            "(the <b>2nd</b> phases) and <b>returns</b> to the start; a bore or boss adds the "
-            "<b>positioning</b> moves between its touches."));
+            "<b>Controller delay</b>: the control's latency t<sub>c</sub> plus the wait until "
+            "it scans the input, anything from nothing to a whole scan period t<sub>s</sub>: "
+            "the cycle time takes the mean wait, t<sub>s</sub>/2, the overtravel the worst "
+            "case, t<sub>s</sub>. <b>Deceleration</b>: the axis brakes to rest. Two-touch then "
+            "<b>backs off</b>, touches again slowly (the <b>2nd</b> phases) and <b>returns</b> "
+            "to the start; a web, pocket, bore or boss adds the <b>positioning</b> moves out "
+            "from its centre to each touch and back. With a block change time, every move "
+            "adds it (<b>block change</b>)."));
     html += section(
         HelpGuide::tr("The formulas"),
         HelpGuide::tr(
             "Overtravel = pretravel + v &middot; (t<sub>i</sub> + t<sub>c</sub> + "
-            "t<sub>s</sub>) + the braking distance (v&middot;T/2 with a time constant T). "
+            "t<sub>s</sub>) + the braking distance (v&middot;T/2 with a time constant T), the "
+            "worst case; on average the axis stops v &middot; t<sub>s</sub>/2 short of it, and "
+            "a two-touch cycle's second approach is the backoff less that mean stop. "
             "Scan range R = v &middot; t<sub>s</sub> (0 with a latched input). Uncertainty "
             "(k = 2) U = &radic;(R&sup2;/3 + repeatability&sup2;). Recommended backoff = the "
             "first touch's overtravel + the larger of the reseat distance and the distance the "
