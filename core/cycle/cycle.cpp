@@ -671,9 +671,9 @@ class CycleBuilder {
 
     // domain.md, "One touch, phase by phase": approach from rest `distance_mm`
     // in front of the surface, pretravel, interface and controller response
-    // (worst case: a full scan), then braking. The axis follows its planned
-    // acceleration until it reacts, so a touch while still accelerating
-    // triggers at the real, lower speed.
+    // (after the mean scan wait; the overtravel after a full one), then braking. The axis follows
+    // its planned acceleration until it reacts, so a touch while still accelerating triggers at the
+    // real, lower speed.
     TouchResult add_ideal_touch(const Scenario& scenario, const MotionLimits& limits,
                                 double feed_mm_s, double distance_mm, const TouchPhases& names) {
         const Machine& m = scenario.machine;
