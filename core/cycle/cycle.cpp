@@ -696,12 +696,20 @@ class CycleBuilder {
         const SegmentPlan stop =
             plan_stop(limits, feed_mm_s, at_react.speed_mm_s, at_react.accel_mm_s2);
         const double stop_time = stop.duration_s();
-        const KinematicState at_react_worst = plan.state_at(t_react_worst);
-        const double worst_stop_mm =
-            at_react_worst.position_mm +
-            plan_stop(limits, feed_mm_s, at_react_worst.speed_mm_s, at_react_worst.accel_mm_s2)
-                .end_state({0.0, at_react_worst.speed_mm_s, at_react_worst.accel_mm_s2})
-                .position_mm;
+        // Past the plan's ramp the worst case reacts the rest of the scan
+        // later at the same speed and brakes the same way; on the ramp it is
+        // a stop of its own.
+        const double ramp_end_s = reach_time_s(limits, feed_mm_s);
+        const bool cruising = t_react >= ramp_end_s;
+        double worst_stop_extra_mm = 0.5 * m.scan_period_s * at_react.speed_mm_s;
+        if (!cruising) {
+            const KinematicState at_worst = plan.state_at(t_react_worst);
+            worst_stop_extra_mm =
+                at_worst.position_mm - at_react.position_mm +
+                plan_stop(limits, feed_mm_s, at_worst.speed_mm_s, at_worst.accel_mm_s2)
+                    .end_state({0.0, at_worst.speed_mm_s, at_worst.accel_mm_s2})
+                    .position_mm;
+        }
 
         add_motion(plan, +1.0, t_react);
         const double stop_distance = add_motion(stop, +1.0, stop_time, at_react.speed_mm_s);
@@ -720,11 +728,16 @@ class CycleBuilder {
         touch.touch_speed_mm_s = at_touch.speed_mm_s;
         touch.trigger_speed_mm_s = at_trigger.speed_mm_s;
         // Overtravel: pretravel + delay travel + stopping distance, past the surface.
-        touch.overtravel_mm = worst_stop_mm - at_touch.position_mm;
-        touch.recorded_mm = plan.state_at(t_record).position_mm - at_touch.position_mm;
         touch.mean_overtravel_mm = at_react.position_mm + stop_distance - at_touch.position_mm;
+        touch.overtravel_mm =
+            cruising ? touch.mean_overtravel_mm + worst_stop_extra_mm
+                     : at_react.position_mm + worst_stop_extra_mm - at_touch.position_mm;
+        touch.recorded_mm = plan.state_at(t_record).position_mm - at_touch.position_mm;
         touch.mean_recorded_mm =
-            plan.state_at(t_interface + 0.5 * record_scan_s).position_mm - at_touch.position_mm;
+            t_interface >= ramp_end_s
+                ? touch.recorded_mm - 0.5 * record_scan_s * at_interface.speed_mm_s
+                : plan.state_at(t_interface + 0.5 * record_scan_s).position_mm -
+                      at_touch.position_mm;
         if (full_) {  // as the touch with dynamics (Detail::summary)
             touch.react_speed_mm_s = at_react.speed_mm_s;
             touch.delay_travel_mm =
