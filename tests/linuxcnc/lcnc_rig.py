@@ -328,6 +328,32 @@ def _linuxcnc_processes():
     return found
 
 
+def _end_stale_rtapi(env=None, timeout_s=15.0):
+    """Ends an rtapi_app that no LinuxCNC task owns any more (a session that was
+    stopped, or killed): LinuxCNC's `realtime stop` (with the session's
+    environment, which names its socket), then time to exit, then signals.
+    True when none is left."""
+    def stale():
+        return [pid for pid, name in _linuxcnc_processes() if name == "rtapi_app"]
+    if not stale():
+        return True
+    subprocess.run([REALTIME, "stop"], capture_output=True, timeout=30, env=env)
+    deadline = time.monotonic() + timeout_s
+    for sig in (None, signal.SIGTERM, signal.SIGKILL):
+        if sig is not None:
+            for pid in stale():
+                try:
+                    os.kill(pid, sig)
+                except ProcessLookupError:
+                    pass
+            deadline = time.monotonic() + 5.0
+        while time.monotonic() < deadline:
+            if not stale():
+                return True
+            time.sleep(0.1)
+    return not stale()
+
+
 class _MachineLock:
     """Only one LinuxCNC runs on a machine (fixed shared memory keys, one lock file).
 
@@ -366,10 +392,11 @@ class _MachineLock:
                     os.remove(LOCK_FILE)
                 break
             if names == {"rtapi_app"}:
-                subprocess.run([REALTIME, "stop"], capture_output=True, timeout=30)
-                if {name for _, name in _linuxcnc_processes()} == {"rtapi_app"}:
+                # Left by a session that ended (it may still be exiting) or was killed.
+                if not _end_stale_rtapi():
                     self.__exit__()
-                    raise SessionError("a stale rtapi_app survived `%s stop`" % REALTIME)
+                    raise SessionError("a stale rtapi_app survived `%s stop` and SIGKILL"
+                                       % REALTIME)
                 continue
             if time.monotonic() > deadline:
                 self.__exit__()
@@ -386,7 +413,7 @@ class _MachineLock:
             self.file = None
 
 
-def _stop(process, log):
+def _stop(process, log, env):
     """Ends our own `linuxcnc` (its process group), bounded, then its realtime."""
     try:
         os.killpg(process.pid, signal.SIGTERM)  # the script's trap runs its Cleanup
@@ -397,8 +424,8 @@ def _stop(process, log):
         except ProcessLookupError:
             pass
         process.wait(5)
-    if any(name == "rtapi_app" for _, name in _linuxcnc_processes()):
-        subprocess.run([REALTIME, "stop"], stdout=log, stderr=log, timeout=30)
+    if not _end_stale_rtapi(env):
+        log.write("rtapi_app did not end\n")
     if os.path.exists(LOCK_FILE) and not _linuxcnc_processes():
         os.remove(LOCK_FILE)
 
@@ -483,7 +510,7 @@ def run_session(machine, runs, lock_timeout_s=300.0):
                                % (timeout_s, log_path)) from None
         finally:
             if process.poll() is None:
-                _stop(process, log)
+                _stop(process, log, env)
         session_s = time.monotonic() - started
     if not os.path.exists(job["result"]):
         with open(log_path) as f:
