@@ -34,6 +34,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const Warning& w : result.warnings()) (void)w.message();
     // The knee search and the JSON the CLI prints, on small inputs only (it
     // sweeps hundreds of feeds).
-    if (size < 512) (void)evaluation_to_json(analyse(scenario));
+    if (size < 512) (void)evaluation_to_json(scenario, analyse(scenario));
     return 0;
 }

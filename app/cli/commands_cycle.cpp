@@ -31,7 +31,10 @@ void add_evaluate(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "evaluate", "Cycle time, overtravel, uncertainty, phases and warnings (JSON)");
     add_scenario_args(*cmd, *args);
-    cmd->callback([args] { std::cout << evaluation_to_json(analyse(load_scenario(*args))); });
+    cmd->callback([args] {
+        const Scenario scenario = load_scenario(*args);
+        std::cout << evaluation_to_json(scenario, analyse(scenario));
+    });
 }
 
 void add_move(CLI::App& app) {

@@ -1,5 +1,7 @@
 #include "core/common/message_json.h"
 
+#include <cmath>
+
 namespace probecycle {
 
 nlohmann::ordered_json message_values(const Message& message) {
@@ -16,6 +18,10 @@ nlohmann::ordered_json message_values(const Message& message) {
                     if (!values.contains(it.key())) values[it.key()] = it.value();
                 }
             }
+        } else if (a.kind == ArgKind::integer && std::isfinite(a.number) &&
+                   a.number == std::floor(a.number) && std::abs(a.number) < 9e15) {
+            // A count or a touch's number: a whole number, not 1.0.
+            values[a.name] = static_cast<long long>(a.number);
         } else {
             values[a.name] = a.number;
         }

@@ -50,12 +50,22 @@ std::optional<double> parse_decimal(std::string_view text) {
     return value;
 }
 
+namespace {
+// `count` steps: divided by the steps per unit where that is a whole number
+// (0.01 mm: 191 / 100 is 1.91, the double nearest it, where 191 * 0.01 is
+// 1.9100000000000001), so a rounded value prints as the editors show it.
+double steps_to_value(double count, double step) {
+    const double per_unit = 1.0 / step;
+    return per_unit == std::floor(per_unit) ? count / per_unit : count * step;
+}
+}  // namespace
+
 double round_up_to(double value, double step) {
-    return std::ceil(value / step - 1e-6) * step;
+    return steps_to_value(std::ceil(value / step - 1e-6), step);
 }
 
 double round_down_to(double value, double step) {
-    return std::floor(value / step + 1e-6) * step;
+    return steps_to_value(std::floor(value / step + 1e-6), step);
 }
 
 }  // namespace probecycle

@@ -95,6 +95,8 @@ const char* to_string(WarningCode code) {
             return "start_inside_uncertainty";
         case WarningCode::search_ends_too_soon:
             return "search_ends_too_soon";
+        case WarningCode::protected_move_overtravel:
+            return "protected_move_overtravel";
     }
     return "?";
 }
@@ -293,6 +295,23 @@ Message Warning::to_message() const {
                       significant_arg("stop_mm", ArgKind::length_mm, b, 4),
                       arg("touch", ArgKind::integer, d > 1.5 ? 2.0 : 1.0)};
             break;
+        case WarningCode::protected_move_overtravel:
+            m.text = severity == Severity::error
+                         ? QT_TRANSLATE_NOOP(
+                               "Warning",
+                               "A protected move at the positioning feed %1 that meets an "
+                               "obstruction stops %2 past it, %3 % of the probe's %4 limit: the "
+                               "stylus would be overrun; lower the positioning feed")
+                         : QT_TRANSLATE_NOOP(
+                               "Warning",
+                               "A protected move at the positioning feed %1 that meets an "
+                               "obstruction stops %2 past it, %3 % of the probe's %4 limit: "
+                               "little margin left for the stylus");
+            m.args = {arg("position_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(c), 0),
+                      arg("overtravel_mm", ArgKind::length_mm, a, 3),
+                      arg("percent_of_limit", ArgKind::number, 100.0 * a / b, 0),
+                      arg("limit_mm", ArgKind::length_mm, b, 3)};
+            break;
     }
     return m;
 }
@@ -305,6 +324,13 @@ double search_beyond_mm(const Scenario& scenario, double overtravel_mm) {
     const double set = scenario.cycle.search_beyond_mm;
     if (set > 0.0) return set;
     return std::max(overtravel_mm, 0.5 * (overtravel_mm + scenario.probe.overtravel_limit_mm));
+}
+
+double protected_move_overtravel_mm(const Scenario& scenario, double feed_mm_s) {
+    return scenario.probe.pretravel_mm +
+           feed_mm_s * (reaction_time_s(scenario.machine, scenario.probe) +
+                        scenario.axis_dynamics().lag_s()) +
+           stop_distance_mm(scenario.motion_limits(), feed_mm_s, feed_mm_s);
 }
 
 // domain.md, "One touch": interface response t_i, controller latency t_c and,
@@ -1211,7 +1237,10 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     }
     // domain.md, "Return": back to the start position, s + overtravel.
     b.add_move(Phase::return_move, limits, b.axis_mm(), return_v, -1.0);
-    if (full) add_touch_warnings(scenario, first, 0, r.warnings_);
+    // Only a touch that measures errs by touching while accelerating: the
+    // first touch of two-touch only finds the surface (its speed only sets
+    // its overtravel, which the model follows).
+    if (full && !two_touch) add_touch_warnings(scenario, first, 0, r.warnings_);
     r.first_ = first;
     r.measuring_ = measuring;
 
@@ -1302,11 +1331,13 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
         }
     }
     // Issue 14: wherever the part lies within its position uncertainty, the
-    // touch must start outside it and at full feed.
+    // touch must start outside it and at full feed. Two-touch: the first
+    // touch only finds the surface, so only a start inside the uncertainty
+    // itself (the probe may start in contact) is reported.
     const double part_u = c.part_position_uncertainty_mm;
     if (part_u > 0.0) {
         const double room = approach_room(scenario, limits, dynamics, probe_v, &cache);
-        if (s < part_u + room - 1e-9) {
+        if (s <= part_u || (!two_touch && s < part_u + room - 1e-9)) {
             w.push_back({WarningCode::start_inside_uncertainty, Severity::warning, s, part_u, room,
                          s <= part_u ? 1.0 : 0.0});
         }
@@ -1320,6 +1351,17 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
         if (c.search_beyond_mm < stop) {
             w.push_back({WarningCode::search_ends_too_soon, Severity::error, c.search_beyond_mm,
                          stop, 0.0, second_worse ? 2.0 : 1.0});
+        }
+    }
+    // A feature's protected moves: an obstruction met at the positioning feed
+    // is a touch at that feed, and the stylus must survive it too.
+    if (touches > 1) {
+        const double guard = protected_move_overtravel_mm(scenario, position_v);
+        const double limit = p.overtravel_limit_mm;
+        if (guard >= kOvertravelWarningFraction * limit) {
+            w.push_back({WarningCode::protected_move_overtravel,
+                         guard >= limit ? Severity::error : Severity::warning, guard, limit,
+                         position_v});
         }
     }
     const double calibration_v = mm_min_to_mm_s(p.calibration_feed_mm_min);

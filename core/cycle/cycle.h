@@ -83,6 +83,9 @@ enum class WarningCode {
     // A probing move ends before the touch's stop past the farthest place its
     // surface can be (cycle.search_beyond_mm): an error.
     search_ends_too_soon,
+    // An obstruction met by a protected positioning move would stop the
+    // probe at or near its overtravel limit: an error at the limit.
+    protected_move_overtravel,
 };
 const char* to_string(WarningCode code);
 
@@ -113,6 +116,8 @@ struct Warning {
     // search_ends_too_soon:     a = cycle.search_beyond_mm, b = the stop it must reach
     //                           past the surface (the touch's overtravel), d = the touch
     //                           (1 first, 2 second)
+    // protected_move_overtravel: a = the overtravel past an obstruction, b = the limit,
+    //                           c = the positioning feed
     double a{0.0}, b{0.0}, c{0.0}, d{0.0};
     // The message: code, template and the numbers above as named arguments.
     Message to_message() const;
@@ -126,6 +131,17 @@ void order_by_severity(std::vector<Warning>& warnings);
 constexpr unsigned invalid_code_bit(WarningCode code) {
     return 1u << static_cast<unsigned>(code);
 }
+// Errors that no probing feed changes (a feature's protected moves, at the
+// positioning feed): the knee and a sweep's fastest cycle look past them, so
+// the curve still tells where the probing feed is best, while the cycle
+// itself stays invalid.
+constexpr unsigned kFeedIndependentErrors =
+    invalid_code_bit(WarningCode::protected_move_overtravel);
+// Whether the invalid codes leave a feed that counts for the knee.
+constexpr bool valid_for_knee(unsigned invalid_codes) {
+    return (invalid_codes & ~kFeedIndependentErrors) == 0;
+}
+
 // The codes of invalid_codes() by name, in WarningCode order, joined by
 // `separator` ("backoff_too_small;overtravel_limit"); "" for none.
 std::string invalid_codes_text(unsigned codes, const char* separator);
@@ -255,6 +271,13 @@ class CycleResult {
 // the stop and keeps a probe that fails to trigger at that surface inside
 // its stylus's range.
 double search_beyond_mm(const Scenario& scenario, double overtravel_mm);
+
+// How far past an obstruction a protected positioning move at `feed_mm_s`
+// stops (a feature's moves to and from its touches run with the probe armed):
+// the probe triggers on it as on a surface, at the move's full feed (the worst
+// case: no protected move is faster), so pretravel + v * (t_i + t_c + t_s) +
+// v * the dynamics' lag + the plan's braking from v.
+double protected_move_overtravel_mm(const Scenario& scenario, double feed_mm_s);
 
 // --- Small closed forms (domain.md, "One touch"), each testable alone. ---
 // Travel between trigger and the controller's reaction, worst case (full scan).

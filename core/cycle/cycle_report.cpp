@@ -10,6 +10,7 @@
 #include "core/common/message_json.h"
 #include "core/common/report_header.h"
 #include "core/common/units.h"
+#include "core/cycle/fixes.h"
 
 namespace probecycle {
 
@@ -29,6 +30,19 @@ Json warnings_json(const std::vector<Warning>& warnings) {
     return list;
 }
 
+// The warnings of an evaluation, each with the fix the window offers.
+Json warnings_json(const Scenario& scenario, const Analysis& analysis) {
+    Json list = warnings_json(analysis.cycle.warnings());
+    for (std::size_t i = 0; i < analysis.cycle.warnings().size(); ++i) {
+        const std::optional<Fix> fix = fix_for(scenario, analysis, analysis.cycle.warnings()[i]);
+        if (!fix) continue;
+        Json changes = Json::object();
+        for (const auto& [key, value] : fix_changes(scenario, *fix)) changes[key] = value;
+        list[i]["fix"] = std::move(changes);
+    }
+    return list;
+}
+
 Json touch_json(const TouchResult& touch) {
     return {{"programmed_feed_mm_min", mm_s_to_mm_min(touch.programmed_feed_mm_s)},
             {"trigger_speed_mm_min", mm_s_to_mm_min(touch.trigger_speed_mm_s)},
@@ -40,7 +54,7 @@ Json touch_json(const TouchResult& touch) {
 
 }  // namespace
 
-std::string evaluation_to_json(const Analysis& analysis) {
+std::string evaluation_to_json(const Scenario& scenario, const Analysis& analysis) {
     const CycleResult& r = analysis.cycle;
     Json out = Json::object();
     out["cycle_time_s"] = r.total();
@@ -75,7 +89,7 @@ std::string evaluation_to_json(const Analysis& analysis) {
                           {"distance_mm", p.distance_mm}});
     }
     out["phases"] = std::move(phases);
-    out["warnings"] = warnings_json(r.warnings());
+    out["warnings"] = warnings_json(scenario, analysis);
     return out.dump(2) + "\n";
 }
 

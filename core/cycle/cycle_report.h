@@ -17,8 +17,10 @@
 
 namespace probecycle {
 
-// `probecycle-cli evaluate` output: cycle_time_s, overtravel_mm, ... phases, warnings.
-std::string evaluation_to_json(const Analysis& analysis);
+// `probecycle-cli evaluate` output: cycle_time_s, overtravel_mm, ... phases,
+// warnings; each warning with a one-click fix (fixes.h) carries `fix`, the
+// scenario keys the fix sets and their values, as the window's button does.
+std::string evaluation_to_json(const Scenario& scenario, const Analysis& analysis);
 
 // `probecycle-cli move`: time_s (to the in-position check with dynamics
 // after interpolation), the interpolator's command_time_s, peak_speed_mm_min

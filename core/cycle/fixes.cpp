@@ -21,6 +21,8 @@ const char* to_string(FixKind kind) {
             return "approach_to_reach_feed";
         case FixKind::search_past_stop:
             return "search_past_stop";
+        case FixKind::position_feed_for_overtravel:
+            return "position_feed_for_overtravel";
     }
     return "?";
 }
@@ -57,6 +59,27 @@ std::optional<double> feed_for_overtravel(const Scenario& scenario, double feed_
     }
     const double feed = round_feed_down(lo);
     if (feed <= 0.0 || !under(feed)) return std::nullopt;
+    return feed;
+}
+
+// The highest positioning feed, rounded down, under `feed_mm_min` at which an
+// obstruction's overtravel (protected_move_overtravel_mm, which grows with
+// the feed) is under the warning fraction of the limit; nullopt when even 1
+// mm/min is not.
+std::optional<double> position_feed_for_overtravel(const Scenario& scenario, double feed_mm_min) {
+    const double limit = kOvertravelWarningFraction * scenario.probe.overtravel_limit_mm;
+    const auto under = [&](double feed) {
+        return protected_move_overtravel_mm(scenario, mm_min_to_mm_s(feed)) < limit;
+    };
+    double lo = 1.0;
+    if (!under(lo)) return std::nullopt;
+    double hi = feed_mm_min;
+    while (hi - lo > 0.05) {
+        const double mid = 0.5 * (lo + hi);
+        (under(mid) ? lo : hi) = mid;
+    }
+    const double feed = round_feed_down(lo);
+    if (feed < 1.0 || !under(feed)) return std::nullopt;
     return feed;
 }
 
@@ -102,6 +125,13 @@ std::optional<Scenario> candidate(const Scenario& scenario, const Analysis& anal
             s.cycle.search_beyond_mm = round_up_to(stop, 0.01);
             return s;
         }
+        case FixKind::position_feed_for_overtravel: {
+            const std::optional<double> feed =
+                position_feed_for_overtravel(scenario, scenario.cycle.position_feed_mm_min);
+            if (!feed) return std::nullopt;
+            s.cycle.position_feed_mm_min = *feed;
+            return s;
+        }
         case FixKind::none:
             break;
     }
@@ -127,6 +157,8 @@ std::vector<FixKind> kinds_for(const Warning& warning) {
             return {FixKind::approach_to_reach_feed};
         case WarningCode::search_ends_too_soon:
             return {FixKind::search_past_stop};
+        case WarningCode::protected_move_overtravel:
+            return {FixKind::position_feed_for_overtravel};
         default:
             break;
     }
@@ -145,16 +177,34 @@ bool still_warns(const CycleResult& result, const Warning& warning) {
 
 std::optional<Fix> fix_for(const Scenario& scenario, const Analysis& analysis,
                            const Warning& warning) {
+    const unsigned errors_before = analysis.cycle.invalid_codes();
+    constexpr unsigned kBackoffTooSmall = invalid_code_bit(WarningCode::backoff_too_small);
     for (FixKind kind : kinds_for(warning)) {
-        const std::optional<Scenario> fixed = candidate(scenario, analysis, kind);
+        std::optional<Scenario> fixed = candidate(scenario, analysis, kind);
         if (!fixed || !validate(*fixed).empty()) continue;
         // A fix that changes nothing fixes nothing.
         if (fixed->cycle.backoff_mm == scenario.cycle.backoff_mm &&
             fixed->cycle.probe_feed_mm_min == scenario.cycle.probe_feed_mm_min &&
             fixed->cycle.approach_mm == scenario.cycle.approach_mm &&
-            fixed->cycle.search_beyond_mm == scenario.cycle.search_beyond_mm) {
+            fixed->cycle.search_beyond_mm == scenario.cycle.search_beyond_mm &&
+            fixed->cycle.position_feed_mm_min == scenario.cycle.position_feed_mm_min) {
             continue;
         }
+        CycleResult result = evaluate(*fixed);
+        // The change made the backoff too small (a faster first touch stops
+        // farther): the recommended backoff comes with it.
+        bool with_backoff = false;
+        if (fixed->cycle.strategy == Strategy::two_touch &&
+            kind != FixKind::backoff_to_recommended &&
+            (result.invalid_codes() & kBackoffTooSmall) != 0 &&
+            (errors_before & kBackoffTooSmall) == 0) {
+            fixed->cycle.backoff_mm = result.recommended_backoff_mm();
+            if (!validate(*fixed).empty()) continue;
+            result = evaluate(*fixed);
+            with_backoff = true;
+        }
+        // Never an error the cycle did not have.
+        if ((result.invalid_codes() & ~errors_before) != 0) continue;
         if (warning.code == WarningCode::feed_beyond_knee) {
             // At or under the knee by construction while the knee search's
             // range stays the same (it reaches past 10000 mm/min only for a
@@ -163,12 +213,21 @@ std::optional<Fix> fix_for(const Scenario& scenario, const Analysis& analysis,
                 still_warns(analyse(*fixed).cycle, warning)) {
                 continue;
             }
-            return Fix{kind, *fixed};
+            return Fix{kind, *fixed, with_backoff};
         }
-        if (still_warns(evaluate(*fixed), warning)) continue;
-        return Fix{kind, *fixed};
+        if (still_warns(result, warning)) continue;
+        return Fix{kind, *fixed, with_backoff};
     }
     return std::nullopt;
+}
+
+std::vector<std::pair<std::string, double>> fix_changes(const Scenario& scenario, const Fix& fix) {
+    std::vector<std::pair<std::string, double>> changes;
+    for (const KeyInfo& key : numeric_keys()) {
+        const double after = *get_number(fix.scenario, key.key);
+        if (after != *get_number(scenario, key.key)) changes.emplace_back(key.key, after);
+    }
+    return changes;
 }
 
 }  // namespace probecycle

@@ -76,7 +76,7 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
             point.phase_time_s[static_cast<std::size_t>(phase)] = scratch.phase_time(phase);
         }
         point.invalid_codes = scratch.invalid_codes();
-        if (point.valid() && point.cycle_time_s < best_time) {
+        if (valid_for_knee(point.invalid_codes) && point.cycle_time_s < best_time) {
             best_time = point.cycle_time_s;
             best = i;
         }
@@ -92,11 +92,11 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
     for (const SweepPoint& point : out.points) {
         lowest = std::min(lowest, point.feed_mm_min);
         highest = std::max(highest, point.feed_mm_min);
-        if (point.valid() && point.cycle_time_s <= knee_limit &&
+        if (valid_for_knee(point.invalid_codes) && point.cycle_time_s <= knee_limit &&
             (!out.knee_feed_mm_min || point.feed_mm_min < *out.knee_feed_mm_min)) {
             out.knee_feed_mm_min = point.feed_mm_min;
         }
-        if (target > 0.0 && point.valid() && point.uncertainty_mm <= target &&
+        if (target > 0.0 && valid_for_knee(point.invalid_codes) && point.uncertainty_mm <= target &&
             (!out.max_feed_meeting_target_mm_min ||
              point.feed_mm_min > *out.max_feed_meeting_target_mm_min)) {
             out.max_feed_meeting_target_mm_min = point.feed_mm_min;
@@ -165,7 +165,7 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
     bool cut = false;
     for (std::size_t i = 0; i < kGrid; ++i) {
         const double t = time_at(grid[i]);
-        if (!scratch.valid()) {
+        if (!valid_for_knee(scratch.invalid_codes())) {
             cut = true;
             break;
         }
@@ -181,7 +181,7 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
         for (int iter = 0; iter < 60 && hi - lo > 1e-7 * hi; ++iter) {
             const double mid = 0.5 * (lo + hi);
             time_at(mid);
-            (scratch.valid() ? lo : hi) = mid;
+            (valid_for_knee(scratch.invalid_codes()) ? lo : hi) = mid;
         }
         out.valid_to_mm_min = lo;
         if (lo > feeds[n - 1]) {

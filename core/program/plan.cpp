@@ -301,6 +301,21 @@ std::vector<AxisDirection> feature_sides(Feature feature, char axis) {
 // longer than a plan holds.
 void check_feature_plan(const Scenario& scenario, const CyclePlanOptions& options) {
     const Cycle& c = scenario.cycle;
+    // A protected move that meets an obstruction stops as a touch at the
+    // positioning feed would: the stylus must survive it.
+    const double guard = protected_move_overtravel_mm(scenario, c.position_feed_mm_min / 60.0);
+    if (guard >= scenario.probe.overtravel_limit_mm) {
+        Message allowed = allowed_text(
+            "program_position_feed",
+            QT_TRANSLATE_NOOP("FieldError",
+                              "a feed at which an obstruction met by a protected move stops "
+                              "short of the probe's %1 limit (now %2 past it)"));
+        allowed.args = {arg("limit_mm", ArgKind::length_mm, scenario.probe.overtravel_limit_mm, 3),
+                        significant_arg("overtravel_mm", ArgKind::length_mm, guard, 4)};
+        throw InputError(FieldError{"cycle.position_feed_mm_min",
+                                    format_number(c.position_feed_mm_min), std::move(allowed)}
+                             .to_message());
+    }
     if ((c.feature == Feature::pocket || c.feature == Feature::web) && options.touch.axis == 'Z') {
         Message allowed = allowed_text(
             "program_feature_axis",

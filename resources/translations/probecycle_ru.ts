@@ -527,6 +527,10 @@
         <source>at least %1, the stop of the touch at %2 past its surface (a search that ends sooner is braking when it touches), or 0 for automatic</source>
         <translation>не менее %1 — точки остановки касания на %2 за поверхностью (поиск, который заканчивается раньше, касается уже при торможении), или 0 — автоматически</translation>
     </message>
+    <message>
+        <source>a feed at which an obstruction met by a protected move stops short of the probe&apos;s %1 limit (now %2 past it)</source>
+        <translation>подача, при которой защищённое перемещение, встретив препятствие, останавливается до предела датчика %1 (сейчас — в %2 за препятствием)</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -1421,6 +1425,18 @@
     <message>
         <source>Search ends before the stop</source>
         <translation>Поиск заканчивается до остановки</translation>
+    </message>
+    <message>
+        <source>A protected move at the positioning feed %1 that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: the stylus would be overrun; lower the positioning feed</source>
+        <translation>Защищённое перемещение на подаче позиционирования %1, встретив препятствие, останавливается в %2 за ним — %3 % от предела датчика %4: наконечник будет перегружен; снизьте подачу позиционирования</translation>
+    </message>
+    <message>
+        <source>A protected move at the positioning feed %1 that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: little margin left for the stylus</source>
+        <translation>Защищённое перемещение на подаче позиционирования %1, встретив препятствие, останавливается в %2 за ним — %3 % от предела датчика %4: запаса для наконечника почти нет</translation>
+    </message>
+    <message>
+        <source>Protected moves near the overtravel limit</source>
+        <translation>Защищённые перемещения у предела перебега</translation>
     </message>
 </context>
 <context>
@@ -3345,6 +3361,10 @@
         <source>search past the touch&apos;s stop</source>
         <translation>поиск за точку остановки касания</translation>
     </message>
+    <message>
+        <source>drop the positioning feed for the overtravel</source>
+        <translation>снизить подачу позиционирования ради перебега</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>
@@ -3813,6 +3833,15 @@
     <message>
         <source>Search %1 past the surface</source>
         <translation>Поиск на %1 за поверхность</translation>
+    </message>
+    <message>
+        <source>Position at %1</source>
+        <translation>Позиционирование на %1</translation>
+    </message>
+    <message>
+        <source>%1, backoff %2</source>
+        <extracomment>%1 what the fix sets (&quot;Start 15.680 mm out&quot;), %2 the backoff it needs with it</extracomment>
+        <translation>%1, отвод %2</translation>
     </message>
 </context>
 </TS>

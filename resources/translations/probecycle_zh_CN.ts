@@ -527,6 +527,10 @@
         <source>at least %1, the stop of the touch at %2 past its surface (a search that ends sooner is braking when it touches), or 0 for automatic</source>
         <translation>至少 %1，即 %2 下触测在表面之后的停止位置（更早结束的搜索在触碰时已在减速），或 0 表示自动</translation>
     </message>
+    <message>
+        <source>a feed at which an obstruction met by a protected move stops short of the probe&apos;s %1 limit (now %2 past it)</source>
+        <translation>受保护移动碰到障碍物时能在测头 %1 极限之内停止的进给率（当前停在障碍物之后 %2）</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -1421,6 +1425,18 @@
     <message>
         <source>Search ends before the stop</source>
         <translation>搜索在停止位置之前结束</translation>
+    </message>
+    <message>
+        <source>A protected move at the positioning feed %1 that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: the stylus would be overrun; lower the positioning feed</source>
+        <translation>以定位进给率 %1 进行的受保护移动碰到障碍物后停在其之后 %2，为测头 %4 极限的 %3 %：测针将被过度压入；请降低定位进给率</translation>
+    </message>
+    <message>
+        <source>A protected move at the positioning feed %1 that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: little margin left for the stylus</source>
+        <translation>以定位进给率 %1 进行的受保护移动碰到障碍物后停在其之后 %2，为测头 %4 极限的 %3 %：测针余量所剩无几</translation>
+    </message>
+    <message>
+        <source>Protected moves near the overtravel limit</source>
+        <translation>受保护移动接近过行程极限</translation>
     </message>
 </context>
 <context>
@@ -3345,6 +3361,10 @@
         <source>search past the touch&apos;s stop</source>
         <translation>搜索超过触测停止位置</translation>
     </message>
+    <message>
+        <source>drop the positioning feed for the overtravel</source>
+        <translation>为过行程降低定位进给率</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>
@@ -3813,6 +3833,15 @@
     <message>
         <source>Search %1 past the surface</source>
         <translation>搜索到表面之后 %1</translation>
+    </message>
+    <message>
+        <source>Position at %1</source>
+        <translation>定位进给率 %1</translation>
+    </message>
+    <message>
+        <source>%1, backoff %2</source>
+        <extracomment>%1 what the fix sets (&quot;Start 15.680 mm out&quot;), %2 the backoff it needs with it</extracomment>
+        <translation>%1，回退距离 %2</translation>
     </message>
 </context>
 </TS>

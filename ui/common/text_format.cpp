@@ -132,6 +132,9 @@ QString warning_title(WarningCode code) {
                 QT_TRANSLATE_NOOP("Warning", "Start within the part's position uncertainty"));
         case WarningCode::search_ends_too_soon:
             return tr_warning(QT_TRANSLATE_NOOP("Warning", "Search ends before the stop"));
+        case WarningCode::protected_move_overtravel:
+            return tr_warning(
+                QT_TRANSLATE_NOOP("Warning", "Protected moves near the overtravel limit"));
     }
     return QString::fromUtf8(to_string(code));
 }

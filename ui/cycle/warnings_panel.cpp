@@ -122,7 +122,7 @@ void WarningsPanel::show_row(std::size_t index, const QString& code, Severity se
 namespace {
 
 // The button's words: what the fix sets, with the value.
-QString fix_text(const Fix& fix) {
+QString fix_kind_text(const Fix& fix) {
     const Cycle& c = fix.scenario.cycle;
     switch (fix.kind) {
         case FixKind::backoff_to_recommended:
@@ -137,10 +137,20 @@ QString fix_text(const Fix& fix) {
         case FixKind::search_past_stop:
             return WarningsPanel::tr("Search %1 past the surface")
                 .arg(format_mm(c.search_beyond_mm));
+        case FixKind::position_feed_for_overtravel:
+            return WarningsPanel::tr("Position at %1").arg(format_feed(c.position_feed_mm_min));
         case FixKind::none:
             break;
     }
     return {};
+}
+
+// With the backoff the fixed cycle needs, when the fix sets it too.
+QString fix_text(const Fix& fix) {
+    const QString text = fix_kind_text(fix);
+    if (!fix.with_backoff || text.isEmpty()) return text;
+    //: %1 what the fix sets ("Start 15.680 mm out"), %2 the backoff it needs with it
+    return WarningsPanel::tr("%1, backoff %2").arg(text, format_mm(fix.scenario.cycle.backoff_mm));
 }
 
 }  // namespace

@@ -1313,6 +1313,8 @@ bool MainWindow::apply_fix_for(const QString& warning_code) {
                 return tr("start far enough out to reach the feed");
             case FixKind::search_past_stop:
                 return tr("search past the touch's stop");
+            case FixKind::position_feed_for_overtravel:
+                return tr("drop the positioning feed for the overtravel");
             case FixKind::none:
                 break;
         }

@@ -80,7 +80,7 @@ Scenario two_touch_with_warnings() {
 TEST(EvaluationJson, KeysAndValuesOfTheAnalysis) {
     const Scenario s = two_touch_with_warnings();
     const Analysis a = analyse(s);
-    const nlohmann::json j = nlohmann::json::parse(evaluation_to_json(a));
+    const nlohmann::json j = nlohmann::json::parse(evaluation_to_json(s, a));
     for (const char* key : {"cycle_time_s", "overtravel_mm", "trigger_speed_mm_min",
                             "uncertainty_mm", "recommended_backoff_mm"}) {
         ASSERT_TRUE(j.contains(key)) << key;
@@ -121,24 +121,60 @@ TEST(EvaluationJson, KeysAndValuesOfTheAnalysis) {
     EXPECT_TRUE(codes.count("uncertainty_over_target"));
 }
 
+// A warning with a one-click fix carries the keys the window's button sets;
+// one without, none. A touch's number is a whole number.
+TEST(EvaluationJson, AWarningWithAFixNamesTheKeysItSets) {
+    const Scenario s = two_touch_with_warnings();  // 5 mm backoff: backoff_excess
+    const Analysis a = analyse(s);
+    const nlohmann::json j = nlohmann::json::parse(evaluation_to_json(s, a));
+    bool seen = false;
+    for (const nlohmann::json& w : j["warnings"]) {
+        if (w["code"] == "backoff_excess") {
+            ASSERT_TRUE(w.contains("fix")) << w.dump();
+            EXPECT_EQ(w["fix"],
+                      nlohmann::json({{"cycle.backoff_mm", a.cycle.recommended_backoff_mm()}}));
+            seen = true;
+        }
+        if (w["code"] == "uncertainty_over_target") {
+            EXPECT_FALSE(w.contains("fix"));
+        }
+    }
+    EXPECT_TRUE(seen);
+    Scenario faster = s;  // a second touch faster than the first: its number, 2
+    faster.cycle.probe_feed_mm_min = 300.0;
+    faster.cycle.measure_feed_mm_min = 3000.0;
+    faster.cycle.backoff_mm = evaluate(faster).recommended_backoff_mm();
+    faster.cycle.search_beyond_mm = 1.0;
+    const nlohmann::json k = nlohmann::json::parse(evaluation_to_json(faster, analyse(faster)));
+    bool numbered = false;
+    for (const nlohmann::json& w : k["warnings"]) {
+        if (w["code"] != "search_ends_too_soon") continue;
+        EXPECT_TRUE(w["values"]["touch"].is_number_integer()) << w.dump();
+        EXPECT_EQ(w["values"]["touch"], 2);
+        EXPECT_EQ(w["fix"], nlohmann::json({{"cycle.search_beyond_mm", 1.91}}));
+        numbered = true;
+    }
+    EXPECT_TRUE(numbered) << k.dump(2);
+}
+
 TEST(EvaluationJson, NoWarningsIsAnEmptyArray) {
     Scenario s;
     s.cycle.strategy = Strategy::single_touch;
     s.cycle.probe_feed_mm_min = 300.0;
     const Analysis a = analyse(s);
     ASSERT_TRUE(a.cycle.warnings().empty());
-    const nlohmann::json j = nlohmann::json::parse(evaluation_to_json(a));
+    const nlohmann::json j = nlohmann::json::parse(evaluation_to_json(s, a));
     ASSERT_TRUE(j["warnings"].is_array());
     EXPECT_TRUE(j["warnings"].empty());
 }
 
 TEST(EvaluationJson, ValidAndTheReasonsWhenNot) {
     Scenario s;  // two-touch, 2 mm backoff: enough at 2000 mm/min
-    nlohmann::json j = nlohmann::json::parse(evaluation_to_json(analyse(s)));
+    nlohmann::json j = nlohmann::json::parse(evaluation_to_json(s, analyse(s)));
     EXPECT_EQ(j["valid"], true);
     EXPECT_EQ(j["invalid_reasons"], nlohmann::json::array());
     s.cycle.backoff_mm = 0.5;
-    j = nlohmann::json::parse(evaluation_to_json(analyse(s)));
+    j = nlohmann::json::parse(evaluation_to_json(s, analyse(s)));
     EXPECT_EQ(j["valid"], false);
     EXPECT_EQ(j["invalid_reasons"], nlohmann::json::array({"backoff_too_small"}));
     // The time is still given (what the model computes), but flagged.
@@ -253,7 +289,7 @@ TEST(CsvReport, SummaryHasEvaluatesKeysRoundedToTheModelsDigits) {
     for (Scenario s : {two_touch_with_warnings(), Scenario{}}) {
         if (s.cycle.backoff_mm < 3.0) s.cycle.backoff_mm = 0.5;  // invalid: backoff_too_small
         const Analysis a = analyse(s);
-        const nlohmann::json j = nlohmann::json::parse(evaluation_to_json(a));
+        const nlohmann::json j = nlohmann::json::parse(evaluation_to_json(s, a));
         const std::string report = csv_report(s, a, std::vector<double>{1000.0}, ReportHeader{});
         const std::size_t begin = report.find("# summary\nkey,value,unit\n");
         ASSERT_NE(begin, std::string::npos);

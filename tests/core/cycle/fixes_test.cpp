@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/number_format.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
 
@@ -137,6 +138,79 @@ TEST(Fixes, FirstTouchWhileAcceleratingStartsFartherOut) {
     EXPECT_EQ(find(evaluate(fix->scenario), WarningCode::touch_while_accelerating), nullptr);
 }
 
+// The bore example on the Fanuc-type machine with the recommended backoff is
+// valid. Its first touch is still accelerating when it touches, but it only
+// finds the bore: no warning (the one that was there offered to start 15.68
+// mm out, where the faster first touch overran the backoff).
+TEST(Fixes, TheFirstTouchOfTwoTouchMayTouchWhileAccelerating) {
+    const std::filesystem::path resources = PROBECYCLE_RESOURCES_DIR;
+    Scenario s = merge_json(scenario_from_json(slurp(resources / "examples/bore_two_touch.json")),
+                            slurp(resources / "presets/machine_fanuc_exponential_servo.json"));
+    s.cycle.backoff_mm = evaluate(s).recommended_backoff_mm();
+    const Analysis a = analyse(s);
+    ASSERT_TRUE(a.cycle.valid());
+    EXPECT_LT(a.cycle.first_touch().trigger_speed_mm_s,
+              0.999 * a.cycle.first_touch().programmed_feed_mm_s);
+    EXPECT_EQ(find(a.cycle, WarningCode::touch_while_accelerating), nullptr);
+    for (const Warning& w : a.cycle.warnings()) {
+        const std::optional<Fix> fix = fix_for(s, a, w);
+        if (fix) {
+            EXPECT_TRUE(evaluate(fix->scenario).valid()) << to_string(w.code);
+        }
+    }
+    // Single-touch measures at its first touch: there it is reported.
+    s.cycle.strategy = Strategy::single_touch;
+    EXPECT_NE(find(evaluate(s), WarningCode::touch_while_accelerating), nullptr);
+}
+
+// A start inside the part's position uncertainty: the fix starts far enough
+// out to touch at full feed, where the first touch stops farther than the
+// backoff set for the short start allows; the fix sets the recommended
+// backoff with it, one change, and the cycle stays valid.
+TEST(Fixes, AFixThatWouldMakeTheBackoffTooSmallSetsItToo) {
+    Scenario s = merge_json(Scenario{}, slurp(std::filesystem::path(PROBECYCLE_RESOURCES_DIR) /
+                                              "presets/machine_fanuc_exponential_servo.json"));
+    s.cycle.part_position_uncertainty_mm = 2.0;
+    s.cycle.approach_mm = 1.5;  // inside the uncertainty
+    s.cycle.backoff_mm = evaluate(s).recommended_backoff_mm();
+    const Analysis a = analyse(s);
+    ASSERT_TRUE(a.cycle.valid()) << invalid_codes_text(a.cycle.invalid_codes(), ", ");
+    const Warning* w = find(a.cycle, WarningCode::start_inside_uncertainty);
+    ASSERT_NE(w, nullptr);
+    EXPECT_EQ(w->d, 1.0);
+    Scenario alone = s;
+    alone.cycle.approach_mm =
+        round_up_to(2.0 + approach_room_mm(s, s.cycle.probe_feed_mm_min / 60.0), 0.01);
+    ASSERT_FALSE(evaluate(alone).valid());  // the start alone overruns the backoff
+    const std::optional<Fix> fix = fix_for(s, a, *w);
+    ASSERT_TRUE(fix.has_value());
+    EXPECT_EQ(fix->kind, FixKind::approach_to_reach_feed);
+    EXPECT_TRUE(fix->with_backoff);
+    EXPECT_EQ(fix->scenario.cycle.approach_mm, alone.cycle.approach_mm);
+    const CycleResult fixed = evaluate(fix->scenario);
+    EXPECT_TRUE(fixed.valid());
+    EXPECT_EQ(fix->scenario.cycle.backoff_mm, evaluate(alone).recommended_backoff_mm());
+    const std::vector<std::pair<std::string, double>> changes = fix_changes(s, *fix);
+    ASSERT_EQ(changes.size(), 2u);
+    EXPECT_EQ(changes[0].first, "cycle.approach_mm");
+    EXPECT_EQ(changes[1].first, "cycle.backoff_mm");
+}
+
+// Two-touch: a start that covers the uncertainty but not the room to reach
+// the feed is no warning (the first touch only finds the surface); inside
+// the uncertainty itself it is.
+TEST(Fixes, TwoTouchStartsOnlyNeedToClearTheUncertainty) {
+    Scenario s;
+    s.cycle.part_position_uncertainty_mm = 1.0;
+    s.cycle.approach_mm = 1.2;  // 2000 mm/min needs 1 mm more to reach the feed
+    EXPECT_EQ(find(evaluate(s), WarningCode::start_inside_uncertainty), nullptr);
+    s.cycle.approach_mm = 0.9;
+    EXPECT_NE(find(evaluate(s), WarningCode::start_inside_uncertainty), nullptr);
+    s.cycle.strategy = Strategy::single_touch;
+    s.cycle.approach_mm = 1.2;
+    EXPECT_NE(find(evaluate(s), WarningCode::start_inside_uncertainty), nullptr);
+}
+
 TEST(Fixes, WarningsWithoutAFixOfferNone) {
     Scenario s;
     s.cycle.target_uncertainty_mm = 0.0001;  // under the repeatability
@@ -199,7 +273,11 @@ TEST(Fixes, EveryFixOnEveryExampleAndPresetClearsItsWarning) {
                                          " mm/min, start " + std::to_string(approach) + ": " +
                                          to_string(w.code) + " by " + to_string(fix->kind));
                             EXPECT_TRUE(validate(fix->scenario).empty());
-                            EXPECT_FALSE(still_warns(analyse(fix->scenario).cycle, w));
+                            const Analysis fixed = analyse(fix->scenario);
+                            EXPECT_FALSE(still_warns(fixed.cycle, w));
+                            // No offered change creates an error.
+                            EXPECT_EQ(fixed.cycle.invalid_codes() & ~a.cycle.invalid_codes(), 0u)
+                                << invalid_codes_text(fixed.cycle.invalid_codes(), ", ");
                         }
                     }
                 }

@@ -438,6 +438,13 @@ TEST(CyclePlan, WhatAFeaturesProgramCannotDoIsRefusedNamingTheKey) {
     EXPECT_EQ(refusal(web, CyclePlanOptions{{'X', 1}}),
               "cycle.clearance_mm: got 0; allowed: at least 0.001 mm for a web (the probe moves "
               "over its wall between touches)");
+    // An obstruction met at 8000 mm/min stops 5.072 mm past it: over the limit.
+    Scenario fast = bore;
+    fast.cycle.position_feed_mm_min = 8000.0;
+    EXPECT_EQ(refusal(fast, CyclePlanOptions{}),
+              "cycle.position_feed_mm_min: got 8000; allowed: a feed at which an obstruction met "
+              "by a protected move stops short of the probe's 5.000 mm limit (now 5.072 mm past "
+              "it)");
     Scenario boss;
     boss.cycle.feature = Feature::boss;
     boss.cycle.feature_size_mm = 2000.0;

@@ -329,6 +329,7 @@ TEST_F(MainWindowTest, FastestCycleAtTheEndOfTheSearchRangeIsSaid) {
 
 TEST_F(MainWindowTest, OneClickFixStartsFarEnoughOutToTouchAtFullFeed) {
     Scenario s = window_->scenario();
+    s.cycle.strategy = Strategy::single_touch;  // the touch measures
     s.cycle.approach_mm = 0.2;  // 2000 mm/min needs 1 mm to reach the feed at T = 60 ms
     window_->edit_scenario(s, QStringLiteral("short approach"));
     settle();
@@ -754,6 +755,7 @@ TEST_F(MainWindowTest, HiddenLatencyTabCatchesUpWhenShown) {
 // narrower than two approach distances: that fix is not offered.
 TEST_F(MainWindowTest, AFixThatWouldInvalidateTheScenarioIsNotOffered) {
     Scenario bore = window_->scenario();
+    bore.cycle.strategy = Strategy::single_touch;  // the touch measures
     bore.cycle.feature = Feature::bore;
     bore.cycle.feature_size_mm = 10.0;
     bore.cycle.approach_mm = 1.0;
@@ -770,8 +772,9 @@ TEST_F(MainWindowTest, AFixThatWouldInvalidateTheScenarioIsNotOffered) {
 // Issue 12: errors first, counted in the panel's title and on the Cycle tab.
 TEST_F(MainWindowTest, ErrorsAreListedFirstAndCounted) {
     Scenario s = window_->scenario();  // two-touch surface
-    s.cycle.approach_mm = 0.2;         // the first touch accelerates: a warning
-    s.cycle.backoff_mm = 0.5;          // an error
+    s.cycle.approach_mm = 0.2;         // inside the part's position uncertainty: a warning
+    s.cycle.part_position_uncertainty_mm = 0.3;
+    s.cycle.backoff_mm = 0.5;  // an error
     window_->edit_scenario(s, QStringLiteral("errors"));
     settle();
     const QStringList codes = window_->warning_codes();
