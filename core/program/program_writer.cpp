@@ -271,9 +271,20 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
     w.comment("Date " + date + ".");
     w.comment("Scenario values and options used:");
     for (const PlanValue& v : plan.values) w.comment("  " + v.key + " = " + v.text);
+    // What slows the program down is what its moves obey: the probing,
+    // protected and return moves run at a feed (feed override), retracts and
+    // lifts at the rapid (rapid override).
+    const bool rapids = std::any_of(plan.steps.begin(), plan.steps.end(), [](const ProgramStep& s) {
+        return s.kind == StepKind::move && s.feed_mm_min == 0.0;
+    });
     w.comment_block(
-        "WARNING: prove this program out first at reduced rapid override, with the probe\n"
-        "clear of the part, and check every move against your machine before a touch.\n"
+        std::string(rapids ? "WARNING: prove this program out first at reduced feed override (its\n"
+                             "probing and return moves run at a feed) and reduced rapid override\n"
+                             "(its retracts and lifts are rapids), with the probe clear of the part,\n"
+                             "and check every move against your machine before a touch.\n"
+                           : "WARNING: prove this program out first at reduced feed override (every\n"
+                             "move runs at a feed, none at the rapid), with the probe clear of the\n"
+                             "part, and check every move against your machine before a touch.\n") +
         "Every move is incremental (G91) from where the probe stands when the program\n"
         "starts or a pause ends. A probing move that does not trigger stops the program\n"
         "with an alarm.");

@@ -3666,16 +3666,8 @@
         <translation>Программа настроенного цикла</translation>
     </message>
     <message>
-        <source>The scenario&apos;s cycle on a surface, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe stands at the start distance in front of the surface. Every move is incremental from where the probe stands. Prove it out at reduced rapid override with the probe clear of the part.</source>
-        <translation>Цикл сценария на поверхности в виде простых измерительных перемещений: его стратегия, подачи, отвод и начальное расстояние — значения, настроенные здесь, а не вызов цикла производителя. Датчик стоит на начальном расстоянии перед поверхностью. Каждое перемещение задано в приращениях от текущего положения датчика. Проверьте программу на пониженной коррекции ускоренного хода, с датчиком вдали от детали.</translation>
-    </message>
-    <message>
         <source>The direction of travel of the touch.</source>
         <translation>Направление движения при касании.</translation>
-    </message>
-    <message>
-        <source>The scenario&apos;s cycle on its feature, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe starts at the feature&apos;s centre (over it for a boss or web) and every move toward the part is protected: a touch on the way is an obstruction. Every move is incremental from where the probe stands. Prove it out at reduced rapid override with the probe clear of the part.</source>
-        <translation>Цикл сценария на его элементе в виде простых измерительных перемещений: его стратегия, подачи, отвод и начальное расстояние — значения, настроенные здесь, а не вызов цикла производителя. Датчик начинает в центре элемента (над ним — для бобышки или стенки), и каждое перемещение к детали защищённое: касание на пути означает препятствие. Каждое перемещение задано в приращениях от текущего положения датчика. Проверьте программу на пониженной коррекции ускоренного хода, с датчиком вдали от детали.</translation>
     </message>
     <message>
         <source>The axis the two walls are touched along, X or Y (both directions, + first).</source>
@@ -3684,6 +3676,14 @@
     <message>
         <source>Not used: a bore or boss is touched at X+, X-, Y+ and Y-.</source>
         <translation>Не используется: отверстия и бобышки касаются в X+, X-, Y+ и Y-.</translation>
+    </message>
+    <message>
+        <source>The scenario&apos;s cycle on a surface, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe stands at the start distance in front of the surface. Every move is incremental from where the probe stands. Every move runs at a feed: prove it out at reduced feed override with the probe clear of the part.</source>
+        <translation>Цикл сценария на поверхности в виде простых измерительных перемещений: его стратегия, подачи, отвод и начальное расстояние — значения, настроенные здесь, а не вызов цикла производителя. Датчик стоит на начальном расстоянии перед поверхностью. Каждое перемещение задано в приращениях от текущего положения датчика. Все перемещения идут на подаче: проверьте программу на пониженной коррекции подачи, с датчиком вдали от детали.</translation>
+    </message>
+    <message>
+        <source>The scenario&apos;s cycle on its feature, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe starts at the feature&apos;s centre (over it for a boss or web) and every move toward the part is protected: a touch on the way is an obstruction. Every move is incremental from where the probe stands. Prove it out at reduced feed override (a boss&apos;s or web&apos;s lifts are rapids: reduced rapid override too) with the probe clear of the part.</source>
+        <translation>Цикл сценария на его элементе в виде простых измерительных перемещений: его стратегия, подачи, отвод и начальное расстояние — значения, настроенные здесь, а не вызов цикла производителя. Датчик начинает в центре элемента (над ним — для бобышки или стенки), и каждое перемещение к детали защищённое: касание на пути означает препятствие. Каждое перемещение задано в приращениях от текущего положения датчика. Проверьте программу на пониженной коррекции подачи (подъёмы над бобышкой или стенкой идут ускоренным ходом: и на пониженной коррекции ускоренного хода), с датчиком вдали от детали.</translation>
     </message>
 </context>
 <context>

@@ -3666,16 +3666,8 @@
         <translation>调优循环程序</translation>
     </message>
     <message>
-        <source>The scenario&apos;s cycle on a surface, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe stands at the start distance in front of the surface. Every move is incremental from where the probe stands. Prove it out at reduced rapid override with the probe clear of the part.</source>
-        <translation>场景中对表面的循环，以普通测量移动写出：其策略、进给率、回退距离和起始距离，即您在此调优的值，而非厂商的循环调用。测头位于表面前方的起始距离处。每个移动都是从测头当前位置出发的增量移动。请在降低的快速倍率下、测头远离工件时试运行。</translation>
-    </message>
-    <message>
         <source>The direction of travel of the touch.</source>
         <translation>触测的行程方向。</translation>
-    </message>
-    <message>
-        <source>The scenario&apos;s cycle on its feature, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe starts at the feature&apos;s centre (over it for a boss or web) and every move toward the part is protected: a touch on the way is an obstruction. Every move is incremental from where the probe stands. Prove it out at reduced rapid override with the probe clear of the part.</source>
-        <translation>场景中对其特征的循环，以普通测量移动写出：其策略、进给率、回退距离和起始距离，即您在此调优的值，而非厂商的循环调用。测头从特征中心出发（圆柱或凸台则在其上方），每个朝向工件的移动都是保护移动：途中的触碰即为障碍。每个移动都是从测头当前位置出发的增量移动。请在降低的快速倍率下、测头远离工件时试运行。</translation>
     </message>
     <message>
         <source>The axis the two walls are touched along, X or Y (both directions, + first).</source>
@@ -3684,6 +3676,14 @@
     <message>
         <source>Not used: a bore or boss is touched at X+, X-, Y+ and Y-.</source>
         <translation>不使用：孔或圆柱在 X+、X-、Y+ 和 Y- 处触测。</translation>
+    </message>
+    <message>
+        <source>The scenario&apos;s cycle on a surface, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe stands at the start distance in front of the surface. Every move is incremental from where the probe stands. Every move runs at a feed: prove it out at reduced feed override with the probe clear of the part.</source>
+        <translation>场景中对表面的循环，以普通测量移动写出：其策略、进给率、回退距离和起始距离，即您在此调优的值，而非厂商的循环调用。测头位于表面前方的起始距离处。每个移动都是从测头当前位置出发的增量移动。所有移动都以进给率运行：请在降低的进给倍率下、测头远离工件时试运行。</translation>
+    </message>
+    <message>
+        <source>The scenario&apos;s cycle on its feature, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe starts at the feature&apos;s centre (over it for a boss or web) and every move toward the part is protected: a touch on the way is an obstruction. Every move is incremental from where the probe stands. Prove it out at reduced feed override (a boss&apos;s or web&apos;s lifts are rapids: reduced rapid override too) with the probe clear of the part.</source>
+        <translation>场景中对其特征的循环，以普通测量移动写出：其策略、进给率、回退距离和起始距离，即您在此调优的值，而非厂商的循环调用。测头从特征中心出发（圆柱或凸台则在其上方），每个朝向工件的移动都是保护移动：途中的触碰即为障碍。每个移动都是从测头当前位置出发的增量移动。请在降低的进给倍率下（圆柱或凸台上方的抬起为快速移动：还需降低快速倍率）、测头远离工件时试运行。</translation>
     </message>
 </context>
 <context>

@@ -47,6 +47,11 @@ P5D2 = lcnc_rig.Probe(pretravel_mm=0.005, interface_delay_periods=2)
 P20D1 = lcnc_rig.Probe(pretravel_mm=0.020, interface_delay_periods=1)
 
 FEATURE = {"feature_size_mm": 20.0, "clearance_mm": 5.0, "position_feed_mm_min": 5000.0}
+# The surfaces' start, long enough that a cycle of few blocks lasts over a
+# second: LinuxCNC's task waits a few servo periods more or less at a block
+# change from run to run (uspace is not hard real time), and 1 % of a 0.5 s
+# cycle of 4 blocks is less than that spread.
+LONG_START = {"approach_mm": 20.0}
 SINGLE = {"strategy": "single_touch"}
 TWO = {"strategy": "two_touch"}
 
@@ -55,12 +60,13 @@ TWO = {"strategy": "two_touch"}
 # centre for a feature, (x, y) or along --axis)
 CASES = {
     "a": {
-        "surface_x_plus_two_touch_3000": ("X+", P5, dict(TWO, probe_feed_mm_min=3000,
+        "surface_x_plus_two_touch_3000": ("X+", P5, dict(TWO, **LONG_START, probe_feed_mm_min=3000,
                                                              measure_feed_mm_min=200), 0.0),
-        "surface_x_minus_single_4000_repeats": ("X-", P0, dict(SINGLE, probe_feed_mm_min=4000,
+        "surface_x_minus_single_4000_repeats": ("X-", P0, dict(SINGLE, **LONG_START,
+                                                                   probe_feed_mm_min=4000,
                                                                    repeats=2), 0.0),
         "surface_y_plus_two_touch_4000_repeats": ("Y+", P5D2, dict(
-            TWO, probe_feed_mm_min=4000, measure_feed_mm_min=300, repeats=2), 0.0),
+            TWO, **LONG_START, probe_feed_mm_min=4000, measure_feed_mm_min=300, repeats=2), 0.0),
         "surface_y_minus_single_300": ("Y-", P20D1, dict(SINGLE, probe_feed_mm_min=300), 0.0),
         "surface_z_minus_two_touch_uncertain_far": ("Z-", P5, dict(
             TWO, probe_feed_mm_min=2000, measure_feed_mm_min=100,
@@ -73,17 +79,18 @@ CASES = {
         "boss_single_2000_repeats": (None, P0, dict(FEATURE, **SINGLE, feature="boss",
                                                     probe_feed_mm_min=2000, repeats=2), 0.0),
         "pocket_x_two_touch_4000": ("X+", P5D2, dict(FEATURE, **TWO, feature="pocket",
+                                                     feature_size_mm=40.0,
                                                      probe_feed_mm_min=4000,
                                                      measure_feed_mm_min=300), 0.0),
         "web_y_single_3000": ("Y+", P5, dict(FEATURE, **SINGLE, feature="web",
                                              probe_feed_mm_min=3000), 0.0),
     },
     "b": {
-        "surface_x_plus_single_4000": ("X+", P5, dict(SINGLE, probe_feed_mm_min=4000,
-                                                      approach_mm=7.0), 0.0),
-        "surface_z_minus_two_touch_3000": ("Z-", P5D2, dict(TWO, probe_feed_mm_min=3000,
+        "surface_x_plus_single_4000": ("X+", P5, dict(SINGLE, **LONG_START, probe_feed_mm_min=4000),
+                                       0.0),
+        "surface_z_minus_two_touch_3000": ("Z-", P5D2, dict(TWO, **LONG_START, probe_feed_mm_min=3000,
                                                             measure_feed_mm_min=200), 0.0),
-        "surface_y_minus_two_touch_1000": ("Y-", P20D1, dict(TWO, probe_feed_mm_min=1000,
+        "surface_y_minus_two_touch_1000": ("Y-", P20D1, dict(TWO, **LONG_START, probe_feed_mm_min=1000,
                                                              measure_feed_mm_min=100), 0.0),
         "bore_single_4000_uncertain": (None, P5, dict(
             FEATURE, **SINGLE, feature="bore", feature_size_mm=24.0, probe_feed_mm_min=4000,

@@ -276,8 +276,9 @@ void ProgramDialog::retranslate() {
                 tr("The scenario's cycle on a surface, as plain probing moves: its strategy, "
                    "feeds, backoff and start distance, the values you tuned here, not a maker's "
                    "cycle call. The probe stands at the start distance in front of the surface. "
-                   "Every move is incremental from where the probe stands. Prove it out at "
-                   "reduced rapid override with the probe clear of the part."));
+                   "Every move is incremental from where the probe stands. Every move runs at a "
+                   "feed: prove it out at reduced feed override with the probe clear of the "
+                   "part."));
             axis_->setToolTip(tr("The direction of travel of the touch."));
         } else {
             intro_->setText(
@@ -286,7 +287,8 @@ void ProgramDialog::retranslate() {
                    "cycle call. The probe starts at the feature's centre (over it for a boss or "
                    "web) and every move toward the part is protected: a touch on the way is an "
                    "obstruction. Every move is incremental from where the probe stands. Prove it "
-                   "out at reduced rapid override with the probe clear of the part."));
+                   "out at reduced feed override (a boss's or web's lifts are rapids: reduced "
+                   "rapid override too) with the probe clear of the part."));
             axis_->setToolTip(feature == Feature::pocket || feature == Feature::web
                                   ? tr("The axis the two walls are touched along, X or Y (both "
                                        "directions, + first).")

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -44,6 +45,34 @@ TEST(ProgramGolden, EveryProgramInEveryDialect) {
     }
 }
 
+// The header says what slows the program down, from its own moves: feed
+// override always (every probing, protected and return move runs at a
+// feed), rapid override where the program has rapids (retracts, lifts).
+TEST(ProgramWriter, TheHeaderNamesTheOverridesItsMovesObey) {
+    for (const auto& [name, plan] : program_test::golden_plans()) {
+        for (const Dialect* d : {&linuxcnc_dialect(), &grbl_dialect(), &fanuc_dialect()}) {
+            SCOPED_TRACE(name + " " + d->name);
+            std::string text =
+                write_program(plan, *d, program_test::kDate, program_test::golden_options());
+            bool rapid = false;
+            std::istringstream lines(text);
+            for (std::string line; std::getline(lines, line);) {
+                rapid = rapid || line.rfind(std::string(d->rapid_word) + " ", 0) == 0;
+            }
+            for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+            // (Comments may break a line between two words.)
+            std::string flat;
+            for (char c : text) {
+                if (c == '\n' || c == ';' || c == '(' || c == ')') continue;
+                if (c == ' ' && !flat.empty() && flat.back() == ' ') continue;
+                flat += c;
+            }
+            EXPECT_NE(flat.find("REDUCED FEED OVERRIDE"), std::string::npos);
+            EXPECT_EQ(flat.find("REDUCED RAPID OVERRIDE") != std::string::npos, rapid);
+        }
+    }
+}
+
 TEST(ProgramWriter, NumbersIgnoreTheLocaleAndNeverReadMinusZero) {
     EXPECT_EQ(program_number(-10.5), "-10.500");
     EXPECT_EQ(program_number(-0.0001), "0.000");
@@ -71,7 +100,7 @@ TEST(ProgramWriter, EveryProbeIsIncrementalAndEveryRecordedTouchIsLogged) {
     EXPECT_EQ(probes, all_probes);
     EXPECT_EQ(logs, plan.recorded().size());
     EXPECT_NE(text.find("; Plan " + plan_id(plan)), std::string::npos);
-    EXPECT_NE(text.find("reduced rapid override"), std::string::npos);
+    EXPECT_NE(text.find("reduced feed override"), std::string::npos);
     EXPECT_NE(text.find("Date 2026-01-15."), std::string::npos);
 }
 

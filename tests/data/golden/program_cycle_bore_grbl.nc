@@ -31,8 +31,9 @@
 ;   cycle.feature = bore
 ;   cycle.feature_size_mm = 50
 ;   cycle.position_feed_mm_min = 3000
-; WARNING: prove this program out first at reduced rapid override, with the probe
-; clear of the part, and check every move against your machine before a touch.
+; WARNING: prove this program out first at reduced feed override (every
+; move runs at a feed, none at the rapid), with the probe clear of the
+; part, and check every move against your machine before a touch.
 ; Every move is incremental (G91) from where the probe stands when the program
 ; starts or a pause ends. A probing move that does not trigger stops the program
 ; with an alarm.

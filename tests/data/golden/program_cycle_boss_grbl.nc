@@ -35,8 +35,10 @@
 ;   cycle.feature_size_mm = 50
 ;   cycle.position_feed_mm_min = 3000
 ;   cycle.clearance_mm = 10
-; WARNING: prove this program out first at reduced rapid override, with the probe
-; clear of the part, and check every move against your machine before a touch.
+; WARNING: prove this program out first at reduced feed override (its
+; probing and return moves run at a feed) and reduced rapid override
+; (its retracts and lifts are rapids), with the probe clear of the part,
+; and check every move against your machine before a touch.
 ; Every move is incremental (G91) from where the probe stands when the program
 ; starts or a pause ends. A probing move that does not trigger stops the program
 ; with an alarm.

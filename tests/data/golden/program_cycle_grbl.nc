@@ -27,8 +27,9 @@
 ;   cycle.backoff_mm = 2
 ;   cycle.backoff_from = stop
 ;   cycle.return_feed_mm_min = 10000
-; WARNING: prove this program out first at reduced rapid override, with the probe
-; clear of the part, and check every move against your machine before a touch.
+; WARNING: prove this program out first at reduced feed override (every
+; move runs at a feed, none at the rapid), with the probe clear of the
+; part, and check every move against your machine before a touch.
 ; Every move is incremental (G91) from where the probe stands when the program
 ; starts or a pause ends. A probing move that does not trigger stops the program
 ; with an alarm.

@@ -25,8 +25,10 @@
 ;   repeats = 2
 ;   margin_mm = 1
 ;   placement_mm = 10
-; WARNING: prove this program out first at reduced rapid override, with the probe
-; clear of the part, and check every move against your machine before a touch.
+; WARNING: prove this program out first at reduced feed override (its
+; probing and return moves run at a feed) and reduced rapid override
+; (its retracts and lifts are rapids), with the probe clear of the part,
+; and check every move against your machine before a touch.
 ; Every move is incremental (G91) from where the probe stands when the program
 ; starts or a pause ends. A probing move that does not trigger stops the program
 ; with an alarm.
