@@ -104,6 +104,17 @@ const char* feature_description(std::string_view feature) {
     return nullptr;
 }
 
+// The header's warning: which overrides slow the program down.
+constexpr const char* kProveAtFeed =
+    "WARNING: prove this program out first at reduced feed override (every\n"
+    "move runs at a feed, none at the rapid), with the probe clear of the\n"
+    "part, and check every move against your machine before a touch.\n";
+constexpr const char* kProveWithRapids =
+    "WARNING: prove this program out first at reduced feed override (its\n"
+    "probing and return moves run at a feed) and reduced rapid override\n"
+    "(its retracts and lifts are rapids), with the probe clear of the part,\n"
+    "and check every move against your machine before a touch.\n";
+
 // How far every probing move searches (plan.h, checked_search_beyond_mm).
 constexpr const char* kSearchNote =
     "\nEvery probing move searches past the farthest place its surface can be by\n"
@@ -278,13 +289,7 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
         return s.kind == StepKind::move && s.feed_mm_min == 0.0;
     });
     w.comment_block(
-        std::string(rapids ? "WARNING: prove this program out first at reduced feed override (its\n"
-                             "probing and return moves run at a feed) and reduced rapid override\n"
-                             "(its retracts and lifts are rapids), with the probe clear of the part,\n"
-                             "and check every move against your machine before a touch.\n"
-                           : "WARNING: prove this program out first at reduced feed override (every\n"
-                             "move runs at a feed, none at the rapid), with the probe clear of the\n"
-                             "part, and check every move against your machine before a touch.\n") +
+        std::string(rapids ? kProveWithRapids : kProveAtFeed) +
         "Every move is incremental (G91) from where the probe stands when the program\n"
         "starts or a pause ends. A probing move that does not trigger stops the program\n"
         "with an alarm.");
