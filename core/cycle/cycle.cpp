@@ -571,18 +571,22 @@ class CycleBuilder {
     // kept motion `index` (-1 in a summary, which has no timeline); the next block
     // starts where the command ended, `end_mm` along the path.
     void add_filtered_motion(int index, double direction, double duration_s, double end_mm) {
-        if (full_) {
-            TimedSegment segment;
-            segment.start_s = motion_t_;
-            segment.duration_s = duration_s;
-            segment.axis_start_mm = axis_mm_;
-            segment.direction = direction;
-            segment.touch = touch_;
-            segment.motion = index;
-            segments_.push_back(segment);
-        }
+        if (full_) push_segment(duration_s, direction, index);
         motion_t_ += duration_s;
         axis_mm_ += direction * end_mm;
+    }
+
+    // A timeline segment from now, where the axis stands: kept motion
+    // `motion`, or at rest (-1, with no jerk or speed).
+    void push_segment(double duration_s, double direction, int motion) {
+        TimedSegment segment;
+        segment.start_s = motion_t_;
+        segment.duration_s = duration_s;
+        segment.axis_start_mm = axis_mm_;
+        segment.direction = direction;
+        segment.touch = touch_;
+        segment.motion = motion;
+        segments_.push_back(segment);
     }
 
     // The control's block change after a move (machine.block_change_s): the
@@ -596,12 +600,7 @@ class CycleBuilder {
                 last->start_s + last->duration_s == motion_t_) {
                 last->duration_s += block_change_s_;
             } else {
-                TimedSegment rest;
-                rest.start_s = motion_t_;
-                rest.duration_s = block_change_s_;
-                rest.axis_start_mm = axis_mm_;
-                rest.touch = touch_;
-                segments_.push_back(rest);
+                push_segment(block_change_s_, 0.0, -1);
             }
         }
         motion_t_ += block_change_s_;

@@ -147,7 +147,7 @@ QString fix_kind_text(const Fix& fix) {
 
 // With the backoff the fixed cycle needs, when the fix sets it too.
 QString fix_text(const Fix& fix) {
-    const QString text = fix_kind_text(fix);
+    QString text = fix_kind_text(fix);
     if (!fix.with_backoff || text.isEmpty()) return text;
     //: %1 what the fix sets ("Start 15.680 mm out"), %2 the backoff it needs with it
     return WarningsPanel::tr("%1, backoff %2").arg(text, format_mm(fix.scenario.cycle.backoff_mm));

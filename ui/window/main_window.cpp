@@ -809,17 +809,21 @@ bool MainWindow::new_scenario() {
     return true;
 }
 
-bool MainWindow::open_scenario(const QString& path) {
-    // Read by core, as the CLI reads it: the same size limit and messages.
-    std::string text;
+std::optional<std::string> MainWindow::read_or_report(const QString& path, const char* title) {
     try {
-        text = read_text_file(QFile::encodeName(path).toStdString());
+        return read_text_file(QFile::encodeName(path).toStdString());
     } catch (const FileError& e) {
-        report_error(QT_TR_NOOP("Could not open the scenario"),
-                     tr("%1 could not be read: %2")
-                         .arg(QDir::toNativeSeparators(path), translate(e.reason())));
-        return false;
+        report_error(title, tr("%1 could not be read: %2")
+                                .arg(QDir::toNativeSeparators(path), translate(e.reason())));
+        return std::nullopt;
     }
+}
+
+bool MainWindow::open_scenario(const QString& path) {
+    const std::optional<std::string> read =
+        read_or_report(path, QT_TR_NOOP("Could not open the scenario"));
+    if (!read) return false;
+    const std::string& text = *read;
     const bool project = is_project_text(text);
     Project loaded;
     try {
@@ -1079,19 +1083,12 @@ bool MainWindow::apply_preset(const QString& resource_path) {
 }
 
 bool MainWindow::import_linuxcnc_machine(const QString& path) {
-    // Read by core, as the CLI reads it: the same size limit and messages.
-    std::string text;
-    try {
-        text = read_text_file(QFile::encodeName(path).toStdString());
-    } catch (const FileError& e) {
-        report_error(QT_TR_NOOP("Could not import the machine"),
-                     tr("%1 could not be read: %2")
-                         .arg(QDir::toNativeSeparators(path), translate(e.reason())));
-        return false;
-    }
+    const std::optional<std::string> text =
+        read_or_report(path, QT_TR_NOOP("Could not import the machine"));
+    if (!text) return false;
     Scenario next = scenario_;
     try {
-        next.machine = machine_from_linuxcnc_ini(text);
+        next.machine = machine_from_linuxcnc_ini(*text);
     } catch (const LinuxCncIniError& e) {
         QStringList problems;
         for (const IniProblem& problem : e.problems()) problems << translate(problem.to_message());

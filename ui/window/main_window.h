@@ -186,6 +186,9 @@ class MainWindow : public QMainWindow {
     // `title` untranslated (QT_TR_NOOP): the status bar shows it in the
     // language in effect, also after a switch.
     void report_error(const char* title, const QString& text);
+    // The file's text as the core reads it (the CLI's size limit and
+    // messages), or nullopt after saying under `title` why it cannot be read.
+    std::optional<std::string> read_or_report(const QString& path, const char* title);
     // A status bar message that is built again after a language switch.
     void show_status(std::function<QString()> make, int timeout_ms);
     static QString preset_name(const QString& resource_path);
