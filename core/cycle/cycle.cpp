@@ -137,20 +137,36 @@ Message Warning::to_message() const {
     m.code = to_string(code);
     m.context = "Warning";
     switch (code) {
-        case WarningCode::overtravel_limit:
-            m.text = severity == Severity::error
-                         ? QT_TRANSLATE_NOOP("Warning",
-                                             "Overtravel %1 is %2 % of the probe's %3 limit: the "
-                                             "probe or stylus will be damaged; lower the feed or "
-                                             "the delays")
-                         : QT_TRANSLATE_NOOP("Warning",
-                                             "Overtravel %1 is %2 % of the probe's %3 limit: "
-                                             "little margin left for the stylus");
+        case WarningCode::overtravel_limit: {
+            // c: the feed override the overtravel is at (issue 28).
+            const bool overridden = c > 1.0;
+            if (severity == Severity::error) {
+                m.text = overridden
+                             ? QT_TRANSLATE_NOOP("Warning",
+                                                 "Overtravel %1 at %5 % feed override is %2 % of "
+                                                 "the probe's %3 limit: the probe or stylus will "
+                                                 "be damaged; lower the feed or the delays")
+                             : QT_TRANSLATE_NOOP("Warning",
+                                                 "Overtravel %1 is %2 % of the probe's %3 limit: "
+                                                 "the probe or stylus will be damaged; lower the "
+                                                 "feed or the delays");
+            } else {
+                m.text = overridden
+                             ? QT_TRANSLATE_NOOP("Warning",
+                                                 "Overtravel %1 at %5 % feed override is %2 % of "
+                                                 "the probe's %3 limit: little margin left for "
+                                                 "the stylus")
+                             : QT_TRANSLATE_NOOP("Warning",
+                                                 "Overtravel %1 is %2 % of the probe's %3 limit: "
+                                                 "little margin left for the stylus");
+            }
             m.args = {arg("overtravel_mm", ArgKind::length_mm, a, 3),
                       arg("percent_of_limit", ArgKind::number, 100.0 * a / b, 0),
                       arg("limit_mm", ArgKind::length_mm, b, 3),
-                      arg("touch", ArgKind::integer, d > 1.5 ? 2.0 : 1.0)};
+                      arg("touch", ArgKind::integer, d > 1.5 ? 2.0 : 1.0),
+                      arg("feed_override_pct", ArgKind::number, 100.0 * std::max(c, 1.0), 0)};
             break;
+        }
         case WarningCode::backoff_too_small:
             // d: the backoff's reference (0 where the probe stopped, 1 the recorded trigger).
             m.text = d > 0.5 ? QT_TRANSLATE_NOOP(
@@ -296,21 +312,38 @@ Message Warning::to_message() const {
                       arg("touch", ArgKind::integer, d > 1.5 ? 2.0 : 1.0)};
             break;
         case WarningCode::protected_move_overtravel:
-            m.text = severity == Severity::error
-                         ? QT_TRANSLATE_NOOP(
-                               "Warning",
-                               "A protected move at the positioning feed %1 that meets an "
-                               "obstruction stops %2 past it, %3 % of the probe's %4 limit: the "
-                               "stylus would be overrun; lower the positioning feed")
-                         : QT_TRANSLATE_NOOP(
-                               "Warning",
-                               "A protected move at the positioning feed %1 that meets an "
-                               "obstruction stops %2 past it, %3 % of the probe's %4 limit: "
-                               "little margin left for the stylus");
+            // d: the feed override it is at (issue 28).
+            if (d > 1.0) {
+                m.text = severity == Severity::error
+                             ? QT_TRANSLATE_NOOP(
+                                   "Warning",
+                                   "A protected move at the positioning feed %1 and %5 % feed "
+                                   "override that meets an obstruction stops %2 past it, %3 % of "
+                                   "the probe's %4 limit: the stylus would be overrun; lower the "
+                                   "positioning feed")
+                             : QT_TRANSLATE_NOOP(
+                                   "Warning",
+                                   "A protected move at the positioning feed %1 and %5 % feed "
+                                   "override that meets an obstruction stops %2 past it, %3 % of "
+                                   "the probe's %4 limit: little margin left for the stylus");
+            } else {
+                m.text = severity == Severity::error
+                             ? QT_TRANSLATE_NOOP(
+                                   "Warning",
+                                   "A protected move at the positioning feed %1 that meets an "
+                                   "obstruction stops %2 past it, %3 % of the probe's %4 limit: "
+                                   "the stylus would be overrun; lower the positioning feed")
+                             : QT_TRANSLATE_NOOP(
+                                   "Warning",
+                                   "A protected move at the positioning feed %1 that meets an "
+                                   "obstruction stops %2 past it, %3 % of the probe's %4 limit: "
+                                   "little margin left for the stylus");
+            }
             m.args = {arg("position_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(c), 0),
                       arg("overtravel_mm", ArgKind::length_mm, a, 3),
                       arg("percent_of_limit", ArgKind::number, 100.0 * a / b, 0),
-                      arg("limit_mm", ArgKind::length_mm, b, 3)};
+                      arg("limit_mm", ArgKind::length_mm, b, 3),
+                      arg("feed_override_pct", ArgKind::number, 100.0 * std::max(d, 1.0), 0)};
             break;
     }
     return m;
@@ -326,11 +359,16 @@ double search_beyond_mm(const Scenario& scenario, double overtravel_mm) {
     return std::max(overtravel_mm, 0.5 * (overtravel_mm + scenario.probe.overtravel_limit_mm));
 }
 
+double feed_override_factor(const Cycle& cycle) {
+    return std::max(1.0, cycle.feed_override_max_pct / 100.0);
+}
+
 double protected_move_overtravel_mm(const Scenario& scenario, double feed_mm_s) {
+    const double v = feed_override_factor(scenario.cycle) * feed_mm_s;
     return scenario.probe.pretravel_mm +
-           feed_mm_s * (reaction_time_s(scenario.machine, scenario.probe) +
-                        scenario.axis_dynamics().lag_s()) +
-           stop_distance_mm(scenario.motion_limits(), feed_mm_s, feed_mm_s);
+           v * (reaction_time_s(scenario.machine, scenario.probe) +
+                scenario.axis_dynamics().lag_s()) +
+           stop_distance_mm(scenario.motion_limits(), v, v);
 }
 
 // domain.md, "One touch": interface response t_i, controller latency t_c and,
@@ -647,14 +685,43 @@ class CycleBuilder {
     // A touch, then the block change.
     TouchResult add_touch(const Scenario& scenario, const MotionLimits& limits, double feed_mm_s,
                           double distance_mm, const TouchPhases& names) {
-        const TouchResult touch =
-            kernel_ != nullptr ? add_filtered_touch(scenario, limits, feed_mm_s, distance_mm, names)
-                               : add_ideal_touch(scenario, limits, feed_mm_s, distance_mm, names);
+        const TouchResult touch = add_touch_only(scenario, limits, feed_mm_s, distance_mm, names);
         add_block_change();
         return touch;
     }
 
+    // A touch solved for its figures only (issue 28: the stop at the feed
+    // override): nothing of it stays in the result.
+    TouchResult solve_touch(const Scenario& scenario, const MotionLimits& limits, double feed_mm_s,
+                            double distance_mm, const TouchPhases& names) {
+        const std::size_t phase_count = phases_.size();
+        const std::size_t segment_count = segments_.size();
+        const std::size_t motion_count = motions_.size();
+        const std::array<double, kPhaseCount> phase_time = phase_time_;
+        const double t = t_;
+        const double motion_t = motion_t_;
+        const double axis_mm = axis_mm_;
+        const TouchResult touch = add_touch_only(scenario, limits, feed_mm_s, distance_mm, names);
+        phases_.resize(phase_count);
+        segments_.resize(segment_count);
+        motions_.erase(motions_.begin() + static_cast<std::ptrdiff_t>(motion_count),
+                       motions_.end());
+        phase_time_ = phase_time;
+        t_ = t;
+        motion_t_ = motion_t;
+        axis_mm_ = axis_mm;
+        return touch;
+    }
+
   private:
+    // A touch's phases and motion, without the block change after it.
+    TouchResult add_touch_only(const Scenario& scenario, const MotionLimits& limits,
+                               double feed_mm_s, double distance_mm, const TouchPhases& names) {
+        return kernel_ != nullptr
+                   ? add_filtered_touch(scenario, limits, feed_mm_s, distance_mm, names)
+                   : add_ideal_touch(scenario, limits, feed_mm_s, distance_mm, names);
+    }
+
     void add_move_only(Phase phase, const MotionLimits& limits, double distance_mm,
                        double feed_mm_s, double direction) {
         if (kernel_ != nullptr) {
@@ -1181,8 +1248,17 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     const std::size_t sequence_first_segment = b.segment_count();
     // One touch sequence: first touch, (backoff, second touch,) return to start.
     TouchResult first = b.add_touch(scenario, limits, probe_v, s, kFirstTouch);
-    first.search_mm =
-        s + c.part_position_uncertainty_mm + search_beyond_mm(scenario, first.overtravel_mm);
+    // Issue 28: the operator may turn the feed override up to its highest:
+    // the same touch at that feed stops farther, and every overtravel check
+    // (the limit, the searches, the backoff) holds at it. The timeline stays
+    // at 100 %.
+    const double override_k = feed_override_factor(c);
+    const bool overridden = override_k > 1.0;
+    const TouchResult first_fast =
+        overridden ? b.solve_touch(scenario, limits, override_k * probe_v, s, kFirstTouch) : first;
+    first.override_overtravel_mm = std::max(first.overtravel_mm, first_fast.overtravel_mm);
+    first.search_mm = s + c.part_position_uncertainty_mm +
+                      search_beyond_mm(scenario, first.override_overtravel_mm);
     TouchResult measuring = first;
     // domain.md, "Strategies": the second touch starts b - overtravel_1 in
     // front of the surface (none left if the backoff is too short). From the
@@ -1207,9 +1283,21 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     double repeat_backoff_cost_s = 0.0;
     if (two_touch) {
         measuring = back_off_and_measure(first, first_backoff_cost_s);
-        // The backoff as the programs move it, from the worst-case figures.
-        measuring.search_mm = backoff_move_mm(c, c.backoff_mm, first, TouchCase::worst) +
-                              search_beyond_mm(scenario, measuring.overtravel_mm);
+        measuring.override_overtravel_mm = measuring.overtravel_mm;
+        if (overridden) {  // after the first touch at the override, as the timeline's
+            const double distance =
+                std::max(0.0, c.backoff_mm - backoff_reference_mm(c, first_fast, TouchCase::mean));
+            measuring.override_overtravel_mm = std::max(
+                measuring.overtravel_mm,
+                b.solve_touch(scenario, limits, override_k * measure_v, distance, kSecondTouch)
+                    .overtravel_mm);
+        }
+        // The backoff as the programs move it, from the worst-case figures
+        // (from the recorded trigger, the stop at the override is farther).
+        measuring.search_mm =
+            std::max(backoff_move_mm(c, c.backoff_mm, first, TouchCase::worst),
+                     backoff_move_mm(c, c.backoff_mm, first_fast, TouchCase::worst)) +
+            search_beyond_mm(scenario, measuring.override_overtravel_mm);
         if (full) add_touch_warnings(scenario, measuring, 1, r.warnings_);
     }
     // Issue 14: the measuring touch made `repeats` times and averaged. Two-touch
@@ -1258,14 +1346,17 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
             back_to_centre();
         }
     }
-    const double worst_overtravel = std::max(first.overtravel_mm, measuring.overtravel_mm);
+    const double first_worst = first.override_overtravel_mm;
+    const double measuring_worst = two_touch ? measuring.override_overtravel_mm : first_worst;
+    const double worst_overtravel = std::max(first_worst, measuring_worst);
     // Two-touch: a faster first touch may overtravel less than the slow second
     // one when a fixed backoff leaves the second approach too short to brake
     // from; the user must see which touch sets the worst.
-    r.overtravel_touch_ = two_touch && measuring.overtravel_mm > first.overtravel_mm ? 2 : 1;
+    r.overtravel_touch_ = two_touch && measuring_worst > first_worst ? 2 : 1;
 
     r.total_s_ = b.now();
-    r.overtravel_mm_ = worst_overtravel;
+    r.overtravel_mm_ = std::max(first.overtravel_mm, measuring.overtravel_mm);
+    r.checked_overtravel_mm_ = worst_overtravel;
     r.trigger_speed_mm_s_ = r.measuring_.trigger_speed_mm_s;
     r.scan_range_mm_ = scan_range_mm(m, r.trigger_speed_mm_s_);
     // Issue 14: the scan phase and the repeatability are random from touch to
@@ -1277,19 +1368,23 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     // also needs room to reach the measuring feed before it touches.
     // Issue 12: rounded up to the editors' digits, so the value shown is the
     // value that clears backoff_too_small.
-    const double needed =
+    // Issue 28: at the highest feed override the probe must still reseat
+    // before the second touch starts (the measuring feed's room is for the
+    // measurement, at 100 %).
+    const double needed = std::max(
         backoff_reference_mm(c, r.first_, TouchCase::worst) +
-        std::max(p.reseat_mm, approach_room(scenario, limits, dynamics, measure_v, &cache));
+            std::max(p.reseat_mm, approach_room(scenario, limits, dynamics, measure_v, &cache)),
+        backoff_reference_mm(c, first_fast, TouchCase::worst) + p.reseat_mm);
     r.recommended_backoff_mm_ = round_up_to(needed, kBackoffStep_mm);
 
     // Touches of one cycle differ only in direction, so touch 0 speaks for all.
     std::vector<Warning>& w = r.warnings_;
     if (worst_overtravel >= p.overtravel_limit_mm) {
         w.push_back({WarningCode::overtravel_limit, Severity::error, worst_overtravel,
-                     p.overtravel_limit_mm, 0.0, static_cast<double>(r.overtravel_touch_)});
+                     p.overtravel_limit_mm, override_k, static_cast<double>(r.overtravel_touch_)});
     } else if (worst_overtravel >= kOvertravelWarningFraction * p.overtravel_limit_mm) {
         w.push_back({WarningCode::overtravel_limit, Severity::warning, worst_overtravel,
-                     p.overtravel_limit_mm, 0.0, static_cast<double>(r.overtravel_touch_)});
+                     p.overtravel_limit_mm, override_k, static_cast<double>(r.overtravel_touch_)});
     }
     if (two_touch) {
         const double recommended = r.recommended_backoff_mm_;
@@ -1345,8 +1440,8 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     // automatic value always does; a value set by hand is checked against
     // the touch that stops farthest past its surface.
     if (c.search_beyond_mm > 0.0) {
-        const bool second_worse = two_touch && measuring.overtravel_mm > first.overtravel_mm;
-        const double stop = second_worse ? measuring.overtravel_mm : first.overtravel_mm;
+        const bool second_worse = r.overtravel_touch_ == 2;
+        const double stop = second_worse ? measuring_worst : first_worst;
         if (c.search_beyond_mm < stop) {
             w.push_back({WarningCode::search_ends_too_soon, Severity::error, c.search_beyond_mm,
                          stop, 0.0, second_worse ? 2.0 : 1.0});
@@ -1360,7 +1455,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
         if (guard >= kOvertravelWarningFraction * limit) {
             w.push_back({WarningCode::protected_move_overtravel,
                          guard >= limit ? Severity::error : Severity::warning, guard, limit,
-                         position_v});
+                         position_v, override_k});
         }
     }
     const double calibration_v = mm_min_to_mm_s(p.calibration_feed_mm_min);

@@ -95,7 +95,8 @@ struct Warning {
     WarningCode code{};
     Severity severity{};
     // Meaning by code (all in internal units: mm, s, mm/s):
-    // overtravel_limit:         a = overtravel, b = limit, d = the touch (1 first, 2 second)
+    // overtravel_limit:         a = overtravel, b = limit, c = the feed override it is
+    //                           at (1.5 for 150 %), d = the touch (1 first, 2 second)
     // backoff_too_small:        a = backoff, b = recommended backoff, d = its reference
     //                           (0 where the probe stopped, 1 the recorded trigger)
     // backoff_excess:           a = backoff, b = recommended, c = time wasted
@@ -117,7 +118,7 @@ struct Warning {
     //                           past the surface (the touch's overtravel), d = the touch
     //                           (1 first, 2 second)
     // protected_move_overtravel: a = the overtravel past an obstruction, b = the limit,
-    //                           c = the positioning feed
+    //                           c = the positioning feed, d = the feed override it is at
     double a{0.0}, b{0.0}, c{0.0}, d{0.0};
     // The message: code, template and the numbers above as named arguments.
     Message to_message() const;
@@ -193,6 +194,13 @@ struct TouchResult {
     // touch the backoff less this stop to approach.
     double mean_overtravel_mm{0.0};
     double mean_recorded_mm{0.0};
+    // Issue 28: where the touch stops, worst case, with its feed at up to
+    // the highest feed override (cycle.feed_override_max_pct) from the same
+    // start: the farther of the stops at 100 % and at that override (a touch
+    // that does not reach its feed at the override may stop nearer). The
+    // overtravel checks, the searches and the recommended backoff take it;
+    // overtravel_mm is at 100 %.
+    double override_overtravel_mm{0.0};
     // Travel from the trigger through the measurement delay (see
     // measurement_delay_s) at the axis's real speed: what calibration takes
     // as v * tau when the touch is at full feed.
@@ -215,7 +223,12 @@ class CycleResult {
     double phase_time(Phase phase) const { return phase_time_s_[static_cast<std::size_t>(phase)]; }
 
     double overtravel_mm() const { return overtravel_mm_; }  // worst over all touches
-    // Which touch overtravels most: 1 = the first, 2 = the second of two-touch.
+    // Issue 28: the overtravel the stylus must survive, which every check
+    // takes: the worst over all touches at up to the highest feed override
+    // (TouchResult::override_overtravel_mm).
+    double checked_overtravel_mm() const { return checked_overtravel_mm_; }
+    // Which touch overtravels most (at the override): 1 = the first, 2 = the
+    // second of two-touch.
     int overtravel_touch() const { return overtravel_touch_; }
     double trigger_speed_mm_s() const { return trigger_speed_mm_s_; }  // of the measuring touch
     double scan_range_mm() const { return scan_range_mm_; }
@@ -252,6 +265,7 @@ class CycleResult {
     std::array<double, kPhaseCount> phase_time_s_{};
     double total_s_{0.0};
     double overtravel_mm_{0.0};
+    double checked_overtravel_mm_{0.0};
     int overtravel_touch_{1};
     double trigger_speed_mm_s_{0.0};
     double scan_range_mm_{0.0};
@@ -272,9 +286,13 @@ class CycleResult {
 // its stylus's range.
 double search_beyond_mm(const Scenario& scenario, double overtravel_mm);
 
-// How far past an obstruction a protected positioning move at `feed_mm_s`
-// stops (a feature's moves to and from its touches run with the probe armed):
-// the probe triggers on it as on a surface, at the move's full feed (the worst
+// The highest feed override the checks hold at, as a factor (1.5 for 150 %).
+double feed_override_factor(const Cycle& cycle);
+
+// How far past an obstruction a protected positioning move programmed at
+// `feed_mm_s` stops (a feature's moves to and from its touches run with the
+// probe armed), at the highest feed override: the probe triggers on it as on
+// a surface, at the move's full feed v = override * feed_mm_s (the worst
 // case: no protected move is faster), so pretravel + v * (t_i + t_c + t_s) +
 // v * the dynamics' lag + the plan's braking from v.
 double protected_move_overtravel_mm(const Scenario& scenario, double feed_mm_s);

@@ -47,6 +47,7 @@ Json touch_json(const TouchResult& touch) {
     return {{"programmed_feed_mm_min", mm_s_to_mm_min(touch.programmed_feed_mm_s)},
             {"trigger_speed_mm_min", mm_s_to_mm_min(touch.trigger_speed_mm_s)},
             {"overtravel_mm", touch.overtravel_mm},
+            {"override_overtravel_mm", touch.override_overtravel_mm},
             {"mean_overtravel_mm", touch.mean_overtravel_mm},
             {"recorded_mm", touch.recorded_mm},
             {"search_mm", touch.search_mm}};
@@ -66,6 +67,8 @@ std::string evaluation_to_json(const Scenario& scenario, const Analysis& analysi
     }
     out["invalid_reasons"] = std::move(reasons);
     out["overtravel_mm"] = r.overtravel_mm();
+    // Issue 28: at up to the highest feed override, as the checks take it.
+    out["checked_overtravel_mm"] = r.checked_overtravel_mm();
     out["overtravel_touch"] = r.overtravel_touch() == 2 ? "second" : "first";
     out["trigger_speed_mm_min"] = mm_s_to_mm_min(r.trigger_speed_mm_s());
     out["uncertainty_mm"] = r.uncertainty_mm();
@@ -120,14 +123,15 @@ std::string monte_carlo_to_json(const MonteCarloOptions& options, const Histogra
 }
 
 std::string sweep_to_csv(const SweepResult& sweep, const SweepResult* optimised) {
-    std::string csv = "feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm";
+    std::string csv = "feed_mm_min,cycle_time_s,overtravel_mm,checked_overtravel_mm,uncertainty_mm";
     for (Phase phase : all_phases()) csv += std::string(",") + to_string(phase) + "_s";
     csv += ",valid,invalid_reasons";
     csv += optimised != nullptr ? ",cycle_time_recommended_backoff_s\n" : "\n";
     for (std::size_t i = 0; i < sweep.points.size(); ++i) {
         const SweepPoint& p = sweep.points[i];
         csv += csv_feed_mm_min(p.feed_mm_min) + ',' + csv_time_s(p.cycle_time_s) + ',' +
-               csv_length_mm(p.overtravel_mm) + ',' + csv_length_mm(p.uncertainty_mm);
+               csv_length_mm(p.overtravel_mm) + ',' + csv_length_mm(p.checked_overtravel_mm) + ',' +
+               csv_length_mm(p.uncertainty_mm);
         for (double t : p.phase_time_s) csv += ',' + csv_time_s(t);
         csv += p.valid() ? ",true," : ",false," + invalid_codes_text(p.invalid_codes, ";");
         if (optimised != nullptr) csv += ',' + csv_time_s(optimised->points[i].cycle_time_s);
@@ -205,6 +209,7 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
     row("valid", r.valid() ? "true" : "false", "");
     row("invalid_reasons", invalid_codes_text(r.invalid_codes(), ";"), "");
     row("overtravel_mm", csv_length_mm(r.overtravel_mm()), "mm");
+    row("checked_overtravel_mm", csv_length_mm(r.checked_overtravel_mm()), "mm");
     row("overtravel_touch", r.overtravel_touch() == 2 ? "second" : "first", "");
     row("trigger_speed_mm_min", csv_feed_mm_min(mm_s_to_mm_min(r.trigger_speed_mm_s())), "mm/min");
     row("uncertainty_mm", csv_length_mm(r.uncertainty_mm()), "mm");

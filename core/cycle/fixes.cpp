@@ -48,7 +48,7 @@ std::optional<double> feed_for_overtravel(const Scenario& scenario, double feed_
     const auto under = [&](double feed) {
         s.cycle.probe_feed_mm_min = feed;
         evaluate_into(s, r, cache, Detail::summary);
-        return r.overtravel_mm() < limit;
+        return r.checked_overtravel_mm() < limit;
     };
     double lo = std::min(kKneeSearchFrom_mm_min, feed_mm_min);
     if (!under(lo)) return std::nullopt;
@@ -116,13 +116,10 @@ std::optional<Scenario> candidate(const Scenario& scenario, const Analysis& anal
             return s;
         }
         case FixKind::search_past_stop: {
-            // The stop farthest past its surface, rounded up to the editor's
-            // 0.01 mm so the value shown clears the error.
-            double stop = cycle.first_touch().overtravel_mm;
-            if (s.cycle.strategy == Strategy::two_touch) {
-                stop = std::max(stop, cycle.measuring_touch().overtravel_mm);
-            }
-            s.cycle.search_beyond_mm = round_up_to(stop, 0.01);
+            // The stop farthest past its surface (at up to the highest feed
+            // override: the overtravel the checks take), rounded up to the
+            // editor's 0.01 mm so the value shown clears the error.
+            s.cycle.search_beyond_mm = round_up_to(cycle.checked_overtravel_mm(), 0.01);
             return s;
         }
         case FixKind::position_feed_for_overtravel: {

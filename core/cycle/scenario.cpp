@@ -392,6 +392,18 @@ const std::vector<KeyEntry>& key_table() {
                     "touch and back to the centre."),
                 QT_TRANSLATE_NOOP("Parameter", "Positioning feed")},
                PC_NUMBER(cycle, position_feed_mm_min)),
+        number({"cycle.feed_override_max_pct", "%", 100.0, 200.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "The highest feed override the operator may turn the cycle up to. Feed "
+                    "override speeds up every move at feed, the touches and the protected "
+                    "positioning moves too, so every overtravel check holds at it: the stylus's "
+                    "limit, the searches past each stop and the backoff that must clear the first "
+                    "touch's stop. The cycle time is at 100 %. 120 % is as far as every common "
+                    "control's dial turns; set what your machine's panel allows (Fanuc-type and "
+                    "Heidenhain 150 %, Haas 200 %), or 100 where the program locks the override."),
+                QT_TRANSLATE_NOOP("Parameter", "Highest feed override")},
+               PC_NUMBER(cycle, feed_override_max_pct)),
         number({"cycle.clearance_mm", "mm", 0.0, 1000.0,
                 QT_TRANSLATE_NOOP(
                     "Parameter",

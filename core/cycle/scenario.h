@@ -84,6 +84,13 @@ struct Cycle {
     // Protected positioning moves of a feature (probe armed): between touches
     // and from/to the centre (issue 11).
     double position_feed_mm_min{3000.0};
+    // The highest feed override the operator may turn the cycle up to, in %
+    // (issue 28): every overtravel check (the touches, the protected moves,
+    // the searches and the backoff that must clear the first touch's stop)
+    // holds at it. 120 %: an operator can turn every common control's dial
+    // that far (Siemens' panels and LinuxCNC's sample configurations stop
+    // there); Fanuc-type and Heidenhain panels reach 150 %, Haas' 200 %.
+    double feed_override_max_pct{120.0};
     // Boss/web: height the probe lifts to, over the wall, between touches.
     double clearance_mm{10.0};
     double target_uncertainty_mm{0.0};  // 0 = no target

@@ -67,9 +67,10 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
         point.feed_mm_min = feeds_mm_min[i];
         point.cycle_time_s = cycle_time_at(scenario, feeds_mm_min[i], options, scratch);
         point.overtravel_mm = scratch.overtravel_mm();
-        point.first_overtravel_mm = scratch.first_touch().overtravel_mm;
+        point.checked_overtravel_mm = scratch.checked_overtravel_mm();
+        point.first_overtravel_mm = scratch.first_touch().override_overtravel_mm;
         point.second_overtravel_mm = scenario.cycle.strategy == Strategy::two_touch
-                                         ? scratch.measuring_touch().overtravel_mm
+                                         ? scratch.measuring_touch().override_overtravel_mm
                                          : 0.0;
         point.uncertainty_mm = scratch.uncertainty_mm();
         for (Phase phase : all_phases()) {

@@ -16,8 +16,12 @@ struct SweepPoint {
     double feed_mm_min{0.0};
     double cycle_time_s{0.0};
     double overtravel_mm{0.0};  // the worst touch's
-    // Of each touch: a fast first touch can overtravel less than the second
-    // (two-touch with a fixed backoff). second is 0 for single-touch.
+    // Issue 28: the worst touch's at up to the highest feed override, which
+    // the limit is checked against (CycleResult::checked_overtravel_mm).
+    double checked_overtravel_mm{0.0};
+    // Of each touch, at up to the highest feed override: a fast first touch
+    // can overtravel less than the second (two-touch with a fixed backoff).
+    // second is 0 for single-touch.
     double first_overtravel_mm{0.0};
     double second_overtravel_mm{0.0};
     double uncertainty_mm{0.0};

@@ -20,7 +20,7 @@ Json candidate_json(const Candidate& c) {
             {"repeats", s.repeats},
             {"cycle_time_s", c.cycle_time_s},
             {"uncertainty_mm", c.uncertainty_mm},
-            {"overtravel_mm", c.overtravel_mm}};
+            {"checked_overtravel_mm", c.overtravel_mm}};
 }
 
 }  // namespace

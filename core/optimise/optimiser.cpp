@@ -718,9 +718,10 @@ void evaluate_point(const Scenario& scenario, ModelPoint& point) {
     point.valid = result.valid();
     point.cycle_time_s = result.total();
     point.uncertainty_mm = result.uncertainty_mm();
-    point.overtravel_mm = result.overtravel_mm();
-    point.first_overtravel_mm = result.first_touch().overtravel_mm;
-    point.measuring_overtravel_mm = result.measuring_touch().overtravel_mm;
+    point.overtravel_mm = result.checked_overtravel_mm();
+    // At the highest feed override, as the checks take them (issue 28).
+    point.first_overtravel_mm = result.first_touch().override_overtravel_mm;
+    point.measuring_overtravel_mm = result.measuring_touch().override_overtravel_mm;
     point.recommended_backoff_mm = result.recommended_backoff_mm();
 }
 

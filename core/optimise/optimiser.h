@@ -134,7 +134,9 @@ struct ModelPoint {
     bool valid{false};
     double cycle_time_s{0.0};
     double uncertainty_mm{0.0};
-    double overtravel_mm{0.0};  // the worst touch's
+    // The worst touch's, and each touch's, at up to the highest feed override
+    // (CycleResult::checked_overtravel_mm): the requirement holds at it.
+    double overtravel_mm{0.0};
     double first_overtravel_mm{0.0};
     double measuring_overtravel_mm{0.0};
     double recommended_backoff_mm{0.0};

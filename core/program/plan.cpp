@@ -9,6 +9,7 @@
 #include "core/common/input_error.h"
 #include "core/common/json_guard.h"
 #include "core/common/number_format.h"
+#include "core/common/units.h"
 #include "core/cycle/cycle.h"
 
 namespace probecycle {
@@ -63,21 +64,36 @@ CycleResult single_touch(const Scenario& scenario, double feed_mm_min, double ap
     return evaluate(s);
 }
 
-// The overtravel the model predicts at a feed; InputError when it reaches
-// the probe's limit (the stylus would be overrun).
-double checked_overtravel_mm(const Scenario& scenario, double feed_mm_min, double approach_mm) {
-    const double overtravel = single_touch(scenario, feed_mm_min, approach_mm).overtravel_mm();
-    if (overtravel >= scenario.probe.overtravel_limit_mm) {
-        throw InputError(program_message(
-            "program_overtravel",
-            QT_TRANSLATE_NOOP("Program",
-                              "at %1 the model's overtravel is %2, at or over the probe's limit "
-                              "%3: lower the feed or check the scenario"),
-            {arg("feed_mm_min", ArgKind::feed_mm_min, feed_mm_min),
-             significant_arg("overtravel_mm", ArgKind::length_mm, overtravel, 4),
-             arg("limit_mm", ArgKind::length_mm, scenario.probe.overtravel_limit_mm)}));
-    }
-    return overtravel;
+// A touch's stop past its surface, worst case, as the model predicts it: at
+// the programmed feed (what the program's moves back from the stop count on)
+// and at up to the highest feed override (issue 28: what the stylus must
+// survive and the search must reach past).
+struct TouchStops {
+    double at_feed_mm{0.0};
+    double at_override_mm{0.0};
+};
+
+// InputError when the stop at the override reaches the probe's limit (the
+// stylus would be overrun).
+void check_overtravel(const Scenario& scenario, double feed_mm_min, double overtravel_mm) {
+    if (overtravel_mm < scenario.probe.overtravel_limit_mm) return;
+    throw InputError(program_message(
+        "program_overtravel",
+        QT_TRANSLATE_NOOP("Program",
+                          "at %1 and up to %4 % feed override the model's overtravel is %2, at "
+                          "or over the probe's limit %3: lower the feed (or "
+                          "cycle.feed_override_max_pct) or check the scenario"),
+        {arg("feed_mm_min", ArgKind::feed_mm_min, feed_mm_min),
+         significant_arg("overtravel_mm", ArgKind::length_mm, overtravel_mm, 4),
+         arg("limit_mm", ArgKind::length_mm, scenario.probe.overtravel_limit_mm),
+         arg("feed_override_pct", ArgKind::number, scenario.cycle.feed_override_max_pct, 0)}));
+}
+
+// The stops of a single touch at a feed from `approach_mm`, checked.
+TouchStops checked_stops(const Scenario& scenario, double feed_mm_min, double approach_mm) {
+    const TouchResult touch = single_touch(scenario, feed_mm_min, approach_mm).first_touch();
+    check_overtravel(scenario, feed_mm_min, touch.override_overtravel_mm);
+    return {touch.overtravel_mm, touch.override_overtravel_mm};
 }
 
 void add_values(ProbingPlan& plan, const Scenario& scenario,
@@ -95,12 +111,12 @@ void add_value(ProbingPlan& plan, const char* key, double value) {
 
 // Keys every plan names: what decides the start distances and the overtravel.
 void add_machine_values(ProbingPlan& plan, const Scenario& scenario) {
-    add_values(
-        plan, scenario,
-        {"machine.accel_model", "machine.time_constant_s", "machine.max_accel_mm_s2",
-         "machine.max_jerk_mm_s3", "machine.filter", "machine.filter_time_s",
-         "machine.servo_time_constant_s", "machine.scan_period_s", "machine.controller_latency_s",
-         "probe.interface_delay_s", "probe.pretravel_mm", "probe.overtravel_limit_mm"});
+    add_values(plan, scenario,
+               {"machine.accel_model", "machine.time_constant_s", "machine.max_accel_mm_s2",
+                "machine.max_jerk_mm_s3", "machine.filter", "machine.filter_time_s",
+                "machine.servo_time_constant_s", "machine.scan_period_s",
+                "machine.controller_latency_s", "probe.interface_delay_s", "probe.pretravel_mm",
+                "probe.overtravel_limit_mm", "cycle.feed_override_max_pct"});
 }
 
 // A step that moves along `along` (distance and feed as given).
@@ -198,9 +214,10 @@ void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection&
     const Cycle& c = scenario.cycle;
     const std::string name = to_string(at);
     if (c.strategy == Strategy::single_touch) {
-        const double overtravel = checked_overtravel_mm(scenario, c.probe_feed_mm_min, distance_mm);
-        const double beyond = checked_search_beyond_mm(scenario, c.probe_feed_mm_min, overtravel);
-        const double back = distance_mm + overtravel;
+        const TouchStops stops = checked_stops(scenario, c.probe_feed_mm_min, distance_mm);
+        const double beyond =
+            checked_search_beyond_mm(scenario, c.probe_feed_mm_min, stops.at_override_mm);
+        const double back = distance_mm + stops.at_feed_mm;
         for (int k = 1; k <= repeats; ++k) {
             // A repeat starts where the first did, from where it stopped.
             const double farthest =
@@ -218,13 +235,13 @@ void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection&
     s.cycle.feature = Feature::surface;
     s.cycle.approach_mm = distance_mm;
     const CycleResult result = evaluate(s);
-    const double limit = scenario.probe.overtravel_limit_mm;
     for (const TouchResult* touch : {&result.first_touch(), &result.measuring_touch()}) {
-        if (touch->overtravel_mm >= limit) {
-            checked_overtravel_mm(scenario, touch->programmed_feed_mm_s * 60.0, distance_mm);
-        }
+        check_overtravel(scenario, mm_s_to_mm_min(touch->programmed_feed_mm_s),
+                         touch->override_overtravel_mm);
     }
     const double first_overtravel = result.first_touch().overtravel_mm;
+    // The backoff must clear the stop at the highest feed override too.
+    const double first_stop = result.first_touch().override_overtravel_mm;
     // G38.2 leaves the probe where it stopped. A backoff measured from the
     // recorded trigger (cycle.backoff_from) is longer by the stop's distance
     // from it, which the model predicts.
@@ -232,21 +249,20 @@ void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection&
     if (c.backoff_from == BackoffFrom::trigger) {
         backoff += std::max(0.0, first_overtravel - result.first_touch().recorded_mm);
     }
-    if (backoff <= first_overtravel) {
+    if (backoff <= first_stop) {
         throw InputError(program_message(
             "program_backoff",
             QT_TRANSLATE_NOOP("Program",
                               "the backoff %1 does not clear the first touch's overtravel %2: set "
                               "cycle.backoff_mm to at least %3 (the recommended backoff)"),
             {arg("backoff_mm", ArgKind::length_mm, backoff),
-             significant_arg("overtravel_mm", ArgKind::length_mm, first_overtravel, 4),
+             significant_arg("overtravel_mm", ArgKind::length_mm, first_stop, 4),
              arg("recommended_mm", ArgKind::length_mm, result.recommended_backoff_mm())}));
     }
     const TouchResult& measuring = result.measuring_touch();
-    const double first_beyond =
-        checked_search_beyond_mm(scenario, c.probe_feed_mm_min, first_overtravel);
+    const double first_beyond = checked_search_beyond_mm(scenario, c.probe_feed_mm_min, first_stop);
     const double measuring_beyond =
-        checked_search_beyond_mm(scenario, c.measure_feed_mm_min, measuring.overtravel_mm);
+        checked_search_beyond_mm(scenario, c.measure_feed_mm_min, measuring.override_overtravel_mm);
     plan.steps.push_back(probe_step(at, distance_mm + uncertainty_mm + first_beyond,
                                     c.probe_feed_mm_min, false,
                                     name + " first touch at " + feed_text(c.probe_feed_mm_min)));
@@ -269,9 +285,11 @@ void add_point(ProbingPlan& plan, const Scenario& scenario, const AxisDirection&
             repeat_backoff += std::max(0.0, measuring.overtravel_mm - measuring.recorded_mm);
         }
         const double repeat_distance = repeat_backoff - measuring.overtravel_mm;
-        last_overtravel = checked_overtravel_mm(scenario, c.measure_feed_mm_min, repeat_distance);
+        const TouchStops repeat_stops =
+            checked_stops(scenario, c.measure_feed_mm_min, repeat_distance);
+        last_overtravel = repeat_stops.at_feed_mm;
         const double repeat_beyond =
-            checked_search_beyond_mm(scenario, c.measure_feed_mm_min, last_overtravel);
+            checked_search_beyond_mm(scenario, c.measure_feed_mm_min, repeat_stops.at_override_mm);
         for (int k = 2; k <= repeats; ++k) {
             plan.steps.push_back(move_back(at, repeat_backoff, c.return_feed_mm_min, "backoff"));
             plan.steps.push_back(probe_step(at,
@@ -512,18 +530,18 @@ ProbingPlan make_delay_plan(const Scenario& scenario, const DelayPlanOptions& op
 
     // Start distance per feed: the room to reach it, plus the margin.
     std::vector<double> start_mm;
-    std::vector<double> overtravel_mm;
+    std::vector<TouchStops> stops;
     for (double feed : feeds) {
         start_mm.push_back(
             round_up_to(approach_room_mm(scenario, feed / 60.0) + options.margin_mm, kStep_mm));
-        overtravel_mm.push_back(checked_overtravel_mm(scenario, feed, start_mm.back()));
+        stops.push_back(checked_stops(scenario, feed, start_mm.back()));
     }
     // Every search ends checked_search_beyond_mm() past the farthest place the
     // surface can be: the locating touch's past the placement, every later
     // one's past where the touch before stopped (the whole retract).
     std::vector<double> beyond_mm;
     for (std::size_t f = 0; f < feeds.size(); ++f) {
-        beyond_mm.push_back(checked_search_beyond_mm(scenario, feeds[f], overtravel_mm[f]));
+        beyond_mm.push_back(checked_search_beyond_mm(scenario, feeds[f], stops[f].at_override_mm));
     }
     {
         const AxisDirection& group = options.touch;
@@ -532,14 +550,13 @@ ProbingPlan make_delay_plan(const Scenario& scenario, const DelayPlanOptions& op
             pause_step("check: the probe stands in front of the surface, at most " +
                        mm_text(options.placement_mm) + " from it, touching along " + name +
                        "; resume to start"));
-        const double locate_overtravel =
-            checked_overtravel_mm(scenario, feeds.front(), options.placement_mm);
+        const TouchStops locate = checked_stops(scenario, feeds.front(), options.placement_mm);
         plan.steps.push_back(
             probe_step(group,
                        options.placement_mm +
-                           checked_search_beyond_mm(scenario, feeds.front(), locate_overtravel),
+                           checked_search_beyond_mm(scenario, feeds.front(), locate.at_override_mm),
                        feeds.front(), false, "locate the surface at " + feed_text(feeds.front())));
-        double stop_beyond = locate_overtravel;  // where the previous touch left the probe
+        double stop_beyond = locate.at_feed_mm;  // where the previous touch left the probe
         for (std::size_t f = 0; f < feeds.size(); ++f) {
             for (int r = 0; r < options.repeats; ++r) {
                 const double retract = start_mm[f] + stop_beyond;
@@ -551,7 +568,7 @@ ProbingPlan make_delay_plan(const Scenario& scenario, const DelayPlanOptions& op
                     probe_step(group, round_up_to(retract, kStep_mm) + beyond_mm[f], feeds[f], true,
                                name + " at " + feed_text(feeds[f]) + ", " + std::to_string(r + 1) +
                                    " of " + std::to_string(options.repeats)));
-                stop_beyond = overtravel_mm[f];
+                stop_beyond = stops[f].at_feed_mm;
             }
         }
         plan.steps.push_back(

@@ -1194,6 +1194,14 @@
         <source>Web, pocket, bore, boss: feed of the protected positioning moves (probe armed, so a collision stops the axis) from the feature&apos;s centre out to each touch and back to the centre.</source>
         <translation>Перемычка, паз, отверстие, бобышка: подача защищённых позиционирующих перемещений (датчик включён, столкновение останавливает ось) от центра элемента к каждому касанию и обратно к центру.</translation>
     </message>
+    <message>
+        <source>The highest feed override the operator may turn the cycle up to. Feed override speeds up every move at feed, the touches and the protected positioning moves too, so every overtravel check holds at it: the stylus&apos;s limit, the searches past each stop and the backoff that must clear the first touch&apos;s stop. The cycle time is at 100 %. 120 % is as far as every common control&apos;s dial turns; set what your machine&apos;s panel allows (Fanuc-type and Heidenhain 150 %, Haas 200 %), or 100 where the program locks the override.</source>
+        <translation>Наибольшая коррекция подачи, до которой оператор может поднять цикл. Коррекция ускоряет каждое перемещение на подаче, в том числе касания и защищённые позиционирующие перемещения, поэтому все проверки перебега выполняются при ней: предел щупа, поиски за каждой остановкой и отвод, который должен освободить остановку первого касания. Время цикла — при 100 %. До 120 % поворачивается переключатель любой распространённой системы ЧПУ; задайте то, что позволяет пульт вашего станка (типа Fanuc и Heidenhain — 150 %, Haas — 200 %), или 100, если программа блокирует коррекцию.</translation>
+    </message>
+    <message>
+        <source>Highest feed override</source>
+        <translation>Наибольшая коррекция подачи</translation>
+    </message>
 </context>
 <context>
     <name>PdfReport</name>
@@ -1272,10 +1280,6 @@
 <context>
     <name>Program</name>
     <message>
-        <source>at %1 the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed or check the scenario</source>
-        <translation>при %1 перебег по модели %2, не меньше предела датчика %3: уменьшите подачу или проверьте сценарий</translation>
-    </message>
-    <message>
         <source>the backoff %1 does not clear the first touch&apos;s overtravel %2: set cycle.backoff_mm to at least %3 (the recommended backoff)</source>
         <translation>отвод %1 не покрывает перебег первого касания %2: задайте cycle.backoff_mm не меньше %3 (рекомендуемый отвод)</translation>
     </message>
@@ -1294,6 +1298,10 @@
     <message>
         <source>%1: got &apos;%2&apos;; allowed: one block of at most 60 upper-case letters, digits, spaces and . + - # [ ] =</source>
         <translation>%1: получено «%2»; допустимо: один кадр не длиннее 60 знаков из заглавных букв, цифр, пробелов и . + - # [ ] =</translation>
+    </message>
+    <message>
+        <source>at %1 and up to %4 % feed override the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed (or cycle.feed_override_max_pct) or check the scenario</source>
+        <translation>при %1 и коррекции подачи до %4 % перебег по модели %2 — на пределе щупа %3 или выше: уменьшите подачу (или cycle.feed_override_max_pct) или проверьте сценарий</translation>
     </message>
 </context>
 <context>
@@ -1437,6 +1445,22 @@
     <message>
         <source>Protected moves near the overtravel limit</source>
         <translation>Защищённые перемещения у предела перебега</translation>
+    </message>
+    <message>
+        <source>Overtravel %1 at %5 % feed override is %2 % of the probe&apos;s %3 limit: the probe or stylus will be damaged; lower the feed or the delays</source>
+        <translation>Перебег %1 при коррекции подачи %5 % составляет %2 % от предела щупа %3: щуп или стилус будет повреждён; уменьшите подачу или задержки</translation>
+    </message>
+    <message>
+        <source>Overtravel %1 at %5 % feed override is %2 % of the probe&apos;s %3 limit: little margin left for the stylus</source>
+        <translation>Перебег %1 при коррекции подачи %5 % составляет %2 % от предела щупа %3: у стилуса остаётся мало запаса</translation>
+    </message>
+    <message>
+        <source>A protected move at the positioning feed %1 and %5 % feed override that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: the stylus would be overrun; lower the positioning feed</source>
+        <translation>Защищённое перемещение на подаче позиционирования %1 при коррекции подачи %5 %, встретив препятствие, останавливается на %2 за ним — %3 % от предела щупа %4: стилус будет перегружен; уменьшите подачу позиционирования</translation>
+    </message>
+    <message>
+        <source>A protected move at the positioning feed %1 and %5 % feed override that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: little margin left for the stylus</source>
+        <translation>Защищённое перемещение на подаче позиционирования %1 при коррекции подачи %5 %, встретив препятствие, останавливается на %2 за ним — %3 % от предела щупа %4: у стилуса остаётся мало запаса</translation>
     </message>
 </context>
 <context>
@@ -2297,10 +2321,6 @@
         <translation>Этот цикл</translation>
     </message>
     <message>
-        <source>Red: overtravel of a touch at each feed against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Two-touch: the first touch solid, the second dotted; with a fixed backoff a fast first touch leaves the second too little room to brake, so the second may overtravel more. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted). Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
-        <translation>Красный: перебег касания при каждой подаче относительно предела датчика (штрих); на заштрихованных подачах перебег выходит за предел. Двукратное касание: первое касание — сплошная линия, второе — пунктир; при постоянном отводе быстрое первое касание оставляет второму слишком мало места для торможения, и перебег второго может быть больше. Синий, правая ось: неопределённость (k = 2) касания, измеренного при каждой подаче, относительно цели (пунктир). Вертикальные линии: скорость подачи поиска и, для двукратного касания, скорость измерительной подачи (синий пунктир).</translation>
-    </message>
-    <message>
         <source>1st touch</source>
         <translation>1-е касание</translation>
     </message>
@@ -2328,6 +2348,30 @@
         <source>Phases of an invalid cycle (grey): %1</source>
         <extracomment>%1: why the cycle cannot run, e.g. &quot;Backoff too small&quot;</extracomment>
         <translation>Фазы недопустимого цикла (серые): %1</translation>
+    </message>
+    <message>
+        <source>1st touch at %1 % override</source>
+        <translation>1-е касание при коррекции %1 %</translation>
+    </message>
+    <message>
+        <source>Overtravel at %1 % override</source>
+        <translation>Перебег при коррекции %1 %</translation>
+    </message>
+    <message>
+        <source>2nd touch at %1 % override</source>
+        <translation>2-е касание при коррекции %1 %</translation>
+    </message>
+    <message>
+        <source>This cycle&apos;s uncertainty</source>
+        <translation>Неопределённость цикла</translation>
+    </message>
+    <message>
+        <source>Red: overtravel of a touch at each feed, at the highest feed override, against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Two-touch: the first touch solid, the second dotted; with a fixed backoff a fast first touch leaves the second too little room to brake, so the second may overtravel more. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted); the dot is this cycle&apos;s, the readout&apos;s figure, at the feed of the touch that measures. Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
+        <translation>Красный: перебег касания при каждой подаче при наибольшей коррекции подачи относительно предела щупа (пунктир); на заштрихованных подачах перебег выходит за него. Двойное касание: первое касание — сплошная линия, второе — точечная; при фиксированном отводе быстрое первое касание оставляет второму слишком мало места для торможения, поэтому второе может перебегать больше. Синий, правая ось: неопределённость (k = 2) касания, измеренного при каждой подаче, относительно цели (точечная линия); точка — неопределённость этого цикла, значение индикатора, при подаче измеряющего касания. Вертикальные линии: подача зондирования и, для двойного касания, измерительная подача (синяя, точечная).</translation>
+    </message>
+    <message>
+        <source>Measuring feedrate</source>
+        <translation>Измерительная подача</translation>
     </message>
 </context>
 <context>
@@ -3790,6 +3834,18 @@
     <message>
         <source>Two-touch: from the backoff&apos;s reference (where the probe stopped, or the recorded trigger position) the larger of the reseat distance and the distance to reach the measuring feed. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
         <translation>Двукратное касание: от точки отсчёта отвода (точки остановки или записанной точки срабатывания) — большее из пути восстановления датчика и пути разгона до измерительной подачи. Меньше — датчик может не вернуться; больше — лишний путь проходится на медленной подаче.</translation>
+    </message>
+    <message>
+        <source>At %1 % feed override the probe stops %2 past the surface: %3 % of the probe&apos;s %4 limit. Every overtravel check holds at that override (Highest feed override).</source>
+        <translation>При коррекции подачи %1 % щуп останавливается на %2 за поверхностью: %3 % от предела щупа %4. Все проверки перебега выполняются при этой коррекции (Наибольшая коррекция подачи).</translation>
+    </message>
+    <message>
+        <source>%1 % of limit at %2 %, 2nd touch</source>
+        <translation>%1 % при %2 %, 2-е кас.</translation>
+    </message>
+    <message>
+        <source>%1 % of limit at %2 %</source>
+        <translation>%1 % при %2 %</translation>
     </message>
 </context>
 <context>

@@ -1194,6 +1194,14 @@
         <source>Web, pocket, bore, boss: feed of the protected positioning moves (probe armed, so a collision stops the axis) from the feature&apos;s centre out to each touch and back to the centre.</source>
         <translation>凸台、槽、孔、圆柱：保护定位移动的进给率（测头已启用，碰撞会使轴停止），用于从特征中心移到每次触测处并返回中心。</translation>
     </message>
+    <message>
+        <source>The highest feed override the operator may turn the cycle up to. Feed override speeds up every move at feed, the touches and the protected positioning moves too, so every overtravel check holds at it: the stylus&apos;s limit, the searches past each stop and the backoff that must clear the first touch&apos;s stop. The cycle time is at 100 %. 120 % is as far as every common control&apos;s dial turns; set what your machine&apos;s panel allows (Fanuc-type and Heidenhain 150 %, Haas 200 %), or 100 where the program locks the override.</source>
+        <translation>操作者可将循环调到的最高进给倍率。进给倍率会加快每个以进给速度执行的移动，包括各次触碰和受保护的定位移动，因此所有超程检查都按该倍率进行：测针极限、越过每个停止点的搜索，以及必须越过第一次触碰停止点的回退。循环时间按 100 % 计算。120 % 是所有常见数控系统的倍率旋钮都能达到的值；请设为您机床面板允许的值（Fanuc 类和 Heidenhain 为 150 %，Haas 为 200 %），若程序锁定倍率则设为 100。</translation>
+    </message>
+    <message>
+        <source>Highest feed override</source>
+        <translation>最高进给倍率</translation>
+    </message>
 </context>
 <context>
     <name>PdfReport</name>
@@ -1272,10 +1280,6 @@
 <context>
     <name>Program</name>
     <message>
-        <source>at %1 the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed or check the scenario</source>
-        <translation>在 %1 时模型过行程为 %2，达到或超过测头极限 %3：请降低进给率或检查场景</translation>
-    </message>
-    <message>
         <source>the backoff %1 does not clear the first touch&apos;s overtravel %2: set cycle.backoff_mm to at least %3 (the recommended backoff)</source>
         <translation>回退距离 %1 不足以覆盖第一次触测的过行程 %2：请将 cycle.backoff_mm 设为至少 %3（推荐回退距离）</translation>
     </message>
@@ -1294,6 +1298,10 @@
     <message>
         <source>%1: got &apos;%2&apos;; allowed: one block of at most 60 upper-case letters, digits, spaces and . + - # [ ] =</source>
         <translation>%1：得到“%2”；允许：一个程序段，最多 60 个大写字母、数字、空格及 . + - # [ ] =</translation>
+    </message>
+    <message>
+        <source>at %1 and up to %4 % feed override the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed (or cycle.feed_override_max_pct) or check the scenario</source>
+        <translation>在 %1 及最高 %4 % 进给倍率下，模型的超程为 %2，达到或超过测头极限 %3：请降低进给（或 cycle.feed_override_max_pct）或检查场景</translation>
     </message>
 </context>
 <context>
@@ -1437,6 +1445,22 @@
     <message>
         <source>Protected moves near the overtravel limit</source>
         <translation>受保护移动接近过行程极限</translation>
+    </message>
+    <message>
+        <source>Overtravel %1 at %5 % feed override is %2 % of the probe&apos;s %3 limit: the probe or stylus will be damaged; lower the feed or the delays</source>
+        <translation>%5 % 进给倍率下超程 %1，为测头极限 %3 的 %2 %：测头或测针将损坏；请降低进给或延迟</translation>
+    </message>
+    <message>
+        <source>Overtravel %1 at %5 % feed override is %2 % of the probe&apos;s %3 limit: little margin left for the stylus</source>
+        <translation>%5 % 进给倍率下超程 %1，为测头极限 %3 的 %2 %：测针余量很小</translation>
+    </message>
+    <message>
+        <source>A protected move at the positioning feed %1 and %5 % feed override that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: the stylus would be overrun; lower the positioning feed</source>
+        <translation>以定位进给 %1、%5 % 进给倍率执行的受保护移动若遇到障碍物，会停在其后 %2 处，为测头极限 %4 的 %3 %：测针将被过冲；请降低定位进给</translation>
+    </message>
+    <message>
+        <source>A protected move at the positioning feed %1 and %5 % feed override that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: little margin left for the stylus</source>
+        <translation>以定位进给 %1、%5 % 进给倍率执行的受保护移动若遇到障碍物，会停在其后 %2 处，为测头极限 %4 的 %3 %：测针余量很小</translation>
     </message>
 </context>
 <context>
@@ -2297,10 +2321,6 @@
         <translation>当前循环</translation>
     </message>
     <message>
-        <source>Red: overtravel of a touch at each feed against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Two-touch: the first touch solid, the second dotted; with a fixed backoff a fast first touch leaves the second too little room to brake, so the second may overtravel more. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted). Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
-        <translation>红色：各进给率下触测的过行程与测头极限（虚线）的比较；阴影区的进给率会超出极限。二次触发：第一次触测为实线，第二次为点线；回退距离固定时，快速的第一次触测会使第二次触测的制动空间不足，因此第二次的过行程可能更大。蓝色（右轴）：在各进给率下测量的一次触测的不确定度 (k = 2) 与目标（点线）的比较。竖线：探测进给率，以及二次触发的测量进给率（蓝色点线）。</translation>
-    </message>
-    <message>
         <source>1st touch</source>
         <translation>第一次触测</translation>
     </message>
@@ -2328,6 +2348,30 @@
         <source>Phases of an invalid cycle (grey): %1</source>
         <extracomment>%1: why the cycle cannot run, e.g. &quot;Backoff too small&quot;</extracomment>
         <translation>无效循环的各阶段（灰色）：%1</translation>
+    </message>
+    <message>
+        <source>1st touch at %1 % override</source>
+        <translation>第 1 次触碰（倍率 %1 %）</translation>
+    </message>
+    <message>
+        <source>Overtravel at %1 % override</source>
+        <translation>超程（倍率 %1 %）</translation>
+    </message>
+    <message>
+        <source>2nd touch at %1 % override</source>
+        <translation>第 2 次触碰（倍率 %1 %）</translation>
+    </message>
+    <message>
+        <source>This cycle&apos;s uncertainty</source>
+        <translation>本循环的不确定度</translation>
+    </message>
+    <message>
+        <source>Red: overtravel of a touch at each feed, at the highest feed override, against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Two-touch: the first touch solid, the second dotted; with a fixed backoff a fast first touch leaves the second too little room to brake, so the second may overtravel more. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted); the dot is this cycle&apos;s, the readout&apos;s figure, at the feed of the touch that measures. Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
+        <translation>红色：在最高进给倍率下，各进给下触碰的超程与测头极限（虚线）的对比；阴影区域的进给超程超过极限。两次触碰：第一次触碰为实线，第二次为点线；回退固定时，快速的第一次触碰给第二次留下的制动空间太小，因此第二次的超程可能更大。蓝色，右轴：在各进给下测量的一次触碰的不确定度（k = 2）与目标（点线）的对比；圆点是本循环的不确定度，即读数显示的值，位于进行测量的那次触碰的进给处。竖线：探测进给，以及两次触碰时的测量进给（蓝色点线）。</translation>
+    </message>
+    <message>
+        <source>Measuring feedrate</source>
+        <translation>测量进给率</translation>
     </message>
 </context>
 <context>
@@ -3790,6 +3834,18 @@
     <message>
         <source>Two-touch: from the backoff&apos;s reference (where the probe stopped, or the recorded trigger position) the larger of the reseat distance and the distance to reach the measuring feed. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
         <translation>二次触发：从回退起点（停止处或记录的触发位置）算起，取复位距离与加速到测量进给率所需距离中的较大者。小于此值测头可能未复位；大于此值的部分要以慢速测量进给率重新接近。</translation>
+    </message>
+    <message>
+        <source>At %1 % feed override the probe stops %2 past the surface: %3 % of the probe&apos;s %4 limit. Every overtravel check holds at that override (Highest feed override).</source>
+        <translation>在 %1 % 进给倍率下，测头停在表面后 %2 处：为测头极限 %4 的 %3 %。所有超程检查都按该倍率进行（最高进给倍率）。</translation>
+    </message>
+    <message>
+        <source>%1 % of limit at %2 %, 2nd touch</source>
+        <translation>%1 %（倍率 %2 %），第 2 次</translation>
+    </message>
+    <message>
+        <source>%1 % of limit at %2 %</source>
+        <translation>%1 %（倍率 %2 %）</translation>
     </message>
 </context>
 <context>

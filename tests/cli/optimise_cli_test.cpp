@@ -23,7 +23,7 @@ TEST(OptimiseCli, PrintsBestCurrentSavedBindingAndPareto) {
     const json out = json::parse(r.out);
     for (const char* key :
          {"strategy", "probe_feed_mm_min", "measure_feed_mm_min", "backoff_mm", "approach_mm",
-          "repeats", "cycle_time_s", "uncertainty_mm", "overtravel_mm"}) {
+          "repeats", "cycle_time_s", "uncertainty_mm", "checked_overtravel_mm"}) {
         EXPECT_TRUE(out["best"].contains(key)) << key;
         EXPECT_TRUE(out["current"].contains(key)) << key;
     }
@@ -63,7 +63,7 @@ TEST(OptimiseCli, ApplyWritesAScenarioThatEvaluatesToTheBest) {
     EXPECT_TRUE(e["valid"].get<bool>());
     EXPECT_EQ(e["cycle_time_s"], best["cycle_time_s"]);
     EXPECT_EQ(e["uncertainty_mm"], best["uncertainty_mm"]);
-    EXPECT_EQ(e["overtravel_mm"], best["overtravel_mm"]);
+    EXPECT_EQ(e["checked_overtravel_mm"], best["checked_overtravel_mm"]);
     const json applied = json::parse(read(dir / "best.json"));
     EXPECT_EQ(applied["cycle"]["probe_feed_mm_min"], best["probe_feed_mm_min"]);
     EXPECT_EQ(applied["cycle"]["measure_feed_mm_min"], best["measure_feed_mm_min"]);

@@ -70,6 +70,9 @@ def scenario(machine, probe, cycle, folder, name):
                        "interface_delay_s": probe.interface_delay_periods * machine.servo_period_s,
                        # the simulated stylus has no limit; the searches go halfway to it
                        "overtravel_limit_mm": 10.0})
+    # LinuxCNC runs the programs at 100 % feed override: the model's checks at
+    # a higher override (cycle.feed_override_max_pct) are the core tests'.
+    s["cycle"]["feed_override_max_pct"] = 100.0
     s["cycle"].update(cycle)
     path = os.path.join(folder, name + ".json")
     with open(path, "w") as f:

@@ -63,6 +63,7 @@ const KeyText kKeyTexts[] = {
     {"cycle.repeats", QT_TRANSLATE_NOOP("Parameter", "×"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
     {"cycle.return_feed_mm_min", QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
     {"cycle.position_feed_mm_min", QT_TRANSLATE_NOOP("Parameter", "mm/min"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
+    {"cycle.feed_override_max_pct", QT_TRANSLATE_NOOP("Parameter", "%"), 1.0, 0, SliderScale::none, 0.0, 0.0, nullptr},
     {"cycle.clearance_mm", QT_TRANSLATE_NOOP("Parameter", "mm"), 1.0, 3, SliderScale::none, 0.0, 0.0, nullptr},
     {"cycle.target_uncertainty_mm", QT_TRANSLATE_NOOP("Parameter", "µm"), 1000.0, 1, SliderScale::none, 0.0, 0.0,
      QT_TRANSLATE_NOOP("Parameter", "none")},

@@ -2,6 +2,7 @@
 
 #include <QEvent>
 #include <QGridLayout>
+#include <QLocale>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -308,8 +309,15 @@ void CycleCharts::build() {
                                                  Dash::solid, Side::right}));
     ot_feed_ = add(QStringLiteral("overtravel.probe_feed"), overtravel_,
                    overtravel_->add_line({{}, kMarkerColour, 1.5}));
-    ot_measure_feed_ = add(QStringLiteral("overtravel.measure_feed"), overtravel_,
-                           overtravel_->add_line({{}, kUncertaintyColour, 1.5, Dash::dotted}));
+    // Issue 28: named in the legend (two-touch), and the cycle's own
+    // uncertainty, the readout's figure, marked on it: at the measuring feed.
+    ot_measure_feed_ =
+        add(QStringLiteral("overtravel.measure_feed"), overtravel_,
+            overtravel_->add_line({QStringLiteral("m"), kUncertaintyColour, 1.5, Dash::dotted}));
+    ot_cycle_uncertainty_ =
+        add(QStringLiteral("overtravel.cycle_uncertainty"), overtravel_,
+            overtravel_->add_markers(
+                {QStringLiteral("cu"), kUncertaintyColour, 2.0, Dash::solid, Side::right}, 9.0));
 
     motion_ = new PlotView(this);
     motion_->setObjectName(QStringLiteral("chart:motion"));
@@ -367,6 +375,8 @@ void CycleCharts::retranslate() {
     overtravel_->set_name(ot_limit_.curve, tr("Limit"));
     overtravel_->set_name(ot_uncertainty_.curve, tr("Uncertainty"));
     overtravel_->set_name(ot_target_.curve, tr("Target"));
+    overtravel_->set_name(ot_measure_feed_.curve, tr("Measuring feedrate"));
+    overtravel_->set_name(ot_cycle_uncertainty_.curve, tr("This cycle's uncertainty"));
 
     motion_->set_title(tr("Position and speed through the cycle"));
     motion_->set_x_axis({Scale::linear, tr("Time [%1]").arg(unit_s()), QStringLiteral("%.3g"), {}});
@@ -388,13 +398,15 @@ void CycleCharts::retranslate() {
         tr("The phases of the current cycle in time order, each row with its total "
            "time over all touches. Grey: the cycle is invalid and cannot run as set (the "
            "title and the warnings say why); its phases are what the model computes."));
-    overtravel_->setToolTip(tr(
-        "Red: overtravel of a touch at each feed against the probe's limit (dashed); the "
-        "shaded feeds overtravel beyond it. Two-touch: the first touch solid, the second "
-        "dotted; with a fixed backoff a fast first touch leaves the second too little room to "
-        "brake, so the second may overtravel more. Blue, right axis: the uncertainty (k = 2) of a "
-        "touch measured at each feed against the target (dotted). Vertical lines: the probing "
-        "feed and, for two-touch, the measuring feed (blue, dotted)."));
+    overtravel_->setToolTip(
+        tr("Red: overtravel of a touch at each feed, at the highest feed override, against the "
+           "probe's limit (dashed); the shaded feeds overtravel beyond it. Two-touch: the first "
+           "touch solid, the second dotted; with a fixed backoff a fast first touch leaves the "
+           "second too little room to brake, so the second may overtravel more. Blue, right axis: "
+           "the uncertainty (k = 2) of a touch measured at each feed against the target (dotted); "
+           "the dot is this cycle's, the readout's figure, at the feed of the touch that measures. "
+           "Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, "
+           "dotted)."));
     motion_->setToolTip(
         tr("Position along the probing direction of each touch (the surface is "
            "dashed) and path speed through the whole cycle."));
@@ -572,7 +584,17 @@ void CycleCharts::draw_phases(const Computed& c) {
     }
 }
 
+// Issue 28: the curves are the overtravel the limit is checked against, at
+// the highest feed override; their names say so.
 void CycleCharts::name_overtravel_curves() {
+    if (overtravel_override_pct_ > 100.0) {
+        const QString pct = QLocale().toString(overtravel_override_pct_, 'f', 0);
+        overtravel_->set_name(ot_overtravel_.curve,
+                              two_touch_overtravel_ ? tr("1st touch at %1 % override").arg(pct)
+                                                    : tr("Overtravel at %1 % override").arg(pct));
+        overtravel_->set_name(ot_overtravel2_.curve, tr("2nd touch at %1 % override").arg(pct));
+        return;
+    }
     overtravel_->set_name(ot_overtravel_.curve,
                           two_touch_overtravel_ ? tr("1st touch") : tr("Overtravel"));
     overtravel_->set_name(ot_overtravel2_.curve, tr("2nd touch"));
@@ -592,8 +614,10 @@ void CycleCharts::draw_overtravel(const Computed& c) {
     } else {
         overtravel2.clear();
     }
-    if (two_touch != two_touch_overtravel_) {
+    const double override_pct = c.scenario.cycle.feed_override_max_pct;
+    if (two_touch != two_touch_overtravel_ || override_pct != overtravel_override_pct_) {
         two_touch_overtravel_ = two_touch;
+        overtravel_override_pct_ = override_pct;
         name_overtravel_curves();
         overtravel_->set_visible(ot_overtravel2_.curve, two_touch);
     }
@@ -605,8 +629,15 @@ void CycleCharts::draw_overtravel(const Computed& c) {
     left.add(limit);
     left.add_y(overtravel);
     left.add_y(overtravel2);
+    // The readout's uncertainty, at the feed of the touch that measures.
+    const double measuring_feed = std::clamp(
+        two_touch ? c.scenario.cycle.measure_feed_mm_min : c.scenario.cycle.probe_feed_mm_min,
+        kFeedLo, kFeedHi);
+    const double cycle_um = std::max(c.cycle().uncertainty_mm() * 1000.0, kUncertaintyFloor_um);
+    cycle_uncertainty_ = {{measuring_feed, cycle_um}};
     Span right;
     right.add_y(uncertainty);
+    right.add(cycle_um);
     const double target_um = c.scenario.cycle.target_uncertainty_mm * 1000.0;
     if (target_um > 0.0) right.add(target_um);
     if (baseline_) {
@@ -620,6 +651,7 @@ void CycleCharts::draw_overtravel(const Computed& c) {
     set_if_changed(ot_overtravel_, overtravel_pts_);
     set_if_changed(ot_overtravel2_, overtravel2_pts_);
     set_if_changed(ot_uncertainty_, uncertainty_pts_);
+    set(ot_cycle_uncertainty_, cycle_uncertainty_);
 
     fill_segment(line_, kFeedLo / kFeedPad, limit, kFeedHi * kFeedPad, limit);
     set(ot_limit_, line_);
@@ -637,12 +669,13 @@ void CycleCharts::draw_overtravel(const Computed& c) {
     band_lower_.clear();
     const auto& points = own.points;
     for (std::size_t i = 0; i < points.size(); ++i) {
-        if (points[i].overtravel_mm < limit) continue;
+        if (points[i].checked_overtravel_mm < limit) continue;
         double from = points[i].feed_mm_min;
         if (i > 0) {
             const SweepPoint& a = points[i - 1];
             const SweepPoint& b = points[i];
-            const double f = (limit - a.overtravel_mm) / (b.overtravel_mm - a.overtravel_mm);
+            const double f = (limit - a.checked_overtravel_mm) /
+                             (b.checked_overtravel_mm - a.checked_overtravel_mm);
             from = a.feed_mm_min * std::pow(b.feed_mm_min / a.feed_mm_min, std::clamp(f, 0.0, 1.0));
         }
         band_upper_ = {{from, top}, {kFeedHi * kFeedPad, top}};
@@ -661,6 +694,7 @@ void CycleCharts::draw_overtravel(const Computed& c) {
         line2_.clear();
     }
     set(ot_measure_feed_, line2_);
+    overtravel_->set_visible(ot_measure_feed_.curve, two_touch);
 }
 
 void CycleCharts::draw_motion(const Computed& c) {
@@ -702,7 +736,8 @@ void CycleCharts::set_baseline(const Computed* baseline) {
         Baseline b;
         fill_sweep(b.single, baseline->single_touch, &SweepPoint::cycle_time_s, 1.0, 0.0);
         fill_sweep(b.two, baseline->two_touch, &SweepPoint::cycle_time_s, 1.0, 0.0);
-        fill_sweep(b.overtravel, baseline->own_sweep(), &SweepPoint::overtravel_mm, 1.0, 0.0);
+        fill_sweep(b.overtravel, baseline->own_sweep(), &SweepPoint::checked_overtravel_mm, 1.0,
+                   0.0);
         fill_sweep(b.uncertainty, baseline->single_touch, &SweepPoint::uncertainty_mm, 1000.0,
                    kUncertaintyFloor_um);
         std::vector<double> times;

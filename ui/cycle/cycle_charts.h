@@ -108,7 +108,8 @@ class CycleCharts : public QWidget {
     Ref ct_single_invalid_, ct_two_invalid_;
     std::array<Ref, kPhaseCount> phase_areas_{};
     Ref ot_overtravel_, ot_overtravel2_, ot_limit_, ot_beyond_, ot_uncertainty_, ot_target_,
-        ot_feed_, ot_measure_feed_, ot_base_overtravel_, ot_base_uncertainty_;
+        ot_feed_, ot_measure_feed_, ot_base_overtravel_, ot_base_uncertainty_,
+        ot_cycle_uncertainty_;
     Ref mo_position_, mo_speed_, mo_surface_, mo_base_position_, mo_base_speed_;
 
     PingPong single_invalid_, two_invalid_;
@@ -117,8 +118,10 @@ class CycleCharts : public QWidget {
     // Two-touch draws each touch's overtravel (a fast first touch can
     // overtravel less than the second); the legend names them then.
     bool two_touch_overtravel_{false};
+    // The feed override the overtravel curves are at (issue 28), in %.
+    double overtravel_override_pct_{100.0};
     void name_overtravel_curves();
-    Buffer line_, line2_, band_upper_, band_lower_, knee_, current_cycle_;
+    Buffer line_, line2_, band_upper_, band_lower_, knee_, current_cycle_, cycle_uncertainty_;
     std::array<Buffer, kPhaseCount> phase_upper_, phase_lower_;
     std::vector<double> times_;
 

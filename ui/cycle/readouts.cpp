@@ -190,16 +190,32 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
         set_alert(cards_[0], Alert::alarm);
     }
 
-    // Overtravel against the limit
+    // Overtravel against the limit; issue 28: the limit holds at the highest
+    // feed override, whose figure the detail gives.
     const double limit = s.probe.overtravel_limit_mm;
-    const double share = r.overtravel_mm() / limit;
+    const double share = r.checked_overtravel_mm() / limit;
     now[1] = r.overtravel_mm();
     cards_[1].value->setText(format_mm(r.overtravel_mm()));
-    detail[1] =
-        r.overtravel_touch() == 2
-            ? tr("%1 % of %2, 2nd touch")
-                  .arg(locale.toString(100.0 * share, 'f', 0), format_mm(limit))
-            : tr("%1 % of %2").arg(locale.toString(100.0 * share, 'f', 0), format_mm(limit));
+    const QString percent = locale.toString(100.0 * share, 'f', 0);
+    if (s.cycle.feed_override_max_pct > 100.0) {
+        // The share of the limit is the figure at the override; the tooltip
+        // says that figure.
+        const QString override_pct = locale.toString(s.cycle.feed_override_max_pct, 'f', 0);
+        // (Short: the card is narrow; the tooltip names the limit.)
+        detail[1] = r.overtravel_touch() == 2
+                        ? tr("%1 % of limit at %2 %, 2nd touch").arg(percent, override_pct)
+                        : tr("%1 % of limit at %2 %").arg(percent, override_pct);
+        cards_[1].detail->setToolTip(
+            tr("At %1 % feed override the probe stops %2 past the surface: %3 % of the probe's "
+               "%4 limit. Every overtravel check holds at that override (Highest feed override).")
+                .arg(override_pct, format_mm(r.checked_overtravel_mm()), percent,
+                     format_mm(limit)));
+    } else {
+        detail[1] = r.overtravel_touch() == 2
+                        ? tr("%1 % of %2, 2nd touch").arg(percent, format_mm(limit))
+                        : tr("%1 % of %2").arg(percent, format_mm(limit));
+        cards_[1].detail->setToolTip(QString());
+    }
     set_alert(cards_[1], alert_for(r, WarningCode::overtravel_limit));
 
     // Trigger speed of the measuring touch

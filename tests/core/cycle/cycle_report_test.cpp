@@ -145,6 +145,8 @@ TEST(EvaluationJson, AWarningWithAFixNamesTheKeysItSets) {
     faster.cycle.measure_feed_mm_min = 3000.0;
     faster.cycle.backoff_mm = evaluate(faster).recommended_backoff_mm();
     faster.cycle.search_beyond_mm = 1.0;
+    faster.cycle.feed_override_max_pct = 100.0;  // the touches at their programmed feeds
+    faster.cycle.backoff_mm = evaluate(faster).recommended_backoff_mm();
     const nlohmann::json k = nlohmann::json::parse(evaluation_to_json(faster, analyse(faster)));
     bool numbered = false;
     for (const nlohmann::json& w : k["warnings"]) {
@@ -196,17 +198,18 @@ TEST(SweepCsv, HeaderThenOneRowPerFeed) {
     ASSERT_EQ(lines.size(), feeds.size() + 1);
 
     const std::vector<std::string> header = fields_of(lines[0]);
-    ASSERT_EQ(header.size(), 6 + kPhaseCount);
-    EXPECT_EQ(header[4 + kPhaseCount], "valid");
-    EXPECT_EQ(header[5 + kPhaseCount], "invalid_reasons");
+    ASSERT_EQ(header.size(), 7 + kPhaseCount);
+    EXPECT_EQ(header[5 + kPhaseCount], "valid");
+    EXPECT_EQ(header[6 + kPhaseCount], "invalid_reasons");
     EXPECT_EQ(header[0], "feed_mm_min");
     EXPECT_EQ(header[1], "cycle_time_s");
     EXPECT_EQ(header[2], "overtravel_mm");
-    EXPECT_EQ(header[3], "uncertainty_mm");
+    EXPECT_EQ(header[3], "checked_overtravel_mm");
+    EXPECT_EQ(header[4], "uncertainty_mm");
     // One column per phase, in canonical order, named after it.
     for (std::size_t k = 0; k < kPhaseCount; ++k) {
         const std::string name = to_string(all_phases()[k]);
-        EXPECT_EQ(header[4 + k].rfind(name, 0), 0u) << header[4 + k] << " vs " << name;
+        EXPECT_EQ(header[5 + k].rfind(name, 0), 0u) << header[5 + k] << " vs " << name;
     }
 
     for (std::size_t i = 0; i < feeds.size(); ++i) {
@@ -220,24 +223,28 @@ TEST(SweepCsv, HeaderThenOneRowPerFeed) {
         EXPECT_NEAR(to_number(fields[0]), p.feed_mm_min, half_feed);
         EXPECT_NEAR(to_number(fields[1]), p.cycle_time_s, half_time);
         EXPECT_NEAR(to_number(fields[2]), p.overtravel_mm, half_length);
-        EXPECT_NEAR(to_number(fields[3]), p.uncertainty_mm, half_length);
+        EXPECT_NEAR(to_number(fields[3]), p.checked_overtravel_mm, half_length);
+        EXPECT_NEAR(to_number(fields[4]), p.uncertainty_mm, half_length);
         for (std::size_t k = 0; k < kPhaseCount; ++k) {
-            EXPECT_NEAR(to_number(fields[4 + k]), p.phase_time_s[k], half_time);
+            EXPECT_NEAR(to_number(fields[5 + k]), p.phase_time_s[k], half_time);
         }
-        EXPECT_EQ(fields[4 + kPhaseCount], p.valid() ? "true" : "false");
-        EXPECT_EQ(fields[5 + kPhaseCount], invalid_codes_text(p.invalid_codes, ";"));
+        EXPECT_EQ(fields[5 + kPhaseCount], p.valid() ? "true" : "false");
+        EXPECT_EQ(fields[6 + kPhaseCount], invalid_codes_text(p.invalid_codes, ";"));
     }
     // The 2 mm backoff is too small from about 2850 mm/min on: those rows say so.
-    EXPECT_EQ(fields_of(lines.back())[4 + kPhaseCount], "false");
-    EXPECT_EQ(fields_of(lines.back())[5 + kPhaseCount], "backoff_too_small");
-    EXPECT_EQ(fields_of(lines[1])[4 + kPhaseCount], "true");
+    EXPECT_EQ(fields_of(lines.back())[5 + kPhaseCount], "false");
+    EXPECT_EQ(fields_of(lines.back())[6 + kPhaseCount], "backoff_too_small");
+    EXPECT_EQ(fields_of(lines[1])[5 + kPhaseCount], "true");
 }
 
 TEST(SweepCsv, EmptySweepIsTheHeaderAlone) {
     std::vector<std::string> lines = lines_of(sweep_to_csv(SweepResult{}));
     while (!lines.empty() && lines.back().empty()) lines.pop_back();
     ASSERT_EQ(lines.size(), 1u);
-    EXPECT_EQ(lines[0].rfind("feed_mm_min,cycle_time_s,overtravel_mm,uncertainty_mm,", 0), 0u);
+    EXPECT_EQ(
+        lines[0].rfind(
+            "feed_mm_min,cycle_time_s,overtravel_mm,checked_overtravel_mm,uncertainty_mm,", 0),
+        0u);
 }
 
 TEST(SweepSummary, OneLineNamingTheKneeAndTheFeedMeetingTheTarget) {

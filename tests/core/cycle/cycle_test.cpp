@@ -43,6 +43,9 @@ Scenario surface(Strategy strategy, double probe_feed_mm_min, double backoff_mm 
     s.cycle.return_feed_mm_min = 10000.0;
     s.cycle.target_uncertainty_mm = 0.0;
     s.probe.calibration_feed_mm_min = 0.0;
+    // The hand computations are of the touches at their programmed feeds:
+    // no feed override to check beyond them (see FeedOverride below).
+    s.cycle.feed_override_max_pct = 100.0;
     return s;
 }
 
@@ -860,6 +863,7 @@ TEST(Validity, AnErrorMakesTheCycleInvalidAndNamesWhy) {
 // 600 mm/min = 10 mm/s, T = 0.06 s: reach = v T / 2 = 0.3 mm > reseat 0.005 mm.
 TEST(RecommendedBackoff, LeavesTheSecondTouchRoomToReachTheMeasuringFeed) {
     Scenario s;  // two-touch surface at 2000 mm/min: overtravel_1 = 1.2716667 mm
+    s.cycle.feed_override_max_pct = 100.0;  // at the programmed feeds
     s.probe.reseat_mm = 0.005;
     s.cycle.measure_feed_mm_min = 600.0;
     const CycleResult r = evaluate(s);
@@ -888,6 +892,7 @@ TEST(RecommendedBackoff, LeavesTheSecondTouchRoomToReachTheMeasuringFeed) {
 // both) it is recorded 0.13833 mm past and starts the second touch 1.86167 mm out.
 TEST(BackoffFrom, TheRecordedTriggerPosition) {
     Scenario s;
+    s.cycle.feed_override_max_pct = 100.0;  // at the programmed feeds
     s.cycle.backoff_from = BackoffFrom::trigger;
     const CycleResult r = evaluate(s);
     EXPECT_NEAR(r.first_touch().recorded_mm, 0.205, 1e-12);
@@ -917,6 +922,7 @@ TEST(BackoffFrom, TheRecordedTriggerPosition) {
     // their rounding up to the micrometre: under 1 um of second approach at
     // 30 mm/min, 2 ms.
     Scenario from_stop;
+    from_stop.cycle.feed_override_max_pct = 100.0;
     Scenario from_trigger = from_stop;
     from_trigger.cycle.backoff_from = BackoffFrom::trigger;
     EXPECT_LT(evaluate(from_stop).total(), evaluate(from_trigger).total());
@@ -1268,6 +1274,7 @@ TEST(Search, ASearchSetByHandThatEndsBeforeTheStopIsAnError) {
 // feed under 80 % of the limit, 0.005 + 0.038 v < 4, 6307 mm/min.
 TEST(Warnings, ProtectedMovesAreTouchesAtThePositioningFeed) {
     Scenario s;
+    s.cycle.feed_override_max_pct = 100.0;  // at the programmed feeds
     s.cycle.feature = Feature::bore;
     s.cycle.position_feed_mm_min = 8000.0;
     EXPECT_NEAR(protected_move_overtravel_mm(s, 8000.0 / 60.0), 0.005 + 0.038 * 8000.0 / 60.0,
@@ -1303,9 +1310,13 @@ TEST(Warnings, ProtectedMovesAreTouchesAtThePositioningFeed) {
     // The Fanuc-type machine drains its lags too: 11.3 mm at 8000 mm/min.
     Scenario fanuc = merge_json(Scenario{}, R"({"machine": {"accel_model": "none",
         "filter": "exponential", "filter_time_s": 0.032, "servo_time_constant_s": 0.033,
-        "controller_latency_s": 0.014}})");
+        "controller_latency_s": 0.014}, "cycle": {"feed_override_max_pct": 100}})");
     EXPECT_NEAR(protected_move_overtravel_mm(fanuc, 8000.0 / 60.0),
                 0.005 + 8000.0 / 60.0 * (0.002 + 0.014 + 0.004 + 0.032 + 0.033), 1e-9);
+    // Issue 28: at 150 % feed override the move runs at 12000 mm/min: 17.0 mm.
+    fanuc.cycle.feed_override_max_pct = 150.0;
+    EXPECT_NEAR(protected_move_overtravel_mm(fanuc, 8000.0 / 60.0),
+                0.005 + 12000.0 / 60.0 * (0.002 + 0.014 + 0.004 + 0.032 + 0.033), 1e-9);
 }
 
 TEST(Warnings, CalibrationFeedMismatch) {
@@ -1396,6 +1407,7 @@ Scenario random_scenario(std::mt19937_64& rng) {
     s.cycle.clearance_mm = log_uniform(1.0, 50.0);
     s.cycle.target_uncertainty_mm = rng() % 2 == 0 ? log_uniform(1e-4, 0.05) : 0.0;
     s.machine.block_change_s = rng() % 3 == 0 ? log_uniform(1e-4, 0.02) : 0.0;
+    s.cycle.feed_override_max_pct = rng() % 2 == 0 ? 100.0 : 100.0 + 100.0 * u(rng);
     return s;
 }
 
@@ -1505,12 +1517,20 @@ TEST_F(RandomCycles, FormulasOfATouchAtFullSpeed) {
             std::max(s.probe.reseat_mm,
                      reach_distance_mm(limits, mm_min_to_mm_s(s.cycle.measure_feed_mm_min)));
         // Issue 12: rounded up to the micrometre.
-        const double needed = first.overtravel_mm + room;
+        // Issue 28: and at the highest feed override, room to reseat.
+        const double needed =
+            std::max(first.overtravel_mm + room, first.override_overtravel_mm + s.probe.reseat_mm);
         EXPECT_GE(r.recommended_backoff_mm(), needed - rel_tol(needed));
         EXPECT_LT(r.recommended_backoff_mm(), needed + kBackoffStep_mm);
         EXPECT_NEAR(std::remainder(r.recommended_backoff_mm(), kBackoffStep_mm), 0.0, 1e-9);
         EXPECT_NEAR(r.overtravel_mm(),
                     std::max(first.overtravel_mm, r.measuring_touch().overtravel_mm), 1e-12);
+        EXPECT_NEAR(
+            r.checked_overtravel_mm(),
+            std::max(first.override_overtravel_mm, r.measuring_touch().override_overtravel_mm),
+            1e-12);
+        EXPECT_GE(first.override_overtravel_mm, first.overtravel_mm);
+        EXPECT_GE(r.measuring_touch().override_overtravel_mm, r.measuring_touch().overtravel_mm);
         const double s_approach = s.cycle.approach_mm;
         const double touch_expected = speed_after_mm_s(limits, v, s_approach);
         EXPECT_NEAR(first.touch_speed_mm_s, touch_expected, rel_tol(touch_expected, 1e-9));
@@ -1604,7 +1624,7 @@ TEST_F(RandomCycles, SecondTouchAndReturn) {
 TEST_F(RandomCycles, EveryWarningExactlyWhenItsConditionHolds) {
     for_each_cycle([](const Scenario& s, const CycleResult& r) {
         const MotionLimits limits = s.motion_limits();
-        const double ot = r.overtravel_mm();
+        const double ot = r.checked_overtravel_mm();
         const double limit = s.probe.overtravel_limit_mm;
         const Warning* w = find_warning(r, WarningCode::overtravel_limit);
         if (clearly_above(ot, limit)) {
@@ -1848,6 +1868,7 @@ TEST(CycleProperty, EvaluateIntoReusesBuffersWithoutLeftovers) {
 // on the second touch, and the sweep carries both touches' overtravel.
 TEST(Overtravel, NamesTheTouchThatOvertravelsMost) {
     Scenario s;
+    s.cycle.feed_override_max_pct = 100.0;  // at the programmed feeds
     s.cycle.strategy = Strategy::two_touch;
     s.cycle.probe_feed_mm_min = 100.0;
     s.cycle.measure_feed_mm_min = 3000.0;
@@ -1859,7 +1880,11 @@ TEST(Overtravel, NamesTheTouchThatOvertravelsMost) {
     EXPECT_DOUBLE_EQ(r.overtravel_mm(), r.measuring_touch().overtravel_mm);
     const Warning* w = find_warning(r, WarningCode::overtravel_limit);
     ASSERT_NE(w, nullptr);
-    EXPECT_EQ(render_arg(w->to_message().args.back()), "2");
+    const std::vector<MessageArg> args = w->to_message().args;
+    const auto touch = std::find_if(args.begin(), args.end(),
+                                    [](const MessageArg& a) { return a.name == "touch"; });
+    ASSERT_NE(touch, args.end());
+    EXPECT_EQ(render_arg(*touch), "2");
 
     s.cycle.measure_feed_mm_min = 30.0;
     EXPECT_EQ(evaluate(s).overtravel_touch(), 1);
@@ -1867,8 +1892,98 @@ TEST(Overtravel, NamesTheTouchThatOvertravelsMost) {
     EXPECT_EQ(evaluate(s).overtravel_touch(), 1);
 }
 
+// Issue 28: the operator may turn the feed override up to
+// cycle.feed_override_max_pct. The touches then run at that multiple of their
+// feeds from the same starts, and every overtravel check holds there; the
+// cycle time stays the programmed one.
+TEST(FeedOverride, EveryOvertravelCheckHoldsAtTheHighestOverride) {
+    Scenario s = surface(Strategy::single_touch, 3000.0);
+    Scenario fast = s;  // the same touch programmed at 150 % of the feed
+    fast.cycle.probe_feed_mm_min = 4500.0;
+    const CycleResult at_100 = evaluate(s);
+    const double fast_ot = evaluate(fast).first_touch().overtravel_mm;
+    s.cycle.feed_override_max_pct = 150.0;
+    const CycleResult r = evaluate(s);
+    EXPECT_DOUBLE_EQ(r.total(), at_100.total());  // the timeline at 100 %
+    EXPECT_DOUBLE_EQ(r.overtravel_mm(), 1.905);   // as SingleTouch.SurfaceAt3000
+    EXPECT_DOUBLE_EQ(r.first_touch().override_overtravel_mm, fast_ot);
+    EXPECT_DOUBLE_EQ(r.checked_overtravel_mm(), fast_ot);
+    // At cruise the overtravel is the pretravel plus v times the reaction
+    // and half the time constant: (1.905 - 0.005) / 50 mm/s = 0.038 s, so at
+    // 75 mm/s 0.005 + 75 x 0.038.
+    EXPECT_NEAR(fast_ot, 0.005 + 75.0 * 0.038, 1e-9);
+
+    // The limit between the two: no word at 100 %, an error at 150 % that says so.
+    s.probe.overtravel_limit_mm = 2.5;
+    const CycleResult limited = evaluate(s);
+    const Warning* w = find_warning(limited, WarningCode::overtravel_limit);
+    ASSERT_NE(w, nullptr) << describe(limited);
+    EXPECT_EQ(w->severity, Severity::error);
+    EXPECT_EQ(w->message(),
+              "Overtravel 2.855 mm at 150 % feed override is 114 % of the probe's 2.500 mm "
+              "limit: the probe or stylus will be damaged; lower the feed or the delays");
+    Scenario unchanged = s;
+    unchanged.cycle.feed_override_max_pct = 100.0;
+    EXPECT_TRUE(evaluate(unchanged).valid());
+    // The fix lowers the feed until the stop at 150 % is under 80 % of the limit.
+    const std::optional<Fix> fix = fix_for(s, analyse(s), *w);
+    ASSERT_TRUE(fix.has_value());
+    const CycleResult fixed = evaluate(fix->scenario);
+    EXPECT_TRUE(fixed.valid());
+    EXPECT_LT(fixed.checked_overtravel_mm(), 0.8 * 2.5);
+
+    // Two-touch: the backoff must clear the first touch's stop at 150 % and
+    // reseat; the second touch then starts nearer and is checked too.
+    Scenario two = surface(Strategy::two_touch, 3000.0);
+    two.cycle.feed_override_max_pct = 150.0;
+    const CycleResult t = evaluate(two);
+    EXPECT_NEAR(
+        t.recommended_backoff_mm(),
+        std::max(1.905 + std::max(two.probe.reseat_mm, reach_distance_mm(two.motion_limits(), 0.5)),
+                 fast_ot + two.probe.reseat_mm),
+        kBackoffStep_mm);
+    EXPECT_GT(t.recommended_backoff_mm(), 1.905 + 0.2 + kBackoffStep_mm);
+    two.cycle.backoff_mm = 2.2;  // clears the stop at 100 %, not at 150 %
+    EXPECT_NE(find_warning(evaluate(two), WarningCode::backoff_too_small), nullptr);
+    // Every search reaches past the stop at 150 %.
+    two.cycle.backoff_mm = t.recommended_backoff_mm();
+    const CycleResult searched = evaluate(two);
+    EXPECT_DOUBLE_EQ(searched.first_touch().search_mm, 5.0 + search_beyond_mm(two, fast_ot));
+    two.cycle.search_beyond_mm = 2.0;  // past the stop at 100 %, short of 150 %'s
+    w = find_warning(evaluate(two), WarningCode::search_ends_too_soon);
+    ASSERT_NE(w, nullptr);
+    EXPECT_DOUBLE_EQ(w->b, fast_ot);
+}
+
+// The same with dynamics after interpolation (a Fanuc-type machine): the
+// touch at the override is the touch programmed at that feed.
+TEST(FeedOverride, WithDynamicsTheStopIsTheTouchAtTheFasterFeed) {
+    Scenario s = merge_json(Scenario{}, R"({"machine": {"accel_model": "none",
+        "filter": "exponential", "filter_time_s": 0.032, "servo_time_constant_s": 0.033,
+        "controller_latency_s": 0.014}, "cycle": {"strategy": "two_touch",
+        "probe_feed_mm_min": 1000, "backoff_mm": 4, "approach_mm": 10}})");
+    for (double pct : {120.0, 150.0, 200.0}) {
+        s.cycle.feed_override_max_pct = pct;
+        Scenario fast = s;
+        fast.cycle.feed_override_max_pct = 100.0;
+        fast.cycle.probe_feed_mm_min = 1000.0 * pct / 100.0;
+        const CycleResult r = evaluate(s);
+        const CycleResult f = evaluate(fast);
+        EXPECT_DOUBLE_EQ(r.first_touch().override_overtravel_mm, f.first_touch().overtravel_mm)
+            << pct;
+        // Grows with the override: at 1000 mm/min x k, v x (t_r + lags) +
+        // pretravel, within what the lags' tails have not settled 10 mm in
+        // (under 0.2 um at 2000 mm/min).
+        EXPECT_NEAR(r.first_touch().override_overtravel_mm,
+                    0.005 + 1000.0 * pct / 100.0 / 60.0 * (0.002 + 0.014 + 0.004 + 0.032 + 0.033),
+                    2e-4)
+            << pct;
+    }
+}
+
 TEST(Overtravel, SweepCarriesEachTouch) {
     Scenario s;
+    s.cycle.feed_override_max_pct = 100.0;  // at the programmed feeds
     s.cycle.strategy = Strategy::two_touch;
     const std::vector<double> feeds = {100.0, 1000.0, 5000.0};
     for (const SweepPoint& p : sweep_feeds(s, feeds).points) {

@@ -45,6 +45,7 @@ std::optional<Fix> fix_of(const Scenario& s, WarningCode code) {
 
 TEST(Fixes, BackoffTooSmallSetsTheRecommendedBackoffOnTheMicrometreGrid) {
     Scenario s;  // two-touch surface, 2000 mm/min: overtravel 1.2717 mm, reseat 0.2 mm
+    s.cycle.feed_override_max_pct = 100.0;  // the touches at their programmed feeds
     s.cycle.backoff_mm = 1.0;
     const std::optional<Fix> fix = fix_of(s, WarningCode::backoff_too_small);
     ASSERT_TRUE(fix);
@@ -60,6 +61,7 @@ TEST(Fixes, TheRecommendationShownIsTheValueThatClearsTheWarning) {
     // Issue 12: reseat 0.2002 mm made the recommendation 2.1052 mm, shown as
     // 2.105; typed back, it was refused. Now it is 2.106, and 2.106 passes.
     Scenario s;
+    s.cycle.feed_override_max_pct = 100.0;  // the touches at their programmed feeds
     s.probe.reseat_mm = 0.2002;
     s.cycle.backoff_mm = 1.0;
     const double recommended = evaluate(s).recommended_backoff_mm();
@@ -88,6 +90,7 @@ TEST(Fixes, OvertravelDropsTheFeedUnderEightyPercentOfTheLimit) {
     // (pretravel) for v in mm/s. A 2 mm limit warns from 1.6 mm: v = 41.97 mm/s,
     // 2518.4 mm/min.
     Scenario s;
+    s.cycle.feed_override_max_pct = 100.0;  // the touch at its programmed feed
     s.cycle.strategy = Strategy::single_touch;
     s.probe.overtravel_limit_mm = 2.0;
     s.cycle.probe_feed_mm_min = 2900.0;  // 1.842 mm: a warning
@@ -146,6 +149,9 @@ TEST(Fixes, TheFirstTouchOfTwoTouchMayTouchWhileAccelerating) {
     const std::filesystem::path resources = PROBECYCLE_RESOURCES_DIR;
     Scenario s = merge_json(scenario_from_json(slurp(resources / "examples/bore_two_touch.json")),
                             slurp(resources / "presets/machine_fanuc_exponential_servo.json"));
+    // (At the default 150 % override its protected moves at 3000 mm/min
+    // overrun the stylus: FeedOverride tests that.)
+    s.cycle.feed_override_max_pct = 100.0;
     s.cycle.backoff_mm = evaluate(s).recommended_backoff_mm();
     const Analysis a = analyse(s);
     ASSERT_TRUE(a.cycle.valid());
@@ -225,6 +231,7 @@ TEST(Fixes, WarningsWithoutAFixOfferNone) {
 // that far, rounded up to the editor's 0.01 mm.
 TEST(Fixes, SearchEndingBeforeTheStopSearchesPastIt) {
     Scenario s;
+    s.cycle.feed_override_max_pct = 100.0;  // the touches at their programmed feeds
     s.cycle.search_beyond_mm = 1.0;
     const std::optional<Fix> fix = fix_of(s, WarningCode::search_ends_too_soon);
     ASSERT_TRUE(fix.has_value());

@@ -125,6 +125,7 @@ const std::vector<std::string> kNumericKeys = {
     "cycle.target_uncertainty_mm",
     "cycle.knee_tolerance",
     "cycle.position_feed_mm_min",
+    "cycle.feed_override_max_pct",
     "cycle.clearance_mm",
     "machine.filter_time_s",
     "machine.filter2_time_s",
@@ -294,11 +295,26 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
          {"pretravel_mm", "interface_delay_s", "repeatability_2sigma_mm", "overtravel_limit_mm",
           "reseat_mm", "calibration_feed_mm_min", "max_feed_mm_min"}},
         {"cycle",
-         {"strategy", "feature", "feature_size_mm", "approach_mm", "probe_feed_mm_min",
-          "measure_feed_mm_min", "backoff_mm", "backoff_from", "return_feed_mm_min",
-          "position_feed_mm_min", "clearance_mm", "target_uncertainty_mm", "knee_tolerance",
-          "part_position_uncertainty_mm", "search_beyond_mm", "repeats", "parts_per_year",
-          "cycles_per_part", "machine_rate_per_hour"}},
+         {"strategy",
+          "feature",
+          "feature_size_mm",
+          "approach_mm",
+          "probe_feed_mm_min",
+          "measure_feed_mm_min",
+          "backoff_mm",
+          "backoff_from",
+          "return_feed_mm_min",
+          "position_feed_mm_min",
+          "feed_override_max_pct",
+          "clearance_mm",
+          "target_uncertainty_mm",
+          "knee_tolerance",
+          "part_position_uncertainty_mm",
+          "search_beyond_mm",
+          "repeats",
+          "parts_per_year",
+          "cycles_per_part",
+          "machine_rate_per_hour"}},
     };
     EXPECT_EQ(j.size(), expected.size());
     for (const auto& [section, keys] : expected) {
@@ -661,7 +677,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 40u);
+    ASSERT_EQ(scenario_keys().size(), 41u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);

@@ -371,12 +371,13 @@ const Warning* find_warning(const std::vector<Warning>& warnings, WarningCode co
 // 2 mm at v = 52.5 mm/s = 3151 mm/min, well below the unlimited knee (about 6800).
 TEST(Sweep, KneeIsSearchedAmongValidFeedsOnly) {
     Scenario s = single_touch_surface();
+    s.cycle.feed_override_max_pct = 100.0;  // the touch at its programmed feed
     s.probe.overtravel_limit_mm = 2.0;
     const SweepResult sweep = sweep_feeds(s, linear_feeds(100.0, 10000.0, 50.0));
     ASSERT_TRUE(sweep.knee_feed_mm_min.has_value());
     EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points));
     for (const SweepPoint& p : sweep.points) {
-        EXPECT_EQ(p.valid(), p.overtravel_mm < 2.0) << p.feed_mm_min;
+        EXPECT_EQ(p.valid(), p.checked_overtravel_mm < 2.0) << p.feed_mm_min;
         EXPECT_EQ(p.invalid_codes,
                   p.valid() ? 0u : invalid_code_bit(WarningCode::overtravel_limit));
     }
@@ -401,6 +402,7 @@ TEST(Sweep, NoValidFeedGivesNoKnee) {
 
 TEST(FindKnee, StopsWhereTheOvertravelReachesTheLimit) {
     Scenario s = single_touch_surface();
+    s.cycle.feed_override_max_pct = 100.0;  // the touch at its programmed feed
     s.probe.overtravel_limit_mm = 2.0;
     const KneeSearch knee = find_knee(s, 10.0, 10000.0);
     ASSERT_TRUE(knee.knee_feed_mm_min.has_value());

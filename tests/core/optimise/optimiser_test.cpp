@@ -384,7 +384,8 @@ TEST(Optimiser, HandComputedSingleTouchIsCappedByTheOvertravelFraction) {
     const Scenario s = scenario_with(
         {"machine.accel_model=none", "machine.latched_input=true", "machine.controller_latency_s=0",
          "probe.interface_delay_s=0", "probe.pretravel_mm=0.0051", "probe.overtravel_limit_mm=1",
-         "cycle.strategy=single_touch", "cycle.part_position_uncertainty_mm=2"});
+         "cycle.strategy=single_touch", "cycle.part_position_uncertainty_mm=2",
+         "cycle.feed_override_max_pct=100"});
     OptimiseRequirements requirements;
     requirements.max_overtravel_fraction = 0.5;
     const OptimiseResult r = optimise(s, requirements);

@@ -238,12 +238,14 @@ TEST(CyclePlan, ABoreTwoTouchGoesOutFromItsCentreAndBackProtected) {
     EXPECT_DOUBLE_EQ(start_radius_mm(c), 20.0);
     const CycleResult model = model_touch(bore);
     const double s = c.approach_mm;
-    const double first = model.first_touch().overtravel_mm;
     const double measuring = model.measuring_touch().overtravel_mm;
-    // Halfway from each touch's stop to the 5 mm overtravel limit.
-    const double first_beyond = 0.5 * (first + bore.probe.overtravel_limit_mm);
-    const double measuring_beyond = 0.5 * (measuring + bore.probe.overtravel_limit_mm);
-    EXPECT_DOUBLE_EQ(search_beyond_mm(bore, first), first_beyond);
+    // Halfway from each touch's stop at the highest feed override (issue 28)
+    // to the 5 mm overtravel limit.
+    const double first_stop = model.first_touch().override_overtravel_mm;
+    const double first_beyond = 0.5 * (first_stop + bore.probe.overtravel_limit_mm);
+    const double measuring_beyond =
+        0.5 * (model.measuring_touch().override_overtravel_mm + bore.probe.overtravel_limit_mm);
+    EXPECT_DOUBLE_EQ(search_beyond_mm(bore, first_stop), first_beyond);
     ASSERT_EQ(plan.steps.size(), 1u + 4u * 6u);
     EXPECT_EQ(plan.steps[0].kind, StepKind::pause);
     EXPECT_EQ(plan.steps[0].text,
@@ -286,9 +288,11 @@ TEST(CyclePlan, ABossSingleTouchGoesOverEachSideDownAndTouchesTowardTheCentre) {
     const Cycle& c = boss.cycle;
     // 50 mm plus two approach distances of 5: each start 30 mm from the centre.
     EXPECT_DOUBLE_EQ(start_radius_mm(c), 30.0);
-    const double overtravel = model_touch(boss).first_touch().overtravel_mm;
+    const TouchResult touch = model_touch(boss).first_touch();
+    const double overtravel = touch.overtravel_mm;
     const double s = c.approach_mm;
-    const double beyond = search_beyond_mm(boss, overtravel);
+    // Past the stop at the highest feed override (issue 28).
+    const double beyond = search_beyond_mm(boss, touch.override_overtravel_mm);
     // cycle.repeats 2: each side touched twice, back to the start in between.
     ASSERT_EQ(plan.steps.size(), 1u + 4u * 8u);
     EXPECT_EQ(plan.steps[0].text,
@@ -330,10 +334,12 @@ TEST(CyclePlan, RepeatsMakeTheMeasuringTouchAgainFromItsStop) {
     const Cycle& c = scenario.cycle;
     const CycleResult model = model_touch(scenario);
     const double s = c.approach_mm;
-    const double first = model.first_touch().overtravel_mm;
     const double measuring = model.measuring_touch().overtravel_mm;
-    const double first_beyond = search_beyond_mm(scenario, first);
-    const double measuring_beyond = search_beyond_mm(scenario, measuring);
+    // Past each stop at the highest feed override (issue 28).
+    const double first_beyond =
+        search_beyond_mm(scenario, model.first_touch().override_overtravel_mm);
+    const double measuring_beyond =
+        search_beyond_mm(scenario, model.measuring_touch().override_overtravel_mm);
     ASSERT_EQ(plan.steps.size(), 1u + 3u + 2u * 2u + 1u);
     expect_steps(plan, 1,
                  {
@@ -440,10 +446,18 @@ TEST(CyclePlan, WhatAFeaturesProgramCannotDoIsRefusedNamingTheKey) {
               "over its wall between touches)");
     // An obstruction met at 8000 mm/min stops 5.072 mm past it: over the limit.
     Scenario fast = bore;
+    fast.cycle.feed_override_max_pct = 100.0;
     fast.cycle.position_feed_mm_min = 8000.0;
     EXPECT_EQ(refusal(fast, CyclePlanOptions{}),
               "cycle.position_feed_mm_min: got 8000; allowed: a feed at which an obstruction met "
               "by a protected move stops short of the probe's 5.000 mm limit (now 5.072 mm past "
+              "it)");
+    // Issue 28: at the default 120 % feed override, 7000 mm/min is 8400 mm/min.
+    fast.cycle.feed_override_max_pct = 120.0;
+    fast.cycle.position_feed_mm_min = 7000.0;
+    EXPECT_EQ(refusal(fast, CyclePlanOptions{}),
+              "cycle.position_feed_mm_min: got 7000; allowed: a feed at which an obstruction met "
+              "by a protected move stops short of the probe's 5.000 mm limit (now 5.325 mm past "
               "it)");
     Scenario boss;
     boss.cycle.feature = Feature::boss;
@@ -582,6 +596,7 @@ TEST(ProbingPlan, EverySearchReachesPastItsStopWhereverThePartLies) {
 // the key, as the model's error (search_ends_too_soon) says.
 TEST(CyclePlan, ASearchSetByHandIsUsedOrRefusedWhenItEndsTooSoon) {
     Scenario scenario;  // two-touch at 2000 mm/min: the first touch stops 1.272 mm past
+    scenario.cycle.feed_override_max_pct = 100.0;  // (FeedOverride: at the override)
     scenario.cycle.search_beyond_mm = 1.5;
     scenario.cycle.part_position_uncertainty_mm = 0.25;
     scenario.cycle.approach_mm = 6.0;

@@ -6,7 +6,7 @@
 ; more than the touch's stop (cycle.search_beyond_mm), and every later one
 ; covers the whole move back before it: the axis is never braking for the
 ; move's end when it touches.
-; Plan 5906d9479358b0f8 (keep the plan file: the import matches the positions to it).
+; Plan a98ae836042904a7 (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -21,6 +21,7 @@
 ;   probe.interface_delay_s = 0.002
 ;   probe.pretravel_mm = 0.005
 ;   probe.overtravel_limit_mm = 5
+;   cycle.feed_override_max_pct = 120
 ;   cycle.strategy = two_touch
 ;   cycle.approach_mm = 5
 ;   cycle.probe_feed_mm_min = 2000
@@ -51,40 +52,40 @@ M0
 ; out to the start of the X+ touch
 G38.3 X20.000 F3000
 ; X+ first touch at 2000 mm/min
-G38.2 X8.136 F2000
+G38.2 X8.263 F2000
 G1 X-2.000 F10000 ; backoff
 ; touch 1: X+ measuring touch at 30 mm/min
-G38.2 X4.512 F30
+G38.2 X4.514 F30
 G1 X-5.024 F10000 ; back to the start
 ; back to the centre
 G38.3 X-20.000 F3000
 ; out to the start of the X- touch
 G38.3 X-20.000 F3000
 ; X- first touch at 2000 mm/min
-G38.2 X-8.136 F2000
+G38.2 X-8.263 F2000
 G1 X2.000 F10000 ; backoff
 ; touch 2: X- measuring touch at 30 mm/min
-G38.2 X-4.512 F30
+G38.2 X-4.514 F30
 G1 X5.024 F10000 ; back to the start
 ; back to the centre
 G38.3 X20.000 F3000
 ; out to the start of the Y+ touch
 G38.3 Y20.000 F3000
 ; Y+ first touch at 2000 mm/min
-G38.2 Y8.136 F2000
+G38.2 Y8.263 F2000
 G1 Y-2.000 F10000 ; backoff
 ; touch 3: Y+ measuring touch at 30 mm/min
-G38.2 Y4.512 F30
+G38.2 Y4.514 F30
 G1 Y-5.024 F10000 ; back to the start
 ; back to the centre
 G38.3 Y-20.000 F3000
 ; out to the start of the Y- touch
 G38.3 Y-20.000 F3000
 ; Y- first touch at 2000 mm/min
-G38.2 Y-8.136 F2000
+G38.2 Y-8.263 F2000
 G1 Y2.000 F10000 ; backoff
 ; touch 4: Y- measuring touch at 30 mm/min
-G38.2 Y-4.512 F30
+G38.2 Y-4.514 F30
 G1 Y5.024 F10000 ; back to the start
 ; back to the centre
 G38.3 Y20.000 F3000

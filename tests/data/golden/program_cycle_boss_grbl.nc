@@ -8,7 +8,7 @@
 ; more than the touch's stop (cycle.search_beyond_mm), and every later one
 ; covers the whole move back before it: the axis is never braking for the
 ; move's end when it touches.
-; Plan 9612a217e061444d (keep the plan file: the import matches the positions to it).
+; Plan 430dc574c8d610b2 (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -23,6 +23,7 @@
 ;   probe.interface_delay_s = 0.002
 ;   probe.pretravel_mm = 0.005
 ;   probe.overtravel_limit_mm = 5
+;   cycle.feed_override_max_pct = 120
 ;   cycle.strategy = single_touch
 ;   cycle.approach_mm = 5
 ;   cycle.probe_feed_mm_min = 300
@@ -58,10 +59,10 @@ G38.3 X30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
 ; touch 1: X- 1 of 2 at 300 mm/min
-G38.2 X-7.598 F300
+G38.2 X-7.617 F300
 G1 X5.195 F10000 ; back to the start
 ; touch 2: X- 2 of 2 at 300 mm/min
-G38.2 X-7.793 F300
+G38.2 X-7.812 F300
 G1 X5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
 ; back over the centre
@@ -71,10 +72,10 @@ G38.3 X-30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
 ; touch 3: X+ 1 of 2 at 300 mm/min
-G38.2 X7.598 F300
+G38.2 X7.617 F300
 G1 X-5.195 F10000 ; back to the start
 ; touch 4: X+ 2 of 2 at 300 mm/min
-G38.2 X7.793 F300
+G38.2 X7.812 F300
 G1 X-5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
 ; back over the centre
@@ -84,10 +85,10 @@ G38.3 Y30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
 ; touch 5: Y- 1 of 2 at 300 mm/min
-G38.2 Y-7.598 F300
+G38.2 Y-7.617 F300
 G1 Y5.195 F10000 ; back to the start
 ; touch 6: Y- 2 of 2 at 300 mm/min
-G38.2 Y-7.793 F300
+G38.2 Y-7.812 F300
 G1 Y5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
 ; back over the centre
@@ -97,10 +98,10 @@ G38.3 Y-30.000 F3000
 ; down to the measuring depth
 G38.3 Z-10.000 F3000
 ; touch 7: Y+ 1 of 2 at 300 mm/min
-G38.2 Y7.598 F300
+G38.2 Y7.617 F300
 G1 Y-5.195 F10000 ; back to the start
 ; touch 8: Y+ 2 of 2 at 300 mm/min
-G38.2 Y7.793 F300
+G38.2 Y7.812 F300
 G1 Y-5.195 F10000 ; back to the start
 G0 Z10.000 ; up by the clearance
 ; back over the centre

@@ -5,7 +5,7 @@
 ; more than the touch's stop (cycle.search_beyond_mm), and every later one
 ; covers the whole move back before it: the axis is never braking for the
 ; move's end when it touches.
-; Plan c0afc007526b94aa (keep the plan file: the import matches the positions to it).
+; Plan cbf5faed85793c90 (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -20,6 +20,7 @@
 ;   probe.interface_delay_s = 0.002
 ;   probe.pretravel_mm = 0.005
 ;   probe.overtravel_limit_mm = 5
+;   cycle.feed_override_max_pct = 120
 ;   cycle.strategy = two_touch
 ;   cycle.approach_mm = 5
 ;   cycle.probe_feed_mm_min = 2000
@@ -40,10 +41,10 @@ G21 G91 G94
 ; check: the probe stands 5 mm in front of the surface, touching along Z-; resume to start
 M0
 ; Z- first touch at 2000 mm/min
-G38.2 Z-8.136 F2000
+G38.2 Z-8.263 F2000
 G1 Z2.000 F10000 ; backoff
 ; touch 1: Z- measuring touch at 30 mm/min
-G38.2 Z-4.512 F30
+G38.2 Z-4.514 F30
 G1 Z5.024 F10000 ; back to the start
 G90
 M2

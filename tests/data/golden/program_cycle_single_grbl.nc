@@ -5,7 +5,7 @@
 ; more than the touch's stop (cycle.search_beyond_mm), and every later one
 ; covers the whole move back before it: the axis is never braking for the
 ; move's end when it touches.
-; Plan e4ea2210f7ef1be4 (keep the plan file: the import matches the positions to it).
+; Plan 76340f578f65d7e1 (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -20,6 +20,7 @@
 ;   probe.interface_delay_s = 0.002
 ;   probe.pretravel_mm = 0.005
 ;   probe.overtravel_limit_mm = 5
+;   cycle.feed_override_max_pct = 120
 ;   cycle.strategy = single_touch
 ;   cycle.approach_mm = 5
 ;   cycle.probe_feed_mm_min = 300
@@ -40,7 +41,7 @@ G21 G91 G94
 ; check: the probe stands 5 mm in front of the surface, touching along X+; resume to start
 M0
 ; touch 1: X+ at 300 mm/min
-G38.2 X7.598 F300
+G38.2 X7.617 F300
 G1 X-5.195 F10000 ; back to the start
 G90
 M2

@@ -6,7 +6,7 @@
 ; more than the touch's stop (cycle.search_beyond_mm), and every later one
 ; covers the whole move back before it: the axis is never braking for the
 ; move's end when it touches.
-; Plan 5155c7ae9ba999a6 (keep the plan file: the import matches the positions to it).
+; Plan ee042f037781f322 (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -21,6 +21,7 @@
 ;   probe.interface_delay_s = 0.002
 ;   probe.pretravel_mm = 0.005
 ;   probe.overtravel_limit_mm = 5
+;   cycle.feed_override_max_pct = 120
 ;   cycle.probe_feed_mm_min = 2000
 ;   repeats = 2
 ;   margin_mm = 1
@@ -39,25 +40,25 @@ G21 G91 G94
 ; check: the probe stands in front of the surface, at most 10 mm from it, touching along X+; resume to start
 M0
 ; locate the surface at 30 mm/min
-G38.2 X12.512 F30
+G38.2 X12.514 F30
 G0 X-1.039 ; to 1.015 mm before the surface: room to reach 30 mm/min plus the margin
 ; touch 1: X+ at 30 mm/min, 1 of 2
-G38.2 X3.551 F30
+G38.2 X3.553 F30
 G0 X-1.039 ; to 1.015 mm before the surface: room to reach 30 mm/min plus the margin
 ; touch 2: X+ at 30 mm/min, 2 of 2
-G38.2 X3.551 F30
+G38.2 X3.553 F30
 G0 X-1.174 ; to 1.15 mm before the surface: room to reach 300 mm/min plus the margin
 ; touch 3: X+ at 300 mm/min, 1 of 2
-G38.2 X3.772 F300
+G38.2 X3.791 F300
 G0 X-1.345 ; to 1.15 mm before the surface: room to reach 300 mm/min plus the margin
 ; touch 4: X+ at 300 mm/min, 2 of 2
-G38.2 X3.943 F300
+G38.2 X3.962 F300
 G0 X-2.195 ; to 2 mm before the surface: room to reach 2000 mm/min plus the margin
 ; touch 5: X+ at 2000 mm/min, 1 of 2
-G38.2 X5.331 F2000
+G38.2 X5.458 F2000
 G0 X-3.272 ; to 2 mm before the surface: room to reach 2000 mm/min plus the margin
 ; touch 6: X+ at 2000 mm/min, 2 of 2
-G38.2 X6.408 F2000
+G38.2 X6.535 F2000
 G0 X-11.272 ; clear of the surface
 G90
 M2

@@ -5,7 +5,7 @@
 ; more than the touch's stop (cycle.search_beyond_mm), and every later one
 ; covers the whole move back before it: the axis is never braking for the
 ; move's end when it touches.
-; Plan da7419c04d20ed75 (keep the plan file: the import matches the positions to it).
+; Plan d6a2ab53fa11b3e2 (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -20,6 +20,7 @@
 ;   probe.interface_delay_s = 0.002
 ;   probe.pretravel_mm = 0.005
 ;   probe.overtravel_limit_mm = 5
+;   cycle.feed_override_max_pct = 120
 ;   cycle.strategy = two_touch
 ;   cycle.probe_feed_mm_min = 2000
 ;   cycle.measure_feed_mm_min = 30
@@ -42,54 +43,54 @@ G21 G91 G94
 ; check: the spindle is oriented to 0 deg and the probe ball stands at the gauge centre (within 1 mm) at the measuring depth; resume to start
 M0
 ; X+ first touch at 2000 mm/min
-G38.2 X26.136 F2000
+G38.2 X26.263 F2000
 G1 X-2.000 F10000 ; backoff
 ; touch 1: X+ measuring touch at 30 mm/min
-G38.2 X4.512 F30
+G38.2 X4.514 F30
 G1 X-22.024 F10000 ; back to the centre
 ; X- first touch at 2000 mm/min
-G38.2 X-26.136 F2000
+G38.2 X-26.263 F2000
 G1 X2.000 F10000 ; backoff
 ; touch 2: X- measuring touch at 30 mm/min
-G38.2 X-4.512 F30
+G38.2 X-4.514 F30
 G1 X22.024 F10000 ; back to the centre
 ; Y+ first touch at 2000 mm/min
-G38.2 Y26.136 F2000
+G38.2 Y26.263 F2000
 G1 Y-2.000 F10000 ; backoff
 ; touch 3: Y+ measuring touch at 30 mm/min
-G38.2 Y4.512 F30
+G38.2 Y4.514 F30
 G1 Y-22.024 F10000 ; back to the centre
 ; Y- first touch at 2000 mm/min
-G38.2 Y-26.136 F2000
+G38.2 Y-26.263 F2000
 G1 Y2.000 F10000 ; backoff
 ; touch 4: Y- measuring touch at 30 mm/min
-G38.2 Y-4.512 F30
+G38.2 Y-4.514 F30
 G1 Y22.024 F10000 ; back to the centre
 ; turn the spindle to 180 deg; the probe stays at the gauge centre; resume
 M0
 ; X+ first touch at 2000 mm/min
-G38.2 X26.136 F2000
+G38.2 X26.263 F2000
 G1 X-2.000 F10000 ; backoff
 ; touch 5: X+ measuring touch at 30 mm/min
-G38.2 X4.512 F30
+G38.2 X4.514 F30
 G1 X-22.024 F10000 ; back to the centre
 ; X- first touch at 2000 mm/min
-G38.2 X-26.136 F2000
+G38.2 X-26.263 F2000
 G1 X2.000 F10000 ; backoff
 ; touch 6: X- measuring touch at 30 mm/min
-G38.2 X-4.512 F30
+G38.2 X-4.514 F30
 G1 X22.024 F10000 ; back to the centre
 ; Y+ first touch at 2000 mm/min
-G38.2 Y26.136 F2000
+G38.2 Y26.263 F2000
 G1 Y-2.000 F10000 ; backoff
 ; touch 7: Y+ measuring touch at 30 mm/min
-G38.2 Y4.512 F30
+G38.2 Y4.514 F30
 G1 Y-22.024 F10000 ; back to the centre
 ; Y- first touch at 2000 mm/min
-G38.2 Y-26.136 F2000
+G38.2 Y-26.263 F2000
 G1 Y2.000 F10000 ; backoff
 ; touch 8: Y- measuring touch at 30 mm/min
-G38.2 Y-4.512 F30
+G38.2 Y-4.514 F30
 G1 Y22.024 F10000 ; back to the centre
 G90
 M2

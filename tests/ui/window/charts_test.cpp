@@ -275,6 +275,37 @@ TEST_F(ChartsTest, TheOvertravelLegendHasATargetOnlyWhenOneIsSet) {
     EXPECT_FALSE(overtravel_->legend_texts().contains(QStringLiteral("Target")));
 }
 
+// Issue 28: the chart shows what the readout says. Two-touch measures at the
+// measuring feed: the cycle's uncertainty is a dot there (the readout's
+// figure), and the measuring feed's line is in the legend; single-touch's dot
+// is at the probing feed. The overtravel curves name the feed override they
+// are at.
+TEST_F(ChartsTest, TheUncertaintyDotIsTheReadoutsAtTheFeedThatMeasures) {
+    Scenario s = all_valid();
+    s.cycle.strategy = Strategy::two_touch;
+    s.cycle.measure_feed_mm_min = 50.0;
+    const Computed& two = draw(s);
+    QList<QPointF> dot = points("overtravel.cycle_uncertainty");
+    ASSERT_EQ(dot.size(), 1);
+    EXPECT_DOUBLE_EQ(dot[0].x(), 50.0);
+    EXPECT_DOUBLE_EQ(dot[0].y(), two.cycle().uncertainty_mm() * 1000.0);
+    QStringList legend = overtravel_->legend_texts();
+    EXPECT_TRUE(legend.contains(QStringLiteral("Measuring feedrate"))) << joined(legend);
+    EXPECT_TRUE(legend.contains(QStringLiteral("This cycle's uncertainty"))) << joined(legend);
+    EXPECT_TRUE(legend.contains(QStringLiteral("1st touch at 120 % override"))) << joined(legend);
+
+    s.cycle.strategy = Strategy::single_touch;
+    s.cycle.feed_override_max_pct = 100.0;
+    const Computed& single = draw(s);
+    dot = points("overtravel.cycle_uncertainty");
+    ASSERT_EQ(dot.size(), 1);
+    EXPECT_DOUBLE_EQ(dot[0].x(), s.cycle.probe_feed_mm_min);
+    EXPECT_DOUBLE_EQ(dot[0].y(), single.cycle().uncertainty_mm() * 1000.0);
+    legend = overtravel_->legend_texts();
+    EXPECT_FALSE(legend.contains(QStringLiteral("Measuring feedrate"))) << joined(legend);
+    EXPECT_TRUE(legend.contains(QStringLiteral("Overtravel"))) << joined(legend);
+}
+
 // Item 5: the log time axis labels times under 1 s, and shows at least two
 // labels whatever the range.
 TEST_F(ChartsTest, TheLogTimeAxisLabelsTimesUnderOneSecond) {

@@ -252,9 +252,11 @@ TEST_F(WindowLanguageTest, NoTextStaysInThePreviousLanguageAfterASwitch) {
     EXPECT_FALSE(latency->import_file(dir_.filePath(QStringLiteral("missing.csv"))));
     EXPECT_TRUE(calibration->export_report(dir_.filePath(QStringLiteral("calibration.csv"))));
     Scenario edited = window_->scenario();
-    edited.cycle.backoff_mm = 2.5;
+    edited.cycle.backoff_mm = 3.5;  // over the recommended 2.485 mm by more than 10 %
     window_->edit_scenario(edited, QStringLiteral("edit"));
-    ASSERT_TRUE(window_->apply_fix_for(QStringLiteral("backoff_excess")));
+    settle();
+    ASSERT_TRUE(window_->apply_fix_for(QStringLiteral("backoff_excess")))
+        << window_->warning_codes().join(QStringLiteral(",")).toStdString();
     ASSERT_TRUE(window_->apply_preset(QStringLiteral(":/presets/probe_kinematic_radio.json")));
     window_->undo_stack()->undo();  // a redo text too
     settle();
