@@ -255,11 +255,18 @@ Message Warning::to_message() const {
                       arg("error_mm", ArgKind::length_mm, c, 4)};
             break;
         case WarningCode::no_valid_feed:
-            m.text = QT_TRANSLATE_NOOP(
-                "Warning",
-                "No probing feed from %1 to %2 gives a valid cycle: the overtravel reaches the "
-                "probe's limit even at %1, so there is no knee; shorten the delays or use a "
-                "probe with more overtravel");
+            // d = 1: valid, but the first touch reaches none of the feeds (issue 28).
+            m.text = d > 0.5 ? QT_TRANSLATE_NOOP(
+                                   "Warning",
+                                   "No probing feed from %1 to %2 is reached: the first touch "
+                                   "meets the surface before it reaches even %1, so there is no "
+                                   "knee; start the touch farther out")
+                             : QT_TRANSLATE_NOOP(
+                                   "Warning",
+                                   "No probing feed from %1 to %2 gives a valid cycle: the "
+                                   "overtravel reaches the probe's limit even at %1, so there is "
+                                   "no knee; shorten the delays or use a probe with more "
+                                   "overtravel");
             m.args = {arg("from_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(a), 0),
                       arg("to_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(b), 0)};
             break;

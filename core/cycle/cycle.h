@@ -108,7 +108,9 @@ struct Warning {
     // uncertainty_over_target:  a = uncertainty, b = target
     // calibration_feed_mismatch:a = measuring speed, b = calibration speed, c = error
     // no_valid_feed:            a = lowest feed searched, b = highest (analyse(): no
-    //                           feed between gives a valid cycle, so there is no knee)
+    //                           feed between gives a valid cycle, so there is no knee),
+    //                           d = 1 when valid feeds are there but the first touch
+    //                           reaches none of them
     // feed_over_probe_limit:    a = the touch's feed, b = the probe's rated maximum,
     //                           d = the touch (0 the probing feed, 1 the measuring feed)
     // start_inside_uncertainty: a = start distance, b = part position uncertainty,
@@ -325,6 +327,16 @@ constexpr double kBackoffStep_mm = 0.001;
 inline double feed_step_mm_min(double feed_mm_min) {
     return feed_mm_min >= 100.0 ? 1.0 : 0.1;
 }
+// Issue 28: whether a touch meets its surface at its programmed feed (to
+// within kFeedReachedFraction): a probing feed the first touch never reaches
+// from its start is not the programmed feed. The knee looks past such feeds,
+// and the curves show them as such: their cycle times fall again only
+// because the touch does not reach the feed.
+constexpr double kFeedReachedFraction = 0.999;
+inline bool reaches_feed(const TouchResult& touch) {
+    return touch.touch_speed_mm_s >= kFeedReachedFraction * touch.programmed_feed_mm_s;
+}
+
 // Overtravel at this fraction of the probe's limit is a warning (at the
 // limit, an error).
 constexpr double kOvertravelWarningFraction = 0.8;

@@ -125,7 +125,7 @@ std::string monte_carlo_to_json(const MonteCarloOptions& options, const Histogra
 std::string sweep_to_csv(const SweepResult& sweep, const SweepResult* optimised) {
     std::string csv = "feed_mm_min,cycle_time_s,overtravel_mm,checked_overtravel_mm,uncertainty_mm";
     for (Phase phase : all_phases()) csv += std::string(",") + to_string(phase) + "_s";
-    csv += ",valid,invalid_reasons";
+    csv += ",valid,invalid_reasons,feed_reached";
     csv += optimised != nullptr ? ",cycle_time_recommended_backoff_s\n" : "\n";
     for (std::size_t i = 0; i < sweep.points.size(); ++i) {
         const SweepPoint& p = sweep.points[i];
@@ -134,6 +134,7 @@ std::string sweep_to_csv(const SweepResult& sweep, const SweepResult* optimised)
                csv_length_mm(p.uncertainty_mm);
         for (double t : p.phase_time_s) csv += ',' + csv_time_s(t);
         csv += p.valid() ? ",true," : ",false," + invalid_codes_text(p.invalid_codes, ";");
+        csv += p.feed_reached ? ",true" : ",false";
         if (optimised != nullptr) csv += ',' + csv_time_s(optimised->points[i].cycle_time_s);
         csv += '\n';
     }

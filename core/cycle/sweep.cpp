@@ -31,6 +31,12 @@ MotionCache& scratch_cache() {
     return cache;
 }
 
+// Whether the evaluation in `scratch` counts for the knee: valid for it, and
+// at the feed it says (issue 28).
+bool counts_for_knee(const CycleResult& scratch) {
+    return valid_for_knee(scratch.invalid_codes()) && reaches_feed(scratch.first_touch());
+}
+
 // Evaluates `base` at a probe feed, into `scratch`; returns the cycle time.
 double cycle_time_at(const Scenario& base, double feed_mm_min, const SweepOptions& options,
                      CycleResult& scratch) {
@@ -77,7 +83,8 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
             point.phase_time_s[static_cast<std::size_t>(phase)] = scratch.phase_time(phase);
         }
         point.invalid_codes = scratch.invalid_codes();
-        if (valid_for_knee(point.invalid_codes) && point.cycle_time_s < best_time) {
+        point.feed_reached = reaches_feed(scratch.first_touch());
+        if (point.counts_for_knee() && point.cycle_time_s < best_time) {
             best_time = point.cycle_time_s;
             best = i;
         }
@@ -93,7 +100,7 @@ void sweep_feeds_into(const Scenario& scenario, std::span<const double> feeds_mm
     for (const SweepPoint& point : out.points) {
         lowest = std::min(lowest, point.feed_mm_min);
         highest = std::max(highest, point.feed_mm_min);
-        if (valid_for_knee(point.invalid_codes) && point.cycle_time_s <= knee_limit &&
+        if (point.counts_for_knee() && point.cycle_time_s <= knee_limit &&
             (!out.knee_feed_mm_min || point.feed_mm_min < *out.knee_feed_mm_min)) {
             out.knee_feed_mm_min = point.feed_mm_min;
         }
@@ -166,7 +173,8 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
     bool cut = false;
     for (std::size_t i = 0; i < kGrid; ++i) {
         const double t = time_at(grid[i]);
-        if (!valid_for_knee(scratch.invalid_codes())) {
+        if (!counts_for_knee(scratch)) {
+            out.none_reached = i == 0 && valid_for_knee(scratch.invalid_codes());
             cut = true;
             break;
         }
@@ -182,7 +190,7 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
         for (int iter = 0; iter < 60 && hi - lo > 1e-7 * hi; ++iter) {
             const double mid = 0.5 * (lo + hi);
             time_at(mid);
-            (valid_for_knee(scratch.invalid_codes()) ? lo : hi) = mid;
+            (counts_for_knee(scratch) ? lo : hi) = mid;
         }
         out.valid_to_mm_min = lo;
         if (lo > feeds[n - 1]) {
@@ -284,7 +292,8 @@ Analysis analyse(const Scenario& scenario) {
     if (!analysis.knee_feed_mm_min) {
         // Issue 12: say why there is no knee.
         warnings.push_back({WarningCode::no_valid_feed, Severity::warning,
-                            mm_min_to_mm_s(kKneeSearchFrom_mm_min), mm_min_to_mm_s(search_to)});
+                            mm_min_to_mm_s(kKneeSearchFrom_mm_min), mm_min_to_mm_s(search_to), 0.0,
+                            knee.none_reached ? 1.0 : 0.0});
         order_by_severity(warnings);
         return analysis;
     }
@@ -294,8 +303,14 @@ Analysis analyse(const Scenario& scenario) {
     analysis.knee_cycle_time_s = cycle_time_at(scenario, knee_feed, optimised, scratch);
     const double feed = scenario.cycle.probe_feed_mm_min;
     if (feed > knee_feed * (1.0 + 1e-6)) {
-        // Both times on the same (optimised) curve the knee was found on.
+        // Both times on the same (optimised) curve the knee was found on. A
+        // feed the first touch does not reach may be faster than the knee
+        // only because of that (issue 28): then not "no faster".
         const double feed_time = cycle_time_at(scenario, feed, optimised, scratch);
+        if (!reaches_feed(scratch.first_touch()) && feed_time < *analysis.knee_cycle_time_s) {
+            order_by_severity(warnings);
+            return analysis;
+        }
         warnings.push_back({WarningCode::feed_beyond_knee, Severity::info, mm_min_to_mm_s(feed),
                             mm_min_to_mm_s(knee_feed), *analysis.knee_cycle_time_s - feed_time,
                             scenario.cycle.knee_tolerance});

@@ -28,14 +28,20 @@ struct SweepPoint {
     std::array<double, kPhaseCount> phase_time_s{};  // by Phase, summed over touches
     // CycleResult::invalid_codes() at this feed (0: a valid cycle).
     unsigned invalid_codes{0};
+    // Issue 28: whether the first touch meets the surface at this feed
+    // (reaches_feed()); a feed it never reaches does not count for the knee.
+    bool feed_reached{true};
     bool valid() const { return invalid_codes == 0; }
+    // Valid for the knee (valid_for_knee()) and at the feed it says.
+    bool counts_for_knee() const { return valid_for_knee(invalid_codes) && feed_reached; }
 };
 
 struct SweepResult {
     std::vector<SweepPoint> points;
     // Lowest feed whose cycle time is within cycle.knee_tolerance of the
     // fastest, both among the valid feeds (CycleResult::valid(): overtravel
-    // under the probe's limit, backoff enough); none when no feed is valid.
+    // under the probe's limit, backoff enough) that the first touch reaches
+    // (SweepPoint::counts_for_knee); none when no feed is.
     std::optional<double> knee_feed_mm_min;
     // Highest valid feed whose uncertainty meets the target (none without a
     // target or when no valid feed meets it).
@@ -70,15 +76,20 @@ std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t 
 // section around the fastest cycle, bisection for the knee. Valid feeds only:
 // the search stops at the feed where the cycle turns invalid (overtravel
 // reaches the probe's limit, or a fixed backoff becomes too small; both grow
-// with feed, so feeds beyond the first invalid one are not looked at).
+// with feed, so feeds beyond the first invalid one are not looked at), or
+// where the first touch no longer reaches the feed from its start (issue 28:
+// that too only grows with the feed).
 struct KneeSearch {
     std::optional<double> knee_feed_mm_min;  // none when even `from` is invalid
     std::optional<double> best_feed_mm_min;  // where the fastest valid cycle lies
     double best_cycle_time_s{0.0};
-    // Highest valid feed searched: `to`, or where the cycle turns invalid.
+    // Highest valid feed searched: `to`, or where the cycle turns invalid or
+    // the feed is no longer reached.
     double valid_to_mm_min{0.0};
     // knee_at_range_end when the fastest cycle lies at `from` or at `to`.
     std::optional<Warning> range_end_warning;
+    // No knee because `from` is valid but the first touch does not reach it.
+    bool none_reached{false};
 };
 KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_min,
                      const SweepOptions& options = {});

@@ -1462,6 +1462,10 @@
         <source>A protected move at the positioning feed %1 and %5 % feed override that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: little margin left for the stylus</source>
         <translation>Защищённое перемещение на подаче позиционирования %1 при коррекции подачи %5 %, встретив препятствие, останавливается на %2 за ним — %3 % от предела щупа %4: у стилуса остаётся мало запаса</translation>
     </message>
+    <message>
+        <source>No probing feed from %1 to %2 is reached: the first touch meets the surface before it reaches even %1, so there is no knee; start the touch farther out</source>
+        <translation>Ни одна подача поиска от %1 до %2 не достигается: первое касание встречает поверхность, не достигнув даже %1, поэтому точки перегиба нет; начинайте касание дальше от поверхности</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::CalibrationTab</name>
@@ -2337,10 +2341,6 @@
         <translation>Недопустимые</translation>
     </message>
     <message>
-        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
-        <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая допустимая подача, время цикла на которой хуже лучшего не более чем на допуск точки перегиба. Серый пунктир: подачи, при которых цикл недопустим (перебег сверх предела, слишком малый отвод). Красная пунктирная линия: этот цикл недопустим и времени цикла не имеет (см. предупреждения).</translation>
-    </message>
-    <message>
         <source>The phases of the current cycle in time order, each row with its total time over all touches. Grey: the cycle is invalid and cannot run as set (the title and the warnings say why); its phases are what the model computes.</source>
         <translation>Фазы текущего цикла в порядке времени; в каждой строке — суммарное время фазы по всем касаниям. Серым: цикл недопустим и не может выполняться с заданными параметрами (причину называют заголовок и предупреждения); фазы показаны такими, какими их рассчитывает модель.</translation>
     </message>
@@ -2372,6 +2372,18 @@
     <message>
         <source>Measuring feedrate</source>
         <translation>Измерительная подача</translation>
+    </message>
+    <message>
+        <source>Single-touch, feed not reached</source>
+        <translation>Однократное, подача не достигнута</translation>
+    </message>
+    <message>
+        <source>Two-touch, feed not reached</source>
+        <translation>Двукратное, подача не достигнута</translation>
+    </message>
+    <message>
+        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). Dotted: feeds the first touch never reaches from its start, so the cycle is not at the feed it says (its time falls only because of that); the knee is not among them. A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
+        <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая допустимая подача, время цикла на которой хуже лучшего не более чем на допуск точки перегиба. Серый пунктир: подачи, при которых цикл недопустим (перебег сверх предела, слишком малый отвод). Точечная линия: подачи, которых первое касание не достигает от своего начала, так что цикл идёт не на заявленной подаче (его время падает только поэтому); точка перегиба среди них не ищется. Красная пунктирная линия: этот цикл недопустим и времени цикла не имеет (см. предупреждения).</translation>
     </message>
 </context>
 <context>

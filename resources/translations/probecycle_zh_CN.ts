@@ -1196,7 +1196,7 @@
     </message>
     <message>
         <source>The highest feed override the operator may turn the cycle up to. Feed override speeds up every move at feed, the touches and the protected positioning moves too, so every overtravel check holds at it: the stylus&apos;s limit, the searches past each stop and the backoff that must clear the first touch&apos;s stop. The cycle time is at 100 %. 120 % is as far as every common control&apos;s dial turns; set what your machine&apos;s panel allows (Fanuc-type and Heidenhain 150 %, Haas 200 %), or 100 where the program locks the override.</source>
-        <translation>操作者可将循环调到的最高进给倍率。进给倍率会加快每个以进给速度执行的移动，包括各次触碰和受保护的定位移动，因此所有超程检查都按该倍率进行：测针极限、越过每个停止点的搜索，以及必须越过第一次触碰停止点的回退。循环时间按 100 % 计算。120 % 是所有常见数控系统的倍率旋钮都能达到的值；请设为您机床面板允许的值（Fanuc 类和 Heidenhain 为 150 %，Haas 为 200 %），若程序锁定倍率则设为 100。</translation>
+        <translation>操作者可将循环调到的最高进给倍率。进给倍率会加快每个以进给速度执行的移动，包括各次触测和受保护的定位移动，因此所有过行程检查都按该倍率进行：测针极限、越过每个停止点的搜索，以及必须越过第一次触测停止点的回退。循环时间按 100 % 计算。120 % 是所有常见数控系统的倍率旋钮都能达到的值；请设为您机床面板允许的值（Fanuc 类和 Heidenhain 为 150 %，Haas 为 200 %），若程序锁定倍率则设为 100。</translation>
     </message>
     <message>
         <source>Highest feed override</source>
@@ -1301,7 +1301,7 @@
     </message>
     <message>
         <source>at %1 and up to %4 % feed override the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed (or cycle.feed_override_max_pct) or check the scenario</source>
-        <translation>在 %1 及最高 %4 % 进给倍率下，模型的超程为 %2，达到或超过测头极限 %3：请降低进给（或 cycle.feed_override_max_pct）或检查场景</translation>
+        <translation>在 %1 及最高 %4 % 进给倍率下，模型的过行程为 %2，达到或超过测头极限 %3：请降低进给（或 cycle.feed_override_max_pct）或检查场景</translation>
     </message>
 </context>
 <context>
@@ -1448,11 +1448,11 @@
     </message>
     <message>
         <source>Overtravel %1 at %5 % feed override is %2 % of the probe&apos;s %3 limit: the probe or stylus will be damaged; lower the feed or the delays</source>
-        <translation>%5 % 进给倍率下超程 %1，为测头极限 %3 的 %2 %：测头或测针将损坏；请降低进给或延迟</translation>
+        <translation>%5 % 进给倍率下过行程 %1，为测头极限 %3 的 %2 %：测头或测针将损坏；请降低进给或延迟</translation>
     </message>
     <message>
         <source>Overtravel %1 at %5 % feed override is %2 % of the probe&apos;s %3 limit: little margin left for the stylus</source>
-        <translation>%5 % 进给倍率下超程 %1，为测头极限 %3 的 %2 %：测针余量很小</translation>
+        <translation>%5 % 进给倍率下过行程 %1，为测头极限 %3 的 %2 %：测针余量很小</translation>
     </message>
     <message>
         <source>A protected move at the positioning feed %1 and %5 % feed override that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: the stylus would be overrun; lower the positioning feed</source>
@@ -1461,6 +1461,10 @@
     <message>
         <source>A protected move at the positioning feed %1 and %5 % feed override that meets an obstruction stops %2 past it, %3 % of the probe&apos;s %4 limit: little margin left for the stylus</source>
         <translation>以定位进给 %1、%5 % 进给倍率执行的受保护移动若遇到障碍物，会停在其后 %2 处，为测头极限 %4 的 %3 %：测针余量很小</translation>
+    </message>
+    <message>
+        <source>No probing feed from %1 to %2 is reached: the first touch meets the surface before it reaches even %1, so there is no knee; start the touch farther out</source>
+        <translation>从 %1 到 %2 的探测进给率均未达到：第一次触测在达到 %1 之前就已接触表面，因此没有拐点；请将触测起点移远</translation>
     </message>
 </context>
 <context>
@@ -2337,10 +2341,6 @@
         <translation>无效</translation>
     </message>
     <message>
-        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
-        <translation>整个循环的时间与探测进给率的关系，分一次触发和二次触发，其余参数按当前设置。竖线：当前进给率。圆点：拐点，即循环时间与最佳时间相差不超过拐点容差的最低有效进给率。灰色虚线：循环无效的进给率（过行程超过极限、回退距离过小）。红色虚线：当前循环无效，没有循环时间（见警告）。</translation>
-    </message>
-    <message>
         <source>The phases of the current cycle in time order, each row with its total time over all touches. Grey: the cycle is invalid and cannot run as set (the title and the warnings say why); its phases are what the model computes.</source>
         <translation>当前循环按时间顺序排列的各阶段，每行给出其在所有触测中的总时间。灰色：循环无效，按当前设置无法运行（原因见标题和警告）；各阶段为模型的计算结果。</translation>
     </message>
@@ -2351,15 +2351,15 @@
     </message>
     <message>
         <source>1st touch at %1 % override</source>
-        <translation>第 1 次触碰（倍率 %1 %）</translation>
+        <translation>第一次触测（倍率 %1 %）</translation>
     </message>
     <message>
         <source>Overtravel at %1 % override</source>
-        <translation>超程（倍率 %1 %）</translation>
+        <translation>过行程（倍率 %1 %）</translation>
     </message>
     <message>
         <source>2nd touch at %1 % override</source>
-        <translation>第 2 次触碰（倍率 %1 %）</translation>
+        <translation>第二次触测（倍率 %1 %）</translation>
     </message>
     <message>
         <source>This cycle&apos;s uncertainty</source>
@@ -2367,11 +2367,23 @@
     </message>
     <message>
         <source>Red: overtravel of a touch at each feed, at the highest feed override, against the probe&apos;s limit (dashed); the shaded feeds overtravel beyond it. Two-touch: the first touch solid, the second dotted; with a fixed backoff a fast first touch leaves the second too little room to brake, so the second may overtravel more. Blue, right axis: the uncertainty (k = 2) of a touch measured at each feed against the target (dotted); the dot is this cycle&apos;s, the readout&apos;s figure, at the feed of the touch that measures. Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, dotted).</source>
-        <translation>红色：在最高进给倍率下，各进给下触碰的超程与测头极限（虚线）的对比；阴影区域的进给超程超过极限。两次触碰：第一次触碰为实线，第二次为点线；回退固定时，快速的第一次触碰给第二次留下的制动空间太小，因此第二次的超程可能更大。蓝色，右轴：在各进给下测量的一次触碰的不确定度（k = 2）与目标（点线）的对比；圆点是本循环的不确定度，即读数显示的值，位于进行测量的那次触碰的进给处。竖线：探测进给，以及两次触碰时的测量进给（蓝色点线）。</translation>
+        <translation>红色：在最高进给倍率下，各进给下触测的过行程与测头极限（虚线）的对比；阴影区域的进给过行程超过极限。两次触测：第一次触测为实线，第二次为点线；回退固定时，快速的第一次触测给第二次留下的制动空间太小，因此第二次的过行程可能更大。蓝色，右轴：在各进给下测量的一次触测的不确定度（k = 2）与目标（点线）的对比；圆点是本循环的不确定度，即读数显示的值，位于进行测量的那次触测的进给处。竖线：探测进给，以及两次触测时的测量进给（蓝色点线）。</translation>
     </message>
     <message>
         <source>Measuring feedrate</source>
         <translation>测量进给率</translation>
+    </message>
+    <message>
+        <source>Single-touch, feed not reached</source>
+        <translation>一次触发，未达进给率</translation>
+    </message>
+    <message>
+        <source>Two-touch, feed not reached</source>
+        <translation>二次触发，未达进给率</translation>
+    </message>
+    <message>
+        <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). Dotted: feeds the first touch never reaches from its start, so the cycle is not at the feed it says (its time falls only because of that); the knee is not among them. A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
+        <translation>整个循环的时间与探测进给率的关系，分一次触发和二次触发，其余参数按当前设置。竖线：当前进给率。圆点：拐点，即循环时间与最佳时间相差不超过拐点容差的最低有效进给率。灰色虚线：循环无效的进给率（过行程超过极限、回退距离过小）。点线：第一次触测从起点出发始终达不到的进给率，此时循环并非以所标进给率运行（循环时间下降仅因如此）；拐点不在其中。红色虚线：当前循环无效，没有循环时间（见警告）。</translation>
     </message>
 </context>
 <context>
@@ -3727,7 +3739,7 @@
     </message>
     <message>
         <source>The scenario&apos;s cycle on its feature, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe starts at the feature&apos;s centre (over it for a boss or web) and every move toward the part is protected: a touch on the way is an obstruction. Every move is incremental from where the probe stands. Prove it out at reduced feed override (a boss&apos;s or web&apos;s lifts are rapids: reduced rapid override too) with the probe clear of the part.</source>
-        <translation>场景中对其特征的循环，以普通测量移动写出：其策略、进给率、回退距离和起始距离，即您在此调优的值，而非厂商的循环调用。测头从特征中心出发（圆柱或凸台则在其上方），每个朝向工件的移动都是保护移动：途中的触碰即为障碍。每个移动都是从测头当前位置出发的增量移动。请在降低的进给倍率下（圆柱或凸台上方的抬起为快速移动：还需降低快速倍率）、测头远离工件时试运行。</translation>
+        <translation>场景中对其特征的循环，以普通测量移动写出：其策略、进给率、回退距离和起始距离，即您在此调优的值，而非厂商的循环调用。测头从特征中心出发（圆柱或凸台则在其上方），每个朝向工件的移动都是保护移动：途中的触测即为障碍。每个移动都是从测头当前位置出发的增量移动。请在降低的进给倍率下（圆柱或凸台上方的抬起为快速移动：还需降低快速倍率）、测头远离工件时试运行。</translation>
     </message>
 </context>
 <context>
@@ -3837,11 +3849,11 @@
     </message>
     <message>
         <source>At %1 % feed override the probe stops %2 past the surface: %3 % of the probe&apos;s %4 limit. Every overtravel check holds at that override (Highest feed override).</source>
-        <translation>在 %1 % 进给倍率下，测头停在表面后 %2 处：为测头极限 %4 的 %3 %。所有超程检查都按该倍率进行（最高进给倍率）。</translation>
+        <translation>在 %1 % 进给倍率下，测头停在表面后 %2 处：为测头极限 %4 的 %3 %。所有过行程检查都按该倍率进行（最高进给倍率）。</translation>
     </message>
     <message>
         <source>%1 % of limit at %2 %, 2nd touch</source>
-        <translation>%1 %（倍率 %2 %），第 2 次</translation>
+        <translation>%1 %（倍率 %2 %），第二次</translation>
     </message>
     <message>
         <source>%1 % of limit at %2 %</source>

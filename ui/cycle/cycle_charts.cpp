@@ -142,27 +142,40 @@ void fill_sweep(QList<QPointF>& out, const SweepResult& sweep, double SweepPoint
     }
 }
 
-// Issue 12: moves the invalid points of a sweep's curve into `invalid` (with
-// the valid neighbours that join the two, so the line stays whole) and breaks
-// the curve there (NaN); `invalid` is all NaN when every cycle is valid.
-// Returns whether any point is invalid.
-bool split_invalid(QList<QPointF>& curve, QList<QPointF>& invalid, const SweepResult& sweep) {
+// Issue 12: moves the points of a sweep's curve that `keep` refuses into
+// `out` (with the kept neighbours that join the two, so the line stays whole)
+// and breaks the curve there (NaN); `out` is all NaN when every point is
+// kept. Returns whether any point moved. A point already broken stays broken.
+template <typename Keep>
+bool split_off(QList<QPointF>& curve, QList<QPointF>& out, const SweepResult& sweep, Keep keep) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const qsizetype n = curve.size();
-    invalid.resize(n);
+    out.resize(n);
     bool any = false;
+    const auto kept = [&](qsizetype k) {
+        return k < 0 || k >= n || keep(sweep.points[static_cast<std::size_t>(k)]);
+    };
     for (qsizetype i = 0; i < n; ++i) {
-        const auto valid = [&](qsizetype k) {
-            return k < 0 || k >= n || sweep.points[static_cast<std::size_t>(k)].valid();
-        };
-        const bool here = valid(i);
+        const bool here = kept(i);
         any = any || !here;
-        invalid[i] = here && valid(i - 1) && valid(i + 1) ? QPointF(curve[i].x(), nan) : curve[i];
+        out[i] = here && kept(i - 1) && kept(i + 1) ? QPointF(curve[i].x(), nan) : curve[i];
     }
     for (qsizetype i = 0; i < n; ++i) {
-        if (!sweep.points[static_cast<std::size_t>(i)].valid()) curve[i].setY(nan);
+        if (!kept(i)) curve[i].setY(nan);
     }
     return any;
+}
+
+// The invalid feeds (grey, dashed).
+bool split_invalid(QList<QPointF>& curve, QList<QPointF>& invalid, const SweepResult& sweep) {
+    return split_off(curve, invalid, sweep, [](const SweepPoint& p) { return p.valid(); });
+}
+
+// Issue 28: the valid feeds the first touch never reaches from its start
+// (dotted, in the curve's colour): not the programmed feed, and not the knee's.
+bool split_unreached(QList<QPointF>& curve, QList<QPointF>& unreached, const SweepResult& sweep) {
+    return split_off(curve, unreached, sweep,
+                     [](const SweepPoint& p) { return p.feed_reached || !p.valid(); });
 }
 
 void fill_segment(QList<QPointF>& out, double x0, double y0, double x1, double y1) {
@@ -247,6 +260,12 @@ void CycleCharts::build() {
     ct_two_invalid_ =
         add(QStringLiteral("cycle_time.two_touch_invalid"), cycle_time_,
             cycle_time_->add_line({QStringLiteral("i"), kInvalidStretchColour, 1.5, Dash::dashed}));
+    ct_single_unreached_ =
+        add(QStringLiteral("cycle_time.single_touch_unreached"), cycle_time_,
+            cycle_time_->add_line({QStringLiteral("u1"), kSingleColour, 1.5, Dash::dotted}));
+    ct_two_unreached_ =
+        add(QStringLiteral("cycle_time.two_touch_unreached"), cycle_time_,
+            cycle_time_->add_line({QStringLiteral("u2"), kTwoColour, 1.5, Dash::dotted}));
     // The current feed's vertical line explains itself: kept out of the legend.
     ct_feed_ = add(QStringLiteral("cycle_time.feed"), cycle_time_,
                    cycle_time_->add_line({{}, kMarkerColour, 1.5}));
@@ -361,6 +380,8 @@ void CycleCharts::retranslate() {
     cycle_time_->set_name(ct_cycle_.curve, tr("This cycle"));
     cycle_time_->set_name(ct_cycle_invalid_.curve, tr("This cycle (invalid)"));
     cycle_time_->set_name(ct_two_invalid_.curve, tr("Invalid"));
+    cycle_time_->set_name(ct_single_unreached_.curve, tr("Single-touch, feed not reached"));
+    cycle_time_->set_name(ct_two_unreached_.curve, tr("Two-touch, feed not reached"));
     cycle_time_->set_name(ct_knee_.curve, tr("Knee"));
 
     phases_->set_x_axis({Scale::linear, tr("Time [%1]").arg(unit_s()), QStringLiteral("%.3g"), {}});
@@ -392,7 +413,9 @@ void CycleCharts::retranslate() {
         "Cycle time of the whole cycle against the probing feed, for single-touch and two-touch "
         "with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest "
         "valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle "
-        "is invalid (overtravel over the limit, backoff too small). A red dashed line: this "
+        "is invalid (overtravel over the limit, backoff too small). Dotted: feeds the first "
+        "touch never reaches from its start, so the cycle is not at the feed it says (its time "
+        "falls only because of that); the knee is not among them. A red dashed line: this "
         "cycle is invalid and has no cycle time (see the warnings)."));
     phases_->setToolTip(
         tr("The phases of the current cycle in time order, each row with its total "
@@ -471,6 +494,10 @@ void CycleCharts::draw_cycle_time(const Computed& c) {
     Buffer& two_invalid = two_invalid_.next();
     const bool any_single = split_invalid(single, single_invalid, c.single_touch);
     const bool any_two = split_invalid(two, two_invalid, c.two_touch);
+    Buffer& single_unreached = single_unreached_.next();
+    Buffer& two_unreached = two_unreached_.next();
+    const bool unreached_single = split_unreached(single, single_unreached, c.single_touch);
+    const bool unreached_two = split_unreached(two, two_unreached, c.two_touch);
     if (baseline_) {
         span.add_y(baseline_->single);
         span.add_y(baseline_->two);
@@ -487,6 +514,10 @@ void CycleCharts::draw_cycle_time(const Computed& c) {
     set_if_changed(ct_two_, two_);
     set_if_changed(ct_single_invalid_, single_invalid_);
     set_if_changed(ct_two_invalid_, two_invalid_);
+    set_if_changed(ct_single_unreached_, single_unreached_);
+    set_if_changed(ct_two_unreached_, two_unreached_);
+    cycle_time_->set_visible(ct_single_unreached_.curve, unreached_single);
+    cycle_time_->set_visible(ct_two_unreached_.curve, unreached_two);
     // One legend entry for the grey stretches, on whichever curve has them.
     cycle_time_->set_visible(ct_single_invalid_.curve, any_single);
     cycle_time_->set_visible(ct_two_invalid_.curve, any_single || any_two);

@@ -105,14 +105,14 @@ class CycleCharts : public QWidget {
     Ref ct_single_, ct_two_, ct_feed_, ct_knee_, ct_cycle_, ct_base_single_, ct_base_two_;
     Ref ct_cycle_invalid_;  // the scenario's own feed when the model marks its cycle invalid
     // Issue 12: the stretches of each curve where the cycles are invalid, grey.
-    Ref ct_single_invalid_, ct_two_invalid_;
+    Ref ct_single_invalid_, ct_two_invalid_, ct_single_unreached_, ct_two_unreached_;
     std::array<Ref, kPhaseCount> phase_areas_{};
     Ref ot_overtravel_, ot_overtravel2_, ot_limit_, ot_beyond_, ot_uncertainty_, ot_target_,
         ot_feed_, ot_measure_feed_, ot_base_overtravel_, ot_base_uncertainty_,
         ot_cycle_uncertainty_;
     Ref mo_position_, mo_speed_, mo_surface_, mo_base_position_, mo_base_speed_;
 
-    PingPong single_invalid_, two_invalid_;
+    PingPong single_invalid_, two_invalid_, single_unreached_, two_unreached_;
     PingPong single_, two_, overtravel_pts_, overtravel2_pts_, uncertainty_pts_, position_pts_,
         speed_pts_;
     // Two-touch draws each touch's overtravel (a fast first touch can

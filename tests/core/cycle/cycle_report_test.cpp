@@ -198,7 +198,8 @@ TEST(SweepCsv, HeaderThenOneRowPerFeed) {
     ASSERT_EQ(lines.size(), feeds.size() + 1);
 
     const std::vector<std::string> header = fields_of(lines[0]);
-    ASSERT_EQ(header.size(), 7 + kPhaseCount);
+    ASSERT_EQ(header.size(), 8 + kPhaseCount);
+    EXPECT_EQ(header[7 + kPhaseCount], "feed_reached");
     EXPECT_EQ(header[5 + kPhaseCount], "valid");
     EXPECT_EQ(header[6 + kPhaseCount], "invalid_reasons");
     EXPECT_EQ(header[0], "feed_mm_min");
@@ -230,6 +231,7 @@ TEST(SweepCsv, HeaderThenOneRowPerFeed) {
         }
         EXPECT_EQ(fields[5 + kPhaseCount], p.valid() ? "true" : "false");
         EXPECT_EQ(fields[6 + kPhaseCount], invalid_codes_text(p.invalid_codes, ";"));
+        EXPECT_EQ(fields[7 + kPhaseCount], p.feed_reached ? "true" : "false");
     }
     // The 2 mm backoff is too small from about 2850 mm/min on: those rows say so.
     EXPECT_EQ(fields_of(lines.back())[5 + kPhaseCount], "false");

@@ -30,17 +30,18 @@ Scenario single_touch_surface() {
     return s;
 }
 
-// The knee by its definition: among the valid points (CycleResult::valid()),
-// the lowest feed whose cycle time is within the tolerance of the fastest.
+// The knee by its definition: among the valid points (CycleResult::valid())
+// whose first touch reaches its feed (issue 28), the lowest feed whose cycle
+// time is within the tolerance of the fastest.
 std::optional<double> knee_of(const std::vector<SweepPoint>& points,
                               double tolerance = kDefaultKneeTolerance) {
     double best = std::numeric_limits<double>::infinity();
     for (const SweepPoint& p : points) {
-        if (p.valid()) best = std::min(best, p.cycle_time_s);
+        if (p.valid() && p.feed_reached) best = std::min(best, p.cycle_time_s);
     }
     std::optional<double> knee;
     for (const SweepPoint& p : points) {
-        if (p.valid() && p.cycle_time_s <= best * (1.0 + tolerance)) {
+        if (p.valid() && p.feed_reached && p.cycle_time_s <= best * (1.0 + tolerance)) {
             if (!knee || p.feed_mm_min < *knee) knee = p.feed_mm_min;
         }
     }
@@ -398,6 +399,71 @@ TEST(Sweep, NoValidFeedGivesNoKnee) {
     EXPECT_FALSE(sweep.knee_feed_mm_min.has_value());
     EXPECT_TRUE(sweep.warnings.empty());
     EXPECT_FALSE(find_knee(s, 10.0, 1000.0).knee_feed_mm_min.has_value());
+}
+
+// Issue 28: the Renishaw note's geometry (single touch, 2.5 mm start,
+// T = 0.06 s, return at 5000 mm/min). Its cycle time is lowest near 4500
+// mm/min, rises, then falls again above about 6500 mm/min only because the
+// touch no longer reaches the programmed feed in 2.5 mm: those feeds are not
+// the programmed feed, and the knee is not among them (it was 9326 mm/min,
+// at the end of the range). The time-constant plan reaches v in v T / 2 and
+// is at sqrt(2 (v / T) s) after s, so the touch is within 0.1 % of the feed
+// up to v = 2 s / (T 0.999^2).
+TEST(FindKnee, FeedsTheFirstTouchNeverReachesDoNotCount) {
+    Scenario s = single_touch_surface();
+    s.cycle.approach_mm = 2.5;
+    s.cycle.return_feed_mm_min = 5000.0;
+    s.cycle.feed_override_max_pct = 100.0;
+    const double reached_to = mm_s_to_mm_min(2.0 * 2.5 / (0.06 * 0.999 * 0.999));
+    const KneeSearch knee = find_knee(s, 10.0, 10000.0);
+    ASSERT_TRUE(knee.knee_feed_mm_min.has_value());
+    EXPECT_NEAR(knee.valid_to_mm_min, reached_to, 1e-3);
+    EXPECT_LT(*knee.knee_feed_mm_min, reached_to);
+    EXPECT_GT(*knee.knee_feed_mm_min, 3000.0);
+    EXPECT_FALSE(knee.range_end_warning.has_value());  // the feeds reached end there
+    // The sweep flags the feeds that are not reached; the one that looks
+    // fastest is among them.
+    const SweepResult sweep = sweep_feeds(s, linear_feeds(3000.0, 10000.0, 250.0));
+    const auto at = [&](double feed) {
+        for (const SweepPoint& p : sweep.points) {
+            if (p.feed_mm_min == feed) return p;
+        }
+        return SweepPoint{};
+    };
+    EXPECT_TRUE(at(4500.0).feed_reached);
+    EXPECT_FALSE(at(6500.0).feed_reached);
+    EXPECT_LT(at(10000.0).cycle_time_s, at(4500.0).cycle_time_s);
+    for (const SweepPoint& p : sweep.points) {
+        EXPECT_EQ(p.feed_reached, p.feed_mm_min <= reached_to) << p.feed_mm_min;
+    }
+    EXPECT_EQ(sweep.knee_feed_mm_min, knee_of(sweep.points));
+    ASSERT_TRUE(sweep.knee_feed_mm_min.has_value());
+    EXPECT_LT(*sweep.knee_feed_mm_min, reached_to);
+    EXPECT_TRUE(sweep.warnings.empty());
+    // analyse() agrees, and a feed beyond that is not called "no faster".
+    s.cycle.probe_feed_mm_min = 9000.0;
+    const Analysis a = analyse(s);
+    ASSERT_TRUE(a.knee_feed_mm_min.has_value());
+    EXPECT_LT(*a.knee_feed_mm_min, reached_to);
+    for (const Warning& w : a.cycle.warnings()) {
+        EXPECT_NE(w.code, WarningCode::feed_beyond_knee) << w.message();
+        EXPECT_NE(w.code, WarningCode::knee_at_range_end) << w.message();
+    }
+    // A touch that starts at the surface reaches no feed: no knee, and the
+    // warning says that, not that the overtravel is over the limit.
+    s.cycle.approach_mm = 0.0;
+    const Analysis none = analyse(s);
+    EXPECT_FALSE(none.knee_feed_mm_min.has_value());
+    bool said = false;
+    for (const Warning& w : none.cycle.warnings()) {
+        if (w.code != WarningCode::no_valid_feed) continue;
+        said = true;
+        EXPECT_EQ(w.message(),
+                  "No probing feed from 10 mm/min to 10000 mm/min is reached: the first touch "
+                  "meets the surface before it reaches even 10 mm/min, so there is no knee; "
+                  "start the touch farther out");
+    }
+    EXPECT_TRUE(said);
 }
 
 TEST(FindKnee, StopsWhereTheOvertravelReachesTheLimit) {

@@ -306,6 +306,33 @@ TEST_F(ChartsTest, TheUncertaintyDotIsTheReadoutsAtTheFeedThatMeasures) {
     EXPECT_TRUE(legend.contains(QStringLiteral("Overtravel"))) << joined(legend);
 }
 
+// Issue 28: feeds the first touch never reaches from its start are dotted in
+// the curve's colour, named in the legend, and out of the solid curve (the
+// Renishaw note's geometry: 2.5 mm start, T = 0.06 s, so up to about 5000
+// mm/min).
+TEST_F(ChartsTest, FeedsTheFirstTouchNeverReachesAreDottedApart) {
+    Scenario s;
+    s.cycle.strategy = Strategy::single_touch;
+    s.cycle.approach_mm = 2.5;
+    s.cycle.return_feed_mm_min = 5000.0;
+    s.cycle.feed_override_max_pct = 100.0;
+    s.probe.overtravel_limit_mm = 50.0;
+    draw(s);
+    const QList<double> solid = drawn_feeds(points("cycle_time.single_touch"));
+    const QList<double> dotted = drawn_feeds(points("cycle_time.single_touch_unreached"));
+    ASSERT_FALSE(solid.isEmpty());
+    ASSERT_FALSE(dotted.isEmpty());
+    for (double feed : solid) EXPECT_LE(feed, 5011.0);
+    EXPECT_GE(*std::max_element(dotted.begin(), dotted.end()), 9000.0);
+    EXPECT_TRUE(visible("cycle_time.single_touch_unreached"));
+    EXPECT_TRUE(
+        cycle_time_->legend_texts().contains(QStringLiteral("Single-touch, feed not reached")))
+        << joined(cycle_time_->legend_texts());
+    s.cycle.approach_mm = 20.0;  // every feed reached
+    draw(s);
+    EXPECT_FALSE(visible("cycle_time.single_touch_unreached"));
+}
+
 // Item 5: the log time axis labels times under 1 s, and shows at least two
 // labels whatever the range.
 TEST_F(ChartsTest, TheLogTimeAxisLabelsTimesUnderOneSecond) {
