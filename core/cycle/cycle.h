@@ -298,6 +298,12 @@ double feed_override_factor(const Cycle& cycle);
 // case: no protected move is faster), so pretravel + v * (t_i + t_c + t_s) +
 // v * the dynamics' lag + the plan's braking from v.
 double protected_move_overtravel_mm(const Scenario& scenario, double feed_mm_s);
+// The highest positioning feed, rounded down to the editors' digits, at most
+// `upper_mm_min`, at which an obstruction's overtravel (above, which grows
+// with the feed) is under `fraction` of the probe's limit; nullopt when even
+// 1 mm/min is not.
+std::optional<double> highest_position_feed_mm_min(const Scenario& scenario, double upper_mm_min,
+                                                   double fraction);
 
 // --- Small closed forms (domain.md, "One touch"), each testable alone. ---
 // Travel between trigger and the controller's reaction, worst case (full scan).

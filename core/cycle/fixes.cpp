@@ -62,27 +62,6 @@ std::optional<double> feed_for_overtravel(const Scenario& scenario, double feed_
     return feed;
 }
 
-// The highest positioning feed, rounded down, under `feed_mm_min` at which an
-// obstruction's overtravel (protected_move_overtravel_mm, which grows with
-// the feed) is under the warning fraction of the limit; nullopt when even 1
-// mm/min is not.
-std::optional<double> position_feed_for_overtravel(const Scenario& scenario, double feed_mm_min) {
-    const double limit = kOvertravelWarningFraction * scenario.probe.overtravel_limit_mm;
-    const auto under = [&](double feed) {
-        return protected_move_overtravel_mm(scenario, mm_min_to_mm_s(feed)) < limit;
-    };
-    double lo = 1.0;
-    if (!under(lo)) return std::nullopt;
-    double hi = feed_mm_min;
-    while (hi - lo > 0.05) {
-        const double mid = 0.5 * (lo + hi);
-        (under(mid) ? lo : hi) = mid;
-    }
-    const double feed = round_feed_down(lo);
-    if (feed < 1.0 || !under(feed)) return std::nullopt;
-    return feed;
-}
-
 std::optional<Scenario> candidate(const Scenario& scenario, const Analysis& analysis,
                                   FixKind kind) {
     Scenario s = scenario;
@@ -123,8 +102,8 @@ std::optional<Scenario> candidate(const Scenario& scenario, const Analysis& anal
             return s;
         }
         case FixKind::position_feed_for_overtravel: {
-            const std::optional<double> feed =
-                position_feed_for_overtravel(scenario, scenario.cycle.position_feed_mm_min);
+            const std::optional<double> feed = highest_position_feed_mm_min(
+                scenario, scenario.cycle.position_feed_mm_min, kOvertravelWarningFraction);
             if (!feed) return std::nullopt;
             s.cycle.position_feed_mm_min = *feed;
             return s;

@@ -18,6 +18,7 @@ Json candidate_json(const Candidate& c) {
             {"backoff_mm", s.backoff_mm},
             {"approach_mm", s.approach_mm},
             {"repeats", s.repeats},
+            {"position_feed_mm_min", s.position_feed_mm_min},
             {"cycle_time_s", c.cycle_time_s},
             {"uncertainty_mm", c.uncertainty_mm},
             {"checked_overtravel_mm", c.overtravel_mm}};

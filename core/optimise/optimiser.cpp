@@ -697,6 +697,7 @@ Scenario with_settings(const Scenario& scenario, const Settings& settings) {
     c.backoff_mm = settings.backoff_mm;
     c.approach_mm = settings.approach_mm;
     c.repeats = settings.repeats;
+    if (settings.position_feed_mm_min > 0.0) c.position_feed_mm_min = settings.position_feed_mm_min;
     return out;
 }
 
@@ -708,7 +709,8 @@ Settings settings_of(const Scenario& scenario) {
             two ? c.measure_feed_mm_min : c.probe_feed_mm_min,
             two ? c.backoff_mm : 0.0,
             c.approach_mm,
-            static_cast<int>(c.repeats)};
+            static_cast<int>(c.repeats),
+            c.position_feed_mm_min};
 }
 
 void evaluate_point(const Scenario& scenario, ModelPoint& point) {
@@ -810,7 +812,7 @@ std::vector<Requirement> binding_requirements(Optimiser& optimiser, const Scenar
 
 }  // namespace
 
-OptimiseResult optimise(const Scenario& scenario, const OptimiseRequirements& requirements,
+OptimiseResult optimise(const Scenario& given, const OptimiseRequirements& requirements,
                         const CycleModel& model) {
     const double fraction = requirements.max_overtravel_fraction;
     if (!(fraction >= kMinOvertravelFraction && fraction <= kMaxOvertravelFraction)) {
@@ -826,17 +828,34 @@ OptimiseResult optimise(const Scenario& scenario, const OptimiseRequirements& re
     }
     OptimiseResult result;
     ModelPoint current;
-    model(scenario, current);
-    result.current = candidate_of(scenario, current);
+    model(given, current);
+    result.current = candidate_of(given, current);
+    // Issue 28: a feature's protected moves that would overrun the stylus
+    // (an obstruction met at the positioning feed, at the highest feed
+    // override, stops at or past the probe's limit) make every setting
+    // invalid, and no probing setting changes them: the search then runs with
+    // the positioning feed lowered to the highest that keeps that stop within
+    // the overtravel requirement (as the one-click fix does at 80 %), and the
+    // best settings carry it.
+    Scenario scenario = given;
+    if (touch_count(given.cycle.feature) > 1 &&
+        protected_move_overtravel_mm(given, mm_min_to_mm_s(given.cycle.position_feed_mm_min)) >=
+            given.probe.overtravel_limit_mm) {
+        const std::optional<double> feed = highest_position_feed_mm_min(
+            given, given.cycle.position_feed_mm_min, requirements.max_overtravel_fraction);
+        if (feed && *feed < given.cycle.position_feed_mm_min) {
+            scenario.cycle.position_feed_mm_min = *feed;
+        }
+    }
     const double target = scenario.cycle.target_uncertainty_mm;
     const double bound = target > 0.0 ? target : current.uncertainty_mm;
     result.uncertainty_bound_mm = bound;
-    result.current_meets_requirements =
-        unmet_requirements(scenario, current, fraction, bound).empty();
+    result.current_meets_requirements = unmet_requirements(given, current, fraction, bound).empty();
 
     Optimiser optimiser(scenario, model, fraction);
     const Core core = fastest_rounded(optimiser, scenario, bound, fraction);
     result.best = core.best;
+    result.best.settings.position_feed_mm_min = scenario.cycle.position_feed_mm_min;
     result.saved_s = result.current.cycle_time_s - result.best.cycle_time_s;
     result.binding = binding_requirements(optimiser, scenario, result.best, bound);
 
@@ -883,6 +902,9 @@ OptimiseResult optimise(const Scenario& scenario, const OptimiseRequirements& re
         for (const Candidate& point : points) {
             if (result.pareto.empty() || point.cycle_time_s < result.pareto.back().cycle_time_s)
                 result.pareto.push_back(point);
+        }
+        for (Candidate& point : result.pareto) {
+            point.settings.position_feed_mm_min = scenario.cycle.position_feed_mm_min;
         }
     }
 

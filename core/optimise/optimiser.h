@@ -63,6 +63,11 @@ struct Settings {
     double backoff_mm{0.0};
     double approach_mm{0.0};
     int repeats{1};
+    // A feature's protected positioning moves (issue 28): the optimiser lowers
+    // the scenario's feed where an obstruction met at it (at the highest feed
+    // override) would stop beyond the overtravel requirement. 0: the
+    // scenario's.
+    double position_feed_mm_min{0.0};
 };
 // The scenario with these settings (the rest as it was).
 Scenario with_settings(const Scenario& scenario, const Settings& settings);

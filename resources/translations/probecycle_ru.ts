@@ -3564,6 +3564,10 @@
         <source>Approach distance</source>
         <translation>Расстояние подхода</translation>
     </message>
+    <message>
+        <source>Positioning feed</source>
+        <translation>Подача позиционирования</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>

@@ -3564,6 +3564,10 @@
         <source>Approach distance</source>
         <translation>接近距离</translation>
     </message>
+    <message>
+        <source>Positioning feed</source>
+        <translation>定位进给率</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>

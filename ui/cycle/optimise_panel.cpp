@@ -39,6 +39,7 @@ enum Row {
     row_backoff,
     row_approach,
     row_repeats,
+    row_position_feed,
     row_cycle_time,
     row_uncertainty,
     row_overtravel,
@@ -55,6 +56,7 @@ QStringList column_of(const Candidate& c) {
     out[row_backoff] = two ? format_mm(s.backoff_mm) : QStringLiteral("–");
     out[row_approach] = format_mm(s.approach_mm);
     out[row_repeats] = QLocale().toString(s.repeats);
+    out[row_position_feed] = format_feed(s.position_feed_mm_min);
     out[row_cycle_time] = format_seconds(c.cycle_time_s);
     out[row_uncertainty] = format_length(c.uncertainty_mm);
     out[row_overtravel] = format_mm(c.overtravel_mm);
@@ -364,10 +366,10 @@ void OptimisePanel::retranslate() {
         tr("The optimiser keeps the overtravel at or under this share of the probe's overtravel "
            "limit (80 %: where the cycle starts to warn)."));
     table_->setHorizontalHeaderLabels({tr("Current"), tr("Best")});
-    table_->setVerticalHeaderLabels({tr("Strategy"), tr("Probing feedrate"),
-                                     tr("Measuring feedrate"), tr("Backoff"),
-                                     tr("Approach distance"), tr("Measurements"), tr("Cycle time"),
-                                     tr("Uncertainty (k = 2)"), tr("Overtravel")});
+    table_->setVerticalHeaderLabels(
+        {tr("Strategy"), tr("Probing feedrate"), tr("Measuring feedrate"), tr("Backoff"),
+         tr("Approach distance"), tr("Measurements"), tr("Positioning feed"), tr("Cycle time"),
+         tr("Uncertainty (k = 2)"), tr("Overtravel")});
     apply_->setText(tr("Apply the best settings"));
     apply_->setToolTip(
         tr("Sets strategy, feeds, backoff, start distance and measurements to "

@@ -380,6 +380,39 @@ TEST(Optimiser, WithAveragedRepeatsFindsTheFastestRepeatCount) {
 // v = sqrt((s + p) v_r / t_s) = 17343 mm/min; the overtravel p + v t_s at
 // most half the 1 mm limit caps it first: v = (0.5 - 0.0051)/0.004 =
 // 123.725 mm/s = 7423.5 mm/min, to the editors' digits 7423.
+// Issue 28: a bore on the Fanuc-type machine (lags of 85 ms) at the default
+// 120 % feed override: its protected moves at 3000 mm/min meet an obstruction
+// at 3600 mm/min and stop 5.105 mm past it, over the 5 mm limit, so every
+// setting is invalid and no probing setting changes that. The optimiser
+// lowers the positioning feed to the highest that keeps the stop within its
+// overtravel requirement and says so in the best settings, which run.
+TEST(Optimiser, LowersAPositioningFeedThatWouldOverrunTheStylus) {
+    const Scenario s = scenario_with(
+        {"machine.accel_model=none", "machine.filter=exponential", "machine.filter_time_s=0.032",
+         "machine.servo_time_constant_s=0.033", "machine.controller_latency_s=0.014",
+         "cycle.feature=bore", "cycle.feature_size_mm=40", "cycle.position_feed_mm_min=3000",
+         "cycle.target_uncertainty_mm=0.005"});
+    ASSERT_FALSE(evaluate(s).valid());
+    EXPECT_NEAR(protected_move_overtravel_mm(s, 50.0), 0.005 + 60.0 * 0.085, 1e-9);
+    OptimiseRequirements requirements;
+    requirements.pareto_points = 0;
+    requirements.advice = false;
+    const OptimiseResult r = optimise(s, requirements);
+    EXPECT_FALSE(r.current_meets_requirements);
+    // Under (4 - 0.005) / (1.2 x 0.085) mm/s = 39.167 mm/s, 2350 mm/min, rounded down.
+    EXPECT_EQ(r.best.settings.position_feed_mm_min, 2349.0);
+    EXPECT_LT(protected_move_overtravel_mm(s, mm_min_to_mm_s(2349.0)), 0.8 * 5.0);
+    EXPECT_GT(protected_move_overtravel_mm(s, mm_min_to_mm_s(2351.0)), 0.8 * 5.0);
+    const Scenario best = with_settings(s, r.best.settings);
+    const CycleResult run = evaluate(best);
+    EXPECT_TRUE(run.valid());
+    EXPECT_DOUBLE_EQ(run.total(), r.best.cycle_time_s);
+    // A positioning feed that does not overrun the stylus is left as it is.
+    Scenario safe = s;
+    safe.cycle.position_feed_mm_min = 2000.0;
+    EXPECT_EQ(optimise(safe, requirements).best.settings.position_feed_mm_min, 2000.0);
+}
+
 TEST(Optimiser, HandComputedSingleTouchIsCappedByTheOvertravelFraction) {
     const Scenario s = scenario_with(
         {"machine.accel_model=none", "machine.latched_input=true", "machine.controller_latency_s=0",

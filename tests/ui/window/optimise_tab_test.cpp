@@ -137,7 +137,7 @@ TEST(OptimiseTab, ThePdfReportCarriesTheRecommendation) {
     OptimisePanel* panel = window->optimise_panel();
     ASSERT_TRUE(panel->result().has_value());
     const QList<QStringList> rows = panel->table_rows();
-    ASSERT_EQ(rows.size(), 10);  // header and nine settings
+    ASSERT_EQ(rows.size(), 11);  // header and ten settings (the positioning feed too)
     EXPECT_EQ(rows[0].size(), 3);
 }
 
