@@ -772,38 +772,62 @@ Candidate candidate_of(const Scenario& scenario, const ModelPoint& point) {
     return {settings_of(scenario), point.cycle_time_s, point.uncertainty_mm, point.overtravel_mm};
 }
 
-// The binding requirements of `best` (see OptimiseResult::binding).
+// A requirement is relaxed by this much (10 %) to see whether it binds.
+constexpr double kRelax = 1.1;
+
+// The binding requirements of `best` (see OptimiseResult::binding). Issue 28:
+// binding means that relaxing the requirement makes the best setting faster,
+// so each one that can be relaxed alone (the uncertainty bound, the
+// overtravel fraction, the probe's maximum feed, the part position
+// uncertainty behind the start rule) is checked by optimising again with it
+// relaxed by 10 %. The rapid (which also times the lifts) and the repeat
+// limit (the key's range) are named by where the best setting lies.
 std::vector<Requirement> binding_requirements(Optimiser& optimiser, const Scenario& scenario,
-                                              const Candidate& best, double bound_mm) {
+                                              const CycleModel& model, const Candidate& best,
+                                              double bound_mm, double fraction) {
     std::vector<Requirement> binding;
+    const double faster_than = best.cycle_time_s * (1.0 - 1e-6);
+    const auto faster = [&](Optimiser& other, const Scenario& changed, double bound,
+                            double relaxed_fraction) {
+        try {
+            return fastest_rounded(other, changed, bound, relaxed_fraction).best.cycle_time_s <
+                   faster_than;
+        } catch (const InputError&) {
+            return false;
+        }
+    };
+    const auto faster_with = [&](const Scenario& changed, double relaxed_fraction) {
+        Optimiser other(changed, model, relaxed_fraction);
+        return faster(other, changed, bound_mm, relaxed_fraction);
+    };
+    if (std::isfinite(bound_mm) && faster(optimiser, scenario, bound_mm * kRelax, fraction))
+        binding.push_back(uncertainty_requirement(scenario));
+    if (fraction < kMaxOvertravelFraction &&
+        faster_with(scenario, std::min(kMaxOvertravelFraction, fraction * kRelax)))
+        binding.push_back(Requirement::overtravel_fraction);
+    if (scenario.probe.max_feed_mm_min > 0.0) {
+        Scenario changed = scenario;
+        changed.probe.max_feed_mm_min *= kRelax;
+        if (faster_with(changed, fraction)) binding.push_back(Requirement::probe_max_feed);
+    }
     Search& s = optimiser.search();
     const Settings& b = best.settings;
     const bool two = b.strategy == Strategy::two_touch;
-    // Uncertainty: the fastest setting without it is faster.
-    if (std::isfinite(bound_mm)) {
-        double free_best = kInf;
-        for (const Strategy strategy : {Strategy::single_touch, Strategy::two_touch}) {
-            const Cell& free = optimiser.unconstrained(strategy, 1);
-            if (free.found) free_best = std::min(free_best, free.time_s);
-        }
-        if (free_best < best.cycle_time_s * (1.0 - 1e-6))
-            binding.push_back(uncertainty_requirement(scenario));
-    }
     const double top =
         two ? std::max(b.probe_feed_mm_min, b.measure_feed_mm_min) : b.probe_feed_mm_min;
-    if (on_bound(top, s.overtravel_feed_mm_min()) && s.overtravel_feed_mm_min() < s.cap_mm_min())
-        binding.push_back(Requirement::overtravel_fraction);
-    if (on_bound(top, s.cap_mm_min())) {
-        const bool probe_cap = scenario.probe.max_feed_mm_min > 0.0 &&
-                               scenario.probe.max_feed_mm_min <= scenario.machine.rapid_feed_mm_min;
-        binding.push_back(probe_cap ? Requirement::probe_max_feed : Requirement::machine_rapid);
+    const bool probe_cap = scenario.probe.max_feed_mm_min > 0.0 &&
+                           scenario.probe.max_feed_mm_min <= scenario.machine.rapid_feed_mm_min;
+    if (on_bound(top, s.cap_mm_min()) && !probe_cap) binding.push_back(Requirement::machine_rapid);
+    // The start rule: the part position uncertainty lengthens the start, or
+    // a bore's size caps the feed (not relaxed: the feature is the part's).
+    bool start_binds = false;
+    if (scenario.cycle.part_position_uncertainty_mm > 0.0) {
+        Scenario changed = scenario;
+        changed.cycle.part_position_uncertainty_mm /= kRelax;
+        start_binds = faster_with(changed, fraction);
     }
-    // The start rule binds where the part position uncertainty lengthens the
-    // start the best setting uses, or where a bore's size caps the feed.
-    if ((scenario.cycle.part_position_uncertainty_mm > 0.0 &&
-         b.approach_mm <= s.approach_min_mm(b.probe_feed_mm_min)) ||
-        (on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()) &&
-         s.start_feed_mm_min() < s.cap_mm_min()))
+    if (start_binds || (on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()) &&
+                        s.start_feed_mm_min() < s.cap_mm_min()))
         binding.push_back(Requirement::start_distance);
     if (b.repeats == kMaxRepeats && std::isfinite(bound_mm))
         binding.push_back(Requirement::repeats_limit);
@@ -857,7 +881,7 @@ OptimiseResult optimise(const Scenario& given, const OptimiseRequirements& requi
     result.best = core.best;
     result.best.settings.position_feed_mm_min = scenario.cycle.position_feed_mm_min;
     result.saved_s = result.current.cycle_time_s - result.best.cycle_time_s;
-    result.binding = binding_requirements(optimiser, scenario, result.best, bound);
+    result.binding = binding_requirements(optimiser, scenario, model, result.best, bound, fraction);
 
     const Cycle& c = scenario.cycle;
     if (c.parts_per_year > 0.0) {

@@ -30,8 +30,10 @@ TEST(OptimiseCli, PrintsBestCurrentSavedBindingAndPareto) {
     EXPECT_DOUBLE_EQ(out["saved_s"].get<double>(), out["current"]["cycle_time_s"].get<double>() -
                                                        out["best"]["cycle_time_s"].get<double>());
     EXPECT_LE(out["best"]["uncertainty_mm"].get<double>(), 0.005);  // the example's target
-    EXPECT_TRUE(out["binding"].is_array());
-    EXPECT_EQ(out["binding"][0], "target_uncertainty");
+    // The best setting (a single touch near 3 um) meets the 5 um target with
+    // room to spare: relaxing it would not make the cycle faster, so nothing
+    // the optimiser can name binds (issue 28).
+    EXPECT_EQ(out["binding"], json::array());
     EXPECT_TRUE(out["savings"].is_null());  // parts_per_year 0: not shown
     ASSERT_TRUE(out["pareto"].is_array());
     EXPECT_GE(out["pareto"].size(), 2u);
