@@ -1950,7 +1950,8 @@ TEST(FeedOverride, EveryOvertravelCheckHoldsAtTheHighestOverride) {
     const CycleResult searched = evaluate(two);
     EXPECT_DOUBLE_EQ(searched.first_touch().search_mm, 5.0 + search_beyond_mm(two, fast_ot));
     two.cycle.search_beyond_mm = 2.0;  // past the stop at 100 %, short of 150 %'s
-    w = find_warning(evaluate(two), WarningCode::search_ends_too_soon);
+    const CycleResult short_search = evaluate(two);
+    w = find_warning(short_search, WarningCode::search_ends_too_soon);
     ASSERT_NE(w, nullptr);
     EXPECT_DOUBLE_EQ(w->b, fast_ot);
 }
