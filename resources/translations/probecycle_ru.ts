@@ -3568,6 +3568,14 @@
         <source>Positioning feed</source>
         <translation>Подача позиционирования</translation>
     </message>
+    <message>
+        <source>Target uncertainty</source>
+        <translation>Целевая неопределённость</translation>
+    </message>
+    <message>
+        <source>Current uncertainty</source>
+        <translation>Текущая неопределённость</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>

@@ -3568,6 +3568,14 @@
         <source>Positioning feed</source>
         <translation>定位进给率</translation>
     </message>
+    <message>
+        <source>Target uncertainty</source>
+        <translation>目标不确定度</translation>
+    </message>
+    <message>
+        <source>Current uncertainty</source>
+        <translation>当前不确定度</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>

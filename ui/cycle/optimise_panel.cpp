@@ -147,6 +147,9 @@ OptimisePanel::OptimisePanel(QWidget* parent) : QWidget(parent) {
     pareto_line_ = pareto_->add_line({{}, QColor(0x1f, 0x77, 0xb4), 2.0});
     current_marker_ = pareto_->add_markers({{}, QColor(0x33, 0x33, 0x33), 2.0}, 10.0);
     best_marker_ = pareto_->add_markers({{}, QColor(0xff, 0x7f, 0x0e), 2.0}, 12.0);
+    // The target (or, without one, the current uncertainty) on the chart.
+    bound_rule_ = pareto_->add_rule(
+        {QStringLiteral("t"), QColor(0x0b, 0x2f, 0x6b), 1.5, PlotView::Dash::dotted});
 
     auto* layout = new QHBoxLayout(this);
     auto* left_widget = new QWidget(this);
@@ -289,6 +292,15 @@ QList<QPointF> OptimisePanel::pareto_points() const {
     return pareto_->points(pareto_line_);
 }
 
+QList<QPointF> OptimisePanel::bound_points() const {
+    return pareto_->points(bound_rule_);
+}
+
+QPair<double, double> OptimisePanel::pareto_x_range() const {
+    const PlotView::Range range = pareto_->x_range();
+    return {range.lo, range.hi};
+}
+
 void OptimisePanel::show_result() {
     summary_->setText(saved_text());
     binding_->setText(binding_text());
@@ -305,6 +317,7 @@ void OptimisePanel::show_result() {
         pareto_->set_points(pareto_line_, {});
         pareto_->set_points(current_marker_, {});
         pareto_->set_points(best_marker_, {});
+        pareto_->set_points(bound_rule_, {});
         return;
     }
     const OptimiseResult& r = *result_;
@@ -342,8 +355,13 @@ void OptimisePanel::show_result() {
     pareto_->set_points(pareto_line_, front);
     pareto_->set_points(current_marker_, {current_point});
     pareto_->set_points(best_marker_, {best_point});
+    const QPointF bound_point = shown(r.uncertainty_bound_mm, best_point.y());
+    pareto_->set_points(bound_rule_, {bound_point});
+    pareto_->set_name(bound_rule_, scenario_.cycle.target_uncertainty_mm > 0.0
+                                       ? tr("Target uncertainty")
+                                       : tr("Current uncertainty"));
     QList<QPointF> all = front;
-    all << current_point << best_point;
+    all << current_point << best_point << bound_point;
     double x_lo = all.front().x();
     double x_hi = x_lo;
     double y_lo = all.front().y();

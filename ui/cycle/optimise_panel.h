@@ -54,6 +54,10 @@ class OptimisePanel : public QWidget {
     // (name, current, best), for the PDF report.
     QList<QStringList> table_rows() const;
     QList<QPointF> pareto_points() const;  // (uncertainty µm, cycle time s)
+    // The uncertainty every setting had to meet, a vertical line on the
+    // Pareto chart (issue 28): its x in µm, none before a result.
+    QList<QPointF> bound_points() const;
+    QPair<double, double> pareto_x_range() const;
 
   signals:
     // A requirement that is a scenario key was edited (internal units).
@@ -89,6 +93,7 @@ class OptimisePanel : public QWidget {
     int pareto_line_{-1};
     int current_marker_{-1};
     int best_marker_{-1};
+    int bound_rule_{-1};
 };
 
 }  // namespace probecycle::ui

@@ -51,6 +51,12 @@ TEST(OptimiseTab, ShowsTheCoresAnswerAndAppliesItAsOneUndoableStep) {
     EXPECT_TRUE(panel->saved_text().contains(QStringLiteral("save")))
         << panel->saved_text().toStdString();
     EXPECT_TRUE(panel->binding_text().startsWith(QStringLiteral("What limits it:")));
+    // The target lies on the Pareto chart, a vertical line (issue 28).
+    const QList<QPointF> bound = panel->bound_points();
+    ASSERT_EQ(bound.size(), 1);
+    EXPECT_DOUBLE_EQ(bound[0].x(), 1000.0 * panel->result()->uncertainty_bound_mm);
+    EXPECT_GT(bound[0].x(), panel->pareto_x_range().first);
+    EXPECT_LT(bound[0].x(), panel->pareto_x_range().second);
     // The Pareto front: uncertainty up, time down.
     const QList<QPointF> front = panel->pareto_points();
     ASSERT_GE(front.size(), 3);
