@@ -381,19 +381,9 @@ double protected_move_overtravel_mm(const Scenario& scenario, double feed_mm_s) 
 std::optional<double> highest_position_feed_mm_min(const Scenario& scenario, double upper_mm_min,
                                                    double fraction) {
     const double limit = fraction * scenario.probe.overtravel_limit_mm;
-    const auto under = [&](double feed) {
+    return highest_feed_where(1.0, upper_mm_min, [&](double feed) {
         return protected_move_overtravel_mm(scenario, mm_min_to_mm_s(feed)) < limit;
-    };
-    double lo = 1.0;
-    if (!under(lo)) return std::nullopt;
-    double hi = upper_mm_min;
-    while (hi - lo > 0.05) {  // under the 0.1 mm/min the editors show
-        const double mid = 0.5 * (lo + hi);
-        (under(mid) ? lo : hi) = mid;
-    }
-    const double feed = round_down_to(lo, feed_step_mm_min(lo));
-    if (feed < 1.0 || !under(feed)) return std::nullopt;
-    return feed;
+    });
 }
 
 // domain.md, "One touch": interface response t_i, controller latency t_c and,

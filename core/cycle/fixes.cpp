@@ -50,16 +50,7 @@ std::optional<double> feed_for_overtravel(const Scenario& scenario, double feed_
         evaluate_into(s, r, cache, Detail::summary);
         return r.checked_overtravel_mm() < limit;
     };
-    double lo = std::min(kKneeSearchFrom_mm_min, feed_mm_min);
-    if (!under(lo)) return std::nullopt;
-    double hi = feed_mm_min;
-    while (hi - lo > 0.05) {  // under the 0.1 mm/min the editors show
-        const double mid = 0.5 * (lo + hi);
-        (under(mid) ? lo : hi) = mid;
-    }
-    const double feed = round_feed_down(lo);
-    if (feed <= 0.0 || !under(feed)) return std::nullopt;
-    return feed;
+    return highest_feed_where(std::min(kKneeSearchFrom_mm_min, feed_mm_min), feed_mm_min, under);
 }
 
 std::optional<Scenario> candidate(const Scenario& scenario, const Analysis& analysis,
@@ -141,6 +132,18 @@ std::vector<FixKind> kinds_for(const Warning& warning) {
     return {};
 }
 
+// The numeric keys whose values differ from `before` to `after`, with the
+// new values, in the key table's order.
+std::vector<std::pair<std::string, double>> changed_numbers(const Scenario& before,
+                                                            const Scenario& after) {
+    std::vector<std::pair<std::string, double>> changes;
+    for (const KeyInfo& key : numeric_keys()) {
+        const double value = *get_number(after, key.key);
+        if (value != *get_number(before, key.key)) changes.emplace_back(key.key, value);
+    }
+    return changes;
+}
+
 }  // namespace
 
 bool still_warns(const CycleResult& result, const Warning& warning) {
@@ -159,13 +162,7 @@ std::optional<Fix> fix_for(const Scenario& scenario, const Analysis& analysis,
         std::optional<Scenario> fixed = candidate(scenario, analysis, kind);
         if (!fixed || !validate(*fixed).empty()) continue;
         // A fix that changes nothing fixes nothing.
-        if (fixed->cycle.backoff_mm == scenario.cycle.backoff_mm &&
-            fixed->cycle.probe_feed_mm_min == scenario.cycle.probe_feed_mm_min &&
-            fixed->cycle.approach_mm == scenario.cycle.approach_mm &&
-            fixed->cycle.search_beyond_mm == scenario.cycle.search_beyond_mm &&
-            fixed->cycle.position_feed_mm_min == scenario.cycle.position_feed_mm_min) {
-            continue;
-        }
+        if (changed_numbers(scenario, *fixed).empty()) continue;
         CycleResult result = evaluate(*fixed);
         // The change made the backoff too small (a faster first touch stops
         // farther): the recommended backoff comes with it.
@@ -198,12 +195,7 @@ std::optional<Fix> fix_for(const Scenario& scenario, const Analysis& analysis,
 }
 
 std::vector<std::pair<std::string, double>> fix_changes(const Scenario& scenario, const Fix& fix) {
-    std::vector<std::pair<std::string, double>> changes;
-    for (const KeyInfo& key : numeric_keys()) {
-        const double after = *get_number(fix.scenario, key.key);
-        if (after != *get_number(scenario, key.key)) changes.emplace_back(key.key, after);
-    }
-    return changes;
+    return changed_numbers(scenario, fix.scenario);
 }
 
 }  // namespace probecycle
