@@ -6,6 +6,7 @@
 
 #include "core/common/number_format.h"
 #include "core/common/units.h"
+#include "core/cycle/uncertainty.h"
 
 namespace probecycle {
 
@@ -1376,8 +1377,13 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     r.scan_range_mm_ = scan_range_mm(m, r.trigger_speed_mm_s_);
     // Issue 14: the scan phase and the repeatability are random from touch to
     // touch, so the mean of N touches has 1/sqrt(N) of their uncertainty.
-    r.uncertainty_mm_ = expanded_uncertainty_mm(r.scan_range_mm_, p.repeatability_2sigma_mm) /
-                        std::sqrt(static_cast<double>(repeats));
+    r.trigger_uncertainty_mm_ =
+        expanded_uncertainty_mm(r.scan_range_mm_, p.repeatability_2sigma_mm) /
+        std::sqrt(static_cast<double>(repeats));
+    // Issue 28: the budget's fixed terms (uncertainty.h) join it as the GUM
+    // combines independent terms; its figures are the budget's.
+    r.uncertainty_mm_ = combined_expanded_uncertainty_mm(fixed_expanded_uncertainty_mm(scenario),
+                                                         r.trigger_uncertainty_mm_, 1);
     // domain.md, "Strategies": recommended backoff = overtravel at the fast feed + reseat.
     // Issue 11: measured from the backoff's reference, and the second touch
     // also needs room to reach the measuring feed before it touches.

@@ -235,10 +235,16 @@ class CycleResult {
     int overtravel_touch() const { return overtravel_touch_; }
     double trigger_speed_mm_s() const { return trigger_speed_mm_s_; }  // of the measuring touch
     double scan_range_mm() const { return scan_range_mm_; }
-    // Expanded (k = 2) uncertainty of the measuring touch: uniform scan phase
-    // combined with the probe's repeatability, over sqrt(cycle.repeats) for
-    // the mean of the repeated touches (issue 14).
+    // Expanded (k = 2) uncertainty of the measured point, the whole budget
+    // (issue 28, uncertainty.h): the trigger's part below, combined with the
+    // terms no feed changes (lobing, calibration artefact, machine
+    // repeatability, thermal drift). The target, the optimiser and the
+    // reports take this figure.
     double uncertainty_mm() const { return uncertainty_mm_; }
+    // The trigger's part: uniform scan phase combined with the probe's
+    // repeatability, over sqrt(cycle.repeats) for the mean of the repeated
+    // touches (issue 14).
+    double trigger_uncertainty_mm() const { return trigger_uncertainty_mm_; }
     // The backoff the cycle needs, rounded up to kBackoffStep_mm: the value
     // shown is the value that clears backoff_too_small.
     double recommended_backoff_mm() const { return recommended_backoff_mm_; }
@@ -273,6 +279,7 @@ class CycleResult {
     double trigger_speed_mm_s_{0.0};
     double scan_range_mm_{0.0};
     double uncertainty_mm_{0.0};
+    double trigger_uncertainty_mm_{0.0};
     double recommended_backoff_mm_{0.0};
     TouchResult first_{};
     TouchResult measuring_{};

@@ -11,6 +11,7 @@
 #include "core/common/report_header.h"
 #include "core/common/units.h"
 #include "core/cycle/fixes.h"
+#include "core/cycle/uncertainty.h"
 
 namespace probecycle {
 
@@ -53,6 +54,24 @@ Json touch_json(const TouchResult& touch) {
             {"search_mm", touch.search_mm}};
 }
 
+Json budget_json(const UncertaintyBudget& b) {
+    Json lines = Json::array();
+    for (const BudgetLine& l : b.lines) {
+        lines.push_back({{"term", to_string(l.term)},
+                         {"key", l.key},
+                         {"stated_as", to_string(l.distribution)},
+                         {"value_mm", l.value_mm},
+                         {"divisor", divisor(l.distribution)},
+                         {"averaged", l.averaged},
+                         {"standard_mm", l.standard_mm}});
+    }
+    return {{"coverage_factor", kCoverageFactor},
+            {"repeats", b.repeats},
+            {"lines", std::move(lines)},
+            {"combined_standard_mm", b.combined_standard_mm},
+            {"expanded_mm", b.expanded_mm}};
+}
+
 }  // namespace
 
 std::string evaluation_to_json(const Scenario& scenario, const Analysis& analysis) {
@@ -72,6 +91,9 @@ std::string evaluation_to_json(const Scenario& scenario, const Analysis& analysi
     out["overtravel_touch"] = r.overtravel_touch() == 2 ? "second" : "first";
     out["trigger_speed_mm_min"] = mm_s_to_mm_min(r.trigger_speed_mm_s());
     out["uncertainty_mm"] = r.uncertainty_mm();
+    // Issue 28: the trigger's part of it, and the budget line by line.
+    out["trigger_uncertainty_mm"] = r.trigger_uncertainty_mm();
+    out["uncertainty_budget"] = budget_json(uncertainty_budget(scenario, r.trigger_speed_mm_s()));
     out["scan_range_mm"] = r.scan_range_mm();
     out["recommended_backoff_mm"] = r.recommended_backoff_mm();
     out["knee_feed_mm_min"] =
@@ -214,12 +236,26 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
     row("overtravel_touch", r.overtravel_touch() == 2 ? "second" : "first", "");
     row("trigger_speed_mm_min", csv_feed_mm_min(mm_s_to_mm_min(r.trigger_speed_mm_s())), "mm/min");
     row("uncertainty_mm", csv_length_mm(r.uncertainty_mm()), "mm");
+    row("trigger_uncertainty_mm", csv_length_mm(r.trigger_uncertainty_mm()), "mm");
     row("scan_range_mm", csv_length_mm(r.scan_range_mm()), "mm");
     row("recommended_backoff_mm", csv_length_mm(r.recommended_backoff_mm()), "mm");
     row("knee_feed_mm_min",
         analysis.knee_feed_mm_min ? csv_feed_mm_min(*analysis.knee_feed_mm_min) : std::string(),
         "mm/min");
     row("knee_cycle_time_s", csv_time_s(analysis.knee_cycle_time_s), "s");
+    // Issue 28: the budget behind uncertainty_mm, one line per term.
+    const UncertaintyBudget budget = uncertainty_budget(scenario, r.trigger_speed_mm_s());
+    csv += "\n# uncertainty budget (k = " + csv_exact(kCoverageFactor) + ", repeats " +
+           std::to_string(budget.repeats) +
+           ")\nterm,key,stated_as,value_mm,divisor,averaged,standard_mm\n";
+    for (const BudgetLine& l : budget.lines) {
+        csv += csv_line({to_string(l.term), l.key, to_string(l.distribution),
+                         csv_length_mm(l.value_mm), csv_exact(divisor(l.distribution)),
+                         l.averaged ? "true" : "false", csv_length_mm(l.standard_mm)});
+    }
+    csv += csv_line(
+        {"combined_standard", "", "", "", "", "", csv_length_mm(budget.combined_standard_mm)});
+    csv += csv_line({"expanded", "", "", "", "", "", csv_length_mm(budget.expanded_mm)});
     // touch counts from 1 here (evaluate's JSON counts from 0).
     csv += "\n# phases\ntouch,name,start_s,time_s,distance_mm\n";
     for (const PhaseRecord& p : r.phases()) {

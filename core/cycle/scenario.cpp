@@ -210,6 +210,23 @@ const std::vector<KeyEntry>& key_table() {
                                 "not the travel - the machine still stops late."),
               QT_TRANSLATE_NOOP("Parameter", "Latched (hardware-captured) input"), KeyKind::flag},
              [](Scenario& s) -> bool& { return s.machine.latched_input; }),
+        number({"machine.repeatability_2sigma_mm", "mm", 0.0, 1.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Unidirectional positioning repeatability of the axes, 2 sigma, from the "
+                    "machine's acceptance test (ISO 230-2 states R = 4 sigma: enter R/2). A term "
+                    "of the uncertainty budget: u = value/2, the same for repeated touches."),
+                QT_TRANSLATE_NOOP("Parameter", "Positioning repeatability (2σ)")},
+               PC_NUMBER(machine, repeatability_2sigma_mm)),
+        number({"machine.thermal_drift_mm", "mm", 0.0, 1.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "How far the machine's and the part's temperature may move the measured "
+                    "point between calibration and measurement, ± (measure it: probe an artefact "
+                    "again after the time a batch takes). A term of the uncertainty budget: u = "
+                    "value/√3, the same for repeated touches."),
+                QT_TRANSLATE_NOOP("Parameter", "Thermal drift (±)")},
+               PC_NUMBER(machine, thermal_drift_mm)),
         number({"probe.pretravel_mm", "mm", 0.0, 1.0,
                 QT_TRANSLATE_NOOP(
                     "Parameter",
@@ -229,10 +246,30 @@ const std::vector<KeyEntry>& key_table() {
         number({"probe.repeatability_2sigma_mm", "mm", 0.0, 1.0,
                 QT_TRANSLATE_NOOP(
                     "Parameter",
-                    "Unidirectional repeatability of the probe, 2 sigma. Combined with the "
-                    "scan-period range into the expanded (k = 2) uncertainty."),
+                    "Unidirectional repeatability of the probe, 2 sigma. A term of the "
+                    "uncertainty budget with the scan-period range: u = value/2, averaged "
+                    "over repeated touches."),
                 QT_TRANSLATE_NOOP("Parameter", "Repeatability (2σ)")},
                PC_NUMBER(probe, repeatability_2sigma_mm)),
+        number({"probe.lobing_mm", "mm", 0.0, 1.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Pretravel variation over the directions the cycle probes that calibration "
+                    "leaves, ± (the data sheet's 2D lobing: about 1 µm for a kinematic probe, "
+                    "0.25 µm for a strain-gauge one; 0 when the probe is calibrated in every "
+                    "direction it measures). A term of the uncertainty budget: u = value/√3, the "
+                    "same for repeated touches."),
+                QT_TRANSLATE_NOOP("Parameter", "Lobing (±)")},
+               PC_NUMBER(probe, lobing_mm)),
+        number({"probe.artefact_uncertainty_mm", "mm", 0.0, 1.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Expanded uncertainty (k = 2) of the artefact the probe is calibrated on, "
+                    "from its calibration certificate (a ring gauge's diameter, a gauge block's "
+                    "length). A term of the uncertainty budget: u = value/2, the same for "
+                    "repeated touches."),
+                QT_TRANSLATE_NOOP("Parameter", "Calibration artefact (k = 2)")},
+               PC_NUMBER(probe, artefact_uncertainty_mm)),
         number({"probe.overtravel_limit_mm", "mm", 0.01, 100.0,
                 QT_TRANSLATE_NOOP(
                     "Parameter",
@@ -415,7 +452,8 @@ const std::vector<KeyEntry>& key_table() {
         number({"cycle.target_uncertainty_mm", "mm", 0.0, 10.0,
                 QT_TRANSLATE_NOOP(
                     "Parameter",
-                    "Target for the expanded (k = 2) uncertainty of the measuring touch; a warning "
+                    "Target for the expanded (k = 2) uncertainty of the measured point, the whole "
+                    "budget (the trigger's part and the terms no feed changes); a warning "
                     "appears above it. 0 means no target."),
                 QT_TRANSLATE_NOOP("Parameter", "Target uncertainty")},
                PC_NUMBER(cycle, target_uncertainty_mm)),

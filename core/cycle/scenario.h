@@ -41,12 +41,23 @@ struct Machine {
     double scan_period_s{0.004};
     double controller_latency_s{0.002};
     bool latched_input{false};
+    // Uncertainty budget (issue 28, uncertainty.h): the axes' positioning
+    // repeatability (2 sigma) and the thermal drift between calibration and
+    // measurement (a half-width). Typical of a machining centre in a shop.
+    double repeatability_2sigma_mm{0.002};
+    double thermal_drift_mm{0.002};
 };
 
 struct Probe {
     double pretravel_mm{0.005};
     double interface_delay_s{0.002};
     double repeatability_2sigma_mm{0.001};
+    // Uncertainty budget (issue 28, uncertainty.h): the pretravel variation
+    // over directions left after calibration (a half-width; a kinematic
+    // probe's data sheet gives about 1 µm of 2D lobing), and the calibration
+    // artefact's certified uncertainty (k = 2; a ring gauge's certificate).
+    double lobing_mm{0.001};
+    double artefact_uncertainty_mm{0.001};
     double overtravel_limit_mm{5.0};
     double reseat_mm{0.2};
     // Feed at which the probe was calibrated; 0 = the measuring feed.

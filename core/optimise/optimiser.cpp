@@ -8,6 +8,7 @@
 
 #include "core/common/input_error.h"
 #include "core/common/units.h"
+#include "core/cycle/uncertainty.h"
 
 namespace probecycle {
 
@@ -67,15 +68,17 @@ double approach_max_mm(const Cycle& cycle) {
 }
 
 // The model's uncertainty of N averaged measuring touches at speed v (issue
-// 14): U(v, N) = expanded_uncertainty_mm(scan_range_mm(machine, v), rep) /
-// sqrt(N), solved for the highest measuring feed whose U meets `bound_mm`;
+// 14; issue 28, the budget's fixed terms F): U(v, N)^2 = F^2 +
+// expanded_uncertainty_mm(scan_range_mm(machine, v), rep)^2 / N, solved for
+// the highest measuring feed whose U meets `bound_mm`;
 // kInf when every feed does, a negative value when none does. A first guess
 // only: the search checks the evaluated uncertainty (which, before the model
 // averaged repeats, is not divided by sqrt(N)).
 double closed_form_measure_feed_bound(const Scenario& scenario, int repeats, double bound_mm) {
     if (!std::isfinite(bound_mm)) return kInf;
     const double rep = scenario.probe.repeatability_2sigma_mm;
-    const double slack = bound_mm * bound_mm * repeats - rep * rep;
+    const double fixed = fixed_expanded_uncertainty_mm(scenario);
+    const double slack = (bound_mm * bound_mm - fixed * fixed) * repeats - rep * rep;
     if (slack < 0.0) return -1.0;
     if (scan_range_mm(scenario.machine, 1.0) <= 0.0) return kInf;  // latched or no scan
     // expanded^2 = R^2/3 + rep^2 with R = v * t_s.
@@ -456,11 +459,18 @@ class Optimiser {
     // the exact search over every count costs most, use it.
     std::optional<SearchOutcome> fastest(double bound_mm, int grid = 24, bool unimodal = false) {
         std::optional<SearchOutcome> best;
+        // The fewest repeats whose mean can meet the bound at all (a scan
+        // range of 0): N (bound^2 - F^2) >= rep^2.
         const double rep = search_.base().probe.repeatability_2sigma_mm;
+        const double fixed = fixed_expanded_uncertainty_mm(search_.base());
         int fewest = 1;
         if (std::isfinite(bound_mm) && bound_mm > 0.0) {
+            const double room = bound_mm * bound_mm - fixed * fixed;
+            const double most = search_.max_repeats();
             fewest =
-                std::max(1, static_cast<int>(std::ceil(rep * rep / (bound_mm * bound_mm) - 1e-9)));
+                room > 0.0
+                    ? static_cast<int>(std::clamp(std::ceil(rep * rep / room - 1e-9), 1.0, most))
+                    : search_.max_repeats();
         }
         fewest = std::min(fewest, search_.max_repeats());
         for (const Strategy strategy : {Strategy::single_touch, Strategy::two_touch}) {
@@ -621,17 +631,23 @@ Message impossible_message(Optimiser& optimiser, const Scenario& scenario, doubl
                                     "no setting meets the target uncertainty %1 "
                                     "(cycle.target_uncertainty_mm): the smallest achievable "
                                     "is %2, at %3 and cycle.repeats %4 (the probe's repeatability "
-                                    "is %5)")
+                                    "is %5; the budget's terms no feed changes, lobing, "
+                                    "calibration artefact, machine repeatability and thermal "
+                                    "drift, are %6 together)")
                 : QT_TRANSLATE_NOOP("Optimise",
                                     "no setting meets the current uncertainty %1: the "
                                     "smallest achievable is %2, at %3 and cycle.repeats %4 (the "
-                                    "probe's repeatability is %5)"));
+                                    "probe's repeatability is %5; the budget's terms no feed "
+                                    "changes, lobing, calibration artefact, machine "
+                                    "repeatability and thermal drift, are %6 together)"));
         m.args = {significant_arg("bound_mm", ArgKind::length_mm, bound_mm, 4),
                   significant_arg("smallest_mm", ArgKind::length_mm, smallest, 4),
                   arg("feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min),
                   arg("repeats", ArgKind::integer, s.max_repeats()),
                   significant_arg("repeatability_mm", ArgKind::length_mm,
-                                  scenario.probe.repeatability_2sigma_mm, 4)};
+                                  scenario.probe.repeatability_2sigma_mm, 4),
+                  significant_arg("fixed_mm", ArgKind::length_mm,
+                                  fixed_expanded_uncertainty_mm(scenario), 4)};
         return m;
     }
     return make_message("no_valid_setting", "Optimise",

@@ -684,14 +684,6 @@
         <translation>ни одна настройка не удовлетворяет требованиям: расстояние подхода из неопределённости положения детали %1 и пути разгона даже до %2 (%3) не помещается в элемент «%4» размером %5</translation>
     </message>
     <message>
-        <source>no setting meets the target uncertainty %1 (cycle.target_uncertainty_mm): the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5)</source>
-        <translation>ни одна настройка не достигает целевой неопределённости %1 (cycle.target_uncertainty_mm): наименьшая достижимая %2, при %3 и cycle.repeats %4 (повторяемость щупа %5)</translation>
-    </message>
-    <message>
-        <source>no setting meets the current uncertainty %1: the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5)</source>
-        <translation>ни одна настройка не достигает текущей неопределённости %1: наименьшая достижимая %2, при %3 и cycle.repeats %4 (повторяемость щупа %5)</translation>
-    </message>
-    <message>
         <source>no setting meets every requirement</source>
         <translation>ни одна настройка не удовлетворяет всем требованиям</translation>
     </message>
@@ -706,6 +698,14 @@
     <message>
         <source>the probe&apos;s maximum feed %1 limits the cycle; a probe rated for faster feeds would save %2 a cycle</source>
         <translation>максимальная подача щупа %1 ограничивает цикл; щуп, рассчитанный на бо́льшие подачи, сэкономил бы %2 за цикл</translation>
+    </message>
+    <message>
+        <source>no setting meets the target uncertainty %1 (cycle.target_uncertainty_mm): the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5; the budget&apos;s terms no feed changes, lobing, calibration artefact, machine repeatability and thermal drift, are %6 together)</source>
+        <translation>ни одна настройка не обеспечивает целевую неопределённость %1 (cycle.target_uncertainty_mm): наименьшая достижимая — %2, при %3 и cycle.repeats %4 (повторяемость датчика %5; члены бюджета, не зависящие от подачи, — лепестковость, эталон калибровки, повторяемость станка и температурный дрейф — вместе дают %6)</translation>
+    </message>
+    <message>
+        <source>no setting meets the current uncertainty %1: the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5; the budget&apos;s terms no feed changes, lobing, calibration artefact, machine repeatability and thermal drift, are %6 together)</source>
+        <translation>ни одна настройка не обеспечивает текущую неопределённость %1: наименьшая достижимая — %2, при %3 и cycle.repeats %4 (повторяемость датчика %5; члены бюджета, не зависящие от подачи, — лепестковость, эталон калибровки, повторяемость станка и температурный дрейф — вместе дают %6)</translation>
     </message>
 </context>
 <context>
@@ -791,10 +791,6 @@
         <translation>Повторяемость (2σ)</translation>
     </message>
     <message>
-        <source>Unidirectional repeatability of the probe, 2 sigma. Combined with the scan-period range into the expanded (k = 2) uncertainty.</source>
-        <translation>Однонаправленная повторяемость датчика, 2σ. Вместе с диапазоном периода опроса даёт расширенную неопределённость (k = 2).</translation>
-    </message>
-    <message>
         <source>Overtravel limit</source>
         <translation>Предел перебега</translation>
     </message>
@@ -865,10 +861,6 @@
     <message>
         <source>Target uncertainty</source>
         <translation>Целевая неопределённость</translation>
-    </message>
-    <message>
-        <source>Target for the expanded (k = 2) uncertainty of the measuring touch; a warning appears above it. 0 means no target.</source>
-        <translation>Цель для расширенной неопределённости (k = 2) измерительного касания; при превышении выдаётся предупреждение. 0 — цели нет.</translation>
     </message>
     <message>
         <source>none</source>
@@ -1202,6 +1194,46 @@
         <source>Highest feed override</source>
         <translation>Наибольшая коррекция подачи</translation>
     </message>
+    <message>
+        <source>Unidirectional positioning repeatability of the axes, 2 sigma, from the machine&apos;s acceptance test (ISO 230-2 states R = 4 sigma: enter R/2). A term of the uncertainty budget: u = value/2, the same for repeated touches.</source>
+        <translation>Односторонняя повторяемость позиционирования осей, 2 сигма, из приёмочных испытаний станка (ISO 230-2 даёт R = 4 сигма: введите R/2). Член бюджета неопределённости: u = значение/2, одинаков для повторных касаний.</translation>
+    </message>
+    <message>
+        <source>Positioning repeatability (2σ)</source>
+        <translation>Повторяемость позиционирования (2σ)</translation>
+    </message>
+    <message>
+        <source>How far the machine&apos;s and the part&apos;s temperature may move the measured point between calibration and measurement, ± (measure it: probe an artefact again after the time a batch takes). A term of the uncertainty budget: u = value/√3, the same for repeated touches.</source>
+        <translation>Насколько температура станка и детали может сместить измеряемую точку между калибровкой и измерением, ± (измерьте: повторно промерьте эталон через время обработки партии). Член бюджета неопределённости: u = значение/√3, одинаков для повторных касаний.</translation>
+    </message>
+    <message>
+        <source>Thermal drift (±)</source>
+        <translation>Температурный дрейф (±)</translation>
+    </message>
+    <message>
+        <source>Unidirectional repeatability of the probe, 2 sigma. A term of the uncertainty budget with the scan-period range: u = value/2, averaged over repeated touches.</source>
+        <translation>Односторонняя повторяемость датчика, 2 сигма. Член бюджета неопределённости вместе с разбросом периода опроса: u = значение/2, усредняется по повторным касаниям.</translation>
+    </message>
+    <message>
+        <source>Pretravel variation over the directions the cycle probes that calibration leaves, ± (the data sheet&apos;s 2D lobing: about 1 µm for a kinematic probe, 0.25 µm for a strain-gauge one; 0 when the probe is calibrated in every direction it measures). A term of the uncertainty budget: u = value/√3, the same for repeated touches.</source>
+        <translation>Изменение предхода по направлениям измерения цикла, оставшееся после калибровки, ± (лепестковость 2D из паспорта: около 1 мкм у кинематического датчика, 0,25 мкм у тензометрического; 0, если датчик откалиброван в каждом направлении измерения). Член бюджета неопределённости: u = значение/√3, одинаков для повторных касаний.</translation>
+    </message>
+    <message>
+        <source>Lobing (±)</source>
+        <translation>Лепестковость (±)</translation>
+    </message>
+    <message>
+        <source>Expanded uncertainty (k = 2) of the artefact the probe is calibrated on, from its calibration certificate (a ring gauge&apos;s diameter, a gauge block&apos;s length). A term of the uncertainty budget: u = value/2, the same for repeated touches.</source>
+        <translation>Расширенная неопределённость (k = 2) эталона, на котором калибруется датчик, из его сертификата калибровки (диаметр установочного кольца, длина концевой меры). Член бюджета неопределённости: u = значение/2, одинаков для повторных касаний.</translation>
+    </message>
+    <message>
+        <source>Calibration artefact (k = 2)</source>
+        <translation>Эталон калибровки (k = 2)</translation>
+    </message>
+    <message>
+        <source>Target for the expanded (k = 2) uncertainty of the measured point, the whole budget (the trigger&apos;s part and the terms no feed changes); a warning appears above it. 0 means no target.</source>
+        <translation>Цель для расширенной неопределённости (k = 2) измеряемой точки по всему бюджету (доля срабатывания и члены, не зависящие от подачи); выше неё выдаётся предупреждение. 0 — цели нет.</translation>
+    </message>
 </context>
 <context>
     <name>PdfReport</name>
@@ -1302,6 +1334,78 @@
     <message>
         <source>at %1 and up to %4 % feed override the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed (or cycle.feed_override_max_pct) or check the scenario</source>
         <translation>при %1 и коррекции подачи до %4 % перебег по модели %2 — на пределе щупа %3 или выше: уменьшите подачу (или cycle.feed_override_max_pct) или проверьте сценарий</translation>
+    </message>
+</context>
+<context>
+    <name>UncertaintyBudget</name>
+    <message>
+        <source>Scan wait of the skip input</source>
+        <translation>Ожидание опроса входа пропуска</translation>
+    </message>
+    <message>
+        <source>Probe repeatability</source>
+        <translation>Повторяемость датчика</translation>
+    </message>
+    <message>
+        <source>Probe lobing</source>
+        <translation>Лепестковость датчика</translation>
+    </message>
+    <message>
+        <source>Calibration artefact</source>
+        <translation>Эталон калибровки</translation>
+    </message>
+    <message>
+        <source>Machine positioning repeatability</source>
+        <translation>Повторяемость позиционирования станка</translation>
+    </message>
+    <message>
+        <source>Thermal drift</source>
+        <translation>Температурный дрейф</translation>
+    </message>
+    <message>
+        <source>full range, ÷ √12</source>
+        <translation>полный размах, ÷ √12</translation>
+    </message>
+    <message>
+        <source>± half-width, ÷ √3</source>
+        <translation>± полуширина, ÷ √3</translation>
+    </message>
+    <message>
+        <source>2σ or k = 2, ÷ 2</source>
+        <translation>2σ или k = 2, ÷ 2</translation>
+    </message>
+    <message>
+        <source>%1, mean of %2</source>
+        <extracomment>%1 how the value is stated, %2 the number of repeated touches averaged</extracomment>
+        <translation>%1, среднее из %2</translation>
+    </message>
+    <message>
+        <source>Term</source>
+        <translation>Член бюджета</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Значение</translation>
+    </message>
+    <message>
+        <source>Stated as</source>
+        <translation>Как задан</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty</source>
+        <translation>Стандартная неопределённость</translation>
+    </message>
+    <message>
+        <source>Share</source>
+        <translation>Доля</translation>
+    </message>
+    <message>
+        <source>Combined (root sum of squares)</source>
+        <translation>Суммарная (корень из суммы квадратов)</translation>
+    </message>
+    <message>
+        <source>Expanded uncertainty, k = 2</source>
+        <translation>Расширенная неопределённость, k = 2</translation>
     </message>
 </context>
 <context>
@@ -2622,8 +2726,8 @@
         <translation>&lt;b&gt;Подвод&lt;/b&gt;: от начальной точки до поверхности на подаче поиска. &lt;b&gt;Предход&lt;/b&gt;: наконечник щупа отклоняется, пока датчик не сработает. &lt;b&gt;Задержка интерфейса&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: интерфейс датчика передаёт сигнал дальше. &lt;b&gt;Задержка ЧПУ&lt;/b&gt;: задержка системы ЧПУ t&lt;sub&gt;c&lt;/sub&gt; плюс ожидание, пока она не опросит вход, — от нуля до целого периода опроса t&lt;sub&gt;s&lt;/sub&gt;: время цикла учитывает среднее ожидание t&lt;sub&gt;s&lt;/sub&gt;/2, перебег — худший случай t&lt;sub&gt;s&lt;/sub&gt;. &lt;b&gt;Торможение&lt;/b&gt;: ось тормозит до остановки. Затем при двукратном касании следуют &lt;b&gt;отвод&lt;/b&gt;, повторное медленное касание (фазы &lt;b&gt;2-го&lt;/b&gt; касания) и &lt;b&gt;возврат&lt;/b&gt; в начальную точку; стенка, паз, отверстие или бобышка добавляют &lt;b&gt;позиционирование&lt;/b&gt; от центра к каждому касанию и обратно. Если задано время смены кадра, его добавляет каждое перемещение (&lt;b&gt;смена кадра&lt;/b&gt;).</translation>
     </message>
     <message>
-        <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T), the worst case; on average the axis stops v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 short of it, and a two-touch cycle&apos;s second approach is the backoff less that mean stop. Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). Uncertainty (k = 2) U = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
-        <translation>Перебег = предход + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + тормозной путь (v&amp;middot;T/2 при постоянной времени T), худший случай; в среднем ось останавливается, не доходя до этой точки v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2, и второй подвод двукратного касания равен отводу за вычетом этой средней остановки. Разброс опроса R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 при входе с защёлкой). Неопределённость (k = 2) U = &amp;radic;(R&amp;sup2;/3 + повторяемость&amp;sup2;). Рекомендуемый отвод = перебег первого касания + большее из пути восстановления датчика и пути разгона второго касания до его подачи, с округлением вверх до микрометра. Подсказка каждого параметра говорит, где он входит в модель.</translation>
+        <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T), the worst case; on average the axis stops v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 short of it, and a two-touch cycle&apos;s second approach is the backoff less that mean stop. Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). The trigger&apos;s uncertainty (k = 2) U&lt;sub&gt;t&lt;/sub&gt; = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;), over &amp;radic;N for N repeats; the uncertainty (k = 2) is its budget with the terms no feed changes, U = &amp;radic;(U&lt;sub&gt;t&lt;/sub&gt;&amp;sup2; + 4 (lobing&amp;sup2;/3 + artefact&amp;sup2;/4 + machine repeatability&amp;sup2;/4 + thermal drift&amp;sup2;/3)). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
+        <translation>Перебег = предход + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + тормозной путь (v&amp;middot;T/2 при постоянной времени T), худший случай; в среднем ось останавливается, не доходя до этой точки v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2, и второй подвод двукратного касания равен отводу за вычетом этой средней остановки. Разброс опроса R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 при входе с защёлкой). Неопределённость срабатывания (k = 2) U&lt;sub&gt;t&lt;/sub&gt; = &amp;radic;(R&amp;sup2;/3 + повторяемость&amp;sup2;), делённая на &amp;radic;N при N повторах; неопределённость (k = 2) — её бюджет вместе с членами, не зависящими от подачи: U = &amp;radic;(U&lt;sub&gt;t&lt;/sub&gt;&amp;sup2; + 4 (лепестковость&amp;sup2;/3 + эталон&amp;sup2;/4 + повторяемость станка&amp;sup2;/4 + температурный дрейф&amp;sup2;/3)). Рекомендуемый отвод = перебег первого касания + большее из пути восстановления датчика и пути разгона второго касания до его подачи, с округлением вверх до микрометра. Подсказка каждого параметра говорит, где он входит в модель.</translation>
     </message>
 </context>
 <context>
@@ -3421,6 +3525,10 @@
         <source>drop the positioning feed for the overtravel</source>
         <translation>снизить подачу позиционирования ради перебега</translation>
     </message>
+    <message>
+        <source>Uncertainty budget</source>
+        <translation>Бюджет неопределённости</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>
@@ -3796,10 +3904,6 @@
         <translation>Скорость при срабатывании измерительного касания; ниже запрограммированной, если касание происходит во время разгона.</translation>
     </message>
     <message>
-        <source>Expanded uncertainty of the measuring touch: the scan-period range combined with the probe&apos;s repeatability.</source>
-        <translation>Расширенная неопределённость измерительного касания: диапазон периода опроса вместе с повторяемостью датчика.</translation>
-    </message>
-    <message>
         <source>invalid scenario</source>
         <translation>сценарий недопустим</translation>
     </message>
@@ -3810,10 +3914,6 @@
     <message>
         <source>target %1</source>
         <translation>цель %1</translation>
-    </message>
-    <message>
-        <source>scan range %1</source>
-        <translation>опрос: %1</translation>
     </message>
     <message>
         <source>set %1</source>
@@ -3870,6 +3970,18 @@
     <message>
         <source>%1 % of limit at %2 %</source>
         <translation>%1 % при %2 %</translation>
+    </message>
+    <message>
+        <source>trigger %1</source>
+        <translation>срабатывание %1</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Бюджет неопределённости измерения: стандартная неопределённость каждого члена, сложенная как корень из суммы квадратов и расширенная с k = 2. Члены задаются в разделах «Станок» и «Датчик».&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Expanded (k = 2) uncertainty of the measured point: the trigger&apos;s part (the scan-period range and the probe&apos;s repeatability, averaged over repeats) combined with the probe&apos;s lobing, the calibration artefact, the machine&apos;s repeatability and the thermal drift. The value&apos;s tooltip shows the budget.</source>
+        <translation>Расширенная неопределённость (k = 2) измеряемой точки: доля срабатывания (разброс периода опроса и повторяемость датчика, усреднённые по повторам) вместе с лепестковостью датчика, эталоном калибровки, повторяемостью станка и температурным дрейфом. Подсказка значения показывает бюджет.</translation>
     </message>
 </context>
 <context>

@@ -684,14 +684,6 @@
         <translation>没有满足要求的设置：由零件位置不确定度 %1 加上即使达到 %2 所需距离 (%3) 构成的起始距离放不进尺寸为 %5 的%4</translation>
     </message>
     <message>
-        <source>no setting meets the target uncertainty %1 (cycle.target_uncertainty_mm): the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5)</source>
-        <translation>没有设置能达到目标不确定度 %1 (cycle.target_uncertainty_mm)：可达到的最小值为 %2，在 %3 且 cycle.repeats 为 %4 时（测头重复性为 %5）</translation>
-    </message>
-    <message>
-        <source>no setting meets the current uncertainty %1: the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5)</source>
-        <translation>没有设置能达到当前不确定度 %1：可达到的最小值为 %2，在 %3 且 cycle.repeats 为 %4 时（测头重复性为 %5）</translation>
-    </message>
-    <message>
         <source>no setting meets every requirement</source>
         <translation>没有满足全部要求的设置</translation>
     </message>
@@ -706,6 +698,14 @@
     <message>
         <source>the probe&apos;s maximum feed %1 limits the cycle; a probe rated for faster feeds would save %2 a cycle</source>
         <translation>测头最大进给率 %1 限制了循环；额定进给率更高的测头每个循环可节省 %2</translation>
+    </message>
+    <message>
+        <source>no setting meets the target uncertainty %1 (cycle.target_uncertainty_mm): the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5; the budget&apos;s terms no feed changes, lobing, calibration artefact, machine repeatability and thermal drift, are %6 together)</source>
+        <translation>没有设置能达到目标不确定度 %1 (cycle.target_uncertainty_mm)：可达到的最小值为 %2，在 %3 且 cycle.repeats 为 %4 时（测头重复性为 %5；预算中与进给率无关的各项——各向异性、校准标准器、机床重复性和热漂移——合计为 %6）</translation>
+    </message>
+    <message>
+        <source>no setting meets the current uncertainty %1: the smallest achievable is %2, at %3 and cycle.repeats %4 (the probe&apos;s repeatability is %5; the budget&apos;s terms no feed changes, lobing, calibration artefact, machine repeatability and thermal drift, are %6 together)</source>
+        <translation>没有设置能达到当前不确定度 %1：可达到的最小值为 %2，在 %3 且 cycle.repeats 为 %4 时（测头重复性为 %5；预算中与进给率无关的各项——各向异性、校准标准器、机床重复性和热漂移——合计为 %6）</translation>
     </message>
 </context>
 <context>
@@ -791,10 +791,6 @@
         <translation>重复性 (2σ)</translation>
     </message>
     <message>
-        <source>Unidirectional repeatability of the probe, 2 sigma. Combined with the scan-period range into the expanded (k = 2) uncertainty.</source>
-        <translation>测头的单向重复性 (2σ)。与扫描周期范围合成为扩展不确定度 (k = 2)。</translation>
-    </message>
-    <message>
         <source>Overtravel limit</source>
         <translation>过行程极限</translation>
     </message>
@@ -865,10 +861,6 @@
     <message>
         <source>Target uncertainty</source>
         <translation>目标不确定度</translation>
-    </message>
-    <message>
-        <source>Target for the expanded (k = 2) uncertainty of the measuring touch; a warning appears above it. 0 means no target.</source>
-        <translation>测量触测扩展不确定度 (k = 2) 的目标值；超过时给出警告。0 表示无目标。</translation>
     </message>
     <message>
         <source>none</source>
@@ -1202,6 +1194,46 @@
         <source>Highest feed override</source>
         <translation>最高进给倍率</translation>
     </message>
+    <message>
+        <source>Unidirectional positioning repeatability of the axes, 2 sigma, from the machine&apos;s acceptance test (ISO 230-2 states R = 4 sigma: enter R/2). A term of the uncertainty budget: u = value/2, the same for repeated touches.</source>
+        <translation>各轴的单向定位重复性，2 sigma，取自机床验收检测（ISO 230-2 给出的 R = 4 sigma：请输入 R/2）。不确定度预算的一项：u = 数值/2，重复触测时相同。</translation>
+    </message>
+    <message>
+        <source>Positioning repeatability (2σ)</source>
+        <translation>定位重复性 (2σ)</translation>
+    </message>
+    <message>
+        <source>How far the machine&apos;s and the part&apos;s temperature may move the measured point between calibration and measurement, ± (measure it: probe an artefact again after the time a batch takes). A term of the uncertainty budget: u = value/√3, the same for repeated touches.</source>
+        <translation>在校准与测量之间，机床和工件的温度可能使测量点移动的量，±（实测方法：经过一批工件的加工时间后再次测量标准器）。不确定度预算的一项：u = 数值/√3，重复触测时相同。</translation>
+    </message>
+    <message>
+        <source>Thermal drift (±)</source>
+        <translation>热漂移 (±)</translation>
+    </message>
+    <message>
+        <source>Unidirectional repeatability of the probe, 2 sigma. A term of the uncertainty budget with the scan-period range: u = value/2, averaged over repeated touches.</source>
+        <translation>测头的单向重复性，2 sigma。与扫描周期范围一起构成不确定度预算的一项：u = 数值/2，按重复触测取平均。</translation>
+    </message>
+    <message>
+        <source>Pretravel variation over the directions the cycle probes that calibration leaves, ± (the data sheet&apos;s 2D lobing: about 1 µm for a kinematic probe, 0.25 µm for a strain-gauge one; 0 when the probe is calibrated in every direction it measures). A term of the uncertainty budget: u = value/√3, the same for repeated touches.</source>
+        <translation>校准后在循环测量的各方向上残留的预行程变化，±（数据表中的二维各向异性：机械式测头约 1 µm，应变片式测头约 0.25 µm；测头在每个测量方向上都已校准时为 0）。不确定度预算的一项：u = 数值/√3，重复触测时相同。</translation>
+    </message>
+    <message>
+        <source>Lobing (±)</source>
+        <translation>各向异性 (±)</translation>
+    </message>
+    <message>
+        <source>Expanded uncertainty (k = 2) of the artefact the probe is calibrated on, from its calibration certificate (a ring gauge&apos;s diameter, a gauge block&apos;s length). A term of the uncertainty budget: u = value/2, the same for repeated touches.</source>
+        <translation>测头校准所用标准器的扩展不确定度 (k = 2)，取自其校准证书（环规的直径、量块的长度）。不确定度预算的一项：u = 数值/2，重复触测时相同。</translation>
+    </message>
+    <message>
+        <source>Calibration artefact (k = 2)</source>
+        <translation>校准标准器 (k = 2)</translation>
+    </message>
+    <message>
+        <source>Target for the expanded (k = 2) uncertainty of the measured point, the whole budget (the trigger&apos;s part and the terms no feed changes); a warning appears above it. 0 means no target.</source>
+        <translation>测量点扩展不确定度 (k = 2) 的目标值，针对整个预算（触发部分以及与进给率无关的各项）；超过时给出警告。0 表示无目标。</translation>
+    </message>
 </context>
 <context>
     <name>PdfReport</name>
@@ -1302,6 +1334,78 @@
     <message>
         <source>at %1 and up to %4 % feed override the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed (or cycle.feed_override_max_pct) or check the scenario</source>
         <translation>在 %1 及最高 %4 % 进给倍率下，模型的过行程为 %2，达到或超过测头极限 %3：请降低进给（或 cycle.feed_override_max_pct）或检查场景</translation>
+    </message>
+</context>
+<context>
+    <name>UncertaintyBudget</name>
+    <message>
+        <source>Scan wait of the skip input</source>
+        <translation>跳跃输入的扫描等待</translation>
+    </message>
+    <message>
+        <source>Probe repeatability</source>
+        <translation>测头重复性</translation>
+    </message>
+    <message>
+        <source>Probe lobing</source>
+        <translation>测头各向异性</translation>
+    </message>
+    <message>
+        <source>Calibration artefact</source>
+        <translation>校准标准器</translation>
+    </message>
+    <message>
+        <source>Machine positioning repeatability</source>
+        <translation>机床定位重复性</translation>
+    </message>
+    <message>
+        <source>Thermal drift</source>
+        <translation>热漂移</translation>
+    </message>
+    <message>
+        <source>full range, ÷ √12</source>
+        <translation>全范围，÷ √12</translation>
+    </message>
+    <message>
+        <source>± half-width, ÷ √3</source>
+        <translation>± 半宽，÷ √3</translation>
+    </message>
+    <message>
+        <source>2σ or k = 2, ÷ 2</source>
+        <translation>2σ 或 k = 2，÷ 2</translation>
+    </message>
+    <message>
+        <source>%1, mean of %2</source>
+        <extracomment>%1 how the value is stated, %2 the number of repeated touches averaged</extracomment>
+        <translation>%1，%2 次平均</translation>
+    </message>
+    <message>
+        <source>Term</source>
+        <translation>预算项</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Stated as</source>
+        <translation>给定方式</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty</source>
+        <translation>标准不确定度</translation>
+    </message>
+    <message>
+        <source>Share</source>
+        <translation>占比</translation>
+    </message>
+    <message>
+        <source>Combined (root sum of squares)</source>
+        <translation>合成（平方和的平方根）</translation>
+    </message>
+    <message>
+        <source>Expanded uncertainty, k = 2</source>
+        <translation>扩展不确定度，k = 2</translation>
     </message>
 </context>
 <context>
@@ -2622,8 +2726,8 @@
         <translation>&lt;b&gt;接近&lt;/b&gt;：以探测进给率从起始位置到表面。&lt;b&gt;预行程&lt;/b&gt;：测针偏转直到测头触发。&lt;b&gt;接口延迟&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;：测头接口传出信号。&lt;b&gt;控制器延迟&lt;/b&gt;：数控系统的延迟 t&lt;sub&gt;c&lt;/sub&gt;，加上等待系统扫描输入的时间，从零到一个完整的扫描周期 t&lt;sub&gt;s&lt;/sub&gt; 不等：循环时间取平均等待 t&lt;sub&gt;s&lt;/sub&gt;/2，过行程取最坏情况 t&lt;sub&gt;s&lt;/sub&gt;。&lt;b&gt;减速&lt;/b&gt;：轴制动到停止。二次触发随后&lt;b&gt;回退&lt;/b&gt;，再慢速触测一次（&lt;b&gt;第二次&lt;/b&gt;各阶段），然后&lt;b&gt;返回&lt;/b&gt;起始位置；凸台、槽、孔或圆柱还有从中心到每次触测处并返回的&lt;b&gt;定位&lt;/b&gt;移动。设置了程序段切换时间时，每次移动都加上这一时间（&lt;b&gt;程序段切换&lt;/b&gt;）。</translation>
     </message>
     <message>
-        <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T), the worst case; on average the axis stops v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 short of it, and a two-touch cycle&apos;s second approach is the backoff less that mean stop. Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). Uncertainty (k = 2) U = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
-        <translation>过行程 = 预行程 + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + 制动距离（时间常数为 T 时为 v&amp;middot;T/2），这是最坏情况；平均而言，轴比它少走 v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 就停止，二次触发的第二次接近等于回退距离减去这一平均停止距离。扫描范围 R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;（锁存输入时为 0）。不确定度（k = 2）U = &amp;radic;(R&amp;sup2;/3 + 重复性&amp;sup2;)。推荐回退距离 = 第一次触测的过行程 + 测头复位距离与第二次触测加速到其进给率所需距离中的较大者，向上取整到微米。每个参数的提示说明它在模型中的作用。</translation>
+        <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T), the worst case; on average the axis stops v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 short of it, and a two-touch cycle&apos;s second approach is the backoff less that mean stop. Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). The trigger&apos;s uncertainty (k = 2) U&lt;sub&gt;t&lt;/sub&gt; = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;), over &amp;radic;N for N repeats; the uncertainty (k = 2) is its budget with the terms no feed changes, U = &amp;radic;(U&lt;sub&gt;t&lt;/sub&gt;&amp;sup2; + 4 (lobing&amp;sup2;/3 + artefact&amp;sup2;/4 + machine repeatability&amp;sup2;/4 + thermal drift&amp;sup2;/3)). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
+        <translation>过行程 = 预行程 + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + 制动距离（时间常数为 T 时为 v&amp;middot;T/2），这是最坏情况；平均而言，轴比它少走 v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 就停止，二次触发的第二次接近等于回退距离减去这一平均停止距离。扫描范围 R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;（锁存输入时为 0）。触发不确定度（k = 2）U&lt;sub&gt;t&lt;/sub&gt; = &amp;radic;(R&amp;sup2;/3 + 重复性&amp;sup2;)，N 次重复时除以 &amp;radic;N；不确定度（k = 2）是它与不随进给率变化的各项组成的预算：U = &amp;radic;(U&lt;sub&gt;t&lt;/sub&gt;&amp;sup2; + 4 (各向异性&amp;sup2;/3 + 标准器&amp;sup2;/4 + 机床重复性&amp;sup2;/4 + 热漂移&amp;sup2;/3))。推荐回退距离 = 第一次触测的过行程 + 测头复位距离与第二次触测加速到其进给率所需距离中的较大者，向上取整到微米。每个参数的提示说明它在模型中的作用。</translation>
     </message>
 </context>
 <context>
@@ -3421,6 +3525,10 @@
         <source>drop the positioning feed for the overtravel</source>
         <translation>为过行程降低定位进给率</translation>
     </message>
+    <message>
+        <source>Uncertainty budget</source>
+        <translation>不确定度预算</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>
@@ -3796,10 +3904,6 @@
         <translation>测量触测触发时的速度；如果在加速过程中触测，则低于编程值。</translation>
     </message>
     <message>
-        <source>Expanded uncertainty of the measuring touch: the scan-period range combined with the probe&apos;s repeatability.</source>
-        <translation>测量触测的扩展不确定度：扫描周期范围与测头重复性的合成。</translation>
-    </message>
-    <message>
         <source>invalid scenario</source>
         <translation>场景无效</translation>
     </message>
@@ -3810,10 +3914,6 @@
     <message>
         <source>target %1</source>
         <translation>目标 %1</translation>
-    </message>
-    <message>
-        <source>scan range %1</source>
-        <translation>扫描范围 %1</translation>
     </message>
     <message>
         <source>set %1</source>
@@ -3870,6 +3970,18 @@
     <message>
         <source>%1 % of limit at %2 %</source>
         <translation>%1 %（倍率 %2 %）</translation>
+    </message>
+    <message>
+        <source>trigger %1</source>
+        <translation>触发 %1</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;测量的不确定度预算：各项的标准不确定度按平方和的平方根合成，并以 k = 2 扩展。各项在“机床”和“测头”中设置。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Expanded (k = 2) uncertainty of the measured point: the trigger&apos;s part (the scan-period range and the probe&apos;s repeatability, averaged over repeats) combined with the probe&apos;s lobing, the calibration artefact, the machine&apos;s repeatability and the thermal drift. The value&apos;s tooltip shows the budget.</source>
+        <translation>测量点的扩展不确定度 (k = 2)：触发部分（扫描周期范围和测头重复性，按重复次数取平均）与测头各向异性、校准标准器、机床重复性和热漂移合成。数值的提示显示预算。</translation>
     </message>
 </context>
 <context>

@@ -241,8 +241,18 @@ TEST_F(CycleCli, EvaluateSingleTouchFileMatchesTheHandComputation) {
     EXPECT_NEAR(j["cycle_time_s"].get<double>(), total, 1e-6 * total);
     EXPECT_NEAR(j["overtravel_mm"].get<double>(), 1.905, 1e-6);
     EXPECT_NEAR(j["trigger_speed_mm_min"].get<double>(), 3000.0, 1e-6);
-    EXPECT_NEAR(j["uncertainty_mm"].get<double>(),
+    EXPECT_NEAR(j["trigger_uncertainty_mm"].get<double>(),
                 2.0 * std::sqrt(0.2 * 0.2 / 12.0 + 0.001 * 0.001 / 4.0), 1e-7);
+    // Issue 28: with the budget's fixed terms at their defaults (lobing +-1 um,
+    // artefact 1 um k = 2, machine 2 um 2 sigma, thermal +-2 um).
+    const double fixed_u2 = 1e-6 * (1.0 / 3.0 + 0.25 + 1.0 + 4.0 / 3.0);
+    EXPECT_NEAR(j["uncertainty_mm"].get<double>(),
+                2.0 * std::sqrt(0.2 * 0.2 / 12.0 + 0.001 * 0.001 / 4.0 + fixed_u2), 1e-7);
+    const json& budget = j["uncertainty_budget"];
+    ASSERT_EQ(budget["lines"].size(), 6u);
+    EXPECT_EQ(budget["lines"][5]["key"], "machine.thermal_drift_mm");
+    EXPECT_NEAR(budget["lines"][5]["standard_mm"].get<double>(), 0.002 / std::sqrt(3.0), 1e-12);
+    EXPECT_NEAR(budget["expanded_mm"].get<double>(), j["uncertainty_mm"].get<double>(), 1e-15);
     // Issue 28: the same touch at the default 120 % feed override, 3600 mm/min,
     // stops 0.005 + 60 x 0.038 = 2.285 mm past: the checks and the
     // recommended backoff take that (2.285 + 0.2 reseat).
@@ -278,13 +288,13 @@ TEST_F(CycleCli, SetOverridesTheFileInOrder) {
     const json j480 = run_json({"evaluate", file, "--set", "cycle.probe_feed_mm_min=480"});
     EXPECT_NEAR(j480["trigger_speed_mm_min"].get<double>(), 480.0, 1e-6);
     // 480 mm/min = 8 mm/s, 4 ms scan: a 0.032 mm range.
-    EXPECT_NEAR(j480["uncertainty_mm"].get<double>(),
+    EXPECT_NEAR(j480["trigger_uncertainty_mm"].get<double>(),
                 2.0 * std::sqrt(0.032 * 0.032 / 12.0 + 0.001 * 0.001 / 4.0), 1e-7);
     const json last = run_json({"evaluate", file, "--set", "cycle.probe_feed_mm_min=480", "--set",
                                 "cycle.probe_feed_mm_min=600"});
     EXPECT_NEAR(last["trigger_speed_mm_min"].get<double>(), 600.0, 1e-6);
     const json latched = run_json({"evaluate", file, "--set", "machine.latched_input=true"});
-    EXPECT_NEAR(latched["uncertainty_mm"].get<double>(), 0.001, 1e-9);
+    EXPECT_NEAR(latched["trigger_uncertainty_mm"].get<double>(), 0.001, 1e-9);
     const json two = run_json({"evaluate", file, "--set", "cycle.strategy=two_touch"});
     EXPECT_EQ(phase_names(two).size(), 12u);
     const json over = run_json({"evaluate", file, "--set", "probe.overtravel_limit_mm=1.905"});

@@ -32,7 +32,9 @@ TEST(MachineCli, PrintsEveryMachineKeyOfTheMillInMillimetres) {
               "    \"rapid_feed_mm_min\": 6000.0,\n"
               "    \"scan_period_s\": 0.001,\n"
               "    \"controller_latency_s\": 0.002,\n"
-              "    \"latched_input\": false\n"
+              "    \"latched_input\": false,\n"
+              "    \"repeatability_2sigma_mm\": 0.002,\n"
+              "    \"thermal_drift_mm\": 0.002\n"
               "  }\n"
               "}\n");
 }

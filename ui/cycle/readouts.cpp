@@ -11,6 +11,7 @@
 #include "core/common/units.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/text_format.h"
+#include "ui/cycle/uncertainty_table.h"
 
 namespace probecycle::ui {
 
@@ -111,8 +112,10 @@ void Readouts::retranslate() {
         tr("Speed when the measuring touch triggers; lower than programmed "
            "if the touch happens while accelerating."));
     cards_[3].title->setToolTip(
-        tr("Expanded uncertainty of the measuring touch: the scan-period "
-           "range combined with the probe's repeatability."));
+        tr("Expanded (k = 2) uncertainty of the measured point: the trigger's part (the "
+           "scan-period range and the probe's repeatability, averaged over repeats) combined "
+           "with the probe's lobing, the calibration artefact, the machine's repeatability and "
+           "the thermal drift. The value's tooltip shows the budget."));
     cards_[4].title->setToolTip(
         tr("Two-touch: from the backoff's reference (where the probe stopped, or the recorded "
            "trigger position) the larger of the reseat distance and the distance to reach the "
@@ -235,8 +238,17 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
     const double target = s.cycle.target_uncertainty_mm;
     now[3] = r.uncertainty_mm();
     cards_[3].value->setText(format_length(r.uncertainty_mm()));
+    // Issue 28: the figure is the whole budget; the detail names the
+    // trigger's part of it, the tooltip shows the budget line by line.
     detail[3] = target > 0.0 ? tr("target %1").arg(format_length(target))
-                             : tr("scan range %1").arg(format_length(r.scan_range_mm()));
+                             : tr("trigger %1").arg(format_length(r.trigger_uncertainty_mm()));
+    const QString budget =
+        tr("<p>The measurement's uncertainty budget: each term's standard uncertainty, combined "
+           "as the root sum of squares and expanded with k = 2. Set the terms under Machine and "
+           "Probe.</p>") +
+        rows_to_html_table(uncertainty_budget_rows(s, r));
+    cards_[3].value->setToolTip(budget);
+    cards_[3].detail->setToolTip(budget);
     set_alert(cards_[3], alert_for(r, WarningCode::uncertainty_over_target));
 
     // Recommended backoff

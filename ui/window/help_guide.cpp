@@ -46,8 +46,11 @@ QString help_guide_html(const QString& readme_path) {
             "t<sub>s</sub>) + the braking distance (v&middot;T/2 with a time constant T), the "
             "worst case; on average the axis stops v &middot; t<sub>s</sub>/2 short of it, and "
             "a two-touch cycle's second approach is the backoff less that mean stop. "
-            "Scan range R = v &middot; t<sub>s</sub> (0 with a latched input). Uncertainty "
-            "(k = 2) U = &radic;(R&sup2;/3 + repeatability&sup2;). Recommended backoff = the "
+            "Scan range R = v &middot; t<sub>s</sub> (0 with a latched input). The trigger's "
+            "uncertainty (k = 2) U<sub>t</sub> = &radic;(R&sup2;/3 + repeatability&sup2;), over "
+            "&radic;N for N repeats; the uncertainty (k = 2) is its budget with the terms no "
+            "feed changes, U = &radic;(U<sub>t</sub>&sup2; + 4 (lobing&sup2;/3 + artefact&sup2;/4 "
+            "+ machine repeatability&sup2;/4 + thermal drift&sup2;/3)). Recommended backoff = the "
             "first touch's overtravel + the larger of the reseat distance and the distance the "
             "second touch needs to reach its feed, rounded up to the micrometre. The tooltip "
             "of every parameter says where it enters."));

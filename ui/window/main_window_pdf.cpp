@@ -15,6 +15,7 @@
 #include "ui/common/text_format.h"
 #include "ui/comparison/comparison_tab.h"
 #include "ui/cycle/optimise_panel.h"
+#include "ui/cycle/uncertainty_table.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
 #include "ui/window/main_window.h"
@@ -154,6 +155,9 @@ QByteArray MainWindow::pdf_report_bytes() {
                         readouts_->detail_text(readout)});
     }
     report.add_table(results);
+    // Issue 28: what the uncertainty holds.
+    report.add_heading(tr("Uncertainty budget"));
+    report.add_table(uncertainty_budget_rows(scenario_, computed().cycle()));
     report.add_image(charts_image(kChartsWidth));
 
     report.add_heading(tr("Warnings and what to change"));

@@ -346,7 +346,8 @@ TEST(SingleTouch, SurfaceAt3000PhaseByPhase) {
     EXPECT_NEAR(r.first_touch().react_speed_mm_s, 50.0, 1e-12);
     EXPECT_NEAR(r.first_touch().programmed_feed_mm_s, 50.0, 1e-12);
     EXPECT_NEAR(r.scan_range_mm(), 0.2, 1e-12);  // domain.md: 3000 mm/min, 4 ms
-    EXPECT_NEAR(r.uncertainty_mm(), 2.0 * std::sqrt(0.04 / 12.0 + 0.001 * 0.001 / 4.0), 1e-12);
+    EXPECT_NEAR(r.trigger_uncertainty_mm(), 2.0 * std::sqrt(0.04 / 12.0 + 0.001 * 0.001 / 4.0),
+                1e-12);
     EXPECT_NEAR(r.recommended_backoff_mm(), 1.905 + 0.2, 1e-12);
     EXPECT_NEAR(r.phase_time(Phase::approach), 0.13, 1e-12);
     EXPECT_EQ(r.phase_time(Phase::backoff), 0.0);
@@ -385,8 +386,8 @@ TEST(TwoTouch, SurfaceAt3000Then30PhaseByPhase) {
     EXPECT_NEAR(r.trigger_speed_mm_s(), 0.5, 1e-12);
     EXPECT_NEAR(r.measuring_touch().touch_speed_mm_s, 0.5, 1e-12);
     EXPECT_NEAR(r.scan_range_mm(), 0.002, 1e-12);
-    EXPECT_NEAR(r.uncertainty_mm(), 2.0 * std::sqrt(0.002 * 0.002 / 12.0 + 0.001 * 0.001 / 4.0),
-                1e-12);
+    EXPECT_NEAR(r.trigger_uncertainty_mm(),
+                2.0 * std::sqrt(0.002 * 0.002 / 12.0 + 0.001 * 0.001 / 4.0), 1e-12);
     EXPECT_NEAR(r.recommended_backoff_mm(), 2.105, 1e-12);
     // The backoff move is no faster than a rest-to-rest move at rapid.
     const PhaseRecord* backoff = find_phase(r, Phase::backoff);
@@ -501,7 +502,7 @@ TEST(Cycle, LatchedInputRemovesTheScanFromTheMeasurementNotFromTheTravel) {
     s.machine.latched_input = true;
     const CycleResult latched = evaluate(s);
     EXPECT_EQ(latched.scan_range_mm(), 0.0);
-    EXPECT_NEAR(latched.uncertainty_mm(), s.probe.repeatability_2sigma_mm, 1e-15);
+    EXPECT_NEAR(latched.trigger_uncertainty_mm(), s.probe.repeatability_2sigma_mm, 1e-15);
     EXPECT_NEAR(latched.overtravel_mm(), scanned.overtravel_mm(), 1e-12);
     EXPECT_NEAR(latched.total(), scanned.total(), 1e-12);
 }
@@ -515,7 +516,7 @@ TEST(Cycle, ZeroDelaysAndPretravelLeaveOnlyTheStop) {
     s.probe.repeatability_2sigma_mm = 0.0;
     const CycleResult r = evaluate(s);
     EXPECT_NEAR(r.overtravel_mm(), 1.5, 1e-12);  // v * T / 2
-    EXPECT_EQ(r.uncertainty_mm(), 0.0);
+    EXPECT_EQ(r.trigger_uncertainty_mm(), 0.0);
     double sum = 0.0;
     for (const PhaseRecord& p : r.phases()) {
         EXPECT_TRUE(std::isfinite(p.time_s));
@@ -1062,7 +1063,8 @@ TEST(Repeats, SingleTouchReturnsToTheStartAndTouchesAgain) {
     EXPECT_NEAR(thrice.phase_time(Phase::approach), 3.0 * once.phase_time(Phase::approach),
                 rel_tol(3.0 * once.phase_time(Phase::approach)));
     // The mean of three: the random parts over sqrt(3); the travel as before.
-    EXPECT_NEAR(thrice.uncertainty_mm(), once.uncertainty_mm() / std::sqrt(3.0), 1e-15);
+    EXPECT_NEAR(thrice.trigger_uncertainty_mm(), once.trigger_uncertainty_mm() / std::sqrt(3.0),
+                1e-15);
     EXPECT_EQ(thrice.overtravel_mm(), once.overtravel_mm());
     EXPECT_EQ(thrice.scan_range_mm(), once.scan_range_mm());
 }
@@ -1109,7 +1111,7 @@ TEST(Repeats, TwoTouchBacksOffFromTheMeasuringTouchAndMeasuresAgain) {
     double sum = 0.0;
     for (const PhaseRecord& p : r.phases()) sum += p.time_s;
     EXPECT_NEAR(r.total(), sum, rel_tol(sum, 1e-12));
-    EXPECT_NEAR(r.uncertainty_mm(), once.uncertainty_mm() / std::sqrt(3.0), 1e-15);
+    EXPECT_NEAR(r.trigger_uncertainty_mm(), once.trigger_uncertainty_mm() / std::sqrt(3.0), 1e-15);
     EXPECT_GT(r.total(), once.total());
 }
 
@@ -1591,9 +1593,9 @@ TEST_F(RandomCycles, SecondTouchAndReturn) {
             s.machine.latched_input ? 0.0 : m.trigger_speed_mm_s * s.machine.scan_period_s;
         EXPECT_NEAR(r.trigger_speed_mm_s(), m.trigger_speed_mm_s, 1e-15);
         EXPECT_NEAR(r.scan_range_mm(), range, rel_tol(range));
-        EXPECT_NEAR(r.uncertainty_mm(),
+        EXPECT_NEAR(r.trigger_uncertainty_mm(),
                     expanded_uncertainty_mm(range, s.probe.repeatability_2sigma_mm),
-                    rel_tol(r.uncertainty_mm()));
+                    rel_tol(r.trigger_uncertainty_mm()));
         if (s.cycle.strategy == Strategy::single_touch) {
             EXPECT_NEAR(m.overtravel_mm, r.first_touch().overtravel_mm, 1e-15);
             EXPECT_NEAR(m.trigger_speed_mm_s, r.first_touch().trigger_speed_mm_s, 1e-15);

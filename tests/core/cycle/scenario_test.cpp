@@ -109,9 +109,13 @@ const std::vector<std::string> kNumericKeys = {
     "machine.block_change_s",
     "machine.scan_period_s",
     "machine.controller_latency_s",
+    "machine.repeatability_2sigma_mm",
+    "machine.thermal_drift_mm",
     "probe.pretravel_mm",
     "probe.interface_delay_s",
     "probe.repeatability_2sigma_mm",
+    "probe.lobing_mm",
+    "probe.artefact_uncertainty_mm",
     "probe.overtravel_limit_mm",
     "probe.reseat_mm",
     "probe.calibration_feed_mm_min",
@@ -290,10 +294,11 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
          {"accel_model", "time_constant_s", "max_accel_mm_s2", "max_jerk_mm_s3", "filter",
           "filter_time_s", "filter2_time_s", "servo_time_constant_s", "in_position_mm",
           "block_change_s", "rapid_feed_mm_min", "scan_period_s", "controller_latency_s",
-          "latched_input"}},
+          "latched_input", "repeatability_2sigma_mm", "thermal_drift_mm"}},
         {"probe",
-         {"pretravel_mm", "interface_delay_s", "repeatability_2sigma_mm", "overtravel_limit_mm",
-          "reseat_mm", "calibration_feed_mm_min", "max_feed_mm_min"}},
+         {"pretravel_mm", "interface_delay_s", "repeatability_2sigma_mm", "lobing_mm",
+          "artefact_uncertainty_mm", "overtravel_limit_mm", "reseat_mm", "calibration_feed_mm_min",
+          "max_feed_mm_min"}},
         {"cycle",
          {"strategy",
           "feature",
@@ -677,7 +682,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 41u);
+    ASSERT_EQ(scenario_keys().size(), 45u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);

@@ -27,7 +27,7 @@ Scenario bore() {
     s.cycle.feature = Feature::bore;
     s.cycle.probe_feed_mm_min = 3000.0;
     s.cycle.backoff_mm = 3.0;
-    s.cycle.target_uncertainty_mm = 0.005;
+    s.cycle.target_uncertainty_mm = 0.004;
     return s;
 }
 
@@ -96,17 +96,17 @@ TEST(OptimiseTab, ARequirementIsAnUndoableEditAndOptimisesAgain) {
     auto* target = panel->findChild<QDoubleSpinBox*>(
         QStringLiteral("optimise-spin:cycle.target_uncertainty_mm"));
     ASSERT_NE(target, nullptr);
-    EXPECT_DOUBLE_EQ(target->value(), 5.0);  // shown in µm
-    target->setValue(2.0);
+    EXPECT_DOUBLE_EQ(target->value(), 4.0);  // shown in µm
+    target->setValue(3.6);
     QCoreApplication::processEvents();
     window->recompute_now();
-    EXPECT_DOUBLE_EQ(window->scenario().cycle.target_uncertainty_mm, 0.002);
+    EXPECT_DOUBLE_EQ(window->scenario().cycle.target_uncertainty_mm, 0.0036);
     EXPECT_GT(panel->optimise_count(), runs);
     ASSERT_TRUE(panel->result().has_value());
-    EXPECT_LE(panel->result()->best.uncertainty_mm, 0.002 + 1e-12);
+    EXPECT_LE(panel->result()->best.uncertainty_mm, 0.0036 + 1e-12);
     window->undo_stack()->undo();
     window->recompute_now();
-    EXPECT_DOUBLE_EQ(window->scenario().cycle.target_uncertainty_mm, 0.005);
+    EXPECT_DOUBLE_EQ(window->scenario().cycle.target_uncertainty_mm, 0.004);
 
     // The overtravel allowed is the session's: it changes the answer, not the scenario.
     auto* fraction =

@@ -14,10 +14,12 @@
 #include <QTemporaryDir>
 #include <memory>
 
+#include "core/cycle/cycle.h"
 #include "core/cycle/scenario.h"
 #include "tests/ui/window/test_window.h"
 #include "ui/common/language.h"
 #include "ui/cycle/optimise_panel.h"
+#include "ui/cycle/uncertainty_table.h"
 #include "ui/lab/latency_tab.h"
 #include "ui/window/main_window.h"
 
@@ -100,6 +102,16 @@ TEST(PdfReport, TheCycleReportHasTheResultsTheWarningsTheirFixesAndEveryInput) {
         has(window->readout_text(r));
         has(window->readout_detail(r).section(QLatin1Char('\n'), 0, 0));
     }
+    // Issue 28: the uncertainty budget, each term and the expanded figure
+    // the readout shows.
+    has(QStringLiteral("Uncertainty budget"));
+    for (const QStringList& row :
+         uncertainty_budget_rows(window->scenario(), evaluate(window->scenario()))) {
+        has(row[0]);
+        if (row.size() > 3 && !row[3].isEmpty()) has(row[3]);
+    }
+    has(QStringLiteral("Expanded uncertainty, k = 2 ") +
+        window->readout_text(Readout::uncertainty));
     // Every warning, errors first, with its one-click fix.
     const QStringList warnings = window->warning_texts();
     ASSERT_GE(warnings.size(), 3);
