@@ -349,7 +349,7 @@ const std::vector<KeyEntry>& key_table() {
                     "How far the surface may lie from its nominal position (a casting, a part "
                     "clamped by hand). The start distance must cover it plus the distance to "
                     "reach the probing feed, so the touch is at full feed wherever the part "
-                    "lies. 0 means a known part."),
+                    "lies. 0 means a known part: its surface is where the drawing puts it."),
                 QT_TRANSLATE_NOOP("Parameter", "Part position uncertainty")},
                PC_NUMBER(cycle, part_position_uncertainty_mm)),
         number({"cycle.search_beyond_mm", "mm", 0.0, 100.0,
@@ -457,6 +457,22 @@ const std::vector<KeyEntry>& key_table() {
                     "appears above it. 0 means no target."),
                 QT_TRANSLATE_NOOP("Parameter", "Target uncertainty")},
                PC_NUMBER(cycle, target_uncertainty_mm)),
+        number({"cycle.min_start_mm", "mm", 0.0, 100.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "The shortest start distance the optimiser proposes: no touch starts closer "
+                    "to its nominal surface, whatever the part position uncertainty and the feed "
+                    "allow. 0 means no minimum."),
+                QT_TRANSLATE_NOOP("Parameter", "Shortest approach")},
+               PC_NUMBER(cycle, min_start_mm)),
+        number({"cycle.min_feed_mm_min", "mm/min", 1.0, 1000.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "The slowest probing or measuring feed the optimiser proposes (the probe "
+                    "maker's or the shop's slowest probing speed); with the probe's maximum "
+                    "feed and the rapid feed it bounds every feed the optimiser tries."),
+                QT_TRANSLATE_NOOP("Parameter", "Slowest feed")},
+               PC_NUMBER(cycle, min_feed_mm_min)),
         number({"cycle.knee_tolerance", "", 0.0, 0.5,
                 QT_TRANSLATE_NOOP(
                     "Parameter",

@@ -74,8 +74,10 @@ struct Cycle {
     double feature_size_mm{50.0};
     double approach_mm{5.0};
     // How far the surface may lie from nominal; the start distance must cover
-    // it plus the distance to reach the probing feed (issue 14). 0 = a known part.
-    double part_position_uncertainty_mm{0.0};
+    // it plus the distance to reach the probing feed (issue 14). 0 = a known
+    // part. Issue 28: 0.5 mm by default, a part set in a fixture or a vise by
+    // hand, or a casting's tolerance; a known part is the exception.
+    double part_position_uncertainty_mm{0.5};
     // How far a probing move searches past the farthest place its surface can
     // be: the nominal surface plus the part position uncertainty, or for a
     // second touch or a repeat where the touch before stopped. It must reach
@@ -105,6 +107,12 @@ struct Cycle {
     // Boss/web: height the probe lifts to, over the wall, between touches.
     double clearance_mm{10.0};
     double target_uncertainty_mm{0.0};  // 0 = no target
+    // Bounds of what the optimiser proposes (issue 28): no touch starts
+    // closer to its surface than min_start_mm (a shop keeps the probe a
+    // millimetre off a wall it has not yet found), and no touch is slower
+    // than min_feed_mm_min (a probing feed a shop would accept).
+    double min_start_mm{1.0};
+    double min_feed_mm_min{10.0};
     // The knee is the lowest feed whose cycle time is within this fraction of
     // the best (domain.md, "Cycle time versus feed").
     double knee_tolerance{0.01};

@@ -99,8 +99,8 @@ UncertaintyBudget uncertainty_budget(const Scenario& scenario, double trigger_sp
     const double root_n = std::sqrt(static_cast<double>(b.repeats));
     const auto line = [root_n](BudgetTerm term, const char* key, Distribution d, double value,
                                bool averaged) {
-        return BudgetLine{term, key, d, value, averaged,
-                          value / divisor(d) / (averaged ? root_n : 1.0)};
+        return BudgetLine{term,  key,      d,
+                          value, averaged, value / divisor(d) / (averaged ? root_n : 1.0)};
     };
     b.lines[0] = line(BudgetTerm::scan_wait, "machine.scan_period_s", Distribution::uniform_range,
                       scan_range_mm(scenario.machine, trigger_speed_mm_s), true);

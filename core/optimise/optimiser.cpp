@@ -59,6 +59,16 @@ double feed_cap_mm_min(const Scenario& scenario) {
 // The largest start distance a bore or pocket allows (validate(): the
 // feature wider than two approaches), on the 0.01 mm grid; the key's maximum
 // for the rest.
+// Issue 28: the start rule. A start at least the part position uncertainty
+// plus the room to reach the probing feed (approach_room_mm), and never
+// closer than cycle.min_start_mm: no engineer starts a touch 10 um from a
+// wall whose place is known only to a casting's tolerance.
+double start_rule_mm(const Scenario& scenario, double probe_feed_mm_min) {
+    return std::max(scenario.cycle.min_start_mm,
+                    scenario.cycle.part_position_uncertainty_mm +
+                        approach_room_mm(scenario, mm_min_to_mm_s(probe_feed_mm_min)));
+}
+
 double approach_max_mm(const Cycle& cycle) {
     const double key_max = find_key("cycle.approach_mm")->max;
     if (!is_internal(cycle.feature)) return key_max;
@@ -189,7 +199,8 @@ class Search {
           model_(model),
           overtravel_max_mm_(max_overtravel_fraction * scenario.probe.overtravel_limit_mm),
           cap_mm_min_(feed_cap_mm_min(scenario)),
-          approach_max_mm_(approach_max_mm(scenario.cycle)) {
+          approach_max_mm_(approach_max_mm(scenario.cycle)),
+          min_feed_mm_min_(std::max(kMinFeed_mm_min, scenario.cycle.min_feed_mm_min)) {
         last_backoff_mm_ = scenario.cycle.backoff_mm;
         repeats_ignored_ = detect_repeats_ignored();
         overtravel_feed_mm_min_ = feed_bound_overtravel();
@@ -198,16 +209,18 @@ class Search {
 
     const Scenario& base() const { return base_; }
     double cap_mm_min() const { return cap_mm_min_; }
+    // The slowest feed a touch may use (cycle.min_feed_mm_min, issue 28).
+    double min_feed() const { return min_feed_mm_min_; }
     double overtravel_feed_mm_min() const { return overtravel_feed_mm_min_; }
     double start_feed_mm_min() const { return start_feed_mm_min_; }
     bool repeats_ignored() const { return repeats_ignored_; }
     int max_repeats() const { return repeats_ignored_ ? 1 : kMaxRepeats; }
     double overtravel_max_mm() const { return overtravel_max_mm_; }
 
-    // The smallest start distance the start rule allows at a probing feed.
+    // The smallest start distance the start rule allows at a probing feed
+    // (start_rule_mm), rounded up to the editors' digits.
     double approach_min_mm(double probe_feed_mm_min) const {
-        return approach_up(base_.cycle.part_position_uncertainty_mm +
-                           approach_room_mm(base_, mm_min_to_mm_s(probe_feed_mm_min)));
+        return approach_up(start_rule_mm(base_, probe_feed_mm_min));
     }
 
     // Start distances worth trying at a probing feed: the start rule's
@@ -301,10 +314,10 @@ class Search {
             const ModelPoint& p = evaluate_touch(repeats, feed);
             return p.uncertainty_mm <= bound_mm * (1.0 + kUncertaintyRelTolerance);
         };
-        const double hi = std::min(std::max(guess, kMinFeed_mm_min), cap_mm_min_);
-        if (guess >= kMinFeed_mm_min && meets(hi)) return std::min(guess, cap_mm_min_);
-        if (!meets(kMinFeed_mm_min)) return -1.0;
-        return last_ok_log(meets, kMinFeed_mm_min, hi);
+        const double hi = std::min(std::max(guess, min_feed_mm_min_), cap_mm_min_);
+        if (guess >= min_feed_mm_min_ && meets(hi)) return std::min(guess, cap_mm_min_);
+        if (!meets(min_feed_mm_min_)) return -1.0;
+        return last_ok_log(meets, min_feed_mm_min_, hi);
     }
 
     // The fastest setting of one strategy and repeat count whose uncertainty
@@ -318,7 +331,7 @@ class Search {
         const double feed_hi = std::min({cap_mm_min_, overtravel_feed_mm_min_, start_feed_mm_min_});
         const double measure_hi =
             std::min({cap_mm_min_, overtravel_feed_mm_min_, measure_feed_bound(repeats, bound_mm)});
-        if (feed_hi < kMinFeed_mm_min || measure_hi < kMinFeed_mm_min) return out;
+        if (feed_hi < min_feed_mm_min_ || measure_hi < min_feed_mm_min_) return out;
         // The coarse search (a grid of 12: the Pareto front's points, the
         // cells of more repeats that only bound the search) refines less:
         // its points are drawn, not applied.
@@ -329,22 +342,22 @@ class Search {
             const double hi = std::min(feed_hi, measure_hi);
             const Best1D b =
                 minimise_log([&](double f) { return time_s(strategy, repeats, f, f, bound_mm); },
-                             kMinFeed_mm_min, hi, grid, kGoldenIterations);
+                             min_feed_mm_min_, hi, grid, kGoldenIterations);
             if (!std::isfinite(b.f)) return out;
             out = {true, b.x, b.x, b.f, 0.0};
         } else {
             double measure =
-                std::clamp(base_.cycle.measure_feed_mm_min, kMinFeed_mm_min, measure_hi);
-            double probe = std::clamp(base_.cycle.probe_feed_mm_min, kMinFeed_mm_min, feed_hi);
+                std::clamp(base_.cycle.measure_feed_mm_min, min_feed_mm_min_, measure_hi);
+            double probe = std::clamp(base_.cycle.probe_feed_mm_min, min_feed_mm_min_, feed_hi);
             double previous = kInf;
             for (int round = 0; round < kRounds; ++round) {
                 const Best1D b1 = minimise_log(
                     [&](double f) { return time_s(strategy, repeats, f, measure, bound_mm); },
-                    kMinFeed_mm_min, feed_hi, grid, kGoldenIterations);
+                    min_feed_mm_min_, feed_hi, grid, kGoldenIterations);
                 if (std::isfinite(b1.f)) probe = b1.x;
                 const Best1D b2 = minimise_log(
                     [&](double f) { return time_s(strategy, repeats, probe, f, bound_mm); },
-                    kMinFeed_mm_min, measure_hi, grid, kGoldenIterations);
+                    min_feed_mm_min_, measure_hi, grid, kGoldenIterations);
                 if (!std::isfinite(b2.f)) {
                     if (!std::isfinite(b1.f)) return out;
                     continue;
@@ -364,7 +377,7 @@ class Search {
     // The smallest uncertainty any setting reaches: the slowest measuring
     // feed, the most repeats.
     double smallest_uncertainty_mm() {
-        const double feed = kMinFeed_mm_min;
+        const double feed = min_feed_mm_min_;
         return evaluate_touch(max_repeats(), feed).uncertainty_mm;
     }
 
@@ -373,7 +386,8 @@ class Search {
     // repeated touches): then every repeat count is the same cycle and only
     // one is searched.
     bool detect_repeats_ignored() {
-        const double feed = std::clamp(base_.cycle.probe_feed_mm_min, kMinFeed_mm_min, cap_mm_min_);
+        const double feed =
+            std::clamp(base_.cycle.probe_feed_mm_min, min_feed_mm_min_, cap_mm_min_);
         const ModelPoint one = evaluate_touch(1, feed);
         const ModelPoint two = evaluate_touch(2, feed);
         return one.cycle_time_s == two.cycle_time_s && one.uncertainty_mm == two.uncertainty_mm;
@@ -388,8 +402,8 @@ class Search {
             return p.first_overtravel_mm <= overtravel_max_mm_ &&
                    p.first_overtravel_mm < base_.probe.overtravel_limit_mm;
         };
-        if (cap_mm_min_ < kMinFeed_mm_min || !ok(kMinFeed_mm_min)) return 0.0;
-        return last_ok_log(ok, kMinFeed_mm_min, cap_mm_min_);
+        if (cap_mm_min_ < min_feed_mm_min_ || !ok(min_feed_mm_min_)) return 0.0;
+        return last_ok_log(ok, min_feed_mm_min_, cap_mm_min_);
     }
 
     // A bore or pocket: the highest probing feed whose start distance (part
@@ -397,8 +411,8 @@ class Search {
     double feed_bound_start() {
         if (!is_internal(base_.cycle.feature)) return kInf;
         const auto ok = [&](double feed) { return approach_min_mm(feed) <= approach_max_mm_; };
-        if (cap_mm_min_ < kMinFeed_mm_min || !ok(kMinFeed_mm_min)) return 0.0;
-        return last_ok_log(ok, kMinFeed_mm_min, cap_mm_min_);
+        if (cap_mm_min_ < min_feed_mm_min_ || !ok(min_feed_mm_min_)) return 0.0;
+        return last_ok_log(ok, min_feed_mm_min_, cap_mm_min_);
     }
 
     Scenario base_;
@@ -409,6 +423,7 @@ class Search {
     double overtravel_max_mm_;
     double cap_mm_min_;
     double approach_max_mm_;
+    double min_feed_mm_min_;
     double last_backoff_mm_{0.0};
     bool repeats_ignored_{false};
     double overtravel_feed_mm_min_{0.0};
@@ -506,14 +521,14 @@ class Optimiser {
         const auto feeds_near = [&](double feed) {
             std::vector<double> feeds;
             const double down = feed_down(feed);
-            if (down >= kMinFeed_mm_min) {
+            if (down >= search_.min_feed()) {
                 feeds.push_back(down);
                 const double lower = feed_down(down - 0.5 * feed_step_mm_min(down - 0.05));
-                if (lower >= kMinFeed_mm_min) feeds.push_back(lower);
+                if (lower >= search_.min_feed()) feeds.push_back(lower);
             }
             const double up = feed_up(feed);
             if (up <= s.cap_mm_min() && up != down) feeds.push_back(up);
-            if (feeds.empty()) feeds.push_back(kMinFeed_mm_min);
+            if (feeds.empty()) feeds.push_back(search_.min_feed());
             return feeds;
         };
         std::vector<double> probes = feeds_near(outcome.cell.probe_feed_mm_min);
@@ -527,12 +542,12 @@ class Optimiser {
             std::min({s.cap_mm_min(), s.overtravel_feed_mm_min(), s.start_feed_mm_min()});
         for (int k = -kStartLevelsAbove; k <= kStartLevelsBelow; ++k) {
             const double start = level - k * kApproachStep_mm;
-            if (start < 0.0 || feed_hi < kMinFeed_mm_min) continue;
+            if (start < 0.0 || feed_hi < search_.min_feed()) continue;
             const double corner =
                 last_ok_log([&](double f) { return s.approach_min_mm(f) <= start + 1e-12; },
-                            kMinFeed_mm_min, feed_hi);
+                            search_.min_feed(), feed_hi);
             const double feed = feed_down(corner);
-            if (feed >= kMinFeed_mm_min && s.approach_min_mm(feed) <= start + 1e-12 &&
+            if (feed >= search_.min_feed() && s.approach_min_mm(feed) <= start + 1e-12 &&
                 std::find(probes.begin(), probes.end(), feed) == probes.end()) {
                 probes.push_back(feed);
             }
@@ -581,18 +596,18 @@ class Optimiser {
 Message impossible_message(Optimiser& optimiser, const Scenario& scenario, double bound_mm,
                            double fraction) {
     Search& s = optimiser.search();
-    if (s.cap_mm_min() < kMinFeed_mm_min) {
+    if (s.cap_mm_min() < s.min_feed()) {
         Message m = make_message("probe_max_feed", "Optimise",
                                  QT_TRANSLATE_NOOP("Optimise",
                                                    "no setting meets the requirements: the "
                                                    "probe's maximum feed %1 is under the lowest "
                                                    "feed, %2"));
         m.args = {arg("max_feed_mm_min", ArgKind::feed_mm_min, scenario.probe.max_feed_mm_min),
-                  arg("min_feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min)};
+                  arg("min_feed_mm_min", ArgKind::feed_mm_min, s.min_feed())};
         return m;
     }
-    if (s.overtravel_feed_mm_min() < kMinFeed_mm_min) {
-        const ModelPoint& p = s.evaluate_touch(1, kMinFeed_mm_min);
+    if (s.overtravel_feed_mm_min() < s.min_feed()) {
+        const ModelPoint& p = s.evaluate_touch(1, s.min_feed());
         Message m = make_message(
             "overtravel_fraction", "Optimise",
             QT_TRANSLATE_NOOP("Optimise",
@@ -601,24 +616,24 @@ Message impossible_message(Optimiser& optimiser, const Scenario& scenario, doubl
                               "and even at %3 it is %4"));
         m.args = {arg("fraction", ArgKind::percent, 100.0 * fraction),
                   arg("limit_mm", ArgKind::length_mm, scenario.probe.overtravel_limit_mm),
-                  arg("feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min),
+                  arg("feed_mm_min", ArgKind::feed_mm_min, s.min_feed()),
                   significant_arg("overtravel_mm", ArgKind::length_mm, p.first_overtravel_mm, 4)};
         return m;
     }
-    if (s.start_feed_mm_min() < kMinFeed_mm_min) {
+    if (s.start_feed_mm_min() < s.min_feed()) {
         Message m = make_message(
             "start_distance", "Optimise",
             QT_TRANSLATE_NOOP("Optimise",
                               "no setting meets the requirements: a start distance of the part "
                               "position uncertainty %1 plus the room to reach even %2 (%3) "
                               "does not fit a %4 of %5"));
-        m.args = {arg("part_position_uncertainty_mm", ArgKind::length_mm,
-                      scenario.cycle.part_position_uncertainty_mm),
-                  arg("feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min),
-                  significant_arg("approach_mm", ArgKind::length_mm,
-                                  s.approach_min_mm(kMinFeed_mm_min), 4),
-                  feature_arg("feature", scenario.cycle.feature),
-                  arg("feature_size_mm", ArgKind::length_mm, scenario.cycle.feature_size_mm)};
+        m.args = {
+            arg("part_position_uncertainty_mm", ArgKind::length_mm,
+                scenario.cycle.part_position_uncertainty_mm),
+            arg("feed_mm_min", ArgKind::feed_mm_min, s.min_feed()),
+            significant_arg("approach_mm", ArgKind::length_mm, s.approach_min_mm(s.min_feed()), 4),
+            feature_arg("feature", scenario.cycle.feature),
+            arg("feature_size_mm", ArgKind::length_mm, scenario.cycle.feature_size_mm)};
         return m;
     }
     const double smallest = s.smallest_uncertainty_mm();
@@ -642,7 +657,7 @@ Message impossible_message(Optimiser& optimiser, const Scenario& scenario, doubl
                                     "repeatability and thermal drift, are %6 together)"));
         m.args = {significant_arg("bound_mm", ArgKind::length_mm, bound_mm, 4),
                   significant_arg("smallest_mm", ArgKind::length_mm, smallest, 4),
-                  arg("feed_mm_min", ArgKind::feed_mm_min, kMinFeed_mm_min),
+                  arg("feed_mm_min", ArgKind::feed_mm_min, s.min_feed()),
                   arg("repeats", ArgKind::integer, s.max_repeats()),
                   significant_arg("repeatability_mm", ArgKind::length_mm,
                                   scenario.probe.repeatability_2sigma_mm, 4),
@@ -700,6 +715,8 @@ const char* to_string(Requirement requirement) {
             return "start_distance";
         case Requirement::repeats_limit:
             return "repeats_limit";
+        case Requirement::min_feed:
+            return "min_feed";
     }
     return "";
 }
@@ -767,11 +784,10 @@ std::vector<Requirement> unmet_requirements(const Scenario& scenario, const Mode
     if (scenario.probe.max_feed_mm_min > 0.0 && fastest > scenario.probe.max_feed_mm_min)
         unmet.push_back(Requirement::probe_max_feed);
     if (fastest > scenario.machine.rapid_feed_mm_min) unmet.push_back(Requirement::machine_rapid);
-    if (start_ok) {
-        start_ok =
-            c.approach_mm >= c.part_position_uncertainty_mm +
-                                 approach_room_mm(scenario, mm_min_to_mm_s(c.probe_feed_mm_min));
-    }
+    if (start_ok) start_ok = c.approach_mm >= start_rule_mm(scenario, c.probe_feed_mm_min);
+    const double slowest =
+        two ? std::min(c.probe_feed_mm_min, c.measure_feed_mm_min) : c.probe_feed_mm_min;
+    if (slowest < c.min_feed_mm_min) unmet.push_back(Requirement::min_feed);
     if (!start_ok) unmet.push_back(Requirement::start_distance);
     if (!(c.repeats >= 1.0 && c.repeats <= kMaxRepeats && c.repeats == std::floor(c.repeats)))
         unmet.push_back(Requirement::repeats_limit);
@@ -841,6 +857,21 @@ std::vector<Requirement> binding_requirements(Optimiser& optimiser, const Scenar
         Scenario changed = scenario;
         changed.cycle.part_position_uncertainty_mm /= kRelax;
         start_binds = faster_with(changed, fraction);
+    }
+    // Issue 28: the shortest start, relaxed as the part's uncertainty is.
+    if (!start_binds && scenario.cycle.min_start_mm > 0.0 &&
+        b.approach_mm <= approach_up(scenario.cycle.min_start_mm) + 1e-9) {
+        Scenario changed = scenario;
+        changed.cycle.min_start_mm /= kRelax;
+        start_binds = faster_with(changed, fraction);
+    }
+    // The slowest feed: lower, a tight target might need fewer repeats.
+    const double slowest =
+        two ? std::min(b.probe_feed_mm_min, b.measure_feed_mm_min) : b.probe_feed_mm_min;
+    if (slowest <= s.min_feed() * (1.0 + 1e-9) && s.min_feed() > kMinFeed_mm_min) {
+        Scenario changed = scenario;
+        changed.cycle.min_feed_mm_min = std::max(kMinFeed_mm_min, s.min_feed() / kRelax);
+        if (faster_with(changed, fraction)) binding.push_back(Requirement::min_feed);
     }
     if (start_binds || (on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()) &&
                         s.start_feed_mm_min() < s.cap_mm_min()))

@@ -91,9 +91,10 @@ enum class Requirement {
     overtravel_fraction,  // overtravel <= fraction * probe.overtravel_limit_mm
     probe_max_feed,       // probe.max_feed_mm_min
     machine_rapid,        // machine.rapid_feed_mm_min
-    start_distance,       // part position uncertainty + room to reach the feed (and a
-                          // bore's or pocket's size)
+    start_distance,       // part position uncertainty + room to reach the feed, at least
+                          // cycle.min_start_mm (and a bore's or pocket's size)
     repeats_limit,        // at most kMaxRepeats repeats
+    min_feed,             // cycle.min_feed_mm_min: no touch slower (issue 28)
 };
 const char* to_string(Requirement requirement);
 

@@ -1075,10 +1075,6 @@
         <translation>Макс. подача щупа</translation>
     </message>
     <message>
-        <source>How far the surface may lie from its nominal position (a casting, a part clamped by hand). The start distance must cover it plus the distance to reach the probing feed, so the touch is at full feed wherever the part lies. 0 means a known part.</source>
-        <translation>Насколько поверхность может отстоять от номинального положения (отливка, деталь, закреплённая вручную). Расстояние подхода должно покрывать его и путь разгона до подачи поиска, чтобы касание шло на полной подаче при любом положении детали. 0 — положение детали известно.</translation>
-    </message>
-    <message>
         <source>Part position uncertainty</source>
         <translation>Неопределённость положения детали</translation>
     </message>
@@ -1233,6 +1229,26 @@
     <message>
         <source>Target for the expanded (k = 2) uncertainty of the measured point, the whole budget (the trigger&apos;s part and the terms no feed changes); a warning appears above it. 0 means no target.</source>
         <translation>Цель для расширенной неопределённости (k = 2) измеряемой точки по всему бюджету (доля срабатывания и члены, не зависящие от подачи); выше неё выдаётся предупреждение. 0 — цели нет.</translation>
+    </message>
+    <message>
+        <source>How far the surface may lie from its nominal position (a casting, a part clamped by hand). The start distance must cover it plus the distance to reach the probing feed, so the touch is at full feed wherever the part lies. 0 means a known part: its surface is where the drawing puts it.</source>
+        <translation>Насколько поверхность может отстоять от номинального положения (отливка, деталь, закреплённая вручную). Начальное расстояние должно покрывать эту величину плюс путь разгона до подачи поиска, чтобы касание происходило на полной подаче, где бы ни лежала деталь. 0 — известная деталь: её поверхность там, где её задаёт чертёж.</translation>
+    </message>
+    <message>
+        <source>The shortest start distance the optimiser proposes: no touch starts closer to its nominal surface, whatever the part position uncertainty and the feed allow. 0 means no minimum.</source>
+        <translation>Наименьшее начальное расстояние, которое предлагает оптимизатор: ни одно касание не начинается ближе к номинальной поверхности, что бы ни допускали неопределённость положения детали и подача. 0 — без минимума.</translation>
+    </message>
+    <message>
+        <source>Shortest approach</source>
+        <translation>Наименьшее расстояние подхода</translation>
+    </message>
+    <message>
+        <source>The slowest probing or measuring feed the optimiser proposes (the probe maker&apos;s or the shop&apos;s slowest probing speed); with the probe&apos;s maximum feed and the rapid feed it bounds every feed the optimiser tries.</source>
+        <translation>Наименьшая подача поиска или измерения, которую предлагает оптимизатор (наименьшая скорость измерения по данным изготовителя датчика или правилам цеха); вместе с максимальной подачей датчика и ускоренной подачей она ограничивает все подачи, которые пробует оптимизатор.</translation>
+    </message>
+    <message>
+        <source>Slowest feed</source>
+        <translation>Наименьшая подача</translation>
     </message>
 </context>
 <context>
@@ -3569,10 +3585,6 @@
         <translation>ускоренная подача станка, %1</translation>
     </message>
     <message>
-        <source>the start distance: the part&apos;s position uncertainty plus the distance to reach the probing feed</source>
-        <translation>расстояние подхода: неопределённость положения детали плюс путь разгона до подачи поиска</translation>
-    </message>
-    <message>
         <source>at most %1 measurements</source>
         <translation>не более %1 измерений</translation>
     </message>
@@ -3683,6 +3695,14 @@
     <message>
         <source>Current uncertainty</source>
         <translation>Текущая неопределённость</translation>
+    </message>
+    <message>
+        <source>the start distance: at least %1, and the part&apos;s position uncertainty plus the distance to reach the probing feed</source>
+        <translation>начальное расстояние: не меньше %1, и неопределённость положения детали плюс путь разгона до подачи поиска</translation>
+    </message>
+    <message>
+        <source>the slowest feed allowed, %1</source>
+        <translation>наименьшая допустимая подача, %1</translation>
     </message>
 </context>
 <context>

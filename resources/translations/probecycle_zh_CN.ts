@@ -1075,10 +1075,6 @@
         <translation>测头最大进给率</translation>
     </message>
     <message>
-        <source>How far the surface may lie from its nominal position (a casting, a part clamped by hand). The start distance must cover it plus the distance to reach the probing feed, so the touch is at full feed wherever the part lies. 0 means a known part.</source>
-        <translation>表面可能偏离名义位置的距离（铸件、手工装夹的零件）。起始距离必须覆盖它以及达到探测进给率所需的距离，使零件无论在何处都以全速触测。0 表示零件位置已知。</translation>
-    </message>
-    <message>
         <source>Part position uncertainty</source>
         <translation>零件位置不确定度</translation>
     </message>
@@ -1233,6 +1229,26 @@
     <message>
         <source>Target for the expanded (k = 2) uncertainty of the measured point, the whole budget (the trigger&apos;s part and the terms no feed changes); a warning appears above it. 0 means no target.</source>
         <translation>测量点扩展不确定度 (k = 2) 的目标值，针对整个预算（触发部分以及与进给率无关的各项）；超过时给出警告。0 表示无目标。</translation>
+    </message>
+    <message>
+        <source>How far the surface may lie from its nominal position (a casting, a part clamped by hand). The start distance must cover it plus the distance to reach the probing feed, so the touch is at full feed wherever the part lies. 0 means a known part: its surface is where the drawing puts it.</source>
+        <translation>表面可能偏离其名义位置的距离（铸件、手工装夹的零件）。起始距离必须覆盖它再加上达到探测进给率所需的距离，这样无论零件位于何处，触测都在全进给率下进行。0 表示已知零件：其表面就在图纸所定的位置。</translation>
+    </message>
+    <message>
+        <source>The shortest start distance the optimiser proposes: no touch starts closer to its nominal surface, whatever the part position uncertainty and the feed allow. 0 means no minimum.</source>
+        <translation>优化器建议的最短起始距离：无论零件位置不确定度和进给率允许多少，任何触测都不会从更靠近名义表面的位置开始。0 表示无最小值。</translation>
+    </message>
+    <message>
+        <source>Shortest approach</source>
+        <translation>最短接近距离</translation>
+    </message>
+    <message>
+        <source>The slowest probing or measuring feed the optimiser proposes (the probe maker&apos;s or the shop&apos;s slowest probing speed); with the probe&apos;s maximum feed and the rapid feed it bounds every feed the optimiser tries.</source>
+        <translation>优化器建议的最低探测或测量进给率（测头制造商或车间规定的最低探测速度）；它与测头最大进给率和快移速度一起限定优化器尝试的所有进给率。</translation>
+    </message>
+    <message>
+        <source>Slowest feed</source>
+        <translation>最低进给率</translation>
     </message>
 </context>
 <context>
@@ -3569,10 +3585,6 @@
         <translation>机床快速进给率 %1</translation>
     </message>
     <message>
-        <source>the start distance: the part&apos;s position uncertainty plus the distance to reach the probing feed</source>
-        <translation>起始距离：零件位置不确定度加上达到探测进给率所需的距离</translation>
-    </message>
-    <message>
         <source>at most %1 measurements</source>
         <translation>最多 %1 次测量</translation>
     </message>
@@ -3683,6 +3695,14 @@
     <message>
         <source>Current uncertainty</source>
         <translation>当前不确定度</translation>
+    </message>
+    <message>
+        <source>the start distance: at least %1, and the part&apos;s position uncertainty plus the distance to reach the probing feed</source>
+        <translation>起始距离：至少 %1，且为零件位置不确定度加上达到探测进给率所需的距离</translation>
+    </message>
+    <message>
+        <source>the slowest feed allowed, %1</source>
+        <translation>允许的最低进给率，%1</translation>
     </message>
 </context>
 <context>

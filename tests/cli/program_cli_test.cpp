@@ -36,14 +36,16 @@ TEST(ProgramCli, WritesTheGoldenProgramAndItsPlan) {
         const CliRun ring =
             run_on_golden_day("program ring --dialect " + dialect + " --orient-180 'M19 R180.'");
         EXPECT_EQ(ring.out, read(data("golden/program_ring" + suffix)));
-        const CliRun cycle = run_on_golden_day("program cycle --dialect " + dialect);
+        // The golden cycles are for a known part (program_test_plans.h).
+        const std::string known = " --set cycle.part_position_uncertainty_mm=0";
+        const CliRun cycle = run_on_golden_day("program cycle --dialect " + dialect + known);
         EXPECT_EQ(cycle.out, read(data("golden/program_cycle" + suffix)));
         // A feature's cycle: the core's golden plans (program_test_plans.h).
-        const CliRun bore =
-            run_on_golden_day("program cycle --dialect " + dialect + " --set cycle.feature=bore");
+        const CliRun bore = run_on_golden_day("program cycle --dialect " + dialect + known +
+                                              " --set cycle.feature=bore");
         EXPECT_EQ(bore.out, read(data("golden/program_cycle_bore" + suffix))) << bore.err;
         const CliRun boss =
-            run_on_golden_day("program cycle --dialect " + dialect +
+            run_on_golden_day("program cycle --dialect " + dialect + known +
                               " --set cycle.feature=boss --set cycle.strategy=single_touch --set "
                               "cycle.probe_feed_mm_min=300 --set cycle.repeats=2");
         EXPECT_EQ(boss.out, read(data("golden/program_cycle_boss" + suffix))) << boss.err;

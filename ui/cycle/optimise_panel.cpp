@@ -240,9 +240,13 @@ QString OptimisePanel::binding_text() const {
                              .arg(format_feed(scenario_.machine.rapid_feed_mm_min));
                 break;
             case Requirement::start_distance:
-                parts << tr(
-                    "the start distance: the part's position uncertainty plus the "
-                    "distance to reach the probing feed");
+                parts << tr("the start distance: at least %1, and the part's position "
+                            "uncertainty plus the distance to reach the probing feed")
+                             .arg(format_mm(scenario_.cycle.min_start_mm));
+                break;
+            case Requirement::min_feed:
+                parts << tr("the slowest feed allowed, %1")
+                             .arg(format_feed(scenario_.cycle.min_feed_mm_min));
                 break;
             case Requirement::repeats_limit:
                 parts << tr("at most %1 measurements").arg(kMaxRepeats);

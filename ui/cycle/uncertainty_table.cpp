@@ -73,8 +73,9 @@ QList<QStringList> uncertainty_budget_rows(const Scenario& scenario, const Cycle
                      format_um(line.standard_mm),
                      QStringLiteral("%1 %").arg(format_number(100.0 * share, 0))});
     }
-    rows.append({tr_budget(QT_TRANSLATE_NOOP("UncertaintyBudget", "Combined (root sum of squares)")),
-                 QString(), QString(), format_um(b.combined_standard_mm), QString()});
+    rows.append(
+        {tr_budget(QT_TRANSLATE_NOOP("UncertaintyBudget", "Combined (root sum of squares)")),
+         QString(), QString(), format_um(b.combined_standard_mm), QString()});
     rows.append({tr_budget(QT_TRANSLATE_NOOP("UncertaintyBudget", "Expanded uncertainty, k = 2")),
                  QString(), QString(), format_um(b.expanded_mm), QString()});
     return rows;

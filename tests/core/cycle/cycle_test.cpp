@@ -34,6 +34,7 @@ double rel_tol(double expected, double rel = 1e-12) {
 // return 10000 mm/min) with a surface, a 5 mm approach and the given feeds.
 Scenario surface(Strategy strategy, double probe_feed_mm_min, double backoff_mm = 2.5) {
     Scenario s;
+    s.cycle.part_position_uncertainty_mm = 0.0;  // a known part: searches by hand
     s.cycle.strategy = strategy;
     s.cycle.feature = Feature::surface;
     s.cycle.approach_mm = 5.0;

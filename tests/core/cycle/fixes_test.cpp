@@ -132,6 +132,7 @@ TEST(Fixes, NoneWhenEvenTheSlowestFeedOvertravels) {
 
 TEST(Fixes, FirstTouchWhileAcceleratingStartsFartherOut) {
     Scenario s;
+    s.cycle.part_position_uncertainty_mm = 0.0;  // a known part: only the feed's room
     s.cycle.strategy = Strategy::single_touch;
     s.cycle.approach_mm = 0.5;  // 2000 mm/min needs v T / 2 = 1 mm
     const std::optional<Fix> fix = fix_of(s, WarningCode::touch_while_accelerating);

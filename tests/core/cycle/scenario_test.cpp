@@ -127,6 +127,8 @@ const std::vector<std::string> kNumericKeys = {
     "cycle.backoff_mm",
     "cycle.return_feed_mm_min",
     "cycle.target_uncertainty_mm",
+    "cycle.min_start_mm",
+    "cycle.min_feed_mm_min",
     "cycle.knee_tolerance",
     "cycle.position_feed_mm_min",
     "cycle.feed_override_max_pct",
@@ -313,6 +315,8 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
           "feed_override_max_pct",
           "clearance_mm",
           "target_uncertainty_mm",
+          "min_start_mm",
+          "min_feed_mm_min",
           "knee_tolerance",
           "part_position_uncertainty_mm",
           "search_beyond_mm",
@@ -682,7 +686,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 45u);
+    ASSERT_EQ(scenario_keys().size(), 47u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);

@@ -328,7 +328,7 @@ TEST(CyclePlan, ABossSingleTouchGoesOverEachSideDownAndTouchesTowardTheCentre) {
 // from where it stopped, as the model repeats it (cycle.cpp); the plan says
 // the repeats among its values, and a plan of one touch does not.
 TEST(CyclePlan, RepeatsMakeTheMeasuringTouchAgainFromItsStop) {
-    Scenario scenario;
+    Scenario scenario = program_test::known_part();
     scenario.cycle.repeats = 3.0;
     const ProbingPlan plan = make_cycle_plan(scenario, CyclePlanOptions{});
     const Cycle& c = scenario.cycle;
