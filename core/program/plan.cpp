@@ -11,6 +11,7 @@
 #include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/cycle/cycle.h"
+#include "core/program/feature_result.h"
 
 namespace probecycle {
 
@@ -623,8 +624,25 @@ ProbingPlan make_ring_plan(const Scenario& scenario, const RingPlanOptions& opti
     return plan;
 }
 
+namespace {
+
+// The values the feature's result needs (feature_result.h, result_spec); the
+// uncertainty to the nanometre, the digits the programs' logs print.
+void add_result_values(ProbingPlan& plan, const Scenario& scenario,
+                       const CyclePlanOptions& options) {
+    add_value(plan, kBallDiameterValue, options.ball_diameter_mm);
+    add_value(plan, kPointUncertaintyValue,
+              std::round(evaluate(scenario).uncertainty_mm() * 1e6) / 1e6);
+    if (scenario.cycle.feature != Feature::surface && scenario.cycle.size_tolerance_mm > 0.0) {
+        add_values(plan, scenario, {"cycle.size_tolerance_mm", "cycle.tolerance_action"});
+    }
+}
+
+}  // namespace
+
 ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& options) {
     const Feature feature = scenario.cycle.feature;
+    check_range(options.ball_diameter_mm, 0.0, 100.0, "ball_diameter_mm", "mm");
     if (feature != Feature::surface) check_feature_plan(scenario, options);
     ProbingPlan plan;
     plan.kind = ProgramKind::cycle;
@@ -639,9 +657,11 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
         add_values(plan, scenario,
                    {"cycle.feature", "cycle.feature_size_mm", "cycle.position_feed_mm_min"});
         if (lifts_over(feature)) add_values(plan, scenario, {"cycle.clearance_mm"});
+        add_result_values(plan, scenario, options);
         add_feature_touches(plan, scenario, options);
         return plan;
     }
+    add_result_values(plan, scenario, options);
     plan.steps.push_back(pause_step("check: the probe stands " +
                                     mm_text(scenario.cycle.approach_mm) +
                                     " in front of the surface, touching along " +

@@ -668,6 +668,22 @@
         <source>the program printed PROBECYCLE OBSTRUCTED: the probe touched something during a protected move and the control stopped with alarm 102; nothing imported</source>
         <translation>программа вывела PROBECYCLE OBSTRUCTED: датчик коснулся чего-то во время защищённого перемещения, и система ЧПУ остановилась с аварией 102; ничего не импортировано</translation>
     </message>
+    <message>
+        <source>the program&apos;s result line gives %1 %2, its touches give %3: was the program edited, or written from another plan? Nothing imported</source>
+        <translation>строка результата программы даёт %1 %2, её касания дают %3: программу изменяли или она создана по другому плану? Ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>a %1 plan has no feature result: its import is the lab&apos;s CSV</source>
+        <translation>у плана %1 нет результата элемента: его импорт — это CSV лаборатории</translation>
+    </message>
+    <message>
+        <source>the cycle plan has no readable value %1: write the program and its plan again with this version of ProbeCycle</source>
+        <translation>в плане цикла нет читаемого значения %1: создайте программу и её план заново этой версией ProbeCycle</translation>
+    </message>
+    <message>
+        <source>the cycle plan&apos;s recorded touches do not make the sides of its %1: was the plan file edited?</source>
+        <translation>записанные касания плана цикла не образуют стороны элемента (%1): файл плана изменяли?</translation>
+    </message>
 </context>
 <context>
     <name>Optimise</name>
@@ -1201,6 +1217,30 @@
     <message>
         <source>Highest feed override</source>
         <translation>Наибольшая коррекция подачи</translation>
+    </message>
+    <message>
+        <source>Web, pocket, bore, boss: the cycle program checks the measured size (width or diameter) against the feature size plus or minus this, and the import does the same. 0 means no check.</source>
+        <translation>Стенка, паз, отверстие, бобышка: программа цикла сравнивает измеренный размер (ширину или диаметр) с размером элемента плюс-минус это значение; импорт делает то же. 0 — без проверки.</translation>
+    </message>
+    <message>
+        <source>Size tolerance</source>
+        <translation>Допуск на размер</translation>
+    </message>
+    <message>
+        <source>What the cycle program does when the measured size is outside its tolerance. flag: sets its out-of-tolerance variable and writes OUT OF TOLERANCE to its log, then goes on. stop: the same, then stops with an alarm.</source>
+        <translation>Что делает программа цикла, когда измеренный размер вне допуска. flag: устанавливает переменную выхода за допуск и пишет OUT OF TOLERANCE в журнал, затем продолжает. stop: то же, затем останавливается с аварийным сообщением.</translation>
+    </message>
+    <message>
+        <source>Flag it and go on</source>
+        <translation>Отметить и продолжить</translation>
+    </message>
+    <message>
+        <source>Stop with an alarm</source>
+        <translation>Остановить с аварийным сообщением</translation>
+    </message>
+    <message>
+        <source>If out of tolerance</source>
+        <translation>Если вне допуска</translation>
     </message>
 </context>
 <context>

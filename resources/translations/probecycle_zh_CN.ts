@@ -668,6 +668,22 @@
         <source>the program printed PROBECYCLE OBSTRUCTED: the probe touched something during a protected move and the control stopped with alarm 102; nothing imported</source>
         <translation>程序输出了 PROBECYCLE OBSTRUCTED：测头在保护移动中触碰到物体，系统以报警 102 停止；未导入任何内容</translation>
     </message>
+    <message>
+        <source>the program&apos;s result line gives %1 %2, its touches give %3: was the program edited, or written from another plan? Nothing imported</source>
+        <translation>程序的结果行给出 %1 %2，其触测给出 %3：程序是否被修改过，或由另一个计划生成？未导入任何内容</translation>
+    </message>
+    <message>
+        <source>a %1 plan has no feature result: its import is the lab&apos;s CSV</source>
+        <translation>%1 计划没有特征结果：其导入结果是实验室的 CSV</translation>
+    </message>
+    <message>
+        <source>the cycle plan has no readable value %1: write the program and its plan again with this version of ProbeCycle</source>
+        <translation>循环计划中没有可读取的值 %1：请用此版本的 ProbeCycle 重新生成程序及其计划</translation>
+    </message>
+    <message>
+        <source>the cycle plan&apos;s recorded touches do not make the sides of its %1: was the plan file edited?</source>
+        <translation>循环计划中记录的触测不能构成其%1的各侧：计划文件是否被修改过？</translation>
+    </message>
 </context>
 <context>
     <name>Optimise</name>
@@ -1201,6 +1217,30 @@
     <message>
         <source>Highest feed override</source>
         <translation>最高进给倍率</translation>
+    </message>
+    <message>
+        <source>Web, pocket, bore, boss: the cycle program checks the measured size (width or diameter) against the feature size plus or minus this, and the import does the same. 0 means no check.</source>
+        <translation>凸台、槽、孔、圆柱：循环程序将测得的尺寸（宽度或直径）与特征尺寸加减此值进行比较，导入时也同样检查。0 表示不检查。</translation>
+    </message>
+    <message>
+        <source>Size tolerance</source>
+        <translation>尺寸公差</translation>
+    </message>
+    <message>
+        <source>What the cycle program does when the measured size is outside its tolerance. flag: sets its out-of-tolerance variable and writes OUT OF TOLERANCE to its log, then goes on. stop: the same, then stops with an alarm.</source>
+        <translation>测得尺寸超出公差时循环程序的处理方式。flag：置位超差变量并在日志中写入 OUT OF TOLERANCE，然后继续运行。stop：同上，然后以报警停止。</translation>
+    </message>
+    <message>
+        <source>Flag it and go on</source>
+        <translation>标记并继续</translation>
+    </message>
+    <message>
+        <source>Stop with an alarm</source>
+        <translation>报警停止</translation>
+    </message>
+    <message>
+        <source>If out of tolerance</source>
+        <translation>超差时</translation>
     </message>
 </context>
 <context>

@@ -123,6 +123,7 @@ const std::vector<std::string> kNumericKeys = {
     "cycle.backoff_mm",
     "cycle.return_feed_mm_min",
     "cycle.target_uncertainty_mm",
+    "cycle.size_tolerance_mm",
     "cycle.knee_tolerance",
     "cycle.position_feed_mm_min",
     "cycle.feed_override_max_pct",
@@ -308,6 +309,8 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
           "feed_override_max_pct",
           "clearance_mm",
           "target_uncertainty_mm",
+          "size_tolerance_mm",
+          "tolerance_action",
           "knee_tolerance",
           "part_position_uncertainty_mm",
           "search_beyond_mm",
@@ -677,7 +680,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 41u);
+    ASSERT_EQ(scenario_keys().size(), 43u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);
