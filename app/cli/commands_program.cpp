@@ -237,6 +237,12 @@ void add_import(CLI::App& app) {
         }
         const DialectId id = *dialect_from_string(args->dialect);
         if (plan.kind == ProgramKind::cycle) {
+            // A plan without the result's values is the plan file's fault.
+            try {
+                (void)result_spec(plan);
+            } catch (const InputError& e) {
+                throw std::runtime_error(args->plan + ": " + e.what());
+            }
             write_output(args->out, read_lab_csv(args->log, [&](const std::string& text) {
                              const CycleImport import = import_cycle_log(plan, id, text);
                              return args->json ? cycle_import_json(import)

@@ -95,8 +95,10 @@ std::string cycle_import_text(const CycleImport& import) {
     const ResultSpec& spec = import.spec;
     const FeatureResult& r = import.result;
     const bool surface = r.feature == Feature::surface;
+    const std::size_t touches = import.touches.size();
     std::string text = "plan " + import.plan_id + " (cycle, " + to_string(r.feature) +
-                       "): " + std::to_string(import.touches.size()) + " recorded touches\n";
+                       "): " + std::to_string(touches) +
+                       (touches == 1 ? " recorded touch\n" : " recorded touches\n");
     text += size_name(r.feature) + (surface ? " along " + to_string(spec.sides[0]) : "") + ": " +
             mm(r.size_mm) + " +- " + mm(r.size_uncertainty_mm) + " (k = 2)\n";
     for (std::size_t axis = 0; axis < 2; ++axis) {

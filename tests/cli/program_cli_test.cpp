@@ -167,6 +167,21 @@ TEST(ProgramCli, CycleImportGivesTheFeaturesResult) {
     EXPECT_NE(edited.err.find("edited.txt: line 6: the program's result line gives S"),
               std::string::npos)
         << edited.err;
+
+    // A plan without the model's uncertainty: the plan file is named.
+    std::string old_plan = read(dir / "plan.json");
+    const std::size_t value = old_plan.find("    \"point_uncertainty_mm\"");
+    ASSERT_NE(value, std::string::npos) << old_plan;
+    old_plan.erase(value, old_plan.find('\n', value) + 1 - value);
+    write(dir / "old_plan.json", old_plan);
+    const CliRun old =
+        run("import --dialect linuxcnc --plan " + quote((dir / "old_plan.json").string()) + " " +
+            quote((dir / "log.txt").string()));
+    EXPECT_EQ(old.exit_code, 2);
+    EXPECT_NE(old.err.find("old_plan.json: the cycle plan has no readable value "
+                           "point_uncertainty_mm"),
+              std::string::npos)
+        << old.err;
 }
 
 TEST(ProgramCli, BadInputIsNamedWithWhatIsAllowed) {
