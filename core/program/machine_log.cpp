@@ -432,9 +432,10 @@ std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const 
             }
             continue;
         }
-        if (words[0].substr(0, 6) == "RESULT") {
+        if (words[0].substr(0, 6) == "RESULT" && plan_line) {
             // "RESULT S s X x Y y D d T t", a number's sign and digits
-            // perhaps apart (as a touch's).
+            // perhaps apart (as a touch's); before our PLAN line, another
+            // program's output.
             std::size_t at = 6;
             std::array<double, 5> values{};
             bool readable = true;

@@ -62,8 +62,8 @@ std::vector<RecordedPosition> read_grbl_positions(std::string_view text, const P
 // and '%' are dropped; a number may have leading spaces, a sign and spaces
 // between its sign and its digits. Other lines (another program's output on
 // the same channel) are ignored.
-// A cycle program's "RESULT ..." line and "PROBECYCLE OUT OF TOLERANCE" go
-// to `result` when given.
+// A cycle program's "RESULT ..." line (after the PLAN line) and "PROBECYCLE
+// OUT OF TOLERANCE" go to `result` when given.
 std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan,
                                                    LoggedResult* result = nullptr);
 

@@ -151,6 +151,10 @@ TEST(CycleImport, FanucDprntResultIsReadAndChecked) {
     EXPECT_TRUE(import.result.out_of_tolerance);
     EXPECT_EQ(import.logged.line, 7u);
     EXPECT_EQ(import.logged.out_of_tolerance_line, 8u);
+    // Another program's RESULT line before ours is not read.
+    const CycleImport after = import_cycle_log(
+        plan, DialectId::fanuc, "RESULT OF PROGRAM 12\n" + log.substr(log.find("PROBECYCLE PLAN")));
+    EXPECT_EQ(after.logged.line, 7u);
     const std::string wrong =
         fanuc_log(plan, kBore, "RESULT S  50.0140 X 0.0040 Y 0.0080 D 0.0140 T1.\n");
     EXPECT_EQ(line_of([&] { import_cycle_log(plan, DialectId::fanuc, wrong); }), 7u);

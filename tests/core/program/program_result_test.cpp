@@ -110,8 +110,8 @@ class Macro {
     }
     double number() {
         const std::size_t start = at_;
-        while (at_ < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[at_])) ||
-                                      text_[at_] == '.')) {
+        while (at_ < text_.size() &&
+               (std::isdigit(static_cast<unsigned char>(text_[at_])) || text_[at_] == '.')) {
             ++at_;
         }
         EXPECT_GT(at_, start) << "a number at " << text_.substr(start);
@@ -135,7 +135,8 @@ struct ProgramRun {
 // Runs the program's macro lines; the recorded touches' skip positions are
 // `touches`, in order (a touch's number from the LinuxCNC LOG line or the
 // Fanuc-type #102).
-ProgramRun run_program(const std::string& program, const std::vector<std::array<double, 3>>& touches) {
+ProgramRun run_program(const std::string& program,
+                       const std::vector<std::array<double, 3>>& touches) {
     std::vector<std::string> lines;
     std::istringstream in(program);
     for (std::string line; std::getline(in, line);) lines.push_back(line);
@@ -145,8 +146,8 @@ ProgramRun run_program(const std::string& program, const std::vector<std::array<
         const std::string line = without_spaces(raw);
         if (raw.rfind("(LOG,probecycle touch ", 0) == 0) {
             run.macro.skip = touches.at(std::stoul(raw.substr(22)) - 1);
-        } else if (line.rfind("(ABORT,", 0) == 0 || line.rfind("#3000=", 0) == 0 ||
-                   line == "M2" || line == "M30") {
+        } else if (line.rfind("(ABORT,", 0) == 0 || line.rfind("#3000=", 0) == 0 || line == "M2" ||
+                   line == "M30") {
             run.stopped = line != "M2" && line != "M30";
             if (!run.stopped) break;
         } else if (line.rfind('#', 0) == 0 && line.find('=') != std::string::npos) {
@@ -222,8 +223,8 @@ TEST(ProgramResult, EveryComputingDialectComputesWhatTheImportComputes) {
                 EXPECT_NEAR(v.at(116), expected.centre_mm[1].value_or(0.0), 1e-9);
                 EXPECT_NEAR(v.at(117), expected.deviation_mm, 1e-9);
                 EXPECT_EQ(v.at(118), expected.out_of_tolerance ? 1.0 : 0.0);
-                const bool stops_here = expected.out_of_tolerance &&
-                                        spec->tolerance_action == ToleranceAction::stop;
+                const bool stops_here =
+                    expected.out_of_tolerance && spec->tolerance_action == ToleranceAction::stop;
                 EXPECT_EQ(run.stopped, stops_here);
                 stops += stops_here ? 1 : 0;
                 flags += expected.out_of_tolerance && !stops_here ? 1 : 0;
