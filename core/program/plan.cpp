@@ -643,6 +643,20 @@ void add_result_values(ProbingPlan& plan, const Scenario& scenario,
 ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& options) {
     const Feature feature = scenario.cycle.feature;
     check_range(options.ball_diameter_mm, 0.0, 100.0, "ball_diameter_mm", "mm");
+    if (lifts_over(feature) && options.ball_diameter_mm >= scenario.cycle.feature_size_mm) {
+        // A boss's or web's stylus centres stand the ball's diameter apart
+        // over its size: a ball that large leaves it no size.
+        Message allowed =
+            allowed_text("program_ball_diameter",
+                         QT_TRANSLATE_NOOP("FieldError",
+                                           "less than %1, the %2's distance between stylus centres "
+                                           "(cycle.feature_size_mm)"));
+        allowed.args = {arg("size_mm", ArgKind::length_mm, scenario.cycle.feature_size_mm),
+                        feature_arg("feature", feature)};
+        throw InputError(FieldError{"ball_diameter_mm", format_number(options.ball_diameter_mm),
+                                    std::move(allowed)}
+                             .to_message());
+    }
     if (feature != Feature::surface) check_feature_plan(scenario, options);
     ProbingPlan plan;
     plan.kind = ProgramKind::cycle;

@@ -531,6 +531,10 @@
         <source>a feed at which an obstruction met by a protected move stops short of the probe&apos;s %1 limit (now %2 past it)</source>
         <translation>подача, при которой защищённое перемещение, встретив препятствие, останавливается до предела датчика %1 (сейчас — в %2 за препятствием)</translation>
     </message>
+    <message>
+        <source>less than %1, the %2&apos;s distance between stylus centres (cycle.feature_size_mm)</source>
+        <translation>меньше %1 — расстояния между центрами наконечника для элемента (%2) (cycle.feature_size_mm)</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>

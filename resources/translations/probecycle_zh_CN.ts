@@ -531,6 +531,10 @@
         <source>a feed at which an obstruction met by a protected move stops short of the probe&apos;s %1 limit (now %2 past it)</source>
         <translation>受保护移动碰到障碍物时能在测头 %1 极限之内停止的进给率（当前停在障碍物之后 %2）</translation>
     </message>
+    <message>
+        <source>less than %1, the %2&apos;s distance between stylus centres (cycle.feature_size_mm)</source>
+        <translation>小于 %1，即%2的测针中心间距（cycle.feature_size_mm）</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>

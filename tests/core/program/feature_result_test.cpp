@@ -135,6 +135,12 @@ TEST(FeatureResult, UncertaintiesCombineThePointsAsIndependent) {
     EXPECT_NEAR(std::sqrt(sum2 / n), std::sqrt(2.0), 0.01);
 }
 
+TEST(FeatureResult, ABallAsLargeAsABossIsRefused) {
+    EXPECT_THROW(make_cycle_plan(single_touch(Feature::boss, 6.0), {{'Z', -1}, 6.0}), InputError);
+    EXPECT_THROW(make_cycle_plan(single_touch(Feature::web, 12.0), {{'X', 1}, 12.0}), InputError);
+    EXPECT_NO_THROW(make_cycle_plan(single_touch(Feature::boss, 56.0), {{'Z', -1}, 6.0}));
+}
+
 TEST(FeatureResult, APlanWithoutTheResultsValuesIsRefused) {
     ProbingPlan plan = make_cycle_plan(single_touch(Feature::bore, 44.0), {});
     EXPECT_FALSE(result_spec(make_ring_plan(Scenario{}, RingPlanOptions{})).has_value());
