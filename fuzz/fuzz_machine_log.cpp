@@ -10,7 +10,8 @@
 // importer skips blank lines). For the cycle's slots the same log is also
 // matched (recorded_touch_positions) to the default cycle and to a bore's
 // (protected moves, two repeats at each point): the positions of exactly the
-// plan's recorded touches, or a CsvError.
+// plan's recorded touches, or a CsvError; and imported as a cycle's log
+// (import_cycle_log): a finite feature result, or a CsvError.
 //
 // The seeds (fuzz/seeds/machine_log/, named for their first byte) are logs of
 // these plans in each format. The LinuxCNC LOG files and the DPRNT outputs
@@ -18,6 +19,7 @@
 // with the default scenario and options: a change to those plans makes the
 // ids stale (the import then stops at the id), and the seeds need the new ids.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -30,6 +32,7 @@
 #include "core/cycle/scenario.h"
 #include "core/lab/calibration.h"
 #include "core/lab/delay_fit.h"
+#include "core/program/cycle_import.h"
 #include "core/program/machine_log.h"
 #include "core/program/plan.h"
 
@@ -92,6 +95,20 @@ void check_lab_csv(const ProbingPlan& plan, const std::string& csv) {
     }
 }
 
+// Imported as a cycle's log: a result of finite figures, or a CsvError.
+void check_cycle_import(const ProbingPlan& plan, DialectId dialect, std::string_view text) {
+    try {
+        const CycleImport import = import_cycle_log(plan, dialect, text);
+        if (!std::isfinite(import.result.size_mm) || !std::isfinite(import.result.deviation_mm)) {
+            std::abort();
+        }
+        (void)cycle_import_text(import);
+        (void)cycle_import_json(import);
+    } catch (const CsvError& e) {
+        (void)e.to_message();
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -104,6 +121,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (plan.kind == ProgramKind::cycle) {
         check_recorded(plan, dialect, text);
         check_recorded(bore_plan(), dialect, text);
+        check_cycle_import(plan, dialect, text);
+        check_cycle_import(bore_plan(), dialect, text);
     }
     std::string csv;
     try {

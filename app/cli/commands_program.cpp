@@ -11,6 +11,7 @@
 #include "core/common/file_io.h"
 #include "core/common/input_error.h"
 #include "core/common/report_header.h"
+#include "core/program/cycle_import.h"
 #include "core/program/machine_log.h"
 #include "core/program/program_writer.h"
 
@@ -169,6 +170,7 @@ void add_cycle(CLI::App& program) {
     struct Args {
         ProgramArgs common;
         std::string axis{"Z-"};
+        NumberArg ball{0.0, 100.0};
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = program.add_subcommand(
@@ -183,9 +185,14 @@ void add_cycle(CLI::App& program) {
                     "used")
         ->type_name("X+|X-|Y+|Y-|Z+|Z-")
         ->check(axis_check());
+    add_number(*cmd, "--ball-diameter-mm", args->ball,
+               "The stylus's effective ball diameter (from calibrate ring), for the feature's "
+               "size and a surface's position (default 0: between stylus centres)",
+               "MM");
     cmd->callback([args] {
         CyclePlanOptions options;
         options.touch = *axis_direction_from_string(args->axis);
+        options.ball_diameter_mm = args->ball.value_or(options.ball_diameter_mm);
         write_plan_and_program(args->common,
                                [&](const Scenario& s) { return make_cycle_plan(s, options); });
     });
@@ -197,12 +204,14 @@ void add_import(CLI::App& app) {
         std::string plan;
         std::string log;
         std::string out;
+        bool json{false};
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand(
         "import",
-        "The control's record of a program's touches as the lab's CSV (the delay CSV of "
-        "'latency fit' or the ring CSV of 'calibrate ring')");
+        "The control's record of a program's touches: a delay or ring program's as the lab's CSV "
+        "(the delay CSV of 'latency fit' or the ring CSV of 'calibrate ring'), a cycle "
+        "program's as the feature's result (size, centre, uncertainty, tolerance)");
     cmd->add_option("LOG", args->log,
                     "LinuxCNC: probecycle_log.txt (or the PROBEOPEN file); grbl: the sender's "
                     "console saved to a file; fanuc: the program's DPRNT output as captured")
@@ -214,8 +223,11 @@ void add_import(CLI::App& app) {
     cmd->add_option("--plan", args->plan, "The plan file 'program --plan' wrote with the program")
         ->type_name("FILE.json")
         ->required();
-    cmd->add_option("--out", args->out, "Write the CSV to FILE (atomically; default stdout)")
+    cmd->add_option("--out", args->out,
+                    "Write the CSV or the result to FILE (atomically; default stdout)")
         ->type_name("FILE");
+    cmd->add_flag("--json", args->json,
+                  "A cycle plan: the feature's result as JSON (default text)");
     cmd->callback([args] {
         ProbingPlan plan;
         try {
@@ -224,6 +236,20 @@ void add_import(CLI::App& app) {
             throw std::runtime_error(args->plan + ": not a probing plan:\n" + e.what());
         }
         const DialectId id = *dialect_from_string(args->dialect);
+        if (plan.kind == ProgramKind::cycle) {
+            // A plan without the result's values is the plan file's fault.
+            try {
+                (void)result_spec(plan);
+            } catch (const InputError& e) {
+                throw std::runtime_error(args->plan + ": " + e.what());
+            }
+            write_output(args->out, read_lab_csv(args->log, [&](const std::string& text) {
+                             const CycleImport import = import_cycle_log(plan, id, text);
+                             return args->json ? cycle_import_json(import)
+                                               : cycle_import_text(import);
+                         }));
+            return;
+        }
         write_output(args->out, read_lab_csv(args->log, [&](const std::string& text) {
                          return import_machine_log(plan, id, text);
                      }));

@@ -20,6 +20,7 @@ constexpr std::array kFilterKinds = {FilterKind::none, FilterKind::linear, Filte
                                      FilterKind::bell};
 constexpr std::array kStrategies = {Strategy::single_touch, Strategy::two_touch};
 constexpr std::array kBackoffFroms = {BackoffFrom::stop, BackoffFrom::trigger};
+constexpr std::array kToleranceActions = {ToleranceAction::flag, ToleranceAction::stop};
 constexpr std::array kFeatures = {Feature::surface, Feature::web, Feature::pocket, Feature::bore,
                                   Feature::boss};
 
@@ -473,6 +474,27 @@ const std::vector<KeyEntry>& key_table() {
                     "feed and the rapid feed it bounds every feed the optimiser tries."),
                 QT_TRANSLATE_NOOP("Parameter", "Slowest feed")},
                PC_NUMBER(cycle, min_feed_mm_min)),
+        number({"cycle.size_tolerance_mm", "mm", 0.0, 100.0,
+                QT_TRANSLATE_NOOP(
+                    "Parameter",
+                    "Web, pocket, bore, boss: the cycle program checks the measured size (width "
+                    "or diameter) against the feature size plus or minus this, and the import "
+                    "does the same. 0 means no check."),
+                QT_TRANSLATE_NOOP("Parameter", "Size tolerance")},
+               PC_NUMBER(cycle, size_tolerance_mm)),
+        word(
+            {"cycle.tolerance_action", "", 0.0, 0.0,
+             QT_TRANSLATE_NOOP(
+                 "Parameter",
+                 "What the cycle program does when the measured size is outside its tolerance. "
+                 "flag: sets its out-of-tolerance variable and writes OUT OF TOLERANCE to its "
+                 "log, then goes on. stop: the same, then stops with an alarm."),
+             QT_TRANSLATE_NOOP("Parameter", "If out of tolerance"), KeyKind::word},
+            enum_words<ToleranceAction>(kToleranceActions),
+            [](const Scenario& s) { return std::string(to_string(s.cycle.tolerance_action)); },
+            [](Scenario& s, std::string_view w) {
+                return set_from(s.cycle.tolerance_action, tolerance_action_from_string(w));
+            }),
         number({"cycle.knee_tolerance", "", 0.0, 0.5,
                 QT_TRANSLATE_NOOP(
                     "Parameter",
@@ -874,6 +896,10 @@ const char* to_string(BackoffFrom from) {
     return from == BackoffFrom::stop ? "stop" : "trigger";
 }
 
+const char* to_string(ToleranceAction action) {
+    return action == ToleranceAction::flag ? "flag" : "stop";
+}
+
 const char* to_string(Feature feature) {
     switch (feature) {
         case Feature::surface:
@@ -923,6 +949,13 @@ std::optional<Strategy> strategy_from_string(std::string_view word) {
 std::optional<BackoffFrom> backoff_from_from_string(std::string_view word) {
     for (BackoffFrom f : kBackoffFroms) {
         if (word == to_string(f)) return f;
+    }
+    return std::nullopt;
+}
+
+std::optional<ToleranceAction> tolerance_action_from_string(std::string_view word) {
+    for (ToleranceAction a : kToleranceActions) {
+        if (word == to_string(a)) return a;
     }
     return std::nullopt;
 }

@@ -22,6 +22,10 @@ enum class Feature { surface, web, pocket, bore, boss };
 // stopped (Renishaw's cycles) or the trigger position the control recorded
 // (the skip position many macros back off from).
 enum class BackoffFrom { stop, trigger };
+// What a cycle program does with a feature's size outside its tolerance
+// (cycle.size_tolerance_mm): flag it (a variable and the log line) or stop
+// with an alarm.
+enum class ToleranceAction { flag, stop };
 
 struct Machine {
     AccelModel accel_model{AccelModel::time_constant};
@@ -113,6 +117,10 @@ struct Cycle {
     // than min_feed_mm_min (a probing feed a shop would accept).
     double min_start_mm{1.0};
     double min_feed_mm_min{10.0};
+    // The cycle program's check of a feature's measured size: +- this about
+    // its nominal size (feature_size_mm); 0 = no check.
+    double size_tolerance_mm{0.0};
+    ToleranceAction tolerance_action{ToleranceAction::flag};
     // The knee is the lowest feed whose cycle time is within this fraction of
     // the best (domain.md, "Cycle time versus feed").
     double knee_tolerance{0.01};
@@ -197,12 +205,14 @@ void apply_setting(Scenario& scenario, std::string_view assignment);
 
 const char* to_string(Strategy strategy);
 const char* to_string(BackoffFrom from);
+const char* to_string(ToleranceAction action);
 const char* to_string(Feature feature);
 // The feature's name ("bore") as a message argument, translated where it is
 // shown (the CLI prints the English word, the key file's).
 MessageArg feature_arg(std::string name, Feature feature);
 std::optional<Strategy> strategy_from_string(std::string_view word);
 std::optional<BackoffFrom> backoff_from_from_string(std::string_view word);
+std::optional<ToleranceAction> tolerance_action_from_string(std::string_view word);
 std::optional<Feature> feature_from_string(std::string_view word);
 std::optional<AccelModel> accel_model_from_string(std::string_view word);
 std::optional<FilterKind> filter_kind_from_string(std::string_view word);

@@ -93,6 +93,16 @@ double combined_expanded_uncertainty_mm(double fixed_expanded_mm, double trigger
                      trigger_expanded_mm * trigger_expanded_mm / n);
 }
 
+double independent_expanded_uncertainty_mm(const UncertaintyBudget& budget) {
+    double variance = 0.0;
+    for (const BudgetLine& l : budget.lines) {
+        if (l.term == BudgetTerm::calibration_artefact || l.term == BudgetTerm::thermal_drift)
+            continue;
+        variance += l.standard_mm * l.standard_mm;
+    }
+    return kCoverageFactor * std::sqrt(variance);
+}
+
 UncertaintyBudget uncertainty_budget(const Scenario& scenario, double trigger_speed_mm_s) {
     UncertaintyBudget b;
     b.repeats = repeat_count(scenario.cycle);

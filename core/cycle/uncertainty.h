@@ -69,6 +69,14 @@ UncertaintyBudget uncertainty_budget(const Scenario& scenario, double trigger_sp
 // change: lobing, calibration artefact, machine repeatability, thermal drift.
 double fixed_expanded_uncertainty_mm(const Scenario& scenario);
 
+// The expanded uncertainty of the terms that differ from one point of a
+// feature to the next, so independent between its points (a size or centre
+// combines them as such): the trigger's (after averaging), the probe's
+// lobing (each side its own direction) and the machine's repeatability. The
+// two others are shared: the calibration artefact's error is the ball's size,
+// the same outward on every point; the thermal drift moves every point alike.
+double independent_expanded_uncertainty_mm(const UncertaintyBudget& budget);
+
 // GUM: sqrt(fixed^2 + trigger^2 / repeats), each expanded with k = 2 (the
 // same k, so the expanded figures combine as the standard ones do).
 double combined_expanded_uncertainty_mm(double fixed_expanded_mm, double trigger_expanded_mm,

@@ -58,6 +58,17 @@ namespace probecycle {
 //   writes it; so a G38.3 that does not trip writes its end point too (the
 //   manual says "each successful straight probe"; the source is followed),
 //   and the import counts the protected moves among the file's probes.
+// - A cycle's result (issue 28) in numbered parameters #110-#118:
+//   overview.adoc, "Numbered Parameters": "31-5000 - G-code user parameters.
+//   These parameters are global in the G code file, and available for
+//   general use. Volatile."; expressions in [ ], ABS[...], the operators
+//   + - * / and GT, EQ ("Expressions", "Binary Operators", "Functions"); the
+//   LOG line's "%.6f" as for the touches. Out of tolerance with a stop, the
+//   program closes its log and probe file before the ABORT (above), so that
+//   both hold the result line; and it stops only when #<_task> is 1
+//   (overview.adoc, "Predefined Named Parameters": 1 under the task, 0 in a
+//   preview), since a preview never trips the probe and would compute a size
+//   from the searches' ends.
 // Checked by running every generated program through LinuxCNC's own
 // stand-alone interpreter, rs274 (tests/core/program/rs274_check_test.cpp),
 // the abort branch too (with #5070 read as 1).
@@ -80,6 +91,7 @@ const Dialect& linuxcnc_dialect() {
                         "(LOG,probecycle plan {id} {kind})"},
         .before_probe = "",
         .after_probe = "",
+        .skip_position = {"#5061", "#5062", "#5063"},
         .guard_word = "G38.3",
         .before_guard = "",
         .after_guard = {"o{label} if [#5070 EQ 1]",
@@ -100,6 +112,18 @@ const Dialect& linuxcnc_dialect() {
         .guard_notes =
             {"Protected moves are G38.3, the probe armed: one that touches something stops",
              "the program with an error (ABORT): the path is obstructed."},
+        .result_record = {"(LOG,probecycle result S %.6f{size} X {centre_x} Y {centre_y} D "
+                          "{deviation} T {flag})"},
+        .tolerance_check = {"{flag}=0", "o9001 if [ABS[{deviation}] GT {tolerance}]", "{flag}=1",
+                            "o9001 endif"},
+        .out_of_tolerance = {"o9002 if [{flag} EQ 1]", "(LOG,probecycle out of tolerance)",
+                             "{stop}", "o9002 endif"},
+        .tolerance_stop = {"o9003 if [#<_task> EQ 1]", "(LOGCLOSE)", "(PROBECLOSE)",
+                           "(ABORT,probecycle: the measured size is out of tolerance)",
+                           "o9003 endif"},
+        .result_notes =
+            {"The log's line 'probecycle result S size X centre Y centre D deviation T",
+             "flag' holds them; the import reads it and checks it against the touches."},
     };
     return dialect;
 }
@@ -173,6 +197,9 @@ const Dialect& grbl_dialect() {
              "but cannot branch, so the program goes on; the next G38.2 or G38.3 then",
              "stops it with ALARM:4 if the probe is still deflected. No probe follows the",
              "last protected move: the import refuses a console where one answers :1."},
+        .result_notes = {"grbl has no variables or arithmetic: the program computes nothing and",
+                         "checks no tolerance. probecycle import computes the feature's result",
+                         "(and the tolerance check) from the console's [PRB:] lines."},
     };
     return dialect;
 }
@@ -247,6 +274,12 @@ const Dialect& grbl_dialect() {
 //   G40, G80, G90/G91, G94: Fanuc memory-card format (FS16i/18i-TB p.649: "A
 //   file starts with % or LF ... A file always ends with %"), the Rockwell
 //   8520 example "POPEN; BPRNT[...]; PCLOS; M30;".
+// - A cycle's result (issue 28) in the common variables #110-#118 (#100-#199
+//   are common variables cleared at power off on Fanuc, 15i manual "Custom
+//   macro", variable types), with macro B's arithmetic ([ ], ABS[...], + - /)
+//   and comparisons (LE, EQ: the tutorial above), IF[...]GOTOn to an N label
+//   further down as in the working program above; out of tolerance with a
+//   stop, alarm 103 (the range 100-255 above) after PCLOS.
 // Not confirmed, so not relied on: where DPRNT output goes (a Fanuc's I/O
 // channel, a Haas's serial port or a file: the user captures it); the sign
 // and leading zeros of a printed number (Fanuc parameter PRT): the import
@@ -302,6 +335,16 @@ const Dialect& fanuc_dialect() {
             {"Protected moves are G31 to the end of the move: when the skip position is not",
              "that end, the probe touched something, and the program prints PROBECYCLE",
              "OBSTRUCTED and stops with alarm 102 PROBE PATH OBSTRUCTED."},
+        .result_record =
+            {"DPRNT[RESULT*S{size}[44]*X{centre_x}[44]*Y{centre_y}[44]*D{deviation}[44]*"
+             "T{flag}[10]]"},
+        .tolerance_check = {"{flag}=0", "IF[ABS[{deviation}]LE{tolerance}]GOTO9003", "{flag}=1",
+                            "N9003"},
+        .out_of_tolerance = {"IF[{flag}EQ0]GOTO9004", "DPRNT[PROBECYCLE*OUT*OF*TOLERANCE]",
+                             "{stop}", "N9004"},
+        .tolerance_stop = {"PCLOS", "#3000=103(SIZE OUT OF TOLERANCE)"},
+        .result_notes = {"DPRNT prints them as RESULT S size X centre Y centre D deviation T flag;",
+                         "the import reads that line and checks it against the touches."},
         .orient_from_user = true,
     };
     return dialect;

@@ -79,6 +79,20 @@ struct Dialect {
     // Header lines of a program with protected moves: what the control does
     // when one touches something.
     std::vector<const char*> guard_notes;
+    // A cycle plan's result (feature_result.h), in a control that computes
+    // (macro variables and arithmetic); empty where it cannot (the import
+    // computes it). The variables are the writer's, the same in every such
+    // dialect ({size}, {centre_x}, {centre_y}, {deviation}, {flag}). The log
+    // line(s) of the result; the lines that set {flag} to 1 when
+    // |{deviation}| > {tolerance}; the lines that report a set flag, where a
+    // line "{stop}" stands for tolerance_stop when the plan stops out of
+    // tolerance (and is left out when it flags).
+    std::vector<const char*> result_record{};
+    std::vector<const char*> tolerance_check{};
+    std::vector<const char*> out_of_tolerance{};
+    std::vector<const char*> tolerance_stop{};
+    // Header lines of a cycle program: where its result goes.
+    std::vector<const char*> result_notes{};
     // No portable word turns the spindle to an angle: the ring program
     // needs the user's command for 180 deg (ProgramOptions).
     bool orient_from_user{false};

@@ -95,6 +95,23 @@ std::optional<std::array<double, 3>> coordinates(const std::vector<std::string_v
     return xyz;
 }
 
+// "S s X x Y y D d T t" from words[first]: the five numbers of a result
+// line; nullopt when the words are not that.
+std::optional<std::array<double, 5>> result_values(const std::vector<std::string_view>& words,
+                                                   std::size_t first) {
+    if (words.size() != first + 10) return std::nullopt;
+    std::array<double, 5> values{};
+    for (std::size_t i = 0; i < 5; ++i) {
+        const std::optional<double> value = parse_decimal(words[first + 2 * i + 1]);
+        if (words[first + 2 * i] != std::string_view(&"SXYDT"[i], 1) || !value ||
+            std::abs(*value) > kMaxCoordinate_mm) {
+            return std::nullopt;
+        }
+        values[i] = *value;
+    }
+    return values;
+}
+
 std::size_t axis_index(char axis) {
     return axis == 'X' ? 0 : axis == 'Y' ? 1 : 2;
 }
@@ -181,7 +198,8 @@ std::string csv_value(double value) {
 }  // namespace
 
 std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
-                                                      const ProbingPlan& plan) {
+                                                      const ProbingPlan& plan,
+                                                      LoggedResult* result) {
     std::vector<RecordedPosition> positions;
     bool log_file = false;
     bool probe_file = false;
@@ -195,6 +213,20 @@ std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
                 const std::string expected = plan_id(plan);
                 if (words[2] != expected) {
                     plan_mismatch(number, std::string(words[2]), expected);
+                }
+                continue;
+            }
+            if (words.size() == 4 && words[1] == "out" && words[2] == "of" &&
+                words[3] == "tolerance") {
+                if (result != nullptr) result->out_of_tolerance_line = number;
+                continue;
+            }
+            if (words.size() >= 2 && words[1] == "result") {
+                const std::optional<std::array<double, 5>> values = result_values(words, 2);
+                if (!values) bad_line(number, line, "'probecycle result S s X x Y y D d T t'");
+                if (result != nullptr) {
+                    result->line = number;
+                    result->values = *values;
                 }
                 continue;
             }
@@ -357,7 +389,8 @@ std::string plan_from_letters(std::string_view letters) {
 
 }  // namespace
 
-std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan) {
+std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan,
+                                                   LoggedResult* result) {
     constexpr const char* kTouchLine = "'TOUCH n X x Y y Z z'";
     std::vector<RecordedPosition> positions;
     bool plan_line = false;
@@ -389,10 +422,35 @@ std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const 
                                                   "the program printed PROBECYCLE NO TRIGGER: a "
                                                   "probe did not trigger and the control stopped "
                                                   "with alarm 101; nothing imported")));
+            } else if (words.size() == 4 && words[1] == "OUT" && words[2] == "OF" &&
+                       words[3] == "TOLERANCE") {
+                if (result != nullptr) result->out_of_tolerance_line = number;
             } else if (words.size() != 2 || words[1] != "END") {
                 bad_line(number, line,
                          "'PROBECYCLE PLAN ...', 'PROBECYCLE END', 'PROBECYCLE NO TRIGGER' or "
                          "'PROBECYCLE OBSTRUCTED'");
+            }
+            continue;
+        }
+        if (words[0].substr(0, 6) == "RESULT" && plan_line) {
+            // "RESULT S s X x Y y D d T t", a number's sign and digits
+            // perhaps apart (as a touch's); before our PLAN line, another
+            // program's output.
+            std::size_t at = 6;
+            std::array<double, 5> values{};
+            bool readable = true;
+            for (std::size_t i = 0; i < 5 && readable; ++i) {
+                const std::optional<double> value =
+                    dprnt_word(line, at, "SXYDT"[i]) ? dprnt_number(line, at) : std::nullopt;
+                readable = value.has_value();
+                values[i] = value.value_or(0.0);
+            }
+            if (!readable || trimmed(std::string_view(line).substr(at)).size() != 0) {
+                bad_line(number, line, "'RESULT S s X x Y y D d T t'");
+            }
+            if (result != nullptr) {
+                result->line = number;
+                result->values = values;
             }
             continue;
         }
@@ -450,16 +508,17 @@ void refuse_cycle_plan(const ProbingPlan& plan) {
 // The positions in the dialect's file, and whether they stand for every probe
 // (and protected move) or the recorded touches only.
 std::vector<RecordedPosition> read_positions(const ProbingPlan& plan, DialectId dialect,
-                                             std::string_view text, bool& every_probe) {
+                                             std::string_view text, bool& every_probe,
+                                             LoggedResult* result = nullptr) {
     if (dialect == DialectId::grbl) {
         every_probe = true;
         return read_grbl_positions(text, plan);
     }
     if (dialect == DialectId::fanuc) {
         every_probe = false;
-        return read_fanuc_positions(text, plan);
+        return read_fanuc_positions(text, plan, result);
     }
-    std::vector<RecordedPosition> positions = read_linuxcnc_positions(text, plan);
+    std::vector<RecordedPosition> positions = read_linuxcnc_positions(text, plan, result);
     // The LOG file's first line that is not blank opens with "probecycle";
     // otherwise it is the PROBEOPEN file.
     const std::size_t first = text.find_first_not_of(" \t\r\n");
@@ -514,6 +573,15 @@ std::vector<RecordedPosition> recorded_touch_positions(const ProbingPlan& plan, 
     bool every_probe = false;
     const std::vector<RecordedPosition> positions =
         read_positions(plan, dialect, text, every_probe);
+    return match_recorded_touches(plan, positions, every_probe);
+}
+
+std::vector<RecordedPosition> recorded_touch_positions(const ProbingPlan& plan, DialectId dialect,
+                                                       std::string_view text,
+                                                       LoggedResult& result) {
+    bool every_probe = false;
+    const std::vector<RecordedPosition> positions =
+        read_positions(plan, dialect, text, every_probe, &result);
     return match_recorded_touches(plan, positions, every_probe);
 }
 

@@ -24,13 +24,27 @@ struct RecordedPosition {
     std::array<double, 3> xyz{};
 };
 
+// The result line of a cycle program that computes its feature's result
+// (LinuxCNC's "probecycle result S s X x Y y D d T t", the Fanuc-type DPRNT's
+// "RESULT S s X x Y y D d T t"), and whether it wrote "out of tolerance".
+struct LoggedResult {
+    std::size_t line{0};  // 0: the log holds no result line
+    // The size (a surface: its position), the centre's X and Y, the
+    // deviation and the out-of-tolerance flag (0 or 1).
+    std::array<double, 5> values{};
+    std::size_t out_of_tolerance_line{0};  // 0: none
+};
+
 // LinuxCNC: the program's LOG file ("probecycle plan <id> <kind>", then
 // "probecycle touch <n> <x> <y> <z>" per recorded touch; the plan's id must
 // be `plan`'s), or the PROBEOPEN file (9 numbers per probe: every probe, the
 // locating and first touches too, and every protected move, whose G38.3 writes
 // its end point when it does not trip). Blank lines are skipped.
+// A cycle program's result line and "probecycle out of tolerance" go to
+// `result` when given.
 std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
-                                                      const ProbingPlan& plan);
+                                                      const ProbingPlan& plan,
+                                                      LoggedResult* result = nullptr);
 // grbl: a sender's console log; "[PRB:x,y,z:1]" wherever it stands on a
 // line is a probe (every probe and protected move, in the plan's order);
 // every other line is ignored. A probe that did not trigger (":0", or an
@@ -48,7 +62,10 @@ std::vector<RecordedPosition> read_grbl_positions(std::string_view text, const P
 // and '%' are dropped; a number may have leading spaces, a sign and spaces
 // between its sign and its digits. Other lines (another program's output on
 // the same channel) are ignored.
-std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan);
+// A cycle program's "RESULT ..." line (after the PLAN line) and "PROBECYCLE
+// OUT OF TOLERANCE" go to `result` when given.
+std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan,
+                                                   LoggedResult* result = nullptr);
 
 // The positions of the plan's recorded touches, in order, from `positions`:
 // every probe and protected move of the plan in order (`every_probe`) or its
@@ -70,6 +87,11 @@ std::string lab_csv_from_positions(const ProbingPlan& plan,
 // touches, for a plan of any kind (a cycle's too). Throws CsvError as the import does.
 std::vector<RecordedPosition> recorded_touch_positions(const ProbingPlan& plan, DialectId dialect,
                                                        std::string_view text);
+
+// The positions in the dialect's file, matched to the plan, and the result
+// line when the program logged one.
+std::vector<RecordedPosition> recorded_touch_positions(const ProbingPlan& plan, DialectId dialect,
+                                                       std::string_view text, LoggedResult& result);
 
 // The whole import: the file in the dialect, matched to the plan, as the
 // lab's CSV (InputError for a cycle plan).

@@ -11,6 +11,8 @@
 #include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/cycle/cycle.h"
+#include "core/cycle/uncertainty.h"
+#include "core/program/feature_result.h"
 
 namespace probecycle {
 
@@ -623,8 +625,47 @@ ProbingPlan make_ring_plan(const Scenario& scenario, const RingPlanOptions& opti
     return plan;
 }
 
+namespace {
+
+// The values the feature's result needs (feature_result.h, result_spec); the
+// uncertainty to the nanometre, the digits the programs' logs print.
+void add_result_values(ProbingPlan& plan, const Scenario& scenario,
+                       const CyclePlanOptions& options) {
+    add_value(plan, kBallDiameterValue, options.ball_diameter_mm);
+    const CycleResult model = evaluate(scenario);
+    add_value(plan, kPointUncertaintyValue, std::round(model.uncertainty_mm() * 1e6) / 1e6);
+    // Issue 28: how the point's budget splits between its points (a size or
+    // a centre combines them; feature_result.cpp).
+    add_value(plan, kIndependentUncertaintyValue,
+              std::round(independent_expanded_uncertainty_mm(
+                             uncertainty_budget(scenario, model.trigger_speed_mm_s())) *
+                         1e6) /
+                  1e6);
+    add_values(plan, scenario, {"probe.artefact_uncertainty_mm", "machine.thermal_drift_mm"});
+    if (scenario.cycle.feature != Feature::surface && scenario.cycle.size_tolerance_mm > 0.0) {
+        add_values(plan, scenario, {"cycle.size_tolerance_mm", "cycle.tolerance_action"});
+    }
+}
+
+}  // namespace
+
 ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& options) {
     const Feature feature = scenario.cycle.feature;
+    check_range(options.ball_diameter_mm, 0.0, 100.0, "ball_diameter_mm", "mm");
+    if (lifts_over(feature) && options.ball_diameter_mm >= scenario.cycle.feature_size_mm) {
+        // A boss's or web's stylus centres stand the ball's diameter apart
+        // over its size: a ball that large leaves it no size.
+        Message allowed =
+            allowed_text("program_ball_diameter",
+                         QT_TRANSLATE_NOOP("FieldError",
+                                           "less than %1, the %2's distance between stylus centres "
+                                           "(cycle.feature_size_mm)"));
+        allowed.args = {arg("size_mm", ArgKind::length_mm, scenario.cycle.feature_size_mm),
+                        feature_arg("feature", feature)};
+        throw InputError(FieldError{"ball_diameter_mm", format_number(options.ball_diameter_mm),
+                                    std::move(allowed)}
+                             .to_message());
+    }
     if (feature != Feature::surface) check_feature_plan(scenario, options);
     ProbingPlan plan;
     plan.kind = ProgramKind::cycle;
@@ -639,9 +680,11 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
         add_values(plan, scenario,
                    {"cycle.feature", "cycle.feature_size_mm", "cycle.position_feed_mm_min"});
         if (lifts_over(feature)) add_values(plan, scenario, {"cycle.clearance_mm"});
+        add_result_values(plan, scenario, options);
         add_feature_touches(plan, scenario, options);
         return plan;
     }
+    add_result_values(plan, scenario, options);
     plan.steps.push_back(pause_step("check: the probe stands " +
                                     mm_text(scenario.cycle.approach_mm) +
                                     " in front of the surface, touching along " +

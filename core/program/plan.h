@@ -136,8 +136,15 @@ struct RingPlanOptions {
 // cycle.repeats times, as the model averages them (single-touch: back to the
 // start and again; two-touch: backed off from where it stopped and again),
 // every one recorded.
+// The plan holds what the feature's result needs (feature_result.h): the
+// stylus's effective ball diameter, the model's uncertainty of one measured
+// point (point_uncertainty_mm) and, with cycle.size_tolerance_mm set, the
+// size's tolerance and what happens outside it.
 struct CyclePlanOptions {
     AxisDirection touch{'Z', -1};
+    // The stylus's effective ball diameter (the ring calibration's); 0: the
+    // results are stylus-centre positions and distances.
+    double ball_diameter_mm{0.0};
 };
 
 // Throw InputError naming the option and what is allowed.

@@ -1,6 +1,7 @@
 #include "core/program/program_writer.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <optional>
@@ -8,6 +9,7 @@
 
 #include "core/common/input_error.h"
 #include "core/common/number_format.h"
+#include "core/program/feature_result.h"
 
 namespace probecycle {
 
@@ -166,6 +168,166 @@ std::optional<double> next_orientation(const ProbingPlan& plan, std::size_t at) 
     return std::nullopt;
 }
 
+// A cycle's result (feature_result.h) in the variables of a control that
+// computes, the same numbers in every such dialect (README, "What the cycle
+// program measures"): #110-#113 the mean stylus-centre coordinate of each
+// side, #114 the size (a surface: its position), #115 and #116 the centre's
+// X and Y, #117 the deviation from the nominal size, #118 1 when out of
+// tolerance.
+constexpr int kFirstSideVariable = 110;
+constexpr const char* kSizeVariable = "#114";
+constexpr std::array<const char*, 2> kCentreVariables = {"#115", "#116"};
+constexpr const char* kDeviationVariable = "#117";
+constexpr const char* kFlagVariable = "#118";
+
+std::string side_variable(std::size_t side) {
+    // (Appended: g++ 12 warns falsely of an overlapping memcpy in
+    // "#" + std::to_string(n).)
+    std::string name("#");
+    name += std::to_string(kFirstSideVariable + static_cast<int>(side));
+    return name;
+}
+
+// A constant in a result's expression: 4 decimals (0.1 um), signed.
+std::string signed_constant(double value) {
+    std::string text = to_chars_fixed(value, 4);
+    if (text[0] != '-') text.insert(text.begin(), '+');
+    return text;
+}
+
+std::string with_result_variables(std::string text) {
+    text = replaced(std::move(text), "{size}", kSizeVariable);
+    text = replaced(std::move(text), "{centre_x}", kCentreVariables[0]);
+    text = replaced(std::move(text), "{centre_y}", kCentreVariables[1]);
+    text = replaced(std::move(text), "{deviation}", kDeviationVariable);
+    return replaced(std::move(text), "{flag}", kFlagVariable);
+}
+
+// The header's lines on the result: what each variable holds.
+std::vector<std::string> result_header(const ResultSpec& spec, const Dialect& dialect) {
+    std::vector<std::string> lines;
+    if (dialect.result_record.empty()) {
+        for (const char* note : dialect.result_notes) lines.emplace_back(note);
+        return lines;
+    }
+    std::string sides;
+    for (const AxisDirection& side : spec.sides)
+        sides += (sides.empty() ? "" : ", ") + to_string(side);
+    const std::string ball =
+        spec.ball_diameter_mm > 0.0
+            ? "with the effective ball diameter " + program_number(spec.ball_diameter_mm) + " mm"
+            : std::string("between stylus centres (ball diameter 0)");
+    lines.emplace_back("Result, computed by the program from the recorded touches:");
+    const std::string side_range =
+        spec.sides.size() > 1 ? side_variable(0) + "-" + side_variable(spec.sides.size() - 1)
+                              : side_variable(0);
+    lines.push_back(side_range + " the mean stylus-centre coordinate of the side" +
+                    (spec.sides.size() > 1 ? "s " : " ") + sides + ",");
+    lines.push_back(std::string(kSizeVariable) + " the " + size_name(spec.feature) + " " + ball +
+                    ",");
+    if (spec.feature == Feature::surface) {
+        lines.push_back(std::string(kCentreVariables[0]) + ", " + kCentreVariables[1] + ", " +
+                        kDeviationVariable + " and " + kFlagVariable +
+                        " 0 (a surface has no size).");
+    } else {
+        lines.push_back(std::string(kCentreVariables[0]) + " and " + kCentreVariables[1] +
+                        " its centre in X and Y (0 along an axis not measured),");
+        lines.push_back(std::string(kDeviationVariable) + " its deviation from the nominal " +
+                        program_number(spec.nominal_size_mm()) + " mm,");
+        if (spec.checks_tolerance()) {
+            lines.push_back(std::string(kFlagVariable) + " 1 when that is over +-" +
+                            program_number(spec.size_tolerance_mm) + " mm, else 0; out of");
+            lines.emplace_back(spec.tolerance_action == ToleranceAction::stop
+                                   ? "tolerance the program logs it and stops with an alarm."
+                                   : "tolerance the program logs it and goes on.");
+        } else {
+            lines.push_back(std::string(kFlagVariable) + " 0 (no tolerance check).");
+        }
+    }
+    for (const char* note : dialect.result_notes) lines.emplace_back(note);
+    return lines;
+}
+
+// After the last touch: the sides' means, the result, the tolerance check
+// and the log line.
+std::vector<std::string> result_lines(const ResultSpec& spec, const Dialect& dialect) {
+    std::vector<std::string> lines;
+    std::vector<int> count(spec.sides.size(), 0);
+    for (const std::size_t side : spec.touch_side) ++count[side];
+    for (std::size_t s = 0; s < spec.sides.size(); ++s) {
+        if (count[s] > 1) {
+            lines.push_back(side_variable(s) + "=[" + side_variable(s) + "/" +
+                            std::to_string(count[s]) + "]");
+        }
+    }
+    const std::string p0 = side_variable(0);
+    const double ball = spec.ball_diameter_mm;
+    // The ball enlarges what is measured inside (a pocket, a bore) and
+    // shrinks what is measured outside (a web, a boss).
+    const std::string with_ball =
+        ball == 0.0 ? std::string()
+                    : signed_constant(spec.feature == Feature::surface
+                                          ? spec.sides[0].direction * 0.5 * ball
+                                          : size_with_ball_mm(spec.feature, 0.0, ball));
+    const std::string size = std::string(kSizeVariable) + "=";
+    switch (spec.feature) {
+        case Feature::surface:
+            lines.push_back(size + (ball == 0.0 ? p0 : "[" + p0 + with_ball + "]"));
+            lines.push_back(std::string(kCentreVariables[0]) + "=0");
+            lines.push_back(std::string(kCentreVariables[1]) + "=0");
+            break;
+        case Feature::pocket:
+        case Feature::web: {
+            const std::string p1 = side_variable(1);
+            const std::size_t axis = spec.sides[0].axis == 'X' ? 0 : 1;
+            lines.push_back(size + "[" + p0 + "-" + p1 + with_ball + "]");
+            lines.push_back(std::string(kCentreVariables[axis]) + "=[[" + p0 + "+" + p1 + "]/2]");
+            lines.push_back(std::string(kCentreVariables[1 - axis]) + "=0");
+            break;
+        }
+        case Feature::bore:
+        case Feature::boss: {
+            const std::string p1 = side_variable(1);
+            const std::string p2 = side_variable(2);
+            const std::string p3 = side_variable(3);
+            lines.push_back(size + "[[" + p0 + "-" + p1 + "+" + p2 + "-" + p3 + "]/2" + with_ball +
+                            "]");
+            lines.push_back(std::string(kCentreVariables[0]) + "=[[" + p0 + "+" + p1 + "]/2]");
+            lines.push_back(std::string(kCentreVariables[1]) + "=[[" + p2 + "+" + p3 + "]/2]");
+            break;
+        }
+    }
+    std::string deviation = std::string(kDeviationVariable) + "=";
+    if (spec.feature == Feature::surface) {
+        deviation += "0";
+    } else {
+        deviation += "[";
+        deviation += kSizeVariable;
+        deviation += signed_constant(-spec.nominal_size_mm());
+        deviation += "]";
+    }
+    lines.push_back(deviation);
+    const std::string tolerance = to_chars_fixed(spec.size_tolerance_mm, 4);
+    if (spec.checks_tolerance()) {
+        for (const char* line : dialect.tolerance_check) {
+            lines.push_back(replaced(with_result_variables(line), "{tolerance}", tolerance));
+        }
+    } else {
+        lines.push_back(std::string(kFlagVariable) + "=0");
+    }
+    for (const char* line : dialect.result_record) lines.push_back(with_result_variables(line));
+    if (spec.checks_tolerance()) {
+        for (const char* line : dialect.out_of_tolerance) {
+            if (std::string_view(line) != "{stop}") {
+                lines.push_back(with_result_variables(line));
+            } else if (spec.tolerance_action == ToleranceAction::stop) {
+                for (const char* stop : dialect.tolerance_stop) lines.emplace_back(stop);
+            }
+        }
+    }
+    return lines;
+}
+
 class Writer {
   public:
     explicit Writer(const Dialect& dialect) : d_(dialect) {}
@@ -298,6 +460,12 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
     if (guards) {
         for (const char* note : dialect.guard_notes) w.comment(note);
     }
+    const std::optional<ResultSpec> spec = result_spec(plan);
+    const bool computes = spec && !dialect.result_record.empty();
+    std::vector<bool> side_started(spec ? spec->sides.size() : 0, false);
+    if (spec) {
+        for (const std::string& note : result_header(*spec, dialect)) w.comment(note);
+    }
     w.line(dialect.modes);
     std::string kind_upper = to_string(plan.kind);
     for (char& c : kind_upper) c = static_cast<char>(c - 'a' + 'A');
@@ -346,6 +514,24 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                         w.line(replaced(after, "{n}", std::to_string(recorded)));
                     }
                 }
+                if (step.recorded && computes) {
+                    // The side's sum of its touches' skip positions.
+                    const std::size_t side = spec->touch_side[recorded - 1];
+                    const std::string skip = dialect.skip_position.at(axis_index(step.axis));
+                    const std::string variable = side_variable(side);
+                    std::string sum = variable + "=";
+                    if (side_started[side]) {
+                        sum += "[";
+                        sum += variable;
+                        sum += "+";
+                        sum += skip;
+                        sum += "]";
+                    } else {
+                        sum += skip;
+                    }
+                    w.line(sum);
+                    side_started[side] = true;
+                }
                 break;
             case StepKind::guard: {
                 // A number of the move's own: LinuxCNC's o-word of its branch.
@@ -367,6 +553,10 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                 }
                 break;
         }
+    }
+    if (computes) {
+        w.comment("the " + size_name(spec->feature) + " from the recorded touches");
+        for (const std::string& line : result_lines(*spec, dialect)) w.line(line);
     }
     for (const char* close : dialect.close_record) w.line(close);
     for (const char* end : dialect.end) w.line(end);

@@ -531,6 +531,10 @@
         <source>a feed at which an obstruction met by a protected move stops short of the probe&apos;s %1 limit (now %2 past it)</source>
         <translation>подача, при которой защищённое перемещение, встретив препятствие, останавливается до предела датчика %1 (сейчас — в %2 за препятствием)</translation>
     </message>
+    <message>
+        <source>less than %1, the %2&apos;s distance between stylus centres (cycle.feature_size_mm)</source>
+        <translation>меньше %1 — расстояния между центрами наконечника для элемента (%2) (cycle.feature_size_mm)</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -667,6 +671,22 @@
     <message>
         <source>the program printed PROBECYCLE OBSTRUCTED: the probe touched something during a protected move and the control stopped with alarm 102; nothing imported</source>
         <translation>программа вывела PROBECYCLE OBSTRUCTED: датчик коснулся чего-то во время защищённого перемещения, и система ЧПУ остановилась с аварией 102; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>the program&apos;s result line gives %1 %2, its touches give %3: was the program edited, or written from another plan? Nothing imported</source>
+        <translation>строка результата программы даёт %1 %2, её касания дают %3: программу изменяли или она создана по другому плану? Ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>a %1 plan has no feature result: its import is the lab&apos;s CSV</source>
+        <translation>у плана %1 нет результата элемента: его импорт — это CSV лаборатории</translation>
+    </message>
+    <message>
+        <source>the cycle plan has no readable value %1: write the program and its plan again with this version of ProbeCycle</source>
+        <translation>в плане цикла нет читаемого значения %1: создайте программу и её план заново этой версией ProbeCycle</translation>
+    </message>
+    <message>
+        <source>the cycle plan&apos;s recorded touches do not make the sides of its %1: was the plan file edited?</source>
+        <translation>записанные касания плана цикла не образуют стороны элемента (%1): файл плана изменяли?</translation>
     </message>
 </context>
 <context>
@@ -1191,6 +1211,30 @@
         <translation>Наибольшая коррекция подачи</translation>
     </message>
     <message>
+        <source>Web, pocket, bore, boss: the cycle program checks the measured size (width or diameter) against the feature size plus or minus this, and the import does the same. 0 means no check.</source>
+        <translation>Стенка, паз, отверстие, бобышка: программа цикла сравнивает измеренный размер (ширину или диаметр) с размером элемента плюс-минус это значение; импорт делает то же. 0 — без проверки.</translation>
+    </message>
+    <message>
+        <source>Size tolerance</source>
+        <translation>Допуск на размер</translation>
+    </message>
+    <message>
+        <source>What the cycle program does when the measured size is outside its tolerance. flag: sets its out-of-tolerance variable and writes OUT OF TOLERANCE to its log, then goes on. stop: the same, then stops with an alarm.</source>
+        <translation>Что делает программа цикла, когда измеренный размер вне допуска. flag: устанавливает переменную выхода за допуск и пишет OUT OF TOLERANCE в журнал, затем продолжает. stop: то же, затем останавливается с аварийным сообщением.</translation>
+    </message>
+    <message>
+        <source>Flag it and go on</source>
+        <translation>Отметить и продолжить</translation>
+    </message>
+    <message>
+        <source>Stop with an alarm</source>
+        <translation>Остановить с аварийным сообщением</translation>
+    </message>
+    <message>
+        <source>If out of tolerance</source>
+        <translation>Если вне допуска</translation>
+    </message>
+    <message>
         <source>Unidirectional positioning repeatability of the axes, 2 sigma, from the machine&apos;s acceptance test (ISO 230-2 states R = 4 sigma: enter R/2). A term of the uncertainty budget: u = value/2, the same for repeated touches.</source>
         <translation>Односторонняя повторяемость позиционирования осей, 2 сигма, из приёмочных испытаний станка (ISO 230-2 даёт R = 4 сигма: введите R/2). Член бюджета неопределённости: u = значение/2, одинаков для повторных касаний.</translation>
     </message>
@@ -1227,12 +1271,12 @@
         <translation>Эталон калибровки (k = 2)</translation>
     </message>
     <message>
-        <source>Target for the expanded (k = 2) uncertainty of the measured point, the whole budget (the trigger&apos;s part and the terms no feed changes); a warning appears above it. 0 means no target.</source>
-        <translation>Цель для расширенной неопределённости (k = 2) измеряемой точки по всему бюджету (доля срабатывания и члены, не зависящие от подачи); выше неё выдаётся предупреждение. 0 — цели нет.</translation>
-    </message>
-    <message>
         <source>How far the surface may lie from its nominal position (a casting, a part clamped by hand). The start distance must cover it plus the distance to reach the probing feed, so the touch is at full feed wherever the part lies. 0 means a known part: its surface is where the drawing puts it.</source>
         <translation>Насколько поверхность может отстоять от номинального положения (отливка, деталь, закреплённая вручную). Начальное расстояние должно покрывать эту величину плюс путь разгона до подачи поиска, чтобы касание происходило на полной подаче, где бы ни лежала деталь. 0 — известная деталь: её поверхность там, где её задаёт чертёж.</translation>
+    </message>
+    <message>
+        <source>Target for the expanded (k = 2) uncertainty of the measured point, the whole budget (the trigger&apos;s part and the terms no feed changes); a warning appears above it. 0 means no target.</source>
+        <translation>Цель для расширенной неопределённости (k = 2) измеряемой точки по всему бюджету (доля срабатывания и члены, не зависящие от подачи); выше неё выдаётся предупреждение. 0 — цели нет.</translation>
     </message>
     <message>
         <source>The shortest start distance the optimiser proposes: no touch starts closer to its nominal surface, whatever the part position uncertainty and the feed allow. 0 means no minimum.</source>
@@ -3992,16 +4036,16 @@
         <translation>%1 % при %2 %</translation>
     </message>
     <message>
+        <source>Expanded (k = 2) uncertainty of the measured point: the trigger&apos;s part (the scan-period range and the probe&apos;s repeatability, averaged over repeats) combined with the probe&apos;s lobing, the calibration artefact, the machine&apos;s repeatability and the thermal drift. The value&apos;s tooltip shows the budget.</source>
+        <translation>Расширенная неопределённость (k = 2) измеряемой точки: доля срабатывания (разброс периода опроса и повторяемость датчика, усреднённые по повторам) вместе с лепестковостью датчика, эталоном калибровки, повторяемостью станка и температурным дрейфом. Подсказка значения показывает бюджет.</translation>
+    </message>
+    <message>
         <source>trigger %1</source>
         <translation>срабатывание %1</translation>
     </message>
     <message>
         <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Бюджет неопределённости измерения: стандартная неопределённость каждого члена, сложенная как корень из суммы квадратов и расширенная с k = 2. Члены задаются в разделах «Станок» и «Датчик».&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>Expanded (k = 2) uncertainty of the measured point: the trigger&apos;s part (the scan-period range and the probe&apos;s repeatability, averaged over repeats) combined with the probe&apos;s lobing, the calibration artefact, the machine&apos;s repeatability and the thermal drift. The value&apos;s tooltip shows the budget.</source>
-        <translation>Расширенная неопределённость (k = 2) измеряемой точки: доля срабатывания (разброс периода опроса и повторяемость датчика, усреднённые по повторам) вместе с лепестковостью датчика, эталоном калибровки, повторяемостью станка и температурным дрейфом. Подсказка значения показывает бюджет.</translation>
     </message>
 </context>
 <context>

@@ -531,6 +531,10 @@
         <source>a feed at which an obstruction met by a protected move stops short of the probe&apos;s %1 limit (now %2 past it)</source>
         <translation>受保护移动碰到障碍物时能在测头 %1 极限之内停止的进给率（当前停在障碍物之后 %2）</translation>
     </message>
+    <message>
+        <source>less than %1, the %2&apos;s distance between stylus centres (cycle.feature_size_mm)</source>
+        <translation>小于 %1，即%2的测针中心间距（cycle.feature_size_mm）</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -667,6 +671,22 @@
     <message>
         <source>the program printed PROBECYCLE OBSTRUCTED: the probe touched something during a protected move and the control stopped with alarm 102; nothing imported</source>
         <translation>程序输出了 PROBECYCLE OBSTRUCTED：测头在保护移动中触碰到物体，系统以报警 102 停止；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>the program&apos;s result line gives %1 %2, its touches give %3: was the program edited, or written from another plan? Nothing imported</source>
+        <translation>程序的结果行给出 %1 %2，其触测给出 %3：程序是否被修改过，或由另一个计划生成？未导入任何内容</translation>
+    </message>
+    <message>
+        <source>a %1 plan has no feature result: its import is the lab&apos;s CSV</source>
+        <translation>%1 计划没有特征结果：其导入结果是实验室的 CSV</translation>
+    </message>
+    <message>
+        <source>the cycle plan has no readable value %1: write the program and its plan again with this version of ProbeCycle</source>
+        <translation>循环计划中没有可读取的值 %1：请用此版本的 ProbeCycle 重新生成程序及其计划</translation>
+    </message>
+    <message>
+        <source>the cycle plan&apos;s recorded touches do not make the sides of its %1: was the plan file edited?</source>
+        <translation>循环计划中记录的触测不能构成其%1的各侧：计划文件是否被修改过？</translation>
     </message>
 </context>
 <context>
@@ -1191,6 +1211,30 @@
         <translation>最高进给倍率</translation>
     </message>
     <message>
+        <source>Web, pocket, bore, boss: the cycle program checks the measured size (width or diameter) against the feature size plus or minus this, and the import does the same. 0 means no check.</source>
+        <translation>凸台、槽、孔、圆柱：循环程序将测得的尺寸（宽度或直径）与特征尺寸加减此值进行比较，导入时也同样检查。0 表示不检查。</translation>
+    </message>
+    <message>
+        <source>Size tolerance</source>
+        <translation>尺寸公差</translation>
+    </message>
+    <message>
+        <source>What the cycle program does when the measured size is outside its tolerance. flag: sets its out-of-tolerance variable and writes OUT OF TOLERANCE to its log, then goes on. stop: the same, then stops with an alarm.</source>
+        <translation>测得尺寸超出公差时循环程序的处理方式。flag：置位超差变量并在日志中写入 OUT OF TOLERANCE，然后继续运行。stop：同上，然后以报警停止。</translation>
+    </message>
+    <message>
+        <source>Flag it and go on</source>
+        <translation>标记并继续</translation>
+    </message>
+    <message>
+        <source>Stop with an alarm</source>
+        <translation>报警停止</translation>
+    </message>
+    <message>
+        <source>If out of tolerance</source>
+        <translation>超差时</translation>
+    </message>
+    <message>
         <source>Unidirectional positioning repeatability of the axes, 2 sigma, from the machine&apos;s acceptance test (ISO 230-2 states R = 4 sigma: enter R/2). A term of the uncertainty budget: u = value/2, the same for repeated touches.</source>
         <translation>各轴的单向定位重复性，2 sigma，取自机床验收检测（ISO 230-2 给出的 R = 4 sigma：请输入 R/2）。不确定度预算的一项：u = 数值/2，重复触测时相同。</translation>
     </message>
@@ -1227,12 +1271,12 @@
         <translation>校准标准器 (k = 2)</translation>
     </message>
     <message>
-        <source>Target for the expanded (k = 2) uncertainty of the measured point, the whole budget (the trigger&apos;s part and the terms no feed changes); a warning appears above it. 0 means no target.</source>
-        <translation>测量点扩展不确定度 (k = 2) 的目标值，针对整个预算（触发部分以及与进给率无关的各项）；超过时给出警告。0 表示无目标。</translation>
-    </message>
-    <message>
         <source>How far the surface may lie from its nominal position (a casting, a part clamped by hand). The start distance must cover it plus the distance to reach the probing feed, so the touch is at full feed wherever the part lies. 0 means a known part: its surface is where the drawing puts it.</source>
         <translation>表面可能偏离其名义位置的距离（铸件、手工装夹的零件）。起始距离必须覆盖它再加上达到探测进给率所需的距离，这样无论零件位于何处，触测都在全进给率下进行。0 表示已知零件：其表面就在图纸所定的位置。</translation>
+    </message>
+    <message>
+        <source>Target for the expanded (k = 2) uncertainty of the measured point, the whole budget (the trigger&apos;s part and the terms no feed changes); a warning appears above it. 0 means no target.</source>
+        <translation>测量点扩展不确定度 (k = 2) 的目标值，针对整个预算（触发部分以及与进给率无关的各项）；超过时给出警告。0 表示无目标。</translation>
     </message>
     <message>
         <source>The shortest start distance the optimiser proposes: no touch starts closer to its nominal surface, whatever the part position uncertainty and the feed allow. 0 means no minimum.</source>
@@ -3992,16 +4036,16 @@
         <translation>%1 %（倍率 %2 %）</translation>
     </message>
     <message>
+        <source>Expanded (k = 2) uncertainty of the measured point: the trigger&apos;s part (the scan-period range and the probe&apos;s repeatability, averaged over repeats) combined with the probe&apos;s lobing, the calibration artefact, the machine&apos;s repeatability and the thermal drift. The value&apos;s tooltip shows the budget.</source>
+        <translation>测量点的扩展不确定度 (k = 2)：触发部分（扫描周期范围和测头重复性，按重复次数取平均）与测头各向异性、校准标准器、机床重复性和热漂移合成。数值的提示显示预算。</translation>
+    </message>
+    <message>
         <source>trigger %1</source>
         <translation>触发 %1</translation>
     </message>
     <message>
         <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
         <translation>&lt;p&gt;测量的不确定度预算：各项的标准不确定度按平方和的平方根合成，并以 k = 2 扩展。各项在“机床”和“测头”中设置。&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>Expanded (k = 2) uncertainty of the measured point: the trigger&apos;s part (the scan-period range and the probe&apos;s repeatability, averaged over repeats) combined with the probe&apos;s lobing, the calibration artefact, the machine&apos;s repeatability and the thermal drift. The value&apos;s tooltip shows the budget.</source>
-        <translation>测量点的扩展不确定度 (k = 2)：触发部分（扫描周期范围和测头重复性，按重复次数取平均）与测头各向异性、校准标准器、机床重复性和热漂移合成。数值的提示显示预算。</translation>
     </message>
 </context>
 <context>

@@ -124,6 +124,68 @@ TEST(ProgramCli, FanucImportGivesTheRingCsvThatCalibrateRingReads) {
         << stopped.err;
 }
 
+// A bore's program with the ball and a tolerance; its LinuxCNC log (the plan
+// id from the program) gives the feature's result, as text and as JSON.
+TEST(ProgramCli, CycleImportGivesTheFeaturesResult) {
+    const TempDir dir;
+    const std::string plan = quote((dir / "plan.json").string());
+    const CliRun program = run(
+        "program cycle --dialect linuxcnc --set cycle.feature=bore --set cycle.feature_size_mm=44 "
+        "--set cycle.size_tolerance_mm=0.003 --set cycle.tolerance_action=stop "
+        "--ball-diameter-mm 6 --plan " +
+        plan + " --out " + quote((dir / "bore.ngc").string()));
+    ASSERT_EQ(program.exit_code, 0) << program.err;
+    const std::string text = read(dir / "bore.ngc");
+    const std::size_t at = text.find("(LOG,probecycle plan ") + 21;
+    std::string log = "probecycle plan " + text.substr(at, 16) + " cycle\n";
+    log += "probecycle touch 1 22.006000 0.000000 0.000000\n";
+    log += "probecycle touch 2 -21.998000 0.000000 0.000000\n";
+    log += "probecycle touch 3 0.000000 22.010000 0.000000\n";
+    log += "probecycle touch 4 0.000000 -21.994000 0.000000\n";
+    log += "probecycle result S 50.004000 X 0.004000 Y 0.008000 D 0.004000 T 1.000000\n";
+    log += "probecycle out of tolerance\n";
+    write(dir / "log.txt", log);
+    const std::string import =
+        "import --dialect linuxcnc --plan " + plan + " " + quote((dir / "log.txt").string());
+    const CliRun imported = run(import);
+    ASSERT_EQ(imported.exit_code, 0) << imported.err;
+    EXPECT_NE(imported.out.find("bore diameter: 50.0040 mm +- "), std::string::npos)
+        << imported.out;
+    EXPECT_NE(imported.out.find("OUT OF TOLERANCE (the program stops)"), std::string::npos)
+        << imported.out;
+    const CliRun json = run(import + " --json");
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    EXPECT_NE(json.out.find("\"format\": \"probecycle-feature-result\""), std::string::npos);
+    EXPECT_NE(json.out.find("\"out_of_tolerance\": true"), std::string::npos) << json.out;
+
+    // A result line the touches do not give: its line, and no result.
+    write(dir / "edited.txt", log.substr(0, log.find("probecycle result")) +
+                                  "probecycle result S 50.104000 X 0.004000 Y 0.008000 D "
+                                  "0.104000 T 1.000000\n");
+    const CliRun edited = run("import --dialect linuxcnc --plan " + plan + " " +
+                              quote((dir / "edited.txt").string()));
+    EXPECT_EQ(edited.exit_code, 2);
+    EXPECT_EQ(edited.out, "");
+    EXPECT_NE(edited.err.find("edited.txt: line 6: the program's result line gives S"),
+              std::string::npos)
+        << edited.err;
+
+    // A plan without the model's uncertainty: the plan file is named.
+    std::string old_plan = read(dir / "plan.json");
+    const std::size_t value = old_plan.find("    \"point_uncertainty_mm\"");
+    ASSERT_NE(value, std::string::npos) << old_plan;
+    old_plan.erase(value, old_plan.find('\n', value) + 1 - value);
+    write(dir / "old_plan.json", old_plan);
+    const CliRun old =
+        run("import --dialect linuxcnc --plan " + quote((dir / "old_plan.json").string()) + " " +
+            quote((dir / "log.txt").string()));
+    EXPECT_EQ(old.exit_code, 2);
+    EXPECT_NE(old.err.find("old_plan.json: the cycle plan has no readable value "
+                           "point_uncertainty_mm"),
+              std::string::npos)
+        << old.err;
+}
+
 TEST(ProgramCli, BadInputIsNamedWithWhatIsAllowed) {
     const struct {
         std::string arguments;

@@ -18,10 +18,24 @@ them all, each on its simulated part. For every case:
   whole periods);
 - #5061-#5063 as the program logged them are the feedback of the period that
   saw the probe: past the trigger point by the interface delay's travel plus
-  d in [0, v Ts).
+  d in [0, v Ts);
+- the feature's result the program computed and logged (#114-#118, the
+  "probecycle result" line) is the one `probecycle-cli import` computes from
+  the logged touches (to 1e-5 mm), and it is the simulated part's known
+  geometry (its size, centre or position as a calibrated probe sees it: each
+  point past its surface by the pretravel, the interface delay's travel and
+  the mean scan wait v Ts/2, which a calibration takes out; with the ball
+  diameter given to the program) within the model's scan range v Ts, the
+  range each point's wait lies in: a size within v Ts, a centre or a surface
+  within v Ts/2. The model's expanded uncertainty (k = 2), which takes the
+  touches' waits as independent, is printed beside: on this rig they are not
+  (every touch at a feed meets its wall at the same phase of the servo
+  period, trip err/vTs above), so a size can lie past it; the tolerance flag
+  where the case sets one.
 """
 import argparse
 import json
+import os
 import sys
 import time
 import unittest
@@ -112,6 +126,17 @@ CASES = {
 }
 
 
+# Cases whose program is given a ball diameter (--ball-diameter-mm): the
+# simulated part is in stylus-centre coordinates, so the result is its size
+# plus (pocket, bore) or less (web, boss) that, a surface half of it further.
+BALL_MM = {"bore_two_touch_3000": 6.0, "web_y_single_3000": 4.0,
+           "surface_y_minus_single_300": 2.0, "boss_two_touch_1500": 6.0}
+# Cases with a size tolerance (flag): one far inside, one the calibration
+# offset (about 10 um between the stylus centres) takes out of it.
+TOLERANCE = {"boss_two_touch_1500": 0.5, "pocket_x_two_touch_4000": 0.001,
+             "pocket_y_single_2000_repeats": 0.5, "bore_single_2000": 0.001}
+
+
 def part_for(cycle, axis, offset, model_scenario):
     """The simulated part where the program expects it, moved by `offset`."""
     feature = cycle.get("feature", "surface")
@@ -135,6 +160,9 @@ class Case:
     def __init__(self, name, machine, axis, probe, cycle, offset, folder):
         self.name, self.probe, self.offset = name, probe, offset
         self.cycle = dict(cycle)
+        if name in TOLERANCE:
+            self.cycle.update(size_tolerance_mm=TOLERANCE[name], tolerance_action="flag")
+        self.machine = machine
         path = lcnc_support.scenario(machine, probe, self.cycle, folder, name)
         if self.cycle.get("strategy") == "two_touch" and "backoff_mm" not in self.cycle:
             # The backoff that clears the fast touch's stop, as recommended.
@@ -145,7 +173,12 @@ class Case:
         with open(path) as f:
             model_scenario = json.load(f)
         options = ("--axis", axis) if axis else ()
-        self.program, self.plan, _ = lcnc_support.program("cycle", path, folder, name, *options)
+        self.ball_mm = BALL_MM.get(name, 0.0)
+        if self.ball_mm:
+            options += ("--ball-diameter-mm", str(self.ball_mm))
+        self.folder = folder
+        self.program, self.plan, self.plan_path = lcnc_support.program("cycle", path, folder,
+                                                                        name, *options)
         self.probes = [s for s in self.plan["steps"] if s["step"] == "probe"]
         self.blocks = sum(1 for s in self.plan["steps"] if s["step"] != "pause")
         self.part = part_for(cycle, axis, offset, model_scenario)
@@ -155,6 +188,33 @@ class Case:
     def run(self):
         return lcnc_rig.Run(program=self.program, part=self.part, probe=self.probe,
                             timeout_s=10.0 + 3.0 * self.model["cycle_time_s"], name=self.name)
+
+    def expected_result(self):
+        """The part's known geometry as a calibrated probe with the program's ball sees it:
+        (size or position, centre x, centre y), a centre None where not measured."""
+        Ts = self.machine.servo_period_s
+        recorded = [s for s in self.plan["steps"] if s["step"] == "probe" and s["recorded"]]
+        v = recorded[0]["feed_mm_min"] / 60.0
+        # Past its surface a recorded point lies the pretravel, the interface
+        # delay's travel and d in [0, v Ts): a calibration takes out their mean.
+        past = self.probe.pretravel_mm + v * self.probe.interface_delay_periods * Ts + v * Ts / 2
+        part = self.part
+        if part.kind == "surface":
+            return part.position + part.direction * (past + self.ball_mm / 2), None, None
+        inside = part.kind in ("pocket", "bore")
+        size = part.size_mm + (1 if inside else -1) * (2 * past + self.ball_mm)
+        if part.kind in ("bore", "boss"):
+            return size, part.centre[0], part.centre[1]
+        x = part.centre[0] if part.axis == "X" else None
+        y = part.centre[1] if part.axis == "Y" else None
+        return size, x, y
+
+    def imported(self, log_text):
+        log = os.path.join(self.folder, self.name + ".log.txt")
+        with open(log, "w") as f:
+            f.write(log_text)
+        return lcnc_support.cli_json("import", "--dialect", "linuxcnc", "--plan",
+                                     self.plan_path, log, "--json")
 
     def model_touch(self, step):
         two_touch = self.cycle.get("strategy") == "two_touch"
@@ -183,8 +243,18 @@ class CycleOnLinuxCnc(unittest.TestCase):
               % (cls.machine_key, cls.machine.max_accel_mm_s2, cls.machine.servo_period_s,
                  len(cls.cases), programs_s, facts["session_s"]), flush=True)
 
+    results = []
+
     @classmethod
     def tearDownClass(cls):
+        # The figures of the feature results: the program's, the import's, the
+        # part's (as a calibrated probe sees it) and the model's uncertainty.
+        if cls.results:
+            print("\n%-40s %12s %12s %12s %8s %8s %8s  %s" % (
+                "case", "program mm", "import mm", "part mm", "diff um", "vTs um", "U um",
+                "centre diff/U um"))
+            for row in cls.results:
+                print("%-40s %12.6f %12.6f %12.6f %+8.2f %8.2f %8.2f  %s" % row)
         # The figures: the model against LinuxCNC, per case. Overtravel: the
         # model's (worst case) and the measured range, per kind of touch.
         Ts = cls.machine.servo_period_s
@@ -285,9 +355,56 @@ class CycleOnLinuxCnc(unittest.TestCase):
                             % (n, error, touch.speed_mm_s * Ts))
 
 
+    def check_feature_result(self, name):
+        case = self.case(name)
+        text = case.result.files.get("probecycle_log.txt", "")
+        program, flagged = lcnc_analysis.logged_result(text)
+        self.assertIsNotNone(program, "no result line in the log:\n" + text)
+        imported = case.imported(text)
+        surface = imported["feature"] == "surface"
+        size = imported["position_mm" if surface else "size_mm"]
+        centre = (imported.get("centre_x_mm"), imported.get("centre_y_mm"))
+        # The program's own arithmetic is the import's.
+        self.assertAlmostEqual(program["S"], size, delta=1e-5)
+        for key, value in zip("XY", centre):
+            self.assertAlmostEqual(program[key], value or 0.0, delta=1e-5, msg=key)
+        if not surface:
+            self.assertAlmostEqual(program["D"], imported["deviation_mm"], delta=1e-5)
+        tolerance = imported["tolerance"]
+        out = bool(tolerance and tolerance["out_of_tolerance"])
+        self.assertEqual(program["T"], 1.0 if out else 0.0)
+        self.assertEqual(flagged, out)
+        if name in TOLERANCE:
+            self.assertIsNotNone(tolerance)
+            self.assertEqual(out, TOLERANCE[name] < 0.01, "the flag the case expects")
+        # The known geometry within the model's scan range (a point's wait
+        # lies in [0, v Ts): its calibrated mean is off by v Ts/2 at most).
+        expected = case.expected_result()
+        scan = case.model["scan_range_mm"]
+        bound = scan / 2 if surface else scan
+        self.assertLessEqual(abs(size - expected[0]), bound + TOLERANCE_MM,
+                             "%s %.6f mm, the part %.6f mm, beyond the model's v Ts %.6f mm"
+                             % ("position" if surface else "size", size, expected[0], bound))
+        centre_text = "-"
+        for axis, (got, want) in enumerate(zip(centre, expected[1:])):
+            self.assertEqual(got is None, want is None, "XY"[axis])
+            if got is None:
+                continue
+            self.assertLessEqual(abs(got - want), scan / 2 + TOLERANCE_MM,
+                                 "centre %s %.6f mm, the part %.6f mm, v Ts/2 %.6f"
+                                 % ("XY"[axis], got, want, scan / 2))
+            centre_text = ("" if centre_text == "-" else centre_text + " ") + "%s %+.2f/%.2f" % (
+                "XY"[axis], 1000 * (got - want), 1000 * imported["centre_uncertainty_mm"])
+        u_size = imported["position_uncertainty_mm" if surface else "size_uncertainty_mm"]
+        type(self).results.append((name, program["S"], size, expected[0],
+                                   1000 * (size - expected[0]), 1000 * bound, 1000 * u_size,
+                                   centre_text))
+
+
 def add_case_tests(cls, names):
     for name in names:
-        for check in ("ends_without_error", "cycle_time", "overtravel", "trip_positions"):
+        for check in ("ends_without_error", "cycle_time", "overtravel", "trip_positions",
+                      "feature_result"):
             def test(self, name=name, check=check):
                 getattr(self, "check_" + check)(name)
             setattr(cls, "test_%s_%s" % (name, check), test)

@@ -9,11 +9,16 @@
   a touch's start hits the wall; a boss larger than expected, so the move
   down beside it lands on its top. The program stops with our ABORT message
   where the probe stopped on the obstruction.
+- A bore 0.2 mm larger than expected with a size tolerance of 0.05 mm and
+  cycle.tolerance_action stop: every touch is made, the program logs its
+  result and "probecycle out of tolerance", closes its log and stops with our
+  ABORT message; the import of that log gives the same verdict.
 "Nothing moves after": the last servo period in which an axis moves belongs to
 the failing move (a probing move, motion-type 5), none moves in the
 lcnc_rig.AFTER_ERROR_S sampled after the program ended, and the position
 where the program was left is that move's end or stop.
 """
+import os
 import sys
 import time
 import unittest
@@ -29,6 +34,7 @@ MACHINE = lcnc_rig.Machine(max_accel_mm_s2=800.0)
 PROBE = lcnc_rig.Probe(pretravel_mm=0.005)
 NO_CONTACT = "G38.2 move finished without making contact"
 OBSTRUCTED = "the probe touched something during a protected move: the path is obstructed"
+OUT_OF_TOLERANCE = "the measured size is out of tolerance"
 FEATURE = {"feature_size_mm": 20.0, "clearance_mm": 5.0, "strategy": "two_touch",
            "probe_feed_mm_min": 2000, "measure_feed_mm_min": 200,
            "position_feed_mm_min": 3000}
@@ -55,6 +61,10 @@ CASES = {
     # down lands on its top.
     "boss_obstructed": (None, dict(FEATURE, feature="boss"),
                         lcnc_rig.Part("boss", centre=(0.0, 0.0, 0.0), size_mm=34.0, top_mm=-2.5)),
+    # A bore of 20.2 mm where 20 +- 0.05 mm is expected, the program set to stop.
+    "bore_out_of_tolerance": (None, dict(FEATURE, feature="bore", size_tolerance_mm=0.05,
+                                         tolerance_action="stop"),
+                              lcnc_rig.Part("bore", centre=(0.0, 0.0, 0.0), size_mm=20.2)),
 }
 
 
@@ -63,12 +73,15 @@ class FailuresOnLinuxCnc(unittest.TestCase):
     def setUpClass(cls):
         cls.folder = lcnc_support.temp_folder(cls, "probecycle_failure_")
         cls.cases = {}
+        cls.plan_paths = {}
         runs = []
         for name, (axis, cycle, part) in CASES.items():
             path = lcnc_support.scenario(MACHINE, PROBE, cycle, cls.folder, name)
             options = ("--axis", axis) if axis and cycle.get("feature") != "bore" else ()
-            ngc, plan, _ = lcnc_support.program("cycle", path, cls.folder, name, *options)
+            ngc, plan, plan_path = lcnc_support.program("cycle", path, cls.folder, name,
+                                                        *options)
             cls.cases[name] = plan
+            cls.plan_paths[name] = plan_path
             runs.append(lcnc_rig.Run(program=ngc, part=part, probe=PROBE, timeout_s=30.0,
                                      name=name))
         started = time.monotonic()
@@ -134,6 +147,32 @@ class FailuresOnLinuxCnc(unittest.TestCase):
     def test_boss_obstructed_stops_on_the_abort(self):
         touch = self.check_obstructed("boss_obstructed", 2)
         self.assertAlmostEqual(touch.contact[2], -2.5, delta=1e-6)
+
+
+    def test_bore_out_of_tolerance_stops_after_logging_its_result(self):
+        result, _ = self.check_stopped_on("bore_out_of_tolerance", OUT_OF_TOLERANCE)
+        plan = self.cases["bore_out_of_tolerance"]
+        recorded = [s for s in plan["steps"] if s["step"] == "probe" and s["recorded"]]
+        touches = lcnc_analysis.touches(result, MACHINE.servo_period_s)
+        self.assertEqual(len(touches), len([s for s in plan["steps"] if s["step"] == "probe"]))
+        # The log was closed before the abort: every touch, the result, the flag.
+        text = result.files.get("probecycle_log.txt", "")
+        self.assertEqual(len(lcnc_analysis.logged_touches(text)), len(recorded), text)
+        logged, flagged = lcnc_analysis.logged_result(text)
+        self.assertIsNotNone(logged, text)
+        self.assertTrue(flagged, text)
+        self.assertEqual(logged["T"], 1.0)
+        log = os.path.join(self.folder, "bore_out_of_tolerance.log.txt")
+        with open(log, "w") as f:
+            f.write(text)
+        imported = lcnc_support.cli_json("import", "--dialect", "linuxcnc", "--plan",
+                                         self.plan_paths["bore_out_of_tolerance"], log, "--json")
+        self.assertTrue(imported["tolerance"]["out_of_tolerance"])
+        self.assertEqual(imported["tolerance"]["action"], "stop")
+        self.assertAlmostEqual(imported["size_mm"], logged["S"], delta=1e-5)
+        # 0.2 mm larger, and the calibration offset (under 0.02 mm here) on top.
+        self.assertGreater(imported["deviation_mm"], 0.2)
+        self.assertLess(imported["deviation_mm"], 0.22)
 
 
 if __name__ == "__main__":

@@ -157,6 +157,21 @@ def logged_touches(text):
     return out
 
 
+def logged_result(text):
+    """The LOG file's result line: {"S": size, "X": .., "Y": .., "D": .., "T": ..} from
+    "probecycle result S s X x Y y D d T t", or None; and whether it logged
+    "probecycle out of tolerance"."""
+    result = None
+    out_of_tolerance = False
+    for line in text.splitlines():
+        fields = line.split()
+        if len(fields) == 12 and fields[:2] == ["probecycle", "result"]:
+            result = {fields[i]: float(fields[i + 1]) for i in range(2, 12, 2)}
+        if fields == ["probecycle", "out", "of", "tolerance"]:
+            out_of_tolerance = True
+    return result, out_of_tolerance
+
+
 def model_overtravel_bounds(model_mm, speed_mm_s, servo_period_s, accel_mm_s2):
     """The model takes the worst scan wait, a full period; LinuxCNC's d lies in [0, v Ts).
     Its servo thread brakes in whole periods, which ends up to a Ts^2/8 past v^2/2a

@@ -164,6 +164,16 @@ QString backoff_from_label(BackoffFrom from) {
     return {};
 }
 
+QString tolerance_action_label(ToleranceAction action) {
+    switch (action) {
+        case ToleranceAction::flag:
+            return tr_param(QT_TRANSLATE_NOOP("Parameter", "Flag it and go on"));
+        case ToleranceAction::stop:
+            return tr_param(QT_TRANSLATE_NOOP("Parameter", "Stop with an alarm"));
+    }
+    return {};
+}
+
 QString feature_label(Feature feature) {
     switch (feature) {
         case Feature::surface:

@@ -41,6 +41,7 @@ QString accel_model_label(AccelModel model);
 QString filter_label(FilterKind kind);
 QString strategy_label(Strategy strategy);
 QString backoff_from_label(BackoffFrom from);
+QString tolerance_action_label(ToleranceAction action);
 QString feature_label(Feature feature);
 QString section_label(const QString& section);
 

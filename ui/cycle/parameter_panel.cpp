@@ -99,6 +99,16 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
             backoff_from_row_->setLayout(labelled_row(backoff_from_label_, backoff_from_));
             qobject_cast<QVBoxLayout*>(box->layout())->addWidget(backoff_from_row_);
         }
+        if (info.key == std::string_view("cycle.size_tolerance_mm")) {
+            // What the program does out of tolerance, right under it.
+            tolerance_action_row_ = new QWidget(box);
+            tolerance_action_label_ = new QLabel(tolerance_action_row_);
+            tolerance_action_ =
+                make_combo(QStringLiteral("combo:cycle.tolerance_action"), tolerance_action_row_);
+            tolerance_action_row_->setLayout(
+                labelled_row(tolerance_action_label_, tolerance_action_));
+            qobject_cast<QVBoxLayout*>(box->layout())->addWidget(tolerance_action_row_);
+        }
         connect(edit, &QuantityEdit::edited, this, [this, edit](double value) {
             set_number(scenario_, edit->key().toStdString(), value);
             emit_edit(edit->key());
@@ -134,6 +144,11 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
         scenario_.cycle.backoff_from =
             static_cast<BackoffFrom>(backoff_from_->itemData(index).toInt());
         emit_edit(QStringLiteral("cycle.backoff_from"));
+    });
+    connect(tolerance_action_, &QComboBox::activated, this, [this](int index) {
+        scenario_.cycle.tolerance_action =
+            static_cast<ToleranceAction>(tolerance_action_->itemData(index).toInt());
+        emit_edit(QStringLiteral("cycle.tolerance_action"));
     });
     connect(latched_, &QCheckBox::clicked, this, [this](bool checked) {
         scenario_.machine.latched_input = checked;
@@ -171,6 +186,11 @@ void ParameterPanel::retranslate() {
          {static_cast<QWidget*>(backoff_from_label_), static_cast<QWidget*>(backoff_from_)}) {
         w->setToolTip(help_of("cycle.backoff_from"));
     }
+    tolerance_action_label_->setText(label_of("cycle.tolerance_action"));
+    for (QWidget* w : {static_cast<QWidget*>(tolerance_action_label_),
+                       static_cast<QWidget*>(tolerance_action_)}) {
+        w->setToolTip(help_of("cycle.tolerance_action"));
+    }
     latched_->setText(label_of("machine.latched_input"));
     for (QWidget* w : {static_cast<QWidget*>(accel_label_), static_cast<QWidget*>(accel_model_)}) {
         w->setToolTip(help_of("machine.accel_model"));
@@ -189,6 +209,11 @@ void ParameterPanel::retranslate() {
         const QSignalBlocker b3(feature_);
         const QSignalBlocker b4(backoff_from_);
         const QSignalBlocker b5(filter_);
+        const QSignalBlocker b6(tolerance_action_);
+        tolerance_action_->clear();
+        for (ToleranceAction a : {ToleranceAction::flag, ToleranceAction::stop}) {
+            tolerance_action_->addItem(tolerance_action_label(a), static_cast<int>(a));
+        }
         accel_model_->clear();
         for (AccelModel m : {AccelModel::time_constant, AccelModel::constant_accel,
                              AccelModel::jerk_limited, AccelModel::none}) {
@@ -235,6 +260,9 @@ void ParameterPanel::set_scenario(const Scenario& scenario) {
     const QSignalBlocker b4(latched_);
     const QSignalBlocker b5(backoff_from_);
     const QSignalBlocker b6(filter_);
+    const QSignalBlocker b7(tolerance_action_);
+    tolerance_action_->setCurrentIndex(
+        tolerance_action_->findData(static_cast<int>(scenario_.cycle.tolerance_action)));
     filter_->setCurrentIndex(filter_->findData(static_cast<int>(scenario_.machine.filter)));
     accel_model_->setCurrentIndex(
         accel_model_->findData(static_cast<int>(scenario_.machine.accel_model)));
@@ -276,6 +304,8 @@ void ParameterPanel::update_enabled() {
     enable("cycle.position_feed_mm_min", several_touches);
     enable("cycle.clearance_mm", lifts);
     enable("cycle.feature_size_mm", several_touches);
+    enable("cycle.size_tolerance_mm", several_touches);
+    tolerance_action_row_->setVisible(several_touches && scenario_.cycle.size_tolerance_mm > 0.0);
     enable("cycle.measure_feed_mm_min", two_touch);
     enable("cycle.backoff_mm", two_touch);
     backoff_from_row_->setVisible(two_touch);

@@ -58,6 +58,9 @@ class ParameterPanel : public QWidget {
     QWidget* backoff_from_row_{nullptr};  // two-touch only
     QLabel* backoff_from_label_{nullptr};
     QComboBox* backoff_from_{nullptr};
+    QWidget* tolerance_action_row_{nullptr};  // a feature's size check only
+    QLabel* tolerance_action_label_{nullptr};
+    QComboBox* tolerance_action_{nullptr};
     std::vector<QuantityEdit*> edits_;
 };
 

@@ -132,6 +132,7 @@ QString shown_word(const Scenario& s, const KeyInfo& key) {
     if (name == "cycle.strategy") return strategy_label(s.cycle.strategy);
     if (name == "cycle.feature") return feature_label(s.cycle.feature);
     if (name == "cycle.backoff_from") return backoff_from_label(s.cycle.backoff_from);
+    if (name == "cycle.tolerance_action") return tolerance_action_label(s.cycle.tolerance_action);
     if (key.kind == KeyKind::flag) {
         return value_text(s, key) == "true" ? MainWindow::tr("on") : MainWindow::tr("off");
     }

@@ -100,6 +100,9 @@ QString shown_value(const Scenario& scenario, const KeyInfo& key) {
     if (name == "machine.filter") return filter_label(scenario.machine.filter);
     if (name == "cycle.strategy") return strategy_label(scenario.cycle.strategy);
     if (name == "cycle.backoff_from") return backoff_from_label(scenario.cycle.backoff_from);
+    if (name == "cycle.tolerance_action") {
+        return tolerance_action_label(scenario.cycle.tolerance_action);
+    }
     if (name == "cycle.feature") return feature_label(scenario.cycle.feature);
     return QString::fromStdString(word);
 }

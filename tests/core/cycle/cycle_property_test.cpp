@@ -91,13 +91,17 @@ TEST(CycleProperties, HoldForRandomValidScenarios) {
             const CycleResult rf = evaluate(faster);
             const double before = r.first_touch().overtravel_mm;
             const double after = rf.first_touch().overtravel_mm;
-            // Strictly at cruise; two touches that trigger while still
-            // accelerating move identically and differ by rounding only.
+            // Strictly at cruise. Two touches that trigger while still
+            // accelerating move alike: with a long servo lag the command may
+            // already brake toward its search's end, which lies farther at
+            // the faster feed (it follows the stop), so the stop can differ
+            // by a few parts in a million either way (scenario 13678: 13.3582
+            // against 13.3581 mm, rapid 375 mm/min, servo 0.46 s).
             const auto at_cruise = [](const TouchResult& t) {
                 return t.trigger_speed_mm_s >= t.programmed_feed_mm_s * (1.0 - 1e-9);
             };
             const double slack =
-                at_cruise(r.first_touch()) && at_cruise(rf.first_touch()) ? 1e-9 : 1e-6;
+                at_cruise(r.first_touch()) && at_cruise(rf.first_touch()) ? 1e-9 : 1e-5;
             if (after < before - slack * std::max(1.0, before)) {
                 problems << "first-touch overtravel falls from " << before << " to " << after
                          << " at " << faster.cycle.probe_feed_mm_min << " mm/min; ";

@@ -129,6 +129,7 @@ const std::vector<std::string> kNumericKeys = {
     "cycle.target_uncertainty_mm",
     "cycle.min_start_mm",
     "cycle.min_feed_mm_min",
+    "cycle.size_tolerance_mm",
     "cycle.knee_tolerance",
     "cycle.position_feed_mm_min",
     "cycle.feed_override_max_pct",
@@ -317,6 +318,8 @@ TEST(ScenarioJson, WritesEverySectionAndKeyWithEnumsAsWords) {
           "target_uncertainty_mm",
           "min_start_mm",
           "min_feed_mm_min",
+          "size_tolerance_mm",
+          "tolerance_action",
           "knee_tolerance",
           "part_position_uncertainty_mm",
           "search_beyond_mm",
@@ -686,7 +689,7 @@ TEST(ApplySetting, RejectedWordLeavesTheScenarioUnchanged) {
 
 TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
     const Scenario defaults;
-    ASSERT_EQ(scenario_keys().size(), 47u);
+    ASSERT_EQ(scenario_keys().size(), 49u);
     for (const KeyInfo& key : scenario_keys()) {
         SCOPED_TRACE(key.key);
         EXPECT_GT(std::string(key.label).size(), 0u);

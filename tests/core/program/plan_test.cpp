@@ -321,7 +321,15 @@ TEST(CyclePlan, ABossSingleTouchGoesOverEachSideDownAndTouchesTowardTheCentre) {
     EXPECT_EQ(plan.steps[3].text, "X- 1 of 2 at 300 mm/min");
     EXPECT_EQ(plan.steps[5].text, "X- 2 of 2 at 300 mm/min");
     for (const double axis : end_of(plan, boss)) EXPECT_NEAR(axis, 0.0, 0.005);
-    EXPECT_EQ(plan.values.back().key, "cycle.clearance_mm");
+    // The clearance among the feature's values, then what the result needs.
+    ASSERT_GE(plan.values.size(), 3u);
+    ASSERT_GE(plan.values.size(), 6u);
+    EXPECT_EQ(plan.values[plan.values.size() - 6].key, "cycle.clearance_mm");
+    EXPECT_EQ(plan.values[plan.values.size() - 5].key, "ball_diameter_mm");
+    EXPECT_EQ(plan.values[plan.values.size() - 4].key, "point_uncertainty_mm");
+    EXPECT_EQ(plan.values[plan.values.size() - 3].key, "independent_uncertainty_mm");
+    EXPECT_EQ(plan.values[plan.values.size() - 2].key, "probe.artefact_uncertainty_mm");
+    EXPECT_EQ(plan.values.back().key, "machine.thermal_drift_mm");
 }
 
 // cycle.repeats on a two-touch surface: the measuring touch again, backed off

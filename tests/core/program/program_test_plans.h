@@ -32,7 +32,7 @@ inline ProgramOptions golden_options() {
 }
 
 struct NamedPlan {
-    std::string name;  // "delay", "ring", "cycle", "cycle_single", "cycle_bore", "cycle_boss"
+    std::string name;  // "delay", "ring", "cycle", "cycle_single", "cycle_bore", ...
     ProbingPlan plan;
 };
 
@@ -61,6 +61,32 @@ inline Scenario golden_boss() {
     return boss;
 }
 
+// A pocket along Y, 40 mm wide with a 4 mm ball (36 mm between stylus
+// centres), single-touch twice a side, its size checked to +-0.05 mm: out of
+// tolerance the program stops.
+inline Scenario golden_pocket() {
+    Scenario pocket;
+    pocket.cycle.feature = Feature::pocket;
+    pocket.cycle.feature_size_mm = 36.0;
+    pocket.cycle.strategy = Strategy::single_touch;
+    pocket.cycle.probe_feed_mm_min = 300.0;
+    pocket.cycle.repeats = 2.0;
+    pocket.cycle.size_tolerance_mm = 0.05;
+    pocket.cycle.tolerance_action = ToleranceAction::stop;
+    return pocket;
+}
+// A web along X, 10 mm wide with a 2 mm ball (12 mm between stylus
+// centres), two-touch, its size checked to +-0.02 mm: out of tolerance the
+// program flags it.
+inline Scenario golden_web() {
+    Scenario web;
+    web.cycle.feature = Feature::web;
+    web.cycle.feature_size_mm = 12.0;
+    web.cycle.size_tolerance_mm = 0.02;
+    web.cycle.tolerance_action = ToleranceAction::flag;
+    return web;
+}
+
 // Every program the tests write, from the default scenario.
 inline std::vector<NamedPlan> golden_plans() {
     const Scenario scenario = known_part();
@@ -74,6 +100,9 @@ inline std::vector<NamedPlan> golden_plans() {
         {"cycle_single", make_cycle_plan(single, CyclePlanOptions{{'X', 1}})},
         {"cycle_bore", make_cycle_plan(golden_bore(), CyclePlanOptions{})},
         {"cycle_boss", make_cycle_plan(golden_boss(), CyclePlanOptions{})},
+        {"cycle_pocket", make_cycle_plan(golden_pocket(), CyclePlanOptions{{'Y', 1}, 4.0})},
+        {"cycle_web", make_cycle_plan(golden_web(), CyclePlanOptions{{'X', 1}, 2.0})},
+        {"cycle_bore_ball", make_cycle_plan(golden_bore(), CyclePlanOptions{{'Z', -1}, 6.0})},
     };
 }
 
@@ -95,7 +124,7 @@ inline ProbingPlan guarded_plan() {
     };
     ProbingPlan plan;
     plan.kind = ProgramKind::cycle;
-    plan.values = {{"cycle.position_feed_mm_min", "3000"}};
+    plan.values = {{"cycle.position_feed_mm_min", "3000"}, {"point_uncertainty_mm", "0.002"}};
     ProgramStep pause;
     pause.kind = StepKind::pause;
     pause.text = "check: the probe stands at the centre; resume to start";

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -201,6 +202,41 @@ TEST(Rs274Check, AProtectedMoveThatTripsAbortsTheProgram) {
     EXPECT_NE(result.output.find("the path is obstructed"), std::string::npos) << result.output;
     std::size_t logs = 0;
     EXPECT_EQ(probes_of(result.output, logs).size(), 1u) << result.output;
+    fs::remove_all(dir);
+}
+
+// A size out of tolerance with cycle.tolerance_action stop: under the task
+// (#<_task> read as 1, which rs274 never gives) the program writes the line
+// and aborts after every probe; rs274's probes trip at their searches' ends,
+// so the pocket measures far off its nominal size. In a preview (rs274 as it
+// is) the same program runs to its end (EveryLinuxCncProgram... above).
+TEST(Rs274Check, ASizeOutOfToleranceStopsTheProgramUnderTheTask) {
+    const std::string rs274 = find_rs274();
+    if (rs274.empty()) GTEST_SKIP() << "rs274 is not installed (apt-get install linuxcnc-uspace)";
+    const ProbingPlan pocket =
+        make_cycle_plan(program_test::golden_pocket(), CyclePlanOptions{{'Y', 1}, 4.0});
+    std::string text = write_program(pocket, linuxcnc_dialect(), program_test::kDate);
+    const std::size_t test = text.find("[#<_task> EQ 1]");
+    ASSERT_NE(test, std::string::npos) << text;
+    text.replace(test, 15, "[1 EQ 1]");
+    std::random_device seed;
+    const fs::path dir =
+        fs::temp_directory_path() / ("probecycle_rs274_tolerance_" + std::to_string(seed()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "pocket.ngc";
+    std::ofstream(file) << text;
+    const Rs274Run result = run_rs274(rs274, dir, file);
+    EXPECT_NE(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("the measured size is out of tolerance"), std::string::npos)
+        << result.output;
+    std::size_t logs = 0;
+    EXPECT_EQ(probes_of(result.output, logs).size(),
+              static_cast<std::size_t>(std::count_if(pocket.steps.begin(), pocket.steps.end(),
+                                                     [](const ProgramStep& step) {
+                                                         return step.kind == StepKind::probe ||
+                                                                step.kind == StepKind::guard;
+                                                     })))
+        << result.output;
     fs::remove_all(dir);
 }
 

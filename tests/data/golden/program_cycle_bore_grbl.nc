@@ -6,7 +6,7 @@
 ; more than the touch's stop (cycle.search_beyond_mm), and every later one
 ; covers the whole move back before it: the axis is never braking for the
 ; move's end when it touches.
-; Plan a98ae836042904a7 (keep the plan file: the import matches the positions to it).
+; Plan 015f9a511f61824b (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -32,6 +32,11 @@
 ;   cycle.feature = bore
 ;   cycle.feature_size_mm = 50
 ;   cycle.position_feed_mm_min = 3000
+;   ball_diameter_mm = 0
+;   point_uncertainty_mm = 0.003742
+;   independent_uncertainty_mm = 0.002769
+;   probe.artefact_uncertainty_mm = 0.001
+;   machine.thermal_drift_mm = 0.002
 ; WARNING: prove this program out first at reduced feed override (every
 ; move runs at a feed, none at the rapid), with the probe clear of the
 ; part, and check every move against your machine before a touch.
@@ -46,6 +51,9 @@
 ; but cannot branch, so the program goes on; the next G38.2 or G38.3 then
 ; stops it with ALARM:4 if the probe is still deflected. No probe follows the
 ; last protected move: the import refuses a console where one answers :1.
+; grbl has no variables or arithmetic: the program computes nothing and
+; checks no tolerance. probecycle import computes the feature's result
+; (and the tolerance check) from the console's [PRB:] lines.
 G21 G91 G94
 ; check: the probe ball stands at the centre of the bore at the measuring depth; resume to start
 M0

@@ -8,7 +8,7 @@
 ; more than the touch's stop (cycle.search_beyond_mm), and every later one
 ; covers the whole move back before it: the axis is never braking for the
 ; move's end when it touches.
-; Plan 430dc574c8d610b2 (keep the plan file: the import matches the positions to it).
+; Plan 2025fb52155dcef3 (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -36,6 +36,11 @@
 ;   cycle.feature_size_mm = 50
 ;   cycle.position_feed_mm_min = 3000
 ;   cycle.clearance_mm = 10
+;   ball_diameter_mm = 0
+;   point_uncertainty_mm = 0.008879
+;   independent_uncertainty_mm = 0.008515
+;   probe.artefact_uncertainty_mm = 0.001
+;   machine.thermal_drift_mm = 0.002
 ; WARNING: prove this program out first at reduced feed override (its
 ; probing and return moves run at a feed) and reduced rapid override
 ; (its retracts and lifts are rapids), with the probe clear of the part,
@@ -51,6 +56,9 @@
 ; but cannot branch, so the program goes on; the next G38.2 or G38.3 then
 ; stops it with ALARM:4 if the probe is still deflected. No probe follows the
 ; last protected move: the import refuses a console where one answers :1.
+; grbl has no variables or arithmetic: the program computes nothing and
+; checks no tolerance. probecycle import computes the feature's result
+; (and the tolerance check) from the console's [PRB:] lines.
 G21 G91 G94
 ; check: the probe ball stands over the centre of the boss, 10 mm above the measuring depth; resume to start
 M0

@@ -5,7 +5,7 @@
 ; more than the touch's stop (cycle.search_beyond_mm), and every later one
 ; covers the whole move back before it: the axis is never braking for the
 ; move's end when it touches.
-; Plan cbf5faed85793c90 (keep the plan file: the import matches the positions to it).
+; Plan d664826e87009ccc (keep the plan file: the import matches the positions to it).
 ; Date 2026-01-15.
 ; Scenario values and options used:
 ;   machine.accel_model = time_constant
@@ -28,6 +28,11 @@
 ;   cycle.backoff_mm = 2
 ;   cycle.backoff_from = stop
 ;   cycle.return_feed_mm_min = 10000
+;   ball_diameter_mm = 0
+;   point_uncertainty_mm = 0.003742
+;   independent_uncertainty_mm = 0.002769
+;   probe.artefact_uncertainty_mm = 0.001
+;   machine.thermal_drift_mm = 0.002
 ; WARNING: prove this program out first at reduced feed override (every
 ; move runs at a feed, none at the rapid), with the probe clear of the
 ; part, and check every move against your machine before a touch.
@@ -37,6 +42,9 @@
 ; Positions: grbl answers [PRB:x,y,z:1] after each probe (machine
 ; positions; set $13=0 for mm). Save the sender's console to a file and
 ; import that file.
+; grbl has no variables or arithmetic: the program computes nothing and
+; checks no tolerance. probecycle import computes the feature's result
+; (and the tolerance check) from the console's [PRB:] lines.
 G21 G91 G94
 ; check: the probe stands 5 mm in front of the surface, touching along Z-; resume to start
 M0

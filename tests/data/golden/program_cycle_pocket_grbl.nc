@@ -1,0 +1,84 @@
+; ProbeCycle program for grbl: the tuned cycle on a pocket.
+; Both walls along one axis touched with the scenario's strategy, feeds,
+; backoff and start distance, from the centre at the measuring depth: a
+; protected move out to each touch's start and back to the centre.
+; Every probing move searches past the farthest place its surface can be by
+; more than the touch's stop (cycle.search_beyond_mm), and every later one
+; covers the whole move back before it: the axis is never braking for the
+; move's end when it touches.
+; Plan 85e852007cf7cfe1 (keep the plan file: the import matches the positions to it).
+; Date 2026-01-15.
+; Scenario values and options used:
+;   machine.accel_model = time_constant
+;   machine.time_constant_s = 0.06
+;   machine.max_accel_mm_s2 = 2000
+;   machine.max_jerk_mm_s3 = 40000
+;   machine.filter = none
+;   machine.filter_time_s = 0.03
+;   machine.servo_time_constant_s = 0
+;   machine.scan_period_s = 0.004
+;   machine.controller_latency_s = 0.002
+;   probe.interface_delay_s = 0.002
+;   probe.pretravel_mm = 0.005
+;   probe.overtravel_limit_mm = 5
+;   cycle.feed_override_max_pct = 120
+;   cycle.strategy = single_touch
+;   cycle.approach_mm = 5
+;   cycle.probe_feed_mm_min = 300
+;   cycle.measure_feed_mm_min = 30
+;   cycle.backoff_mm = 2
+;   cycle.backoff_from = stop
+;   cycle.return_feed_mm_min = 10000
+;   cycle.repeats = 2
+;   cycle.feature = pocket
+;   cycle.feature_size_mm = 36
+;   cycle.position_feed_mm_min = 3000
+;   ball_diameter_mm = 4
+;   point_uncertainty_mm = 0.008879
+;   independent_uncertainty_mm = 0.008515
+;   probe.artefact_uncertainty_mm = 0.001
+;   machine.thermal_drift_mm = 0.002
+;   cycle.size_tolerance_mm = 0.05
+;   cycle.tolerance_action = stop
+; WARNING: prove this program out first at reduced feed override (every
+; move runs at a feed, none at the rapid), with the probe clear of the
+; part, and check every move against your machine before a touch.
+; Every move is incremental (G91) from where the probe stands when the program
+; starts or a pause ends. A probing move that does not trigger stops the program
+; with an alarm.
+; Positions: grbl answers [PRB:x,y,z:1] after each probe (machine
+; positions; set $13=0 for mm). Save the sender's console to a file and
+; import that file.
+; Protected moves are G38.3, the probe armed: grbl answers [PRB:...:0] after
+; one that touches nothing. It stops one that touches something ([PRB:...:1])
+; but cannot branch, so the program goes on; the next G38.2 or G38.3 then
+; stops it with ALARM:4 if the probe is still deflected. No probe follows the
+; last protected move: the import refuses a console where one answers :1.
+; grbl has no variables or arithmetic: the program computes nothing and
+; checks no tolerance. probecycle import computes the feature's result
+; (and the tolerance check) from the console's [PRB:] lines.
+G21 G91 G94
+; check: the probe ball stands at the centre of the pocket along Y (within 0.5 mm) at the measuring depth; resume to start
+M0
+; out to the start of the Y+ touch
+G38.3 Y13.000 F3000
+; touch 1: Y+ 1 of 2 at 300 mm/min
+G38.2 Y8.117 F300
+G1 Y-5.195 F10000 ; back to the start
+; touch 2: Y+ 2 of 2 at 300 mm/min
+G38.2 Y7.812 F300
+G1 Y-5.195 F10000 ; back to the start
+; back to the centre
+G38.3 Y-13.000 F3000
+; out to the start of the Y- touch
+G38.3 Y-13.000 F3000
+; touch 3: Y- 1 of 2 at 300 mm/min
+G38.2 Y-8.117 F300
+G1 Y5.195 F10000 ; back to the start
+; touch 4: Y- 2 of 2 at 300 mm/min
+G38.2 Y-7.812 F300
+G1 Y5.195 F10000 ; back to the start
+; back to the centre
+G38.3 Y13.000 F3000
+G90
+M2

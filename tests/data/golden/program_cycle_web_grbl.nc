@@ -1,0 +1,93 @@
+; ProbeCycle program for grbl: the tuned cycle on a web.
+; Both sides along one axis touched toward the centre with the scenario's
+; strategy, feeds, backoff and start distance, from above the centre at the
+; clearance height: per side a protected move out over its start, a protected
+; move down by the clearance, the touch, a rapid up by the clearance and a
+; protected move back over the centre.
+; Every probing move searches past the farthest place its surface can be by
+; more than the touch's stop (cycle.search_beyond_mm), and every later one
+; covers the whole move back before it: the axis is never braking for the
+; move's end when it touches.
+; Plan ac60ace31121f4df (keep the plan file: the import matches the positions to it).
+; Date 2026-01-15.
+; Scenario values and options used:
+;   machine.accel_model = time_constant
+;   machine.time_constant_s = 0.06
+;   machine.max_accel_mm_s2 = 2000
+;   machine.max_jerk_mm_s3 = 40000
+;   machine.filter = none
+;   machine.filter_time_s = 0.03
+;   machine.servo_time_constant_s = 0
+;   machine.scan_period_s = 0.004
+;   machine.controller_latency_s = 0.002
+;   probe.interface_delay_s = 0.002
+;   probe.pretravel_mm = 0.005
+;   probe.overtravel_limit_mm = 5
+;   cycle.feed_override_max_pct = 120
+;   cycle.strategy = two_touch
+;   cycle.approach_mm = 5
+;   cycle.probe_feed_mm_min = 2000
+;   cycle.measure_feed_mm_min = 30
+;   cycle.backoff_mm = 2
+;   cycle.backoff_from = stop
+;   cycle.return_feed_mm_min = 10000
+;   cycle.feature = web
+;   cycle.feature_size_mm = 12
+;   cycle.position_feed_mm_min = 3000
+;   cycle.clearance_mm = 10
+;   ball_diameter_mm = 2
+;   point_uncertainty_mm = 0.003742
+;   independent_uncertainty_mm = 0.002769
+;   probe.artefact_uncertainty_mm = 0.001
+;   machine.thermal_drift_mm = 0.002
+;   cycle.size_tolerance_mm = 0.02
+;   cycle.tolerance_action = flag
+; WARNING: prove this program out first at reduced feed override (its
+; probing and return moves run at a feed) and reduced rapid override
+; (its retracts and lifts are rapids), with the probe clear of the part,
+; and check every move against your machine before a touch.
+; Every move is incremental (G91) from where the probe stands when the program
+; starts or a pause ends. A probing move that does not trigger stops the program
+; with an alarm.
+; Positions: grbl answers [PRB:x,y,z:1] after each probe (machine
+; positions; set $13=0 for mm). Save the sender's console to a file and
+; import that file.
+; Protected moves are G38.3, the probe armed: grbl answers [PRB:...:0] after
+; one that touches nothing. It stops one that touches something ([PRB:...:1])
+; but cannot branch, so the program goes on; the next G38.2 or G38.3 then
+; stops it with ALARM:4 if the probe is still deflected. No probe follows the
+; last protected move: the import refuses a console where one answers :1.
+; grbl has no variables or arithmetic: the program computes nothing and
+; checks no tolerance. probecycle import computes the feature's result
+; (and the tolerance check) from the console's [PRB:] lines.
+G21 G91 G94
+; check: the probe ball stands over the centre of the web along X (within 0.5 mm), 10 mm above the measuring depth; resume to start
+M0
+; out over the start of the X+ side
+G38.3 X11.000 F3000
+; down to the measuring depth
+G38.3 Z-10.000 F3000
+; X- first touch at 2000 mm/min
+G38.2 X-8.763 F2000
+G1 X2.000 F10000 ; backoff
+; touch 1: X- measuring touch at 30 mm/min
+G38.2 X-4.514 F30
+G1 X5.024 F10000 ; back to the start
+G0 Z10.000 ; up by the clearance
+; back over the centre
+G38.3 X-11.000 F3000
+; out over the start of the X- side
+G38.3 X-11.000 F3000
+; down to the measuring depth
+G38.3 Z-10.000 F3000
+; X+ first touch at 2000 mm/min
+G38.2 X8.763 F2000
+G1 X-2.000 F10000 ; backoff
+; touch 2: X+ measuring touch at 30 mm/min
+G38.2 X4.514 F30
+G1 X-5.024 F10000 ; back to the start
+G0 Z10.000 ; up by the clearance
+; back over the centre
+G38.3 X11.000 F3000
+G90
+M2
