@@ -436,6 +436,7 @@ TEST(Optimiser, LowersAPositioningFeedThatWouldOverrunTheStylus) {
 // requirement named binding, relaxed by 10 %, gives a faster best setting,
 // and the target, relaxed, does not where it is not named.
 TEST(Optimiser, EveryBindingRequirementRelaxedGivesAFasterBest) {
+    // Binding means faster by at least 0.1 % of the cycle (kMeaningfulSaving).
     OptimiseRequirements requirements;
     requirements.pareto_points = 0;
     requirements.advice = false;
@@ -464,28 +465,29 @@ TEST(Optimiser, EveryBindingRequirementRelaxedGivesAFasterBest) {
         Scenario relaxed = s;
         relaxed.cycle.target_uncertainty_mm *= 1.1;
         EXPECT_EQ(binds(Requirement::target_uncertainty),
-                  best_time(relaxed, 0.8) < best * (1.0 - 1e-6))
+                  best_time(relaxed, 0.8) < best * (1.0 - 1e-3))
             << r.best.uncertainty_mm;
         EXPECT_EQ(binds(Requirement::overtravel_fraction),
-                  best_time(s, 0.88) < best * (1.0 - 1e-6));
+                  best_time(s, 0.88) < best * (1.0 - 1e-3));
         if (s.probe.max_feed_mm_min > 0.0) {
             relaxed = s;
             relaxed.probe.max_feed_mm_min *= 1.1;
             EXPECT_EQ(binds(Requirement::probe_max_feed),
-                      best_time(relaxed, 0.8) < best * (1.0 - 1e-6));
+                      best_time(relaxed, 0.8) < best * (1.0 - 1e-3));
         }
         if (s.cycle.part_position_uncertainty_mm > 0.0) {
             relaxed = s;
             relaxed.cycle.part_position_uncertainty_mm /= 1.1;
             EXPECT_EQ(binds(Requirement::start_distance),
-                      best_time(relaxed, 0.8) < best * (1.0 - 1e-6));
+                      best_time(relaxed, 0.8) < best * (1.0 - 1e-3));
         }
         if (k == 0) {  // the best lies well under the 5 um target: not binding
             EXPECT_LT(r.best.uncertainty_mm, 0.8 * 0.005);
             EXPECT_FALSE(binds(Requirement::target_uncertainty));
-        } else {  // the README's customer bore: the target and the start bind
+        } else {  // the README's customer bore: the target binds; the probe's
+                  // 5000 mm/min relaxed saves 0.46 ms of 5.18 s, under 0.1 %: not
             EXPECT_TRUE(binds(Requirement::target_uncertainty));
-            EXPECT_TRUE(binds(Requirement::start_distance));
+            EXPECT_FALSE(binds(Requirement::probe_max_feed));
         }
     }
 }
