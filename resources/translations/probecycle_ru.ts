@@ -3748,6 +3748,10 @@
         <source>the slowest feed allowed, %1</source>
         <translation>наименьшая допустимая подача, %1</translation>
     </message>
+    <message>
+        <source>Overtravel at %1 %</source>
+        <translation>Перебег при %1 %</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>

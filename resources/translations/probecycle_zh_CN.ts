@@ -3748,6 +3748,10 @@
         <source>the slowest feed allowed, %1</source>
         <translation>允许的最低进给率，%1</translation>
     </message>
+    <message>
+        <source>Overtravel at %1 %</source>
+        <translation>%1 % 时的过行程</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ParameterPanel</name>

@@ -124,6 +124,9 @@ OptimisePanel::OptimisePanel(QWidget* parent) : QWidget(parent) {
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    // Every row shows; no room kept below them for a scroll bar.
+    table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    table_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     apply_ = new QPushButton(this);
     apply_->setObjectName(QStringLiteral("optimise-apply"));
     connect(apply_, &QPushButton::clicked, this, [this] {
@@ -325,6 +328,12 @@ void OptimisePanel::show_result() {
         return;
     }
     const OptimiseResult& r = *result_;
+    // The overtravel the checks take (issue 28): at the highest feed override.
+    if (QTableWidgetItem* header = table_->verticalHeaderItem(row_count - 1)) {
+        header->setText(
+            tr("Overtravel at %1 %")
+                .arg(QLocale().toString(scenario_.cycle.feed_override_max_pct, 'f', 0)));
+    }
     const QStringList current = column_of(r.current);
     const QStringList best = column_of(r.best);
     for (int row = 0; row < row_count; ++row) {
