@@ -37,10 +37,25 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // OptimiserBudget's tests do; uncertainty.h). So are the bounds of issue 28
 // (a known part, no shortest start, 1 mm/min the slowest feed), which
 // OptimiserBounds' tests set.
-Scenario scenario_with(const std::vector<std::string>& sets) {
-    Scenario s;
+Scenario without_fixed_terms(Scenario s) {
     s.probe.lobing_mm = s.probe.artefact_uncertainty_mm = 0.0;
     s.machine.repeatability_2sigma_mm = s.machine.thermal_drift_mm = 0.0;
+    return s;
+}
+
+// What optimise() refuses a scenario with: its message's code and text.
+std::pair<std::string, std::string> refusal(const Scenario& s) {
+    try {
+        optimise(s);
+    } catch (const InputError& e) {
+        return {e.to_message().code, e.what()};
+    }
+    ADD_FAILURE() << "no error";
+    return {};
+}
+
+Scenario scenario_with(const std::vector<std::string>& sets) {
+    Scenario s = without_fixed_terms(Scenario{});
     s.cycle.part_position_uncertainty_mm = 0.0;
     s.cycle.min_start_mm = 0.0;
     s.cycle.min_feed_mm_min = 1.0;
@@ -549,16 +564,10 @@ TEST(Optimiser, SavingsAYear) {
 TEST(Optimiser, ATargetUnderTheRepeatabilityIsRefusedNamingIt) {
     // Before the model averages repeats the smallest is the repeatability;
     // after, the repeatability / sqrt(20). 0.0002 is under both.
-    const Scenario s = scenario_with({"cycle.target_uncertainty_mm=0.0002"});
-    try {
-        optimise(s);
-        FAIL() << "no error";
-    } catch (const InputError& e) {
-        EXPECT_EQ(e.to_message().code, "target_uncertainty");
-        const std::string text = e.what();
-        EXPECT_NE(text.find("0.0002 mm"), std::string::npos) << text;
-        EXPECT_NE(text.find("smallest achievable"), std::string::npos) << text;
-    }
+    const auto [code, text] = refusal(scenario_with({"cycle.target_uncertainty_mm=0.0002"}));
+    EXPECT_EQ(code, "target_uncertainty");
+    EXPECT_NE(text.find("0.0002 mm"), std::string::npos) << text;
+    EXPECT_NE(text.find("smallest achievable"), std::string::npos) << text;
 }
 
 // Issue 28: the target holds for the whole budget, whose fixed terms no
@@ -579,24 +588,15 @@ TEST(OptimiserBudget, TheBestMeetsTheTargetWithTheFixedTerms) {
               std::sqrt(0.004 * 0.004 - fixed * fixed) * (1.0 + 1e-9));
     // And the budget binds it: the same target without the fixed terms
     // allows a faster setting.
-    Scenario trigger_only = s;
-    trigger_only.probe.lobing_mm = trigger_only.probe.artefact_uncertainty_mm = 0.0;
-    trigger_only.machine.repeatability_2sigma_mm = trigger_only.machine.thermal_drift_mm = 0.0;
-    EXPECT_LT(optimise(trigger_only).best.cycle_time_s, r.best.cycle_time_s);
+    EXPECT_LT(optimise(without_fixed_terms(s)).best.cycle_time_s, r.best.cycle_time_s);
 }
 
 TEST(OptimiserBudget, ATargetUnderTheFixedTermsIsRefusedNamingThem) {
-    const Scenario s =
-        scenario_with({"machine.thermal_drift_mm=0.005", "cycle.target_uncertainty_mm=0.005"});
-    try {
-        optimise(s);
-        FAIL() << "no error";
-    } catch (const InputError& e) {
-        EXPECT_EQ(e.to_message().code, "target_uncertainty");
-        const std::string text = e.what();
-        // 2 * 5/sqrt(3) um = 5.774 um of thermal drift alone.
-        EXPECT_NE(text.find("thermal drift, are 0.005774 mm together"), std::string::npos) << text;
-    }
+    const auto [code, text] = refusal(
+        scenario_with({"machine.thermal_drift_mm=0.005", "cycle.target_uncertainty_mm=0.005"}));
+    EXPECT_EQ(code, "target_uncertainty");
+    // 2 * 5/sqrt(3) um = 5.774 um of thermal drift alone.
+    EXPECT_NE(text.find("thermal drift, are 0.005774 mm together"), std::string::npos) << text;
 }
 
 TEST(Optimiser, AnOvertravelFractionNoFeedMeetsIsRefusedNamingIt) {
