@@ -69,7 +69,13 @@ def scenario(machine, probe, cycle, folder, name):
     s["probe"].update({"pretravel_mm": probe.pretravel_mm,
                        "interface_delay_s": probe.interface_delay_periods * machine.servo_period_s,
                        # the simulated stylus has no limit; the searches go halfway to it
-                       "overtravel_limit_mm": 10.0})
+                       "overtravel_limit_mm": 10.0,
+                       # The simulated probe and machine have no repeatability, lobing,
+                       # calibration artefact or drift: the model's uncertainty budget holds
+                       # the scan wait alone, as the rig does (like with like).
+                       "repeatability_2sigma_mm": 0.0, "lobing_mm": 0.0,
+                       "artefact_uncertainty_mm": 0.0})
+    s["machine"].update({"repeatability_2sigma_mm": 0.0, "thermal_drift_mm": 0.0})
     # LinuxCNC runs the programs at 100 % feed override: the model's checks at
     # a higher override (cycle.feed_override_max_pct) are the core tests'.
     s["cycle"]["feed_override_max_pct"] = 100.0
