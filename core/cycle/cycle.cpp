@@ -371,6 +371,10 @@ double feed_override_factor(const Cycle& cycle) {
     return std::max(1.0, cycle.feed_override_max_pct / 100.0);
 }
 
+int repeat_count(const Cycle& cycle) {
+    return std::max(1, static_cast<int>(cycle.repeats));
+}
+
 double protected_move_overtravel_mm(const Scenario& scenario, double feed_mm_s) {
     const double v = feed_override_factor(scenario.cycle) * feed_mm_s;
     return scenario.probe.pretravel_mm +
@@ -1321,7 +1325,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     // feed; single-touch returns to the start and touches again. Each repeat
     // after the first is the first one again (it starts and ends where the
     // measuring touch stopped), so it is replayed.
-    const int repeats = std::max(1, static_cast<int>(c.repeats));
+    const int repeats = repeat_count(c);
     if (repeats > 1) {
         const std::size_t repeat_first_phase = b.phase_count();
         const std::size_t repeat_first_segment = b.segment_count();

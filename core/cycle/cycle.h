@@ -299,6 +299,10 @@ double search_beyond_mm(const Scenario& scenario, double overtravel_mm);
 // The highest feed override the checks hold at, as a factor (1.5 for 150 %).
 double feed_override_factor(const Cycle& cycle);
 
+// How many times the measuring touch is made and averaged: cycle.repeats, a
+// whole number stored as a number, at least 1.
+int repeat_count(const Cycle& cycle);
+
 // How far past an obstruction a protected positioning move programmed at
 // `feed_mm_s` stops (a feature's moves to and from its touches run with the
 // probe armed), at the highest feed override: the probe triggers on it as on

@@ -71,10 +71,6 @@ std::array<FixedTerm, 4> fixed_terms(const Scenario& s) {
     }};
 }
 
-int repeat_count(const Cycle& cycle) {
-    return std::max(1, static_cast<int>(cycle.repeats));
-}
-
 }  // namespace
 
 double fixed_expanded_uncertainty_mm(const Scenario& scenario) {

@@ -180,11 +180,6 @@ std::string feed_text(double feed_mm_min) {
     return format_number(feed_mm_min) + " mm/min";
 }
 
-// How many times the cycle's measuring touch is made (cycle.repeats, whole).
-int measuring_repeats(const Scenario& scenario) {
-    return std::max(1, static_cast<int>(scenario.cycle.repeats));
-}
-
 // " 2 of 3" for the k-th of `repeats` measuring touches, "" for one.
 std::string repeat_text(int k, int repeats) {
     if (repeats <= 1) return {};
@@ -390,7 +385,7 @@ void check_feature_plan(const Scenario& scenario, const CyclePlanOptions& option
 void add_feature_touches(ProbingPlan& plan, const Scenario& scenario,
                          const CyclePlanOptions& options) {
     const Cycle& c = scenario.cycle;
-    const int repeats = measuring_repeats(scenario);
+    const int repeats = repeat_count(scenario.cycle);
     const bool outside = lifts_over(c.feature);
     // Rounded to the programs' digits on the side that leaves more room to
     // the wall: inside, a start no nearer the wall than the model's; outside,
@@ -675,7 +670,7 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
                 "cycle.measure_feed_mm_min", "cycle.backoff_mm", "cycle.backoff_from",
                 "cycle.return_feed_mm_min"});
     // The repeats when there are any (a plan of one touch a point reads as before).
-    if (measuring_repeats(scenario) > 1) add_values(plan, scenario, {"cycle.repeats"});
+    if (repeat_count(scenario.cycle) > 1) add_values(plan, scenario, {"cycle.repeats"});
     if (feature != Feature::surface) {
         add_values(plan, scenario,
                    {"cycle.feature", "cycle.feature_size_mm", "cycle.position_feed_mm_min"});
@@ -691,7 +686,7 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
                                     to_string(options.touch) + "; resume to start"));
     add_point(plan, scenario, options.touch, scenario.cycle.approach_mm,
               scenario.cycle.part_position_uncertainty_mm, 0.0, "start",
-              measuring_repeats(scenario));
+              repeat_count(scenario.cycle));
     return plan;
 }
 
