@@ -1,5 +1,6 @@
 #include "core/common/number_format.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -14,16 +15,22 @@ std::string format_number(double value, int significant) {
     return buffer;
 }
 
-std::string format_fixed(double value, int decimals) {
+std::string format_decimals(double value, int decimals) {
     if (!std::isfinite(value)) return format_number(value);
-    char buffer[352];  // DBL_MAX in %f is 309 digits
-    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-    std::string text = buffer;
-    if (text.find('.') != std::string::npos) {
+    char buffer[352];  // DBL_MAX in fixed notation is 309 digits
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed,
+                                   std::clamp(decimals, 0, 30));
+    std::string text(buffer, end.ptr);
+    if (text[0] == '-' && text.find_first_not_of("-0.") == std::string::npos) text.erase(0, 1);
+    return text;
+}
+
+std::string format_fixed(double value, int decimals) {
+    std::string text = format_decimals(value, decimals);
+    if (std::isfinite(value) && text.find('.') != std::string::npos) {
         while (text.back() == '0') text.pop_back();
         if (text.back() == '.') text.pop_back();
     }
-    if (text == "-0") text = "0";
     return text;
 }
 

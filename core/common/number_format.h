@@ -17,6 +17,10 @@ std::string format_number(double value, int significant = 6);
 // "15"), never "-0"; NaN and infinities as format_number(). The reports give
 // each quantity the digits the model supports (csv_writer.h).
 std::string format_fixed(double value, int decimals);
+// `value` with exactly `decimals` decimals, C locale whatever the process's,
+// never "-0.000" ("0.4000", "-12.5"): the programs' constants and the
+// import's text. NaN and infinities as format_number().
+std::string format_decimals(double value, int decimals);
 // The shortest text that reads back as exactly `value` ("0.06", "1e-06"): an
 // input echoed as the user gave it.
 std::string format_exact(double value);

@@ -1,6 +1,5 @@
 #include "core/program/cycle_import.h"
 
-#include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -49,12 +48,7 @@ void check_logged(const CycleImport& import, DialectId dialect) {
 
 // 4 decimals (0.1 um) whatever the locale, never "-0.0000".
 std::string mm(double value) {
-    char buffer[64];
-    const auto end =
-        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, 4);
-    std::string text(buffer, end.ptr);
-    if (text.find_first_not_of("-0.") == std::string::npos && text[0] == '-') text.erase(0, 1);
-    return text + " mm";
+    return format_decimals(value, 4) + " mm";
 }
 
 std::string signed_mm(double value) {

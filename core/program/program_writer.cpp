@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <optional>
 #include <string_view>
@@ -14,15 +13,6 @@
 namespace probecycle {
 
 namespace {
-
-std::string to_chars_fixed(double value, int decimals) {
-    char buffer[64];
-    const auto result =
-        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
-    std::string text(buffer, result.ptr);
-    if (text.find_first_not_of("-0.") == std::string::npos) text = text.substr(text[0] == '-');
-    return text;
-}
 
 std::string replaced(std::string text, std::string_view name, const std::string& value) {
     for (std::size_t at = text.find(name); at != std::string::npos;
@@ -190,7 +180,7 @@ std::string side_variable(std::size_t side) {
 
 // A constant in a result's expression: 4 decimals (0.1 um), signed.
 std::string signed_constant(double value) {
-    std::string text = to_chars_fixed(value, 4);
+    std::string text = format_decimals(value, 4);
     if (text[0] != '-') text.insert(text.begin(), '+');
     return text;
 }
@@ -307,7 +297,7 @@ std::vector<std::string> result_lines(const ResultSpec& spec, const Dialect& dia
         deviation += "]";
     }
     lines.push_back(deviation);
-    const std::string tolerance = to_chars_fixed(spec.size_tolerance_mm, 4);
+    const std::string tolerance = format_decimals(spec.size_tolerance_mm, 4);
     if (spec.checks_tolerance()) {
         for (const char* line : dialect.tolerance_check) {
             lines.push_back(replaced(with_result_variables(line), "{tolerance}", tolerance));
@@ -379,11 +369,11 @@ class Writer {
 }  // namespace
 
 std::string program_number(double value) {
-    return to_chars_fixed(value, 3);
+    return format_decimals(value, 3);
 }
 
 std::string program_feed(double feed_mm_min) {
-    std::string text = to_chars_fixed(feed_mm_min, 1);
+    std::string text = format_decimals(feed_mm_min, 1);
     if (text.size() > 2 && text.compare(text.size() - 2, 2, ".0") == 0)
         text.resize(text.size() - 2);
     return text;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace probecycle {
 namespace {
@@ -36,6 +37,17 @@ TEST(FormatFixed, RoundedToTheDecimalsWithoutTrailingZeros) {
     EXPECT_EQ(format_fixed(-1e-9, 4), "0");  // no "-0"
     EXPECT_EQ(format_fixed(-2.5, 0), "-2");  // round half to even, as printf
     EXPECT_EQ(format_fixed(std::nan(""), 3), "NaN");
+}
+
+TEST(FormatDecimals, ExactlyTheDecimalsNeverMinusZero) {
+    EXPECT_EQ(format_decimals(26.01666666, 4), "26.0167");
+    EXPECT_EQ(format_decimals(0.4, 4), "0.4000");
+    EXPECT_EQ(format_decimals(-12.5, 1), "-12.5");
+    EXPECT_EQ(format_decimals(-1e-9, 4), "0.0000");
+    EXPECT_EQ(format_decimals(-0.0, 3), "0.000");
+    EXPECT_EQ(format_decimals(3000.0, 0), "3000");
+    EXPECT_EQ(format_decimals(-std::numeric_limits<double>::infinity(), 2), "-inf");
+    EXPECT_EQ(format_decimals(std::numeric_limits<double>::max(), 1).size(), 311u);
 }
 
 TEST(FormatExact, ShortestTextThatReadsBackAsTheValue) {
