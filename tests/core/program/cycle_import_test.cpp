@@ -34,14 +34,7 @@ const Touches kBore{{22.006, 0, 0}, {-21.998, 0, 0}, {0, 22.010, 0}, {0, -21.994
 
 std::string linuxcnc_log(const ProbingPlan& plan, const Touches& touches,
                          const std::string& tail = "") {
-    std::string log = "probecycle plan " + plan_id(plan) + " cycle\n";
-    for (std::size_t i = 0; i < touches.size(); ++i) {
-        char line[160];
-        std::snprintf(line, sizeof line, "probecycle touch %zu %.6f %.6f %.6f\n", i + 1,
-                      touches[i][0], touches[i][1], touches[i][2]);
-        log += line;
-    }
-    return log + tail;
+    return program_test::linuxcnc_touch_log(plan, touches) + tail;
 }
 
 std::string fanuc_log(const ProbingPlan& plan, const Touches& touches,

@@ -4,6 +4,7 @@
 // and the rs274 check are made from these; and small logs in each control's
 // format (the core's importer tests and the window's).
 
+#include <array>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -164,33 +165,39 @@ inline std::string grbl_console() {
     return log;
 }
 
-// A LinuxCNC LOG file of a delay plan: a recorded touch at each Z.
-inline std::string linuxcnc_log(const ProbingPlan& plan, const std::vector<double>& zs) {
-    std::string log = "probecycle plan " + plan_id(plan) + " delay\n";
-    for (std::size_t i = 0; i < zs.size(); ++i) {
-        char line[128];
-        std::snprintf(line, sizeof line, "probecycle touch %zu 1.000000 2.000000 %.6f\n", i + 1,
-                      zs[i]);
+// A LinuxCNC LOG file as a program writes it: its plan line, then a
+// "probecycle touch" line per recorded touch at these X, Y, Z.
+inline std::string linuxcnc_touch_log(const ProbingPlan& plan,
+                                      const std::vector<std::array<double, 3>>& touches) {
+    std::string log = "probecycle plan " + plan_id(plan) + " " + to_string(plan.kind) + "\n";
+    for (std::size_t i = 0; i < touches.size(); ++i) {
+        char line[160];
+        std::snprintf(line, sizeof line, "probecycle touch %zu %.6f %.6f %.6f\n", i + 1,
+                      touches[i][0], touches[i][1], touches[i][2]);
         log += line;
     }
     return log;
+}
+
+// A LinuxCNC LOG file of a delay plan: a recorded touch at each Z.
+inline std::string linuxcnc_log(const ProbingPlan& plan, const std::vector<double>& zs) {
+    std::vector<std::array<double, 3>> touches;
+    for (const double z : zs) touches.push_back({1.0, 2.0, z});
+    return linuxcnc_touch_log(plan, touches);
 }
 
 // A LinuxCNC LOG file of a ring plan: X+, X-, Y+, Y- on a circle of this
 // radius about 0, at 0 deg, then at 180 deg, with 2 µm of runout along X.
 constexpr double kRingLogRadius_mm = 21.997;
 inline std::string linuxcnc_ring_log(const ProbingPlan& plan) {
-    std::string log = "probecycle plan " + plan_id(plan) + " ring\n";
     const double r = kRingLogRadius_mm;
     const double points[4][2] = {{r, 0}, {-r, 0}, {0, r}, {0, -r}};
+    std::vector<std::array<double, 3>> touches;
     for (int i = 0; i < 8; ++i) {
         const double runout = i < 4 ? 0.002 : -0.002;
-        char line[128];
-        std::snprintf(line, sizeof line, "probecycle touch %d %.6f %.6f 0.000000\n", i + 1,
-                      points[i % 4][0] + runout, points[i % 4][1]);
-        log += line;
+        touches.push_back({points[i % 4][0] + runout, points[i % 4][1], 0.0});
     }
-    return log;
+    return linuxcnc_touch_log(plan, touches);
 }
 
 }  // namespace probecycle::program_test
