@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -117,12 +118,27 @@ constexpr double kMmPerInch = 25.4;
 // 20 in/s^2 reads 508 mm/s^2, not 507.99999999999994.
 constexpr int kResultDigits = 12;
 
+// Through the decimal text, so a value at either end of the doubles' range
+// (4.9e-324, whose power of ten overflows a scale factor) rounds too.
 double rounded(double value) {
-    if (value == 0.0 || !std::isfinite(value)) return value;
-    const double scale = std::pow(
-        10.0, kResultDigits - 1 - static_cast<int>(std::floor(std::log10(std::abs(value)))));
-    return std::round(value * scale) / scale;
+    if (!std::isfinite(value)) return value;
+    std::array<char, 32> text{};
+    const auto written = std::to_chars(text.data(), text.data() + text.size(), value,
+                                       std::chars_format::general, kResultDigits);
+    double result = value;
+    std::from_chars(text.data(), written.ptr, result);
+    return result;
 }
+
+// Within [min, max]; a NaN is not.
+bool within(double value, double min, double max) {
+    return value >= min && value <= max;
+}
+
+// A unit of a number from a micrometre to a metre: LinuxCNC takes any
+// positive number, but outside these a machine's figures overflow or vanish.
+constexpr double kMinUnitsPerMm = 0.001;
+constexpr double kMaxUnitsPerMm = 1000.0;
 
 // [TRAJ] LINEAR_UNITS: what LinuxCNC accepts (emcIniFile.cc, linearUnitsMap,
 // any case), or a number of units per mm.
@@ -150,7 +166,7 @@ std::optional<LinearUnits> linear_units_from(std::string_view value) {
         if (same_word(value, word)) return LinearUnits{mm, mm == 1.0 ? "mm" : "in"};
     }
     const std::optional<double> per_mm = parse_decimal(value);
-    if (!per_mm || !(*per_mm > 0.0)) return std::nullopt;
+    if (!per_mm || !within(*per_mm, kMinUnitsPerMm, kMaxUnitsPerMm)) return std::nullopt;
     const double mm = 1.0 / *per_mm;
     if (std::abs(mm - 1.0) < 1e-9) return LinearUnits{1.0, "mm"};
     if (std::abs(mm / kMmPerInch - 1.0) < 1e-6) return LinearUnits{kMmPerInch, "in"};
@@ -372,8 +388,10 @@ Machine machine_from_linuxcnc_ini(std::string_view text) {
 
     // [TRAJ] LINEAR_UNITS, and the optional cap on every move's speed.
     Message units_allowed = ini_message(
-        "unknown_word", QT_TRANSLATE_NOOP("LinuxCncIni", "one of %1, or a number of units per mm"),
-        {text_arg("allowed_words", "mm, metric, in, inch, imperial")});
+        "unknown_word",
+        QT_TRANSLATE_NOOP("LinuxCncIni", "one of %1, or a number of units per mm from %2 to %3"),
+        {text_arg("allowed_words", "mm, metric, in, inch, imperial"),
+         arg("min", ArgKind::number, kMinUnitsPerMm), arg("max", ArgKind::number, kMaxUnitsPerMm)});
     std::optional<LinearUnits> units;
     std::vector<IniNumber> speeds;  // [TRAJ]'s cap, then the axes'
     std::vector<IniNumber> accels;
@@ -432,11 +450,10 @@ Machine machine_from_linuxcnc_ini(std::string_view text) {
         const auto accel = smallest(accels);
         machine.rapid_feed_mm_min = rounded(60.0 * speed->value * units->mm_per_unit);
         machine.max_accel_mm_s2 = rounded(accel->value * units->mm_per_unit);
-        if (machine.rapid_feed_mm_min < rapid_key.min ||
-            machine.rapid_feed_mm_min > rapid_key.max) {
+        if (!within(machine.rapid_feed_mm_min, rapid_key.min, rapid_key.max)) {
             reader.refuse(speed->section, speed->key, speed->entry, speed_allowed(), kRapidKey);
         }
-        if (machine.max_accel_mm_s2 < accel_key.min || machine.max_accel_mm_s2 > accel_key.max) {
+        if (!within(machine.max_accel_mm_s2, accel_key.min, accel_key.max)) {
             reader.refuse(accel->section, accel->key, accel->entry, accel_allowed(), kAccelKey);
         }
     }

@@ -610,8 +610,8 @@
         <translation>целое число от %1 до %2 нс</translation>
     </message>
     <message>
-        <source>one of %1, or a number of units per mm</source>
-        <translation>одно из: %1, или число единиц на мм</translation>
+        <source>one of %1, or a number of units per mm from %2 to %3</source>
+        <translation>одно из: %1, или число единиц на мм от %2 до %3</translation>
     </message>
 </context>
 <context>

@@ -610,8 +610,8 @@
         <translation>%1 到 %2 ns 之间的整数</translation>
     </message>
     <message>
-        <source>one of %1, or a number of units per mm</source>
-        <translation>以下之一：%1，或每毫米的单位数</translation>
+        <source>one of %1, or a number of units per mm from %2 to %3</source>
+        <translation>以下之一：%1，或每毫米的单位数，从 %2 到 %3</translation>
     </message>
 </context>
 <context>

@@ -252,7 +252,7 @@ const std::string kPeriod =
     "a whole number from 1 to 100000000 ns (for machine.scan_period_s, "
     "machine.controller_latency_s)";
 const std::string kUnits =
-    "one of mm, metric, in, inch, imperial, or a number of units per mm (for "
+    "one of mm, metric, in, inch, imperial, or a number of units per mm from 0.001 to 1000 (for "
     "machine.max_accel_mm_s2, machine.rapid_feed_mm_min)";
 
 // clang-format off
@@ -285,6 +285,10 @@ INSTANTIATE_TEST_SUITE_P(LinuxCncIni, LinuxCncIniRefusal, testing::Values(
             "[TRAJ] LINEAR_UNITS, line 5: got cm; allowed: " + kUnits},
     Refusal{"no units per mm", edit({{5, "LINEAR_UNITS = 0"}}),
             "[TRAJ] LINEAR_UNITS, line 5: got 0; allowed: " + kUnits},
+    Refusal{"a unit smaller than a micrometre", edit({{5, "LINEAR_UNITS = 4.9e-324"}}),
+            "[TRAJ] LINEAR_UNITS, line 5: got 4.9e-324; allowed: " + kUnits},
+    Refusal{"a unit larger than a metre", edit({{5, "LINEAR_UNITS = 1e308"}}),
+            "[TRAJ] LINEAR_UNITS, line 5: got 1e308; allowed: " + kUnits},
     Refusal{"units unknown: any number", edit({{5, "LINEAR_UNITS = furlong\nMAX_LINEAR_VELOCITY = fast"}}),
             "[TRAJ] LINEAR_UNITS, line 5: got furlong; allowed: " + kUnits + "\n"
             "[TRAJ] MAX_LINEAR_VELOCITY, line 6: got fast; allowed: a decimal number (for machine.rapid_feed_mm_min)"},
@@ -300,6 +304,10 @@ INSTANTIATE_TEST_SUITE_P(LinuxCncIni, LinuxCncIniRefusal, testing::Values(
             "[AXIS_Z] MAX_ACCELERATION, line 18: got x; " + kAccelMm},
     Refusal{"an acceleration under the range", edit({{18, "MAX_ACCELERATION = 0.5"}}),
             "[AXIS_Z] MAX_ACCELERATION, line 18: got 0.5; " + kAccelMm},
+    Refusal{"the smallest double as an acceleration (a fuzz finding)", edit({{18, "MAX_ACCELERATION = 4.9e-324"}}),
+            "[AXIS_Z] MAX_ACCELERATION, line 18: got 4.9e-324; " + kAccelMm},
+    Refusal{"the smallest double as a speed", edit({{17, "MAX_VELOCITY = 4.9e-324"}}),
+            "[AXIS_Z] MAX_VELOCITY, line 17: got 4.9e-324; " + kSpeedMm},
     Refusal{"a negative acceleration", edit({{10, "MAX_ACCELERATION = -1200"}}),
             "[AXIS_X] MAX_ACCELERATION, line 10: got -1200; " + kAccelMm},
     Refusal{"an acceleration under the range in inches",
