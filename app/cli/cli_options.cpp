@@ -1,7 +1,9 @@
 #include "app/cli/cli_options.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 
@@ -112,9 +114,23 @@ ReportHeader report_header_of(const std::string& input, const std::string& fallb
     return header;
 }
 
+void print(const std::string& text) {
+    errno = 0;
+    std::cout << text;
+    if (std::cout.good()) return;
+    const int error = errno;
+    throw std::runtime_error(standard_output_failure(error));
+}
+
+std::string standard_output_failure(int error) {
+    return std::string("cannot write the standard output") +
+           (error != 0 ? std::string(": ") + std::strerror(error) : std::string()) +
+           "; the output is incomplete";
+}
+
 void write_output(const std::string& path, const std::string& text) {
     if (path.empty()) {
-        std::cout << text;
+        print(text);
     } else {
         write_file_atomically(path, text);
     }

@@ -57,7 +57,7 @@ void add_ring(CLI::App& calibrate) {
                          calibration_report_csv(RingReportInput{points, options, result},
                                                 std::nullopt, report_header_of(args->file, "")));
         }
-        std::cout << ring_calibration_json(result, options).dump(2) << '\n';
+        print(ring_calibration_json(result, options).dump(2) + '\n');
     });
 }
 
@@ -101,7 +101,7 @@ void add_length(CLI::App& calibrate) {
         input.nominal_length_mm = args->nominal_length.optional();
         input.wear_limit_mm = args->wear_limit.value_or(input.wear_limit_mm);
         const LengthCalibration result = calibrate_length(input);
-        std::cout << length_calibration_json(input, result).dump(2) << '\n';
+        print(length_calibration_json(input, result).dump(2) + '\n');
     });
 }
 

@@ -133,7 +133,7 @@ void add_run(CLI::App& compare) {
                 args->report,
                 comparison_report_csv(input, result, report_header_of(args->test_omm, "untitled")));
         }
-        std::cout << comparison_json(result).dump(2) << '\n';
+        print(comparison_json(result).dump(2) + '\n');
     });
 }
 
@@ -160,7 +160,7 @@ void add_cerrors(CLI::App& compare) {
         const std::vector<BlockTouch> zero = read_block(args->block_c0);
         const std::vector<BlockTouch> turned = read_block(args->block_c180);
         const CAxisIdentification result = identify_c_axis(zero, turned, setup);
-        std::cout << c_axis_identification_json(result, setup).dump(2) << '\n';
+        print(c_axis_identification_json(result, setup).dump(2) + '\n');
     });
 }
 
@@ -220,7 +220,7 @@ void add_simulate(CLI::App& compare) {
                      "reference_cmm.csv --test-omm " + d + "test_omm.csv --reference-omm " + d +
                      "reference_omm.csv --c-axis " + format_axis(in.c_axis) + " --block-c0 " + d +
                      "block_c0.csv --block-c180 " + d + "block_c180.csv";
-        std::cout << out.dump(2) << '\n';
+        print(out.dump(2) + '\n');
     });
 }
 

@@ -23,7 +23,7 @@ constexpr double kMaxSweepPoints = 1000000;
 
 void add_defaults(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("defaults", "Print the default scenario (JSON)");
-    cmd->callback([] { std::cout << scenario_to_json(Scenario{}); });
+    cmd->callback([] { print(scenario_to_json(Scenario{})); });
 }
 
 void add_evaluate(CLI::App& app) {
@@ -33,7 +33,7 @@ void add_evaluate(CLI::App& app) {
     add_scenario_args(*cmd, *args);
     cmd->callback([args] {
         const Scenario scenario = load_scenario(*args);
-        std::cout << evaluation_to_json(scenario, analyse(scenario));
+        print(evaluation_to_json(scenario, analyse(scenario)));
     });
 }
 
@@ -51,7 +51,7 @@ void add_move(CLI::App& app) {
     add_number(*cmd, "--feed", args->feed, "Programmed feed, mm/min", "MM_MIN")->required();
     cmd->callback([args] {
         const Scenario scenario = load_scenario(args->scenario);
-        std::cout << move_to_json(scenario, args->distance.value(), args->feed.value());
+        print(move_to_json(scenario, args->distance.value(), args->feed.value()));
     });
 }
 
@@ -137,7 +137,7 @@ void add_montecarlo(CLI::App& app) {
         options.seed =
             static_cast<std::uint64_t>(args->seed.value_or(static_cast<long long>(options.seed)));
         options.bins = static_cast<int>(args->bins.value_or(options.bins));
-        std::cout << monte_carlo_to_json(options, monte_carlo_trigger_error(scenario, options));
+        print(monte_carlo_to_json(options, monte_carlo_trigger_error(scenario, options)));
     });
 }
 

@@ -83,7 +83,7 @@ void add_fit(CLI::App& latency) {
             write_file_atomically(args->apply_to, scenario_to_json(apply_delay(scenario, applied)));
             out["applied"] = applied_delay_json(applied, args->apply_to);
         }
-        std::cout << out.dump(2) << '\n';
+        print(out.dump(2) + '\n');
     });
 }
 
@@ -221,7 +221,7 @@ void add_compensate(CLI::App& latency) {
         }
         std::vector<LagRow> lags;
         if (args->lag_sweep) lags = sweep_compensated_lag(setup);
-        std::cout << compensation_json(setup, result, braking, args->trace, lags).dump(2) << '\n';
+        print(compensation_json(setup, result, braking, args->trace, lags).dump(2) + '\n');
     });
 }
 

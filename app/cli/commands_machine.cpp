@@ -37,7 +37,7 @@ void add_linuxcnc(CLI::App& machine) {
         } catch (const LinuxCncIniError& e) {
             throw std::runtime_error(*file + ": invalid LinuxCNC configuration:\n" + e.what());
         }
-        std::cout << scenario_section_to_json(scenario, "machine");
+        print(scenario_section_to_json(scenario, "machine"));
     });
 }
 

@@ -43,7 +43,7 @@ void add_optimise_commands(CLI::App& app) {
             write_file_atomically(args->apply,
                                   scenario_to_json(with_settings(scenario, result.best.settings)));
         }
-        std::cout << optimise_to_json(result);
+        print(optimise_to_json(result));
     });
 }
 

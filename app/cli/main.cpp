@@ -4,10 +4,18 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
+
+#ifndef _WIN32
+#include <fcntl.h>
+#include <unistd.h>
+#endif
 
 #include "app/cli/cli_options.h"
 #include "app/cli/commands.h"
@@ -128,13 +136,46 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
+// A standard stream the caller closed (`>&-`) stays closed: /dev/null opened
+// read-only takes its number, so writing to it fails and reports an error
+// instead of a file this program opens later taking the number and
+// receiving the output.
+void hold_closed_standard_streams() {
+#ifndef _WIN32
+    for (const int fd : {STDIN_FILENO, STDOUT_FILENO, STDERR_FILENO}) {
+        if (fcntl(fd, F_GETFD) == -1 && errno == EBADF) {
+            const int held = open("/dev/null", O_RDONLY);
+            if (held != -1 && held != fd) close(held);  // a lower number was free: not ours
+        }
+    }
+#endif
+}
+
+// The output is complete only once standard output took all of it: flushed,
+// and no write to it failed (a full disk, a closed pipe, `>&-`). print()
+// reports a failed write at once; this catches what was still buffered.
+// False after saying so on stderr.
+bool standard_output_written() {
+    errno = 0;
+    std::cout.flush();
+    const bool flushed = std::fflush(stdout) == 0;
+    const int error = errno;
+    if (flushed && std::ferror(stdout) == 0 && std::cout.good()) return true;
+    std::cerr << "probecycle-cli: " << probecycle::cli::standard_output_failure(error) << '\n';
+    return false;
+}
+
 int main(int argc, char** argv) {
+    hold_closed_standard_streams();
+    int status = 2;
     try {
-        return run(argc, argv);
+        status = run(argc, argv);
     } catch (const std::exception& e) {  // e.g. out of memory while setting up
         std::cerr << "probecycle-cli: " << e.what() << '\n';
     } catch (...) {
         std::cerr << "probecycle-cli: an unexpected error\n";
     }
-    return 2;
+    // Once: a failed print() was reported by its command's message.
+    if (status == 0 && !standard_output_written()) status = 2;
+    return status;
 }
