@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/common/message.h"
 
@@ -38,14 +39,41 @@ class FileError : public std::runtime_error {
 };
 
 // Writes via a temporary file in the same directory and a rename, so the
-// target is either the old or the complete new file. A symbolic link is
-// written through (the link stays), an existing file keeps its permissions.
-// Only a regular file or a new path is written: a directory, a FIFO, a
-// device, a socket or a link to nothing is refused and left as it is. After
-// a successful write, temporary files of this writer's naming for the same
-// target that a killed write left behind (older than a minute) are removed.
-// Throws FileError naming the path.
+// target is either the old or the complete new file. A symbolic link (or a
+// chain of them) is written through (the links stay), an existing file keeps
+// its permissions. Only a regular file or a new path is written: a directory,
+// a FIFO, a device, a socket, a link to nothing or a read-only file is
+// refused and left as it is. The rename makes a new file: a file with other
+// hard links is replaced under this name only (the other names keep the old
+// text). After a successful write, temporary files of this writer's naming
+// for the same target that a killed write left behind (older than a minute)
+// are removed. Throws FileError naming the path.
 void write_file_atomically(const std::string& path, std::string_view contents);
+
+// One file of an output written as a unit: its path and its text.
+struct OutputFile {
+    std::string path;
+    std::string_view contents;
+};
+
+// Several files as one output (a program and its plan, a report and the
+// scenario it applies to): every target is checked as write_file_atomically
+// checks it, and no two may be the same file; each is then written complete
+// to a temporary file beside its target, and only when all are complete are
+// they renamed into place, in order. A refusal or a failed write leaves every
+// target as it was. (A kill between two renames can leave a new file beside
+// an old one: the files themselves must make that detectable, as a
+// program's plan id does.)
+void write_files_atomically(const std::vector<OutputFile>& files);
+
+// A set of files as one folder (`compare simulate --out`); each file's path
+// is its name in the folder. The set is built in a temporary folder beside
+// `folder` and renamed into place, or swapped with the existing folder in
+// one step, so a reader sees the old set or the new, never a mix. An existing
+// folder is replaced only when it holds nothing but files of the set's names
+// (an earlier set) or nothing at all; otherwise refused, naming what else it
+// holds. A symbolic link to a folder is followed.
+void write_folder_atomically(const std::string& folder, const std::vector<OutputFile>& files);
 
 // Whole file as text, at most `max_bytes`. A directory or a larger file is
 // refused. Pipes and devices are read (a scenario may come from a pipe).

@@ -555,12 +555,40 @@
         <translation>это не обычный файл (канал, устройство или сокет); ProbeCycle записывает только обычные файлы</translation>
     </message>
     <message>
-        <source>it is larger than %1 MiB, the limit for an input file (%2 MiB read)</source>
-        <translation>файл больше предела для входного файла, %1 МиБ (прочитано %2 МиБ)</translation>
-    </message>
-    <message>
         <source>it is a symbolic link to a folder that does not exist</source>
         <translation>это символическая ссылка на несуществующую папку</translation>
+    </message>
+    <message>
+        <source>it has more than %1 bytes, the limit for an input file (%2 MiB)</source>
+        <translation>в нём больше %1 байт — предела для входного файла (%2 МиБ)</translation>
+    </message>
+    <message>
+        <source>it has %1 bytes; the limit for an input file is %2 bytes (%3 MiB)</source>
+        <translation>в нём %1 байт; предел для входного файла — %2 байт (%3 МиБ)</translation>
+    </message>
+    <message>
+        <source>it is read-only; ProbeCycle does not replace a protected file</source>
+        <translation>он только для чтения; ProbeCycle не заменяет защищённый файл</translation>
+    </message>
+    <message>
+        <source>the folder %1 cannot be written to (%2)</source>
+        <translation>в папку %1 нельзя записывать (%2)</translation>
+    </message>
+    <message>
+        <source>another output of this command goes there too (%1); give each output a file of its own</source>
+        <translation>туда же пишется и другой результат этой команды (%1); дайте каждому результату свой файл</translation>
+    </message>
+    <message>
+        <source>it is not a folder; give a folder that does not exist yet, or one this command wrote before</source>
+        <translation>это не папка; укажите папку, которой ещё нет, или ту, что эта команда уже записала</translation>
+    </message>
+    <message>
+        <source>its parent folder does not exist</source>
+        <translation>её родительской папки не существует</translation>
+    </message>
+    <message>
+        <source>the folder holds %1 entries other than the files this command writes (%2); give a new or empty folder</source>
+        <translation>в папке есть другие записи, кроме файлов этой команды (%1: %2); укажите новую или пустую папку</translation>
     </message>
 </context>
 <context>

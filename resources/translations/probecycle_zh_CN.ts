@@ -555,12 +555,40 @@
         <translation>它不是普通文件（而是管道、设备或套接字）；ProbeCycle 只写入普通文件</translation>
     </message>
     <message>
-        <source>it is larger than %1 MiB, the limit for an input file (%2 MiB read)</source>
-        <translation>文件大于输入文件的上限 %1 MiB（已读取 %2 MiB）</translation>
-    </message>
-    <message>
         <source>it is a symbolic link to a folder that does not exist</source>
         <translation>它是指向不存在的文件夹的符号链接</translation>
+    </message>
+    <message>
+        <source>it has more than %1 bytes, the limit for an input file (%2 MiB)</source>
+        <translation>它超过 %1 字节，即输入文件的上限（%2 MiB）</translation>
+    </message>
+    <message>
+        <source>it has %1 bytes; the limit for an input file is %2 bytes (%3 MiB)</source>
+        <translation>它有 %1 字节；输入文件的上限为 %2 字节（%3 MiB）</translation>
+    </message>
+    <message>
+        <source>it is read-only; ProbeCycle does not replace a protected file</source>
+        <translation>它是只读的；ProbeCycle 不会替换受保护的文件</translation>
+    </message>
+    <message>
+        <source>the folder %1 cannot be written to (%2)</source>
+        <translation>无法写入文件夹 %1（%2）</translation>
+    </message>
+    <message>
+        <source>another output of this command goes there too (%1); give each output a file of its own</source>
+        <translation>此命令的另一个输出也写到那里（%1）；请为每个输出指定各自的文件</translation>
+    </message>
+    <message>
+        <source>it is not a folder; give a folder that does not exist yet, or one this command wrote before</source>
+        <translation>它不是文件夹；请指定一个尚不存在的文件夹，或此命令以前写过的文件夹</translation>
+    </message>
+    <message>
+        <source>its parent folder does not exist</source>
+        <translation>它的上级文件夹不存在</translation>
+    </message>
+    <message>
+        <source>the folder holds %1 entries other than the files this command writes (%2); give a new or empty folder</source>
+        <translation>该文件夹中除本命令写入的文件外还有 %1 个条目（%2）；请指定新的或空的文件夹</translation>
     </message>
 </context>
 <context>

@@ -134,5 +134,153 @@ TEST_F(FileIoTest, AMissingFileNamesThePathAndTheSystemReason) {
     }
 }
 
+TEST_F(FileIoTest, AChainOfLinksToANewFileIsWrittenAtItsEndAndEveryLinkKept) {
+    // l1 -> l2 -> new.csv: before, l2 was replaced by the file.
+    fs::create_symlink("l2", path("l1"));
+    fs::create_symlink("new.csv", path("l2"));
+    write_file_atomically(path("l1"), "new\n");
+    EXPECT_TRUE(fs::is_symlink(path("l1")));
+    EXPECT_TRUE(fs::is_symlink(path("l2")));
+    EXPECT_EQ(read(path("new.csv")), "new\n");
+    // A loop of links is refused and kept.
+    fs::create_symlink("loop_b", path("loop_a"));
+    fs::create_symlink("loop_a", path("loop_b"));
+    EXPECT_NE(reason_code([&] { write_file_atomically(path("loop_a"), "x"); }), "");
+    EXPECT_TRUE(fs::is_symlink(path("loop_a")));
+}
+
+TEST_F(FileIoTest, TheLongestFileNameIsWritten) {
+    // Before, names of 244 to 255 bytes failed: the temporary name was longer.
+    for (const std::size_t length : {std::size_t{243}, std::size_t{244}, std::size_t{255}}) {
+        const std::string name = std::string(length - 4, 'n') + ".csv";
+        write_file_atomically(path(name), "whole\n");
+        EXPECT_EQ(read(path(name)), "whole\n") << length;
+        write_file_atomically(path(name), "again\n");  // and replaced
+        EXPECT_EQ(read(path(name)), "again\n") << length;
+    }
+}
+
+TEST_F(FileIoTest, AReadOnlyFileIsRefusedAndKept) {
+    const std::string target = path("protected.csv");
+    std::ofstream(target) << "old\n";
+    fs::permissions(target, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    EXPECT_EQ(reason_code([&] { write_file_atomically(target, "new\n"); }), "read_only");
+    EXPECT_EQ(read(target), "old\n");
+}
+
+TEST_F(FileIoTest, AHardLinkedFileIsReplacedUnderItsNameOnly) {
+    // As documented: the rename makes a new file; the other name keeps the old text.
+    const std::string target = path("a.csv");
+    std::ofstream(target) << "old\n";
+    fs::create_hard_link(target, path("b.csv"));
+    write_file_atomically(target, "new\n");
+    EXPECT_EQ(read(target), "new\n");
+    EXPECT_EQ(read(path("b.csv")), "old\n");
+}
+
+TEST_F(FileIoTest, AFolderThatCannotBeWrittenIsNamed) {
+    // sysfs refuses new files even to root.
+    if (!fs::is_directory("/sys/kernel")) GTEST_SKIP() << "no /sys";
+    try {
+        write_file_atomically("/sys/kernel/probecycle.csv", "x");
+        FAIL() << "no FileError";
+    } catch (const FileError& e) {
+        EXPECT_EQ(e.reason().code, "folder_not_writable");
+        EXPECT_NE(std::string(e.what()).find("the folder /sys/kernel cannot be written to"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST_F(FileIoTest, TheSizeOfAFileOverTheLimitIsSaidInBytes) {
+    const std::string big = path("big.json");
+    std::ofstream(big) << std::string(1025, 'x');
+    try {
+        (void)read_text_file(big, 1024);
+        FAIL() << "no FileError";
+    } catch (const FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("it has 1025 bytes; the limit for an input file is "
+                                             "1024 bytes"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST_F(FileIoTest, SeveralFilesAreWrittenAllOrNothing) {
+    const std::string program = path("probe.ngc");
+    const std::string plan = path("probe.plan.json");
+    std::ofstream(program) << "old program\n";
+    std::ofstream(plan) << "old plan\n";
+    write_files_atomically({{program, "new program\n"}, {plan, "new plan\n"}});
+    EXPECT_EQ(read(program), "new program\n");
+    EXPECT_EQ(read(plan), "new plan\n");
+
+    // The second refused: the first is not written either, and no temporary is left.
+    const std::string folder = path("folder");
+    fs::create_directory(folder);
+    EXPECT_EQ(reason_code([&] {
+                  write_files_atomically({{program, "third\n"}, {folder, "x"}});
+              }),
+              "is_a_directory");
+    EXPECT_EQ(read(program), "new program\n");
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir_)) ++entries;
+    EXPECT_EQ(entries, 3u);
+}
+
+TEST_F(FileIoTest, TwoOutputsToOneFileAreRefused) {
+    const std::string scenario = path("scenario.json");
+    std::ofstream(scenario) << "{}\n";
+    fs::create_symlink("scenario.json", path("link.json"));
+    EXPECT_EQ(reason_code([&] {
+                  write_files_atomically({{path("link.json"), "report"}, {scenario, "x"}});
+              }),
+              "same_file_twice");
+    EXPECT_EQ(reason_code([&] {
+                  write_files_atomically({{scenario, "report"}, {path("./scenario.json"), "x"}});
+              }),
+              "same_file_twice");
+    EXPECT_EQ(read(scenario), "{}\n");
+}
+
+TEST_F(FileIoTest, AFolderOfFilesIsWrittenAsOneAndReplacesOnlyAnEarlierSet) {
+    const std::string folder = path("set");
+    write_folder_atomically(folder, {{"a.csv", "a1\n"}, {"b.csv", "b1\n"}});
+    EXPECT_EQ(read(path("set/a.csv")), "a1\n");
+    EXPECT_EQ(read(path("set/b.csv")), "b1\n");
+    // An earlier set is replaced whole.
+    write_folder_atomically(folder, {{"a.csv", "a2\n"}, {"b.csv", "b2\n"}});
+    EXPECT_EQ(read(path("set/a.csv")), "a2\n");
+    EXPECT_EQ(read(path("set/b.csv")), "b2\n");
+    // A folder with the user's own files is refused and kept.
+    std::ofstream(path("set/notes.txt")) << "mine\n";
+    try {
+        write_folder_atomically(folder, {{"a.csv", "a3\n"}, {"b.csv", "b3\n"}});
+        FAIL() << "no FileError";
+    } catch (const FileError& e) {
+        EXPECT_EQ(e.reason().code, "folder_holds_other_files");
+        EXPECT_NE(std::string(e.what()).find("notes.txt"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(read(path("set/a.csv")), "a2\n");
+    EXPECT_EQ(read(path("set/notes.txt")), "mine\n");
+    // A file where the folder should be is refused; nothing is left beside it.
+    std::ofstream(path("plain")) << "x";
+    EXPECT_EQ(reason_code([&] {
+                  write_folder_atomically(path("plain"), {{"a.csv", "a"}});
+              }),
+              "not_a_folder");
+    // A file of the set that cannot be written (a FIFO of that name) leaves the old set.
+    fs::remove(path("set/notes.txt"));
+    ASSERT_EQ(::mkfifo(path("set/c.csv").c_str(), 0600), 0);
+    EXPECT_EQ(reason_code([&] {
+                  write_folder_atomically(folder, {{"a.csv", "a4\n"}, {"c.csv", "c\n"}});
+              }),
+              "folder_holds_other_files");
+    EXPECT_EQ(read(path("set/a.csv")), "a2\n");
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir_)) ++entries;
+    EXPECT_EQ(entries, 2u);  // set and plain: no temporary folder left
+}
+
 }  // namespace
 }  // namespace probecycle
