@@ -59,12 +59,17 @@ void add_fit(CLI::App& latency) {
             touches = parse_delay_csv(text);
             return fit_delay(touches, options);
         });
+        // Everything is checked before anything is written: a refusal
+        // writes nothing, and the report and the scenario are one output.
+        nlohmann::ordered_json out = delay_fit_json(fit, options);
+        std::vector<OutputFile> outputs;
+        std::string report;
         if (!args->report.empty()) {
             // The same CSV report as the Latency tab exports.
-            write_output(args->report, delay_fit_report_csv(touches, options, fit,
-                                                            report_header_of(args->file, "")));
+            report = delay_fit_report_csv(touches, options, fit, report_header_of(args->file, ""));
+            outputs.push_back({args->report, report});
         }
-        nlohmann::ordered_json out = delay_fit_json(fit, options);
+        std::string applied_scenario;
         if (!args->apply_to.empty()) {
             Scenario scenario;
             try {
@@ -80,9 +85,11 @@ void add_fit(CLI::App& latency) {
             } catch (const std::invalid_argument& e) {
                 throw UsageError(std::string(group ? "--group: " : "--apply-to: ") + e.what());
             }
-            write_file_atomically(args->apply_to, scenario_to_json(apply_delay(scenario, applied)));
+            applied_scenario = scenario_to_json(apply_delay(scenario, applied));
+            outputs.push_back({args->apply_to, applied_scenario});
             out["applied"] = applied_delay_json(applied, args->apply_to);
         }
+        write_files_atomically(outputs);
         print(out.dump(2) + '\n');
     });
 }

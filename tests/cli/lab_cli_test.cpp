@@ -366,14 +366,30 @@ TEST_P(LabApplyErrors, WriteNothing) {
     const fs::path scenario = dir / "scenario.json";
     lab_write_scenario(scenario, c.interface_delay_s);
     const std::string before = lab_read(scenario);
+    // With --report too: a refusal writes no report either (issue 29).
     const auto run = run_lab_cli("latency fit " + lab_quote(lab_data(c.csv)) + " --apply-to " +
-                                 lab_quote(scenario.string()) + " " + c.extra);
+                                 lab_quote(scenario.string()) + " --report " +
+                                 lab_quote((dir / "report.csv").string()) + " " + c.extra);
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.out, "");
     EXPECT_NE(run.err.find(c.says), std::string::npos) << run.err;
     EXPECT_EQ(lab_read(scenario), before);
-    // No temporary left behind either.
+    // No report and no temporary left behind either.
     EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 1);
+}
+
+TEST(LabLatencyFit, TheReportAndTheScenarioInOneFileAreRefused) {
+    // Before, the scenario was replaced by the CSV report, then exit 2.
+    const LabTempDir dir;
+    const fs::path scenario = dir / "scenario.json";
+    lab_write_scenario(scenario, 0.002);
+    const std::string before = lab_read(scenario);
+    const auto run = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay.csv")) +
+                                 " --group Z- --apply-to " + lab_quote(scenario.string()) +
+                                 " --report " + lab_quote(scenario.string()));
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_NE(run.err.find("give each output a file of its own"), std::string::npos) << run.err;
+    EXPECT_EQ(lab_read(scenario), before);
 }
 
 // clang-format off
