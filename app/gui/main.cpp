@@ -10,10 +10,11 @@
 // a display they select the offscreen platform themselves.
 
 #include <QApplication>
+#include <QBuffer>
+#include <QByteArray>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
 #include <QImage>
-#include <QSaveFile>
 #include <QSettings>
 #include <QSize>
 #include <QStatusBar>
@@ -26,6 +27,7 @@
 #include <optional>
 
 #include "ui/common/app_icon.h"
+#include "ui/common/file_write.h"
 #include "ui/common/language.h"
 #include "ui/window/main_window.h"
 
@@ -70,6 +72,10 @@ bool choose_platform(int argc, char** argv) {
     return false;
 }
 
+constexpr int kMinWidth = 400;
+constexpr int kMinHeight = 300;
+constexpr int kMaxSide = 8000;
+
 std::optional<QSize> parse_size(const QString& text) {
     const QStringList parts = text.toLower().split(QLatin1Char('x'));
     if (parts.size() != 2) return std::nullopt;
@@ -77,7 +83,8 @@ std::optional<QSize> parse_size(const QString& text) {
     bool ok_h = false;
     const int w = parts[0].toInt(&ok_w);
     const int h = parts[1].toInt(&ok_h);
-    if (!ok_w || !ok_h || w < 400 || h < 300 || w > 8000 || h > 8000) return std::nullopt;
+    if (!ok_w || !ok_h || w < kMinWidth || h < kMinHeight || w > kMaxSide || h > kMaxSide)
+        return std::nullopt;
     return QSize(w, h);
 }
 
@@ -183,8 +190,10 @@ int main(int argc, char** argv) {
     if (shooting) {
         const std::optional<QSize> wanted = parse_size(parser.value(size));
         if (!wanted) {
-            std::fprintf(stderr, "probecycle: --size wants WxH, e.g. 1920x1080 (got %s)\n",
-                         qPrintable(parser.value(size)));
+            std::fprintf(stderr,
+                         "probecycle: --size: got '%s'; allowed: WxH, a width from %d to %d "
+                         "and a height from %d to %d pixels, e.g. 1920x1080\n",
+                         qPrintable(parser.value(size)), kMinWidth, kMaxSide, kMinHeight, kMaxSide);
             return 2;
         }
         // Issue 12: any tab can be looked at offscreen. The order is the
@@ -216,11 +225,18 @@ int main(int argc, char** argv) {
             }
             if (!parser.isSet(screenshot)) return 0;
         }
+        // Through the checked writer as every export: a FIFO, a device or a
+        // folder is refused, not replaced (issue 29).
         const QImage image = window.grab().toImage();
-        QSaveFile out(parser.value(screenshot));
-        if (!out.open(QIODevice::WriteOnly) || !image.save(&out, "PNG") || !out.commit()) {
+        QByteArray png;
+        QBuffer buffer(&png);
+        QString error;
+        if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG")) {
+            error = QStringLiteral("cannot encode the PNG");
+        }
+        if (!error.isEmpty() || !probecycle::ui::write_file(parser.value(screenshot), png, error)) {
             std::fprintf(stderr, "probecycle: cannot write %s: %s\n",
-                         qPrintable(parser.value(screenshot)), qPrintable(out.errorString()));
+                         qPrintable(parser.value(screenshot)), qPrintable(error));
             return 2;
         }
         return 0;
