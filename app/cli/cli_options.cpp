@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -118,6 +119,14 @@ void print(const std::string& text) {
     errno = 0;
     std::cout << text;
     if (std::cout.good()) return;
+    const int error = errno;
+    throw std::runtime_error(standard_output_failure(error));
+}
+
+void flush_output() {
+    errno = 0;
+    std::cout.flush();
+    if (std::fflush(stdout) == 0 && std::cout.good() && std::ferror(stdout) == 0) return;
     const int error = errno;
     throw std::runtime_error(standard_output_failure(error));
 }

@@ -77,6 +77,8 @@ ReportHeader report_header_of(const std::string& input, const std::string& fallb
 // std::runtime_error with standard_output_failure's text, so the command
 // exits 2 instead of 0 with its output lost.
 void print(const std::string& text);
+// Standard output flushed; a failure throws as print() does.
+void flush_output();
 // "cannot write the standard output: <the system's reason>; ..."
 std::string standard_output_failure(int error);
 

@@ -10,6 +10,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/lab_input.h"
 #include "core/common/csv_reader.h"
+#include "core/common/file_io.h"
 #include "core/common/number_format.h"
 #include "core/comparison/comparison.h"
 #include "core/comparison/comparison_project.h"
@@ -190,12 +191,6 @@ void add_simulate(CLI::App& compare) {
         const ComparisonDataSet data = simulate_comparison(options);
         namespace fs = std::filesystem;
         const fs::path dir(args->out);
-        std::error_code error;
-        fs::create_directories(dir, error);
-        if (error || !fs::is_directory(dir)) {
-            throw UsageError("--out: cannot make the folder '" + args->out + "'" +
-                             (error ? ": " + error.message() : std::string()));
-        }
         const ComparisonInput& in = data.input;
         const std::vector<std::pair<const char*, std::string>> files = {
             {"plan.csv", plan_csv(in.plan)},
@@ -207,11 +202,15 @@ void add_simulate(CLI::App& compare) {
             {"truth.csv", truth_csv(in.plan, data.truth_mm)},
             {"simulation.json", simulation_json(data, options).dump(2) + "\n"},
         };
+        // One set: built beside the folder and swapped in whole, so a reader
+        // never meets files of two seeds, and a refusal leaves none.
+        std::vector<OutputFile> set;
         nlohmann::ordered_json written = nlohmann::ordered_json::array();
         for (const auto& [name, text] : files) {
-            write_output((dir / name).string(), text);
+            set.push_back({name, text});
             written.push_back(name);
         }
+        write_folder_atomically(args->out, set);
         const std::string d = dir.string() + "/";
         nlohmann::ordered_json out = simulation_json(data, options);
         out["folder"] = dir.string();

@@ -86,8 +86,21 @@ void write_plan_and_program(const ProgramArgs& args, Make make,
     } catch (const InputError& e) {
         throw UsageError(in_option_words(e.what()));
     }
-    if (!args.plan.empty()) write_file_atomically(args.plan, probing_plan_json(plan));
-    write_output(args.out, program);
+    // The program and its plan are one output: both or neither. (A kill
+    // between the two renames can pair a new plan with an old program: the
+    // plan id that the program prints into its log tells them apart at the
+    // import.)
+    const std::string plan_text = args.plan.empty() ? std::string() : probing_plan_json(plan);
+    if (!args.out.empty()) {
+        std::vector<OutputFile> outputs = {{args.out, program}};
+        if (!args.plan.empty()) outputs.push_back({args.plan, plan_text});
+        write_files_atomically(outputs);
+        return;
+    }
+    // The program on stdout: the plan only once the program is out whole.
+    print(program);
+    flush_output();
+    if (!args.plan.empty()) write_file_atomically(args.plan, plan_text);
 }
 
 void add_delay(CLI::App& program) {
