@@ -4,6 +4,7 @@
 // "Strategies").
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -258,8 +259,13 @@ class CycleResult {
     // error says: backoff_too_small (the second touch would start with the
     // stylus still deflected) or overtravel_limit at or over the limit (the
     // stylus is overrun). Its time is then no cycle time to compare or to
-    // optimise for; invalid_codes() names why.
-    bool valid() const { return invalid_codes() == 0; }
+    // optimise for; invalid_codes() names why. A time or an overtravel that is
+    // not a finite number is never valid either (issue 29: the scenario's
+    // checks keep it from happening; this keeps a NaN from being shown as a
+    // valid cycle should a value slip through).
+    bool valid() const {
+        return invalid_codes() == 0 && std::isfinite(total_s_) && std::isfinite(overtravel_mm_);
+    }
     // The error codes as bits, 1 << WarningCode (0 when valid).
     unsigned invalid_codes() const;
 

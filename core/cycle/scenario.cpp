@@ -587,9 +587,12 @@ Message with_detail(const char* code, const char* text, std::string detail) {
     return m;
 }
 
-// -0 and +0 are one value; the files and reports write 0.
+// -0 and +0 are one value; the files and reports write 0. A subnormal
+// number (under 2.2e-308) cannot be told from zero by the model: its inverse
+// overflows (a servo time constant of 4.9e-324 s gave a NaN cycle time), so
+// it is zero too (issue 29).
 double without_negative_zero(double value) {
-    return value == 0.0 ? 0.0 : value;
+    return value == 0.0 || std::fpclassify(value) == FP_SUBNORMAL ? 0.0 : value;
 }
 
 // Deeper than a scenario needs (root, section, value, and one more so that a
