@@ -184,7 +184,10 @@ std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario) {
             find_knee(scenario, from, std::max(from, to), {.recommended_backoff = true});
         line += " from " + csv_feed_mm_min(from) + " to " + csv_feed_mm_min(to) + " mm/min: ";
         line += knee.knee_feed_mm_min ? csv_feed_mm_min(*knee.knee_feed_mm_min) + " mm/min"
-                                      : "none (no feed within the probe's overtravel limit)";
+                : knee.none_reached
+                    ? "none (the first touch does not reach the feed from its start)"
+                    : "none (no valid feed: each overtravels the probe's limit or backs off too "
+                      "little)";
         range_end = knee.range_end_warning;
     }
     line += "; fastest feed meeting the target uncertainty";

@@ -158,11 +158,25 @@ std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t 
 KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_min,
                      const SweepOptions& options) {
     KneeSearch out;
-    if (!(from_mm_min > 0.0) || !(to_mm_min > from_mm_min)) return out;
+    if (!(from_mm_min > 0.0) || !(to_mm_min >= from_mm_min)) return out;
     CycleResult& scratch = scratch_result();
     const auto time_at = [&](double feed) {
         return cycle_time_at(scenario, feed, options, scratch);
     };
+    if (to_mm_min == from_mm_min) {
+        // One feed (a one-feed sweep, issue 29): the knee of a single valid
+        // feed is that feed; there is no range whose end it could be.
+        const double t = time_at(from_mm_min);
+        if (!counts_for_knee(scratch)) {
+            out.none_reached = valid_for_knee(scratch.invalid_codes());
+            return out;
+        }
+        out.valid_to_mm_min = from_mm_min;
+        out.best_feed_mm_min = from_mm_min;
+        out.best_cycle_time_s = t;
+        out.knee_feed_mm_min = from_mm_min;
+        return out;
+    }
     // A log grid of the valid feeds: it ends at the first invalid one, where a
     // bisection finds the last valid feed, which closes the grid.
     constexpr std::size_t kGrid = 48;

@@ -455,9 +455,14 @@ TEST_F(CycleCli, SweepSummarySaysWhenTheFastestCycleIsAtTheEndOfTheRange) {
     const CliRun none = run({"sweep", "--set", "probe.overtravel_limit_mm=0.01", "--from", "100",
                              "--to", "1000", "--step", "100"});
     ASSERT_EQ(none.exit_code, 0) << none;
-    EXPECT_NE(none.err.find("none (no feed within the probe's overtravel limit)"),
+    EXPECT_NE(none.err.find("none (no valid feed: each overtravels the probe's limit or backs "
+                            "off too little)"),
               std::string::npos)
         << none;
+    // One valid feed is its own knee (before: "none (no feed within ...)").
+    const CliRun one = run({"sweep", "--from", "1000", "--to", "1000", "--step", "10"});
+    ASSERT_EQ(one.exit_code, 0) << one;
+    EXPECT_NE(one.err.find("from 1000 to 1000 mm/min: 1000 mm/min;"), std::string::npos) << one;
 }
 
 TEST_F(CycleCli, SweepCsvWritesTheFile) {

@@ -67,8 +67,8 @@ TEST(ScenarioEdges, ASubnormalNumberIsZero) {
         // outside the key's range.
         const std::string dotted = key.key;
         const std::size_t dot = dotted.find('.');
-        const std::string text = "{\"" + dotted.substr(0, dot) + "\": {\"" +
-                                 dotted.substr(dot + 1) + "\": 4.9e-324}}";
+        const std::string text =
+            "{\"" + dotted.substr(0, dot) + "\": {\"" + dotted.substr(dot + 1) + "\": 4.9e-324}}";
         try {
             EXPECT_EQ(*get_number(scenario_from_json(text), key.key), 0.0) << key.key;
             EXPECT_LE(key.min, 0.0) << key.key;

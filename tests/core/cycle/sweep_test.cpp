@@ -283,6 +283,20 @@ TEST(FindKnee, ContinuousKneeMatchesTheDefinition) {
     }
 }
 
+TEST(FindKnee, OneValidFeedIsItsOwnKnee) {
+    const Scenario s = single_touch_surface();
+    const KneeSearch one = find_knee(s, 1000.0, 1000.0);
+    ASSERT_TRUE(one.knee_feed_mm_min.has_value());
+    EXPECT_EQ(*one.knee_feed_mm_min, 1000.0);
+    EXPECT_EQ(one.best_feed_mm_min, 1000.0);
+    EXPECT_EQ(one.best_cycle_time_s, cycle_time_at(s, 1000.0));
+    EXPECT_FALSE(one.range_end_warning.has_value());
+    // An invalid one has none.
+    Scenario tight = s;
+    tight.probe.overtravel_limit_mm = 0.01;
+    EXPECT_FALSE(find_knee(tight, 1000.0, 1000.0).knee_feed_mm_min.has_value());
+}
+
 TEST(FindKnee, AgreesWithAFineSweep) {
     const Scenario s = single_touch_surface();
     const std::optional<double> knee = find_knee(s, 100.0, 8000.0).knee_feed_mm_min;
