@@ -264,11 +264,19 @@ Project parse_project(std::string_view text) {
     }
     if (!root.contains("version") || !root["version"].is_number_integer() ||
         root["version"].get<long long>() != kVersion) {
+        // Only a later version is a newer ProbeCycle's file; 0, null or "1"
+        // is a damaged one.
+        const bool newer = root.contains("version") && root["version"].is_number_integer() &&
+                           root["version"].get<long long>() > kVersion;
         throw ScenarioError(
             {{"version", root.contains("version") ? root["version"].dump() : "",
-              allowed_text(
-                  "project_file_version",
-                  QT_TRANSLATE_NOOP("FieldError", "1 (a newer ProbeCycle wrote this file)"))}});
+              newer ? allowed_text(
+                          "project_file_version",
+                          QT_TRANSLATE_NOOP("FieldError", "1 (a newer ProbeCycle wrote this file)"))
+                    : allowed_text("project_file_version_damaged",
+                                   QT_TRANSLATE_NOOP("FieldError",
+                                                     "the whole number 1 (this ProbeCycle's "
+                                                     "project version)"))}});
     }
     Project project;
     std::vector<FieldError> errors;
@@ -322,8 +330,13 @@ Project parse_project(std::string_view text) {
 bool is_project_text(std::string_view text) {
     // A scenario file has no text values that could hold the format's name,
     // so a file that names it is a project (and a damaged one is refused as a
-    // project, with the project's messages).
-    return text.find(std::string("\"") + kFormat + "\"") != std::string_view::npos;
+    // project, with the project's messages). Nor has it a "format" key or a
+    // "scenario" section: a file with both is a project whose format is
+    // wrong, refused for that one thing rather than for every section a
+    // scenario does not know (issue 29).
+    return text.find(std::string("\"") + kFormat + "\"") != std::string_view::npos ||
+           (text.find("\"format\"") != std::string_view::npos &&
+            text.find("\"scenario\"") != std::string_view::npos);
 }
 
 }  // namespace probecycle

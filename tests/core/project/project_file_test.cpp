@@ -119,6 +119,14 @@ TEST(ProjectFile, TellsAProjectFromAScenarioOrAComparisonProject) {
     EXPECT_FALSE(is_project_text(comparison_project_json(ComparisonProject{})));
     // A damaged project is still one, so its own messages say what is wrong.
     EXPECT_TRUE(is_project_text(R"({"format": "probecycle-project", "version": )"));
+    // So is one whose format was mistyped: refused for its format alone
+    // (before: every section reported unknown to a scenario).
+    const std::string mistyped =
+        R"({"format": "probecycle-projekt", "version": 1, "scenario": {}, "ring": {}})";
+    EXPECT_TRUE(is_project_text(mistyped));
+    EXPECT_EQ(problems(mistyped),
+              "format: got \"probecycle-projekt\"; allowed: \"probecycle-project\" (a ProbeCycle "
+              "project)\n");
 }
 
 TEST(ProjectFile, RefusesWhatIsNotAProjectOfThisVersion) {
@@ -126,6 +134,13 @@ TEST(ProjectFile, RefusesWhatIsNotAProjectOfThisVersion) {
               "format: \"probecycle-project\" (a ProbeCycle project)\n");
     EXPECT_EQ(problems(R"({"format": "probecycle-project", "version": 2, "scenario": {}})"),
               "version: got 2; allowed: 1 (a newer ProbeCycle wrote this file)\n");
+    // Not newer: damaged (before, all three said a newer ProbeCycle wrote them).
+    for (const char* version : {"0", "null", "\"1\"", "1.5"}) {
+        EXPECT_EQ(problems(std::string(R"({"format": "probecycle-project", "version": )") +
+                           version + R"(, "scenario": {}})"),
+                  std::string("version: got ") + version +
+                      "; allowed: the whole number 1 (this ProbeCycle's project version)\n");
+    }
     EXPECT_NE(problems(R"({"format": "probecycle-project", "version": 1,)").find("malformed JSON"),
               std::string::npos);
     EXPECT_EQ(problems(R"({"format": "probecycle-project", "version": 1})"),
