@@ -44,6 +44,25 @@ double parse_number(const std::string& text, const std::string& name, double min
     return *parse_decimal(text);
 }
 
+std::vector<double> parse_number_list(const std::string& text, const std::string& name, double min,
+                                      double max) {
+    std::vector<double> numbers;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t comma = text.find(',', start);
+        const std::string item = text.substr(start, comma - start);
+        if (number_problem(item, min, max)) {
+            throw UsageError(name + ": got '" + text + "'; allowed: numbers separated by commas, " +
+                             "each from " + format_number(min) + " to " + format_number(max) +
+                             " (item " + std::to_string(numbers.size() + 1) +
+                             (item.empty() ? " is empty)" : ", '" + item + "', is not)"));
+        }
+        numbers.push_back(*parse_decimal(item));
+        if (comma == std::string::npos) return numbers;
+        start = comma + 1;
+    }
+}
+
 double NumberArg::value() const {
     return *parse_decimal(text);  // checked by the option's validator
 }

@@ -57,6 +57,9 @@ CLI::Option* add_integer(CLI::App& app, const std::string& name, IntegerArg& arg
 std::optional<std::string> number_problem(const std::string& text, double min, double max);
 std::optional<std::string> integer_problem(const std::string& text, long long min, long long max);
 double parse_number(const std::string& text, const std::string& name, double min, double max);
+// A comma-separated list of such numbers, none empty ("1,,2" and "," are refused).
+std::vector<double> parse_number_list(const std::string& text, const std::string& name, double min,
+                                      double max);
 
 // SCENARIO.json and --set section.key=value (repeatable, applied in order).
 struct ScenarioArgs {

@@ -4,6 +4,7 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/cli/cli_options.h"
 #include "app/cli/commands.h"
@@ -107,7 +108,7 @@ void add_delay(CLI::App& program) {
     struct Args {
         ProgramArgs common;
         std::string axis{"Z-"};
-        std::vector<std::string> feeds;
+        std::optional<std::string> feeds;
         IntegerArg repeats{1, kMaxPlanRepeats};
         NumberArg margin{0.0, 100.0};
         NumberArg placement{0.1, kMaxPlanDistance_mm};
@@ -124,8 +125,7 @@ void add_delay(CLI::App& program) {
     cmd->add_option("--feeds", args->feeds,
                     "Feeds, mm/min, comma-separated (default 30,100,300,1000,2000 and the "
                     "scenario's probing feed)")
-        ->type_name("F,F,...")
-        ->delimiter(',');
+        ->type_name("F,F,...");
     add_integer(*cmd, "--repeats", args->repeats, "Touches at each feed (default 5)");
     add_number(*cmd, "--margin-mm", args->margin,
                "Start this much farther out than the distance to reach the feed (default 1)", "MM");
@@ -135,9 +135,9 @@ void add_delay(CLI::App& program) {
     cmd->callback([args] {
         DelayPlanOptions options;
         options.touch = *axis_direction_from_string(args->axis);
-        for (const std::string& feed : args->feeds) {
-            options.feeds_mm_min.push_back(
-                parse_number(feed, "--feeds", kMinPlanFeed_mm_min, kMaxPlanFeed_mm_min));
+        if (args->feeds) {
+            options.feeds_mm_min = parse_number_list(*args->feeds, "--feeds", kMinPlanFeed_mm_min,
+                                                     kMaxPlanFeed_mm_min);
         }
         options.repeats = static_cast<int>(args->repeats.value_or(options.repeats));
         options.margin_mm = args->margin.value_or(options.margin_mm);

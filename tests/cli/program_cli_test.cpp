@@ -194,7 +194,14 @@ TEST(ProgramCli, BadInputIsNamedWithWhatIsAllowed) {
         {"program delay --dialect siemens",
          "--dialect: got 'siemens'; allowed: linuxcnc, grbl, fanuc"},
         {"program delay --dialect grbl --axis A+", "--axis: got 'A+'; allowed: X+, X-, Y+"},
-        {"program delay --dialect grbl --feeds 30,abc", "--feeds: got 'abc'; allowed: a number"},
+        {"program delay --dialect grbl --feeds 30,abc",
+         "--feeds: got '30,abc'; allowed: numbers separated by commas, each from 1 to 100000 "
+         "(item 2, 'abc', is not)"},
+        // Before: "got '--repeats'", and "100,,200" ran with two feeds.
+        {"program delay --dialect grbl --feeds , --repeats 2",
+         "--feeds: got ','; allowed: numbers separated by commas, each from 1 to 100000 (item 1 "
+         "is empty)"},
+        {"program delay --dialect grbl --feeds 100,,200", "(item 2 is empty)"},
         {"program delay --dialect grbl --feeds 100,100",
          "--feeds: got 100; allowed: from 2 to 20 different feeds"},
         {"program delay --dialect grbl --repeats 0", "--repeats: got '0'; allowed: a whole number"},
