@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include "core/common/csv_reader.h"
 #include "core/common/input_error.h"
 #include "core/common/number_format.h"
+#include "core/program/dialect.h"
 
 namespace probecycle {
 
@@ -505,11 +507,51 @@ void refuse_cycle_plan(const ProbingPlan& plan) {
     }
 }
 
+// Whether a line is one that `id`'s log holds and no other dialect's does:
+// LinuxCNC's "probecycle ..." LOG lines, grbl's "[PRB:" reports, the
+// Fanuc-type DPRNT's "PROBECYCLE ..." lines (upper case).
+bool is_signature_line(DialectId id, std::string_view line) {
+    switch (id) {
+        case DialectId::linuxcnc:
+            return line.substr(0, 11) == "probecycle ";
+        case DialectId::grbl:
+            return line.find("[PRB:") != std::string_view::npos;
+        case DialectId::fanuc:
+            return line.find("PROBECYCLE ") != std::string_view::npos;
+    }
+    return false;
+}
+
+// A log of another control given as this one's (issue 29: a grbl console read
+// as a LinuxCNC log said "the log ends after 0 of the plan's 26 probe
+// positions"): when no line is the chosen dialect's and one is another's,
+// say which, at that line.
+void check_dialect(DialectId chosen, std::string_view text) {
+    std::optional<std::pair<std::size_t, DialectId>> other;
+    for (const auto& [number, raw] : lines_of(text)) {
+        const std::string_view line = trimmed(raw);
+        if (is_signature_line(chosen, line)) return;
+        for (const DialectId id : {DialectId::linuxcnc, DialectId::grbl, DialectId::fanuc}) {
+            if (id != chosen && !other && is_signature_line(id, line)) other = {number, id};
+        }
+    }
+    if (!other) return;
+    throw CsvError(other->first, "",
+                   log_message("log_other_dialect",
+                               QT_TRANSLATE_NOOP("MachineLog",
+                                                 "this line is from a %1 log, and no line is "
+                                                 "from a %2 log: import it as %1 (--dialect %1); "
+                                                 "nothing imported"),
+                               {text_arg("found", dialect(other->second).name),
+                                text_arg("chosen", dialect(chosen).name)}));
+}
+
 // The positions in the dialect's file, and whether they stand for every probe
 // (and protected move) or the recorded touches only.
 std::vector<RecordedPosition> read_positions(const ProbingPlan& plan, DialectId dialect,
                                              std::string_view text, bool& every_probe,
                                              LoggedResult* result = nullptr) {
+    check_dialect(dialect, text);
     if (dialect == DialectId::grbl) {
         every_probe = true;
         return read_grbl_positions(text, plan);

@@ -535,6 +535,10 @@
         <source>less than %1, the %2&apos;s distance between stylus centres (cycle.feature_size_mm)</source>
         <translation>меньше %1 — расстояния между центрами наконечника для элемента (%2) (cycle.feature_size_mm)</translation>
     </message>
+    <message>
+        <source>the whole number 1 (this ProbeCycle&apos;s project version)</source>
+        <translation>целое число 1 (версия проекта этой ProbeCycle)</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -715,6 +719,10 @@
     <message>
         <source>the cycle plan&apos;s recorded touches do not make the sides of its %1: was the plan file edited?</source>
         <translation>записанные касания плана цикла не образуют стороны элемента (%1): файл плана изменяли?</translation>
+    </message>
+    <message>
+        <source>this line is from a %1 log, and no line is from a %2 log: import it as %1 (--dialect %1); nothing imported</source>
+        <translation>эта строка из журнала %1, а строк журнала %2 нет: импортируйте его как %1 (--dialect %1); ничего не импортировано</translation>
     </message>
 </context>
 <context>

@@ -535,6 +535,10 @@
         <source>less than %1, the %2&apos;s distance between stylus centres (cycle.feature_size_mm)</source>
         <translation>小于 %1，即%2的测针中心间距（cycle.feature_size_mm）</translation>
     </message>
+    <message>
+        <source>the whole number 1 (this ProbeCycle&apos;s project version)</source>
+        <translation>整数 1（本 ProbeCycle 的项目版本）</translation>
+    </message>
 </context>
 <context>
     <name>FileError</name>
@@ -715,6 +719,10 @@
     <message>
         <source>the cycle plan&apos;s recorded touches do not make the sides of its %1: was the plan file edited?</source>
         <translation>循环计划中记录的触测不能构成其%1的各侧：计划文件是否被修改过？</translation>
+    </message>
+    <message>
+        <source>this line is from a %1 log, and no line is from a %2 log: import it as %1 (--dialect %1); nothing imported</source>
+        <translation>此行来自 %1 日志，且没有任何行来自 %2 日志：请按 %1 导入（--dialect %1）；未导入任何内容</translation>
     </message>
 </context>
 <context>

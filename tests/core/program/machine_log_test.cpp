@@ -162,6 +162,37 @@ TEST(MachineLog, LinuxCncLogAndProbeFileGiveTheSameTable) {
     EXPECT_EQ(parse_delay_csv(from_log).size(), 4u);
 }
 
+TEST(MachineLog, ALogOfAnotherDialectIsNamedAtItsFirstLine) {
+    // Before: "the log ends after 0 of the plan's 5 probe positions" or
+    // "cannot read '[PRB:...'; expected 9 numbers".
+    const ProbingPlan plan = small_delay_plan();
+    const std::vector<double> zs = {-20.0171, -20.0172, -20.1501, -20.1502};
+    const std::string lcnc = linuxcnc_log(plan, zs);
+    const std::string grbl = grbl_console();
+    const std::string fanuc = fanuc_log(plan, "\n");
+    const auto says = [&](DialectId chosen, const std::string& text) {
+        try {
+            (void)import_machine_log(plan, chosen, text);
+        } catch (const CsvError& e) {
+            return std::string(e.what());
+        }
+        return std::string("imported");
+    };
+    EXPECT_EQ(says(DialectId::grbl, lcnc),
+              "line 1: this line is from a linuxcnc log, and no line is from a grbl log: import "
+              "it as linuxcnc (--dialect linuxcnc); nothing imported");
+    EXPECT_EQ(says(DialectId::fanuc, lcnc).substr(0, 45),
+              "line 1: this line is from a linuxcnc log, and");
+    EXPECT_NE(
+        says(DialectId::linuxcnc, grbl).find("from a grbl log, and no line is from a linuxcnc"),
+        std::string::npos);
+    EXPECT_NE(says(DialectId::grbl, fanuc).find("from a fanuc log"), std::string::npos);
+    // Each in its own dialect is read.
+    EXPECT_EQ(says(DialectId::linuxcnc, lcnc), "imported");
+    EXPECT_EQ(says(DialectId::grbl, grbl), "imported");
+    EXPECT_EQ(says(DialectId::fanuc, fanuc), "imported");
+}
+
 TEST(MachineLog, LinuxCncBrokenLogsNameTheLine) {
     const ProbingPlan plan = small_delay_plan();
     const std::vector<double> zs = {-20.0171, -20.0172, -20.1501, -20.1502};
