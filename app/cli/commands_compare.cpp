@@ -51,10 +51,10 @@ CAxisSetup axis_setup(const AxisArgs& args) {
     return setup;
 }
 
-std::vector<Eigen::Vector3d> read_points(const std::string& path, std::size_t plan_count) {
-    return read_lab_csv(path, [plan_count](const std::string& text) {
-        return parse_points_for_plan(text, plan_count);
-    });
+std::vector<Eigen::Vector3d> read_points(const std::string& path,
+                                         const std::vector<PlanPoint>& plan) {
+    return read_lab_csv(
+        path, [&plan](const std::string& text) { return parse_points_for_plan(text, plan); });
 }
 
 std::vector<BlockTouch> read_block(const std::string& path) {
@@ -121,9 +121,9 @@ void add_run(CLI::App& compare) {
         input.tolerance_mm = args->tolerance.optional();
         input.plan =
             read_lab_csv(args->plan, [](const std::string& text) { return parse_plan(text); });
-        input.reference_cmm = read_points(args->reference_cmm, input.plan.size());
-        input.test_omm = read_points(args->test_omm, input.plan.size());
-        input.reference_omm = read_points(args->reference_omm, input.plan.size());
+        input.reference_cmm = read_points(args->reference_cmm, input.plan);
+        input.test_omm = read_points(args->test_omm, input.plan);
+        input.reference_omm = read_points(args->reference_omm, input.plan);
         if (!args->block_c0.empty()) {
             input.block_at_zero = read_block(args->block_c0);
             input.block_turned = read_block(args->block_c180);

@@ -58,8 +58,23 @@ std::vector<MeasuredPoint> parse_points(std::string_view text);
 // CsvError unless there is one point per plan point: naming the first line
 // beyond the plan's count, or the count the file is short of.
 void check_point_count(const std::vector<MeasuredPoint>& points, std::size_t plan_count);
-// parse_points() then check_point_count(): the coordinates, one per plan point.
-std::vector<Eigen::Vector3d> parse_points_for_plan(std::string_view text, std::size_t plan_count);
+// A plan smaller than this is taken as this large for the check below.
+constexpr double kMinPlanExtent_mm = 1.0;
+// A point farther than this from its plan point is checked for being another's.
+constexpr double kOrderCheckFrom_mm = 0.1;
+// ... and is refused when another plan point is this many times nearer.
+constexpr double kOrderCheckRatio = 3.0;
+// CsvError at the point's line unless each point lies near its plan point:
+// within the plan's extent (the diagonal of its bounding box, at least
+// kMinPlanExtent_mm; a point 100 m away made the surface fit singular with
+// no line named), and not much nearer another plan point than its own (the
+// points out of the plan's order).
+void check_points_follow_plan(const std::vector<MeasuredPoint>& points,
+                              const std::vector<PlanPoint>& plan);
+// parse_points(), check_point_count() and check_points_follow_plan(): the
+// coordinates, one per plan point.
+std::vector<Eigen::Vector3d> parse_points_for_plan(std::string_view text,
+                                                   const std::vector<PlanPoint>& plan);
 // "a comparison needs %2 points or more; got %1".
 Message too_few_points(std::size_t points);
 // A block's touches; CsvError for an unknown face or a face with fewer than

@@ -182,6 +182,14 @@
         <source>a comparison needs %2 points or more; got %1</source>
         <translation>для сравнения нужно точек не менее %2; получено: %1</translation>
     </message>
+    <message>
+        <source>this point lies %1 from its plan point (plan line %2); allowed: within the plan&apos;s extent, %3; the points follow the plan&apos;s order, one per plan point</source>
+        <translation>эта точка лежит в %1 от своей точки плана (строка плана %2); допустимо: в пределах размеров плана, %3; точки идут в порядке плана, по одной на точку плана</translation>
+    </message>
+    <message>
+        <source>this point lies %1 from its plan point (plan line %2) but %3 from the plan point of line %4: the points must follow the plan&apos;s order, one per plan point</source>
+        <translation>эта точка лежит в %1 от своей точки плана (строка плана %2), но в %3 от точки плана в строке %4: точки должны идти в порядке плана, по одной на точку плана</translation>
+    </message>
 </context>
 <context>
     <name>CsvError</name>

@@ -182,6 +182,14 @@
         <source>a comparison needs %2 points or more; got %1</source>
         <translation>比对测量需要 %2 个或更多测点；实际为 %1 个</translation>
     </message>
+    <message>
+        <source>this point lies %1 from its plan point (plan line %2); allowed: within the plan&apos;s extent, %3; the points follow the plan&apos;s order, one per plan point</source>
+        <translation>此点距其计划点（计划第 %2 行）%1；允许：在计划范围 %3 之内；各点按计划顺序排列，每个计划点一个</translation>
+    </message>
+    <message>
+        <source>this point lies %1 from its plan point (plan line %2) but %3 from the plan point of line %4: the points must follow the plan&apos;s order, one per plan point</source>
+        <translation>此点距其计划点（计划第 %2 行）%1，但距第 %4 行的计划点仅 %3：各点必须按计划顺序排列，每个计划点一个</translation>
+    </message>
 </context>
 <context>
     <name>CsvError</name>

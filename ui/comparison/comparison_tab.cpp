@@ -433,11 +433,11 @@ bool ComparisonTab::run() {
         }
         current = file(InputFile::plan);
         input.plan = read_input(current, [](const std::string& t) { return parse_plan(t); });
-        const std::size_t n = input.plan.size();
         const auto points = [&](InputFile which) {
             current = file(which);
-            return read_input(current,
-                              [n](const std::string& t) { return parse_points_for_plan(t, n); });
+            return read_input(current, [&input](const std::string& t) {
+                return parse_points_for_plan(t, input.plan);
+            });
         };
         input.reference_cmm = points(InputFile::reference_cmm);
         input.test_omm = points(InputFile::test_omm);

@@ -67,6 +67,44 @@ TEST(ComparisonInputTest, CountsMustMatchThePlan) {
     expect_error([&] { check_point_count(points, 20); }, 19, "", "ends after 18 points");
 }
 
+// The points of plan_text(16) (y = k % 4), each moved by `offset`; the
+// point on line `line` (1-based, after the header) replaced by `replacement`.
+std::string points_of_plan(double offset, std::size_t line = 0,
+                           const std::string& replacement = "") {
+    std::string text = "x_mm,y_mm,z_mm\n";
+    for (int k = 0; k < 16; ++k) {
+        const std::string row =
+            std::to_string(10 + k + offset) + "," + std::to_string(k % 4) + ",1.5\n";
+        text += static_cast<std::size_t>(k) + 2 == line ? replacement + "\n" : row;
+    }
+    return text;
+}
+
+TEST(ComparisonInputTest, APointFarFromItsPlanPointIsNamedAtItsLine) {
+    // Before: "the surface fit has no unique solution for these points", no file, no line.
+    const std::vector<PlanPoint> plan = parse_plan(plan_text(16));
+    EXPECT_EQ(parse_points_for_plan(points_of_plan(0.002), plan).size(), 16u);
+    expect_error([&] { (void)parse_points_for_plan(points_of_plan(0.0, 5, "100000,3,1.5"), plan); },
+                 5, "",
+                 "this point lies 99987 mm from its plan point (plan line 6); allowed: "
+                 "within the plan's extent, 15.2971 mm");
+}
+
+TEST(ComparisonInputTest, PointsOutOfThePlansOrderAreNamed) {
+    const std::vector<PlanPoint> plan = parse_plan(plan_text(16));
+    // Lines 3 and 4 swapped: the point of line 3 is the plan's fourth.
+    std::string swapped = points_of_plan(0.0);
+    const std::string third = "12.000000,2,1.5\n";
+    const std::string fourth = "13.000000,3,1.5\n";
+    swapped.replace(swapped.find(third), third.size(), "TMP\n");
+    swapped.replace(swapped.find(fourth), fourth.size(), third);
+    swapped.replace(swapped.find("TMP\n"), 4, fourth);
+    expect_error([&] { (void)parse_points_for_plan(swapped, plan); }, 4, "",
+                 "from the plan point of line 6: the points must follow the plan's order");
+    // A whole part shifted by 0.3 mm is no disorder: each point is still nearest its own.
+    EXPECT_EQ(parse_points_for_plan(points_of_plan(0.3), plan).size(), 16u);
+}
+
 TEST(ComparisonInputTest, ReadsDmisPointStatements) {
     std::string dmis = "DMISMN/'plan',4.0\nUNITS/MM,ANGDEG\n$$ a comment\n";
     for (int k = 0; k < 16; ++k) {
