@@ -12,6 +12,10 @@
 // BM_LaunchToFirstPaint runs `probecycle --time-startup` and times the
 // process from spawn to exit (it exits right after its first paint); the
 // counter first_paint_ms is the program's own figure from main() to paint.
+// BM_LargeProject_*: with the project at the input limits that
+// tools/make_large_project.py writes, named by PROBECYCLE_LARGE_PROJECT
+// (skipped without it): opening it, moving from tab to tab until the new tab
+// has painted, and the feed slider as above with the lab's data loaded.
 
 #include <benchmark/benchmark.h>
 
@@ -19,6 +23,7 @@
 #include <QApplication>
 #include <QProcess>
 #include <QSlider>
+#include <QTabWidget>
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
@@ -73,7 +78,7 @@ class PaintCounter : public QObject {
     explicit PaintCounter(QWidget* charts) {
         for (QAbstractScrollArea* view : charts->findChildren<QAbstractScrollArea*>()) {
             view->viewport()->installEventFilter(this);
-            painted_.push_back({view->viewport(), false});
+            painted_.emplace_back(view->viewport(), false);
         }
     }
     void reset() {
@@ -171,8 +176,70 @@ void BM_LaunchToFirstPaint(benchmark::State& state) {
     state.counters["first_paint_ms"] = in_process_ms / static_cast<double>(state.iterations());
 }
 
+// The large project's path, or the benchmark skipped.
+QString large_project(benchmark::State& state) {
+    const char* path = std::getenv("PROBECYCLE_LARGE_PROJECT");
+    if (path == nullptr) state.SkipWithError("PROBECYCLE_LARGE_PROJECT not set");
+    return path == nullptr ? QString() : QString::fromLocal8Bit(path);
+}
+
+void BM_LargeProject_Open(benchmark::State& state) {
+    const QString path = large_project(state);
+    if (path.isEmpty()) return;
+    for (auto _ : state) {
+        auto window = make_window(1280, 800);
+        if (!window->open_scenario(path)) {
+            state.SkipWithError(window->last_error().toStdString().c_str());
+            return;
+        }
+        window->recompute_now();
+        window->repaint();
+    }
+}
+
+void BM_LargeProject_TabSwitch(benchmark::State& state) {
+    const QString path = large_project(state);
+    if (path.isEmpty()) return;
+    auto window = make_window(1280, 800);
+    if (!window->open_scenario(path)) {
+        state.SkipWithError(window->last_error().toStdString().c_str());
+        return;
+    }
+    auto* tabs = window->findChild<QTabWidget*>(QStringLiteral("tabs"));
+    int i = 0;
+    for (auto _ : state) {
+        tabs->setCurrentIndex(++i % tabs->count());
+        QCoreApplication::processEvents();
+        tabs->currentWidget()->repaint();
+    }
+}
+
+void BM_LargeProject_SliderToCharts(benchmark::State& state) {
+    const QString path = large_project(state);
+    if (path.isEmpty()) return;
+    auto window = make_window(1280, 800);
+    if (!window->open_scenario(path)) {
+        state.SkipWithError(window->last_error().toStdString().c_str());
+        return;
+    }
+    QSlider* slider = slider_for(*window, 0);
+    std::int64_t i = 0;
+    for (auto _ : state) {
+        slider->setValue(next_position(i++));
+        QCoreApplication::processEvents();
+        window->recompute_now();
+        window->charts_widget()->repaint();
+    }
+}
+
 }  // namespace
 
+BENCHMARK(BM_LargeProject_Open)->Iterations(3)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_LargeProject_TabSwitch)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_LargeProject_SliderToCharts)
+    ->Iterations(20)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_SliderToCharts)
     ->ArgNames({"w", "h", "slider"})
     ->Args({1280, 800, 0})

@@ -6,6 +6,7 @@
 #include "core/common/csv_writer.h"
 #include "core/common/message_json.h"
 #include "core/common/number_format.h"
+#include "core/common/report_summary.h"
 
 namespace probecycle {
 
@@ -149,7 +150,7 @@ Json c_axis_identification_json(const CAxisIdentification& result, const CAxisSe
 }
 
 std::string comparison_report_csv(const ComparisonInput& input, const ComparisonResult& result,
-                                  const ReportHeader& header) {
+                                  const ReportHeader& header, ReportRows rows) {
     std::ostringstream out;
     out << report_header_csv("comparison report", "test_omm", header);
     out << "# c_axis\nquantity,value,uncertainty,unit\n";
@@ -187,15 +188,30 @@ std::string comparison_report_csv(const ComparisonInput& input, const Comparison
     summary("system_error", result.system_error, "");
     out << row({"tolerance", exact(input.tolerance_mm), "", "", "", ""});
 
-    out << "\n# points\n"
-           "point,x_mm,y_mm,z_mm,i,j,k,deviation_mm,direct_deviation_mm,system_error_mm,"
-           "c_axis_uncertainty_mm\n";
-    for (std::size_t k = 0; k < result.points.size(); ++k) {
-        const ComparisonPoint& p = result.points[k];
+    const std::vector<ComparisonPoint>& points = result.points;
+    const auto point_row = [&](std::size_t k) {
+        const ComparisonPoint& p = points[k];
         out << row({std::to_string(k + 1), exact(p.nominal.x()), exact(p.nominal.y()),
                     exact(p.nominal.z()), exact(p.normal.x()), exact(p.normal.y()),
                     exact(p.normal.z()), mm(p.deviation_mm), mm(p.direct_deviation_mm),
                     mm(p.system_error_mm), mm(p.c_axis_uncertainty_mm)});
+    };
+    const char* columns =
+        "point,x_mm,y_mm,z_mm,i,j,k,deviation_mm,direct_deviation_mm,system_error_mm,"
+        "c_axis_uncertainty_mm\n";
+    if (summarised(rows, points.size())) {
+        // "# summary" above has the statistics.
+        std::vector<double> deviation_mm(points.size());
+        for (std::size_t k = 0; k < points.size(); ++k) deviation_mm[k] = points[k].deviation_mm;
+        const std::vector<std::size_t> largest =
+            largest_magnitudes(deviation_mm, kReportLargestRows);
+        out << '\n'
+            << csv_largest_heading("points", "deviation_mm", largest.size(), points.size())
+            << columns;
+        for (const std::size_t k : largest) point_row(k);
+    } else {
+        out << "\n# points\n" << columns;
+        for (std::size_t k = 0; k < points.size(); ++k) point_row(k);
     }
     out << "\n# warnings\ncode,severity,message\n";
     for (const ComparisonWarning& w : result.warnings) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/common/report_header.h"
+#include "core/common/report_summary.h"
 #include "core/comparison/comparison.h"
 #include "core/comparison/comparison_simulator.h"
 
@@ -16,8 +17,10 @@ namespace probecycle {
 
 // The report header (report_header.h; its subject the test part's OMM file),
 // then sections "# c_axis", "# summary", "# points" (plan order), "# warnings".
+// A summary (report_summary.h) of more than kReportFullRows points has, in
+// place of "# points", the 10 largest |deviation_mm| ("# summary" has the rest).
 std::string comparison_report_csv(const ComparisonInput& input, const ComparisonResult& result,
-                                  const ReportHeader& header);
+                                  const ReportHeader& header, ReportRows rows = ReportRows::all);
 
 // {"ex_rad", ..., "dz_mm", "uncertainty": {...}}: uncertainties null when
 // unknown.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 #include "core/common/csv_writer.h"
@@ -24,11 +25,14 @@ std::string row(const char* quantity, const std::string& value, const char* unit
 
 constexpr const char* kDirectionNames[] = {"X+", "X-", "Y+", "Y-"};
 
+// A point without a fit for its orientation has no radius or residual.
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+
 }  // namespace
 
 std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
                                    const std::optional<LengthReportInput>& length,
-                                   const ReportHeader& header) {
+                                   const ReportHeader& header, ReportRows rows) {
     std::string csv = report_header_csv("calibration report", "points", header);
     std::vector<CalibrationWarning> warnings;
     if (ring) {
@@ -63,27 +67,50 @@ std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
 
         // Per point: the ball radius there is the gauge radius less the distance
         // from its orientation's centre (the runout cancels), as the core computes it.
-        csv +=
-            "\n# "
-            "points\nline,orientation_deg,x_mm,y_mm,direction,effective_radius_mm,residual_mm\n";
-        for (const RingPoint& p : ring->points) {
+        const std::span<const RingPoint> points = ring->points;
+        std::vector<double> radius_mm(points.size(), kNoValue);
+        std::vector<double> residual_mm(points.size(), kNoValue);
+        const auto point_row = [&](std::size_t i) {
+            const RingPoint& p = points[i];
             const std::size_t o = orientation_index(p.orientation_deg).value_or(0);
-            csv += (p.line > 0 ? std::to_string(p.line) : std::string()) + ',' +
-                   csv_exact(p.orientation_deg) + ',' + csv_exact(p.x_mm) + ',' +
-                   csv_exact(p.y_mm) + ',';
+            std::string line = (p.line > 0 ? std::to_string(p.line) : std::string()) + ',' +
+                               csv_exact(p.orientation_deg) + ',' + csv_exact(p.x_mm) + ',' +
+                               csv_exact(p.y_mm) + ',';
             if (const auto& fit = r.fits[o]) {
                 const double dx = p.x_mm - fit->center_x_mm;
                 const double dy = p.y_mm - fit->center_y_mm;
-                const double distance = std::hypot(dx, dy);
-                if (const auto sector = touch_direction(dx, dy)) {
-                    csv += kDirectionNames[*sector];
-                }
-                csv += ',' + number(gauge_radius_mm - distance) + ',' +
-                       number(distance - fit->radius_mm);
+                if (const auto sector = touch_direction(dx, dy)) line += kDirectionNames[*sector];
+                line += ',' + number(radius_mm[i]) + ',' + number(residual_mm[i]);
             } else {
-                csv += ",,";
+                line += ",,";
             }
-            csv += '\n';
+            return line + '\n';
+        };
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const RingPoint& p = points[i];
+            const std::size_t o = orientation_index(p.orientation_deg).value_or(0);
+            if (const auto& fit = r.fits[o]) {
+                const double distance =
+                    std::hypot(p.x_mm - fit->center_x_mm, p.y_mm - fit->center_y_mm);
+                radius_mm[i] = gauge_radius_mm - distance;
+                residual_mm[i] = distance - fit->radius_mm;
+            }
+        }
+        const char* columns =
+            "line,orientation_deg,x_mm,y_mm,direction,effective_radius_mm,residual_mm\n";
+        if (summarised(rows, points.size())) {
+            csv += "\n# points summary\n" + csv_stats_header();
+            csv += csv_stats_row("effective_radius", value_stats(radius_mm));
+            csv += csv_stats_row("residual", value_stats(residual_mm));
+            const std::vector<std::size_t> largest =
+                largest_magnitudes(residual_mm, kReportLargestRows);
+            csv +=
+                '\n' + csv_largest_heading("points", "residual_mm", largest.size(), points.size());
+            csv += columns;
+            for (const std::size_t i : largest) csv += point_row(i);
+        } else {
+            csv += std::string("\n# points\n") + columns;
+            for (std::size_t i = 0; i < points.size(); ++i) csv += point_row(i);
         }
         warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
     }

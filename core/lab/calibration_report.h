@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/common/report_header.h"
+#include "core/common/report_summary.h"
 #include "core/lab/calibration.h"
 
 namespace probecycle {
@@ -28,9 +29,12 @@ struct LengthReportInput {
 // or "pasted"), then sections "# ring", "# fits", "# points", "# length",
 // "# warnings"; the ring sections without a ring result and "# length"
 // without a length result are left out. Results to 0.1 um, inputs as given
-// (csv_writer.h); unknowns empty.
+// (csv_writer.h); unknowns empty. A summary (report_summary.h) of more than
+// kReportFullRows points has "# points summary" (the effective radius's and
+// the residual's statistics) and "# points: the 10 largest |residual_mm| of N"
+// in place of "# points".
 std::string calibration_report_csv(const std::optional<RingReportInput>& ring,
                                    const std::optional<LengthReportInput>& length,
-                                   const ReportHeader& header);
+                                   const ReportHeader& header, ReportRows rows = ReportRows::all);
 
 }  // namespace probecycle

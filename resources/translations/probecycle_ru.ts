@@ -3633,6 +3633,10 @@
         <source>Uncertainty budget</source>
         <translation>Бюджет неопределённости</translation>
     </message>
+    <message>
+        <source>%1 points: the tables give their statistics and the %2 that deviate most. The CSV report (Export report…) has every point.</source>
+        <translation>Точек: %1. Таблицы дают их статистику и %2 точек с наибольшим отклонением. В отчёте CSV (Экспорт отчёта…) есть все точки.</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>

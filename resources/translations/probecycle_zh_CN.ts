@@ -3633,6 +3633,10 @@
         <source>Uncertainty budget</source>
         <translation>不确定度预算</translation>
     </message>
+    <message>
+        <source>%1 points: the tables give their statistics and the %2 that deviate most. The CSV report (Export report…) has every point.</source>
+        <translation>%1 个点：表格给出其统计值及偏差最大的 %2 个点。CSV 报告（导出报告…）包含全部点。</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>

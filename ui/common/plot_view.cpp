@@ -63,6 +63,47 @@ bool finite_point(const QPointF& p) {
     return std::isfinite(p.x()) && std::isfinite(p.y());
 }
 
+// Qt Charts draws each marker of a scatter as an item of its own: a few
+// hundred thousand take minutes and gigabytes to lay out. Beyond this many, a
+// curve shows one marker per cell of a grid over its points' extent.
+constexpr qsizetype kMaxMarkers = 4000;
+
+// The finite points, thinned to the first in each cell of the finest grid
+// (1024 cells a side, then halved) that leaves at most kMaxMarkers. Markers
+// that would be drawn over one another go; the shape, the spread and every
+// outlier stay, since a point apart from the rest has a cell to itself.
+void thin_markers(const QList<QPointF>& points, QList<QPointF>& shown) {
+    std::copy_if(points.begin(), points.end(), std::back_inserter(shown), finite_point);
+    if (shown.size() <= kMaxMarkers) return;
+    const QList<QPointF> all = std::exchange(shown, {});
+    double x0 = all.front().x(), x1 = x0, y0 = all.front().y(), y1 = y0;
+    for (const QPointF& p : all) {
+        x0 = std::min(x0, p.x());
+        x1 = std::max(x1, p.x());
+        y0 = std::min(y0, p.y());
+        y1 = std::max(y1, p.y());
+    }
+    std::vector<bool> taken;
+    for (std::size_t cells = 1024; cells >= 2; cells /= 2) {
+        shown.clear();
+        taken.assign(cells * cells, false);
+        const auto cell = [cells](double v, double lo, double hi) {
+            if (!(hi > lo)) return std::size_t{0};
+            const auto k =
+                static_cast<std::size_t>((v - lo) / (hi - lo) * static_cast<double>(cells));
+            return std::min(k, cells - 1);
+        };
+        for (const QPointF& p : all) {
+            const std::size_t k = cell(p.x(), x0, x1) * cells + cell(p.y(), y0, y1);
+            if (taken[k]) continue;
+            taken[k] = true;
+            shown.append(p);
+            if (shown.size() > kMaxMarkers) break;
+        }
+        if (shown.size() <= kMaxMarkers) return;
+    }
+}
+
 PlotView::Range axis_range(const QAbstractAxis* axis) {
     if (const auto* value = qobject_cast<const QValueAxis*>(axis)) {
         return {value->min(), value->max()};
@@ -480,12 +521,12 @@ struct PlotView::Impl {
     void draw(Curve& curve, const QList<QPointF>& points) {
         const bool broken = !std::all_of(points.begin(), points.end(), finite_point);
         std::size_t used = 1;
-        if (!broken) {
-            curve.series->replace(points);
-        } else if (curve.kind == Kind::markers) {
+        if (curve.kind == Kind::markers && (broken || points.size() > kMaxMarkers)) {
             QList<QPointF>& shown = curve.pieces[0].next();
-            std::copy_if(points.begin(), points.end(), std::back_inserter(shown), finite_point);
+            thin_markers(points, shown);
             curve.series->replace(shown);
+        } else if (!broken) {
+            curve.series->replace(points);
         } else {
             used = 0;
             for (auto it = points.begin(); it != points.end();) {
@@ -806,6 +847,14 @@ QList<QPointF> PlotView::points(CurveId curve) const {
 
 qsizetype PlotView::point_count(CurveId curve) const {
     return points(curve).size();
+}
+
+qsizetype PlotView::drawn_count(CurveId curve) const {
+    const Impl::Curve* c = impl_->find(curve);
+    if (c == nullptr) return 0;
+    qsizetype count = 0;
+    for (const auto& piece : c->pieces) count += piece.series->count();
+    return count;
 }
 
 bool PlotView::is_visible(CurveId curve) const {

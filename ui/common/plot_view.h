@@ -94,6 +94,9 @@ class PlotView : public QWidget {
     // points handed over (with their breaks; a rule's x).
     QList<QPointF> points(CurveId curve) const;
     qsizetype point_count(CurveId curve) const;
+    // The points the chart draws: markers beyond a few thousand are thinned to
+    // one per cell of a grid over them (a fit still uses every point).
+    qsizetype drawn_count(CurveId curve) const;
     bool is_visible(CurveId curve) const;
     // The legend's entries as shown after the last layout, in order (none while
     // the legend is hidden).

@@ -1,5 +1,6 @@
 #include "ui/comparison/comparison_tab.h"
 
+#include <QAbstractTableModel>
 #include <QDir>
 #include <QEvent>
 #include <QFile>
@@ -18,13 +19,13 @@
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QStandardPaths>
+#include <QTableView>
 #include <QTableWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <numeric>
 
 #include "core/common/csv_reader.h"
 #include "core/common/file_io.h"
@@ -80,6 +81,84 @@ auto read_input(const QString& path, Parse parse) {
 }
 
 }  // namespace
+
+// The points, worst first, formatted only when shown: a table widget would
+// hold an item per cell, over a million for the 200 000 points a plan file
+// can have.
+class PointTableModel final : public QAbstractTableModel {
+  public:
+    struct Row {
+        int point{0};  // 1-based, in the plan's order
+        double x_mm{0.0}, y_mm{0.0}, z_mm{0.0};
+        double deviation_mm{0.0}, system_error_mm{0.0}, direct_mm{0.0};
+    };
+
+    using QAbstractTableModel::QAbstractTableModel;
+
+    void set_rows(std::vector<Row> rows, double tolerance_mm) {
+        beginResetModel();
+        rows_ = std::move(rows);
+        tolerance_mm_ = tolerance_mm;
+        endResetModel();
+    }
+    void set_headers(QStringList headers) {
+        headers_ = std::move(headers);
+        emit headerDataChanged(Qt::Horizontal, 0, columnCount() - 1);
+    }
+    int point_at(int row) const { return rows_[static_cast<std::size_t>(row)].point; }
+
+    int rowCount(const QModelIndex& parent = {}) const override {
+        return parent.isValid() ? 0 : static_cast<int>(rows_.size());
+    }
+    int columnCount(const QModelIndex& parent = {}) const override {
+        return parent.isValid() ? 0 : 7;
+    }
+    QVariant data(const QModelIndex& index, int role) const override {
+        if (!index.isValid() || index.row() >= rowCount()) return {};
+        const Row& r = rows_[static_cast<std::size_t>(index.row())];
+        switch (role) {
+            case Qt::DisplayRole:
+                switch (index.column()) {
+                    case 0:
+                        return QLocale().toString(r.point);
+                    case 1:
+                        return format_number(r.x_mm, 2);
+                    case 2:
+                        return format_number(r.y_mm, 2);
+                    case 3:
+                        return format_number(r.z_mm, 2);
+                    case 4:
+                        return um(r.deviation_mm);
+                    case 5:
+                        return um(r.system_error_mm);
+                    default:
+                        return um(r.direct_mm);
+                }
+            case Qt::TextAlignmentRole:
+                return QVariant::fromValue(Qt::Alignment(Qt::AlignRight | Qt::AlignVCenter));
+            case Qt::ForegroundRole:
+                if (index.column() == 4 && tolerance_mm_ > 0.0 &&
+                    std::abs(r.deviation_mm) > tolerance_mm_) {
+                    return kBandColour;
+                }
+                return {};
+            default:
+                return {};
+        }
+    }
+    QVariant headerData(int section, Qt::Orientation orientation, int role) const override {
+        if (orientation == Qt::Horizontal && role == Qt::DisplayRole && section >= 0 &&
+            section < headers_.size()) {
+            return headers_[section];
+        }
+        return QAbstractTableModel::headerData(section, orientation, role);
+    }
+
+  private:
+    std::vector<Row> rows_;
+    double tolerance_mm_{0.0};
+    QStringList headers_;
+};
 
 ComparisonTab::ComparisonTab(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("comparison"));
@@ -259,7 +338,18 @@ QWidget* ComparisonTab::build_result_column() {
     warnings_ = new LabWarningList(result_group_);
     warnings_->setObjectName(QStringLiteral("comparison-warnings"));
     points_title_ = title();
-    point_table_ = table(0, 7, "comparison-points");
+    point_model_ = new PointTableModel(this);
+    point_table_ = new QTableView(result_group_);
+    point_table_->setObjectName(QStringLiteral("comparison-points"));
+    point_table_->setModel(point_model_);
+    point_table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    point_table_->verticalHeader()->setVisible(false);
+    point_table_->horizontalHeader()->setStretchLastSection(true);
+    point_table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    // Rows of one height, so the view never measures them one by one.
+    point_table_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    point_table_->verticalHeader()->setDefaultSectionSize(point_table_->fontMetrics().height() + 6);
+    point_table_->setMinimumHeight(120);
     export_button_ = new QPushButton(result_group_);
     export_button_->setEnabled(false);
     export_status_ = new QLabel(result_group_);
@@ -356,9 +446,8 @@ void ComparisonTab::retranslate() {
     warnings_title_->setText(tr("Warnings"));
     warnings_->set_empty_text(tr("No warnings."));
     points_title_->setText(tr("Points, worst first"));
-    point_table_->setHorizontalHeaderLabels({tr("Point"), tr("X"), tr("Y"), tr("Z"),
-                                             tr("Deviation"), tr("System error"),
-                                             tr("Direct OMM")});
+    point_model_->set_headers({tr("Point"), tr("X"), tr("Y"), tr("Z"), tr("Deviation"),
+                               tr("System error"), tr("Direct OMM")});
     export_button_->setText(tr("Export report…"));
     if (!last_error_.isEmpty() && error_label_->isVisible()) {
         // The error was translated when it was made; a rerun would make it again.
@@ -514,7 +603,7 @@ bool ComparisonTab::simulate_example(const QString& folder) {
     return run();
 }
 
-bool ComparisonTab::export_report(const QString& path) {
+bool ComparisonTab::export_report(const QString& path, ReportRows rows) {
     if (!result_) {
         show_live_error(export_status_, [this] {
             return last_error_ = tr("Nothing to export: run the comparison first.");
@@ -526,7 +615,7 @@ bool ComparisonTab::export_report(const QString& path) {
     header.subject = QFileInfo(file(InputFile::test_omm)).fileName().toStdString();
     try {
         write_file_atomically(QFile::encodeName(path).toStdString(),
-                              comparison_report_csv(input_, *result_, header));
+                              comparison_report_csv(input_, *result_, header, rows));
     } catch (const std::exception&) {
         show_live_error(export_status_,
                         [this, error = current_error_text()] { return last_error_ = error(); });
@@ -646,9 +735,7 @@ QStringList ComparisonTab::c_axis_text() const {
 
 QList<int> ComparisonTab::point_order() const {
     QList<int> order;
-    for (int r = 0; r < point_table_->rowCount(); ++r) {
-        order << point_table_->item(r, 0)->data(Qt::UserRole).toInt();
-    }
+    for (int r = 0; r < point_model_->rowCount(); ++r) order << point_model_->point_at(r);
     return order;
 }
 
@@ -740,34 +827,23 @@ void ComparisonTab::fill_tables() {
     }
     summary_table_->resizeColumnsToContents();
 
-    point_table_->setSortingEnabled(false);
-    point_table_->setRowCount(0);
-    if (!result_) return;
-    const std::vector<ComparisonPoint>& points = result_->points;
-    std::vector<std::size_t> order(points.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&points](std::size_t a, std::size_t b) {
-        return std::abs(points[a].deviation_mm) > std::abs(points[b].deviation_mm);
-    });
-    point_table_->setRowCount(static_cast<int>(points.size()));
-    const double tolerance = input_.tolerance_mm.value_or(0.0);
-    for (int row = 0; row < static_cast<int>(order.size()); ++row) {
-        const std::size_t i = order[static_cast<std::size_t>(row)];
-        const ComparisonPoint& p = points[i];
-        auto* index = new QTableWidgetItem(QLocale().toString(static_cast<qulonglong>(i) + 1));
-        index->setData(Qt::UserRole, static_cast<int>(i + 1));
-        index->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        point_table_->setItem(row, 0, index);
-        set(point_table_, row, 1, format_number(p.nominal.x(), 2));
-        set(point_table_, row, 2, format_number(p.nominal.y(), 2));
-        set(point_table_, row, 3, format_number(p.nominal.z(), 2));
-        set(point_table_, row, 4, um(p.deviation_mm));
-        set(point_table_, row, 5, um(p.system_error_mm));
-        set(point_table_, row, 6, um(p.direct_deviation_mm));
-        if (tolerance > 0.0 && std::abs(p.deviation_mm) > tolerance) {
-            point_table_->item(row, 4)->setForeground(kBandColour);
+    std::vector<PointTableModel::Row> point_rows;
+    if (result_) {
+        const std::vector<ComparisonPoint>& points = result_->points;
+        point_rows.reserve(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const ComparisonPoint& p = points[i];
+            point_rows.push_back({static_cast<int>(i + 1), p.nominal.x(), p.nominal.y(),
+                                  p.nominal.z(), p.deviation_mm, p.system_error_mm,
+                                  p.direct_deviation_mm});
         }
+        std::stable_sort(point_rows.begin(), point_rows.end(), [](const auto& a, const auto& b) {
+            return std::abs(a.deviation_mm) > std::abs(b.deviation_mm);
+        });
     }
+    point_model_->set_rows(std::move(point_rows), input_.tolerance_mm.value_or(0.0));
+    // The widths from the first rows (the worst, the widest numbers).
+    point_table_->horizontalHeader()->setResizeContentsPrecision(100);
     point_table_->resizeColumnsToContents();
 }
 

@@ -20,6 +20,7 @@
 #include <array>
 #include <optional>
 
+#include "core/common/report_summary.h"
 #include "core/comparison/comparison.h"
 #include "core/comparison/comparison_project.h"
 
@@ -27,12 +28,14 @@ class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QTableView;
 class QTableWidget;
 class QToolButton;
 
 namespace probecycle::ui {
 
 class LabWarningList;
+class PointTableModel;
 class PlotView;
 class UnitSpinBox;
 
@@ -61,8 +64,9 @@ class ComparisonTab : public QWidget {
     // machine's errors) into `folder` (by default the application's data
     // folder), fills the inputs with it and runs.
     bool simulate_example(const QString& folder = {});
-    // The CSV report, the same bytes as `probecycle-cli compare run --report`.
-    bool export_report(const QString& path);
+    // The CSV report, the same bytes as `probecycle-cli compare run --report`;
+    // a summary (report_summary.h) is the PDF report's.
+    bool export_report(const QString& path, ReportRows rows = ReportRows::all);
     // The report's save dialog, then export_report() (the tab's button and
     // the window's "Export CSV Report" on this tab).
     void export_dialog();
@@ -149,7 +153,8 @@ class ComparisonTab : public QWidget {
     QLabel* warnings_title_{nullptr};
     LabWarningList* warnings_{nullptr};
     QLabel* points_title_{nullptr};
-    QTableWidget* point_table_{nullptr};
+    QTableView* point_table_{nullptr};
+    PointTableModel* point_model_{nullptr};
     QPushButton* export_button_{nullptr};
     QLabel* export_status_{nullptr};
 

@@ -798,7 +798,7 @@ void CalibrationTab::compute_length() {
 
 // --- Files ---
 
-bool CalibrationTab::export_report(const QString& path) {
+bool CalibrationTab::export_report(const QString& path, ReportRows rows) {
     if (!result_ && !length_result_) {
         show_live_error(export_status_, [this] {
             return last_error_ =
@@ -814,7 +814,7 @@ bool CalibrationTab::export_report(const QString& path) {
     ReportHeader header;
     header.date = report_date();
     header.subject = result_ ? points_from_ : "none";
-    return write_report(path, calibration_report_csv(ring, length, header), export_status_,
+    return write_report(path, calibration_report_csv(ring, length, header, rows), export_status_,
                         last_error_);
 }
 

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/report_summary.h"
 #include "core/cycle/scenario.h"
 #include "core/lab/calibration.h"
 #include "core/project/project_file.h"
@@ -77,7 +78,8 @@ class CalibrationTab : public QWidget {
     bool import_machine_log(const MachineLogChoice& choice);
     // The CSV report (calibration_report.h), written atomically; false with
     // last_error() when there is nothing to export or the file cannot be written.
-    bool export_report(const QString& path);
+    // A summary (report_summary.h) is the PDF report's.
+    bool export_report(const QString& path, ReportRows rows = ReportRows::all);
     // The report's save dialog, then export_report() (the tab's button and
     // the window's "Export CSV Report" on this tab).
     void export_dialog();

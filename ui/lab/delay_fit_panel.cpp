@@ -310,7 +310,7 @@ bool DelayFitPanel::import_file(const QString& path) {
     return fit_text(*text, QFileInfo(path).fileName());
 }
 
-bool DelayFitPanel::export_report(const QString& path) {
+bool DelayFitPanel::export_report(const QString& path, ReportRows rows) {
     if (!fit_) {
         show_live_error(export_status_, [this] {
             return last_error_ = tr("Nothing to export: fit the touches first.");
@@ -320,7 +320,7 @@ bool DelayFitPanel::export_report(const QString& path) {
     ReportHeader header;
     header.date = report_date();
     header.subject = touches_from_;
-    return write_report(path, delay_fit_report_csv(touches_, fit_options_, *fit_, header),
+    return write_report(path, delay_fit_report_csv(touches_, fit_options_, *fit_, header, rows),
                         export_status_, last_error_);
 }
 

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/report_summary.h"
 #include "core/cycle/scenario.h"
 #include "core/lab/delay_fit.h"
 #include "core/project/project_file.h"
@@ -69,13 +70,16 @@ class DelayFitPanel : public QGroupBox {
     bool import_machine_log(const MachineLogChoice& choice);
     // The fit and stability report (core delay_fit_report.h, the bytes of
     // `latency fit --report`), written atomically; false with last_error()
-    // without a fit or when the file cannot be written.
-    bool export_report(const QString& path);
+    // without a fit or when the file cannot be written. A summary
+    // (report_summary.h) is the PDF report's.
+    bool export_report(const QString& path, ReportRows rows = ReportRows::all);
     // The report's save dialog, then export_report() (the tab's button and
     // the window's "Export CSV Report" on this tab).
     void export_dialog();
 
     const std::optional<DelayFit>& delay_fit() const { return fit_; }
+    // The touches behind delay_fit().
+    const std::vector<DelayTouch>& fitted_touches() const { return touches_; }
     QString last_error() const { return last_error_; }
     QStringList warning_codes() const;
     QStringList warning_texts() const;  // "title: message", as shown

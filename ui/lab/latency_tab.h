@@ -55,9 +55,12 @@ class LatencyTab : public QWidget {
     bool import_machine_log(const MachineLogChoice& choice) {
         return delay_->import_machine_log(choice);
     }
-    bool export_report(const QString& path) { return delay_->export_report(path); }
+    bool export_report(const QString& path, ReportRows rows = ReportRows::all) {
+        return delay_->export_report(path, rows);
+    }
     void export_dialog() { delay_->export_dialog(); }
     const std::optional<DelayFit>& delay_fit() const { return delay_->delay_fit(); }
+    const std::vector<DelayTouch>& fitted_touches() const { return delay_->fitted_touches(); }
     QString last_error() const { return delay_->last_error(); }
     QStringList warning_codes() const { return delay_->warning_codes(); }
     QStringList warning_texts() const { return delay_->warning_texts(); }

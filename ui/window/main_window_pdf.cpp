@@ -5,10 +5,12 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLocale>
 #include <QRegularExpression>
 #include <QTabWidget>
 #include <QTemporaryDir>
 
+#include "core/common/report_summary.h"
 #include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/pdf_report.h"
@@ -133,12 +135,27 @@ QByteArray MainWindow::pdf_report_bytes() {
         report.add_image(export_image(kChartsWidth, false));
         QTemporaryDir dir;
         const QString path = dir.path() + QStringLiteral("/report.csv");
-        const bool written = tab == calibration_tab_ ? calibration_tab_->export_report(path)
-                             : tab == latency_tab_   ? latency_tab_->export_report(path)
-                                                     : comparison_tab_->export_report(path);
+        // Large data summarised (report_summary.h): the whole is in the CSV export.
+        const ReportRows rows = ReportRows::summary;
+        const bool written = tab == calibration_tab_ ? calibration_tab_->export_report(path, rows)
+                             : tab == latency_tab_   ? latency_tab_->export_report(path, rows)
+                                                     : comparison_tab_->export_report(path, rows);
+        const std::size_t points =
+            tab == calibration_tab_
+                ? (calibration_tab_->result() ? calibration_tab_->fitted_points().size() : 0)
+            : tab == latency_tab_       ? latency_tab_->fitted_touches().size()
+            : comparison_tab_->result() ? comparison_tab_->result()->points.size()
+                                        : 0;
         QFile file(path);
         if (written && file.open(QIODevice::ReadOnly)) {
             report.add_page_break();
+            if (summarised(rows, points)) {
+                report.add_paragraph(
+                    tr("%1 points: the tables give their statistics and the %2 that deviate "
+                       "most. The CSV report (Export report…) has every point.")
+                        .arg(QLocale().toString(static_cast<qulonglong>(points)))
+                        .arg(kReportLargestRows));
+            }
             add_csv(report, QString::fromUtf8(file.readAll()));
         } else {
             report.add_paragraph(tr("No results yet: %1")

@@ -11,6 +11,7 @@
 #include <QCoreApplication>
 #include <QStringList>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -446,6 +447,30 @@ TEST(PlotViewTest, ABrokenLineReadsBackWithItsBreaks) {
     lay_out(plot);
     EXPECT_EQ(plot.point_count(line), 2);
     EXPECT_EQ(plot.legend_texts(), QStringList({QStringLiteral("Line")}));
+}
+
+// PlotView: a scatter of a ring's 290 000 points draws a few thousand
+// markers (Qt Charts makes an item of each); every point still reads back,
+// and a few points are drawn as they are.
+TEST(PlotViewTest, ManyMarkersAreThinnedForDrawingOnly) {
+    PlotView plot;
+    plot.set_x_axis({});
+    plot.set_y_axis(Side::left, {});
+    const PlotView::CurveId markers = plot.add_markers({QStringLiteral("Points"), Qt::blue}, 6.0);
+    QList<QPointF> ring;
+    for (int i = 0; i < 290000; ++i) {
+        const double angle = 2.0 * std::numbers::pi * i / 290000.0;
+        const double r = 25.0 + 0.001 * (i % 13);
+        ring.append({r * std::cos(angle), r * std::sin(angle)});
+    }
+    plot.set_points(markers, ring);
+    lay_out(plot);
+    EXPECT_EQ(plot.point_count(markers), 290000);
+    EXPECT_GT(plot.drawn_count(markers), 1000);
+    EXPECT_LE(plot.drawn_count(markers), 4000);
+    const QList<QPointF> few{{0, 1}, {0, 1}, {1, 2}, {2, std::nan("")}, {3, 3}};
+    plot.set_points(markers, few);
+    EXPECT_EQ(plot.drawn_count(markers), 4);
 }
 
 // PlotView: Qt Charts rounds ln(0.1) / ln(10) above -1 and would drop the

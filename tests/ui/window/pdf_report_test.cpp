@@ -12,7 +12,9 @@
 #include <QRegularExpression>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <cmath>
 #include <memory>
+#include <numbers>
 
 #include "core/cycle/cycle.h"
 #include "core/cycle/scenario.h"
@@ -20,6 +22,7 @@
 #include "ui/common/language.h"
 #include "ui/cycle/optimise_panel.h"
 #include "ui/cycle/uncertainty_table.h"
+#include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
 #include "ui/window/main_window.h"
 
@@ -189,6 +192,42 @@ TEST(PdfReport, ALabTabReportsItsOwnResults) {
     EXPECT_TRUE(text.contains(squeezed(QStringLiteral("delay_s")))) << text.toStdString();
     EXPECT_FALSE(text.contains(squeezed(QStringLiteral("No results yet"))));
     EXPECT_GE(pdf_pages(path), 2);
+}
+
+// 10 000 ring points: a report of a few pages (their statistics and the
+// largest residuals), not one row per point; the CSV export has them all.
+TEST(PdfReport, ALabTabSummarisesManyPoints) {
+    QTemporaryDir dir;
+    auto window = make_window();
+    auto* tabs = window->findChild<QTabWidget*>(QStringLiteral("tabs"));
+    auto* lab = window->findChild<CalibrationTab*>();
+    ASSERT_NE(lab, nullptr);
+    tabs->setCurrentWidget(lab);
+    QString csv = QStringLiteral("orientation_deg,x_mm,y_mm\n");
+    constexpr int kPoints = 10000;
+    for (int i = 0; i < kPoints; ++i) {
+        const double angle = 2.0 * std::numbers::pi * (i / 2) / (kPoints / 2);
+        const double r = 23.5 + 0.001 * std::sin(3.0 * angle);
+        csv += QStringLiteral("%1,%2,%3\n")
+                   .arg(i % 2 == 0 ? 0 : 180)
+                   .arg(r * std::cos(angle), 0, 'f', 5)
+                   .arg(r * std::sin(angle), 0, 'f', 5);
+    }
+    lab->set_points_text(csv);
+    ASSERT_TRUE(lab->fit()) << lab->last_error().toStdString();
+    const QString path = dir.filePath(QStringLiteral("ring.pdf"));
+    ASSERT_TRUE(window->export_pdf_report(path)) << window->last_error().toStdString();
+    EXPECT_LE(pdf_pages(path), 4);
+    const QString text = squeezed(pdf_text(path));
+    EXPECT_TRUE(text.contains(squeezed(QStringLiteral("10,000 points: the tables give their"))))
+        << text.left(2000).toStdString();
+    EXPECT_TRUE(text.contains(squeezed(QStringLiteral("points summary"))));
+
+    const QString report = dir.filePath(QStringLiteral("ring.csv"));
+    ASSERT_TRUE(lab->export_report(report));
+    QFile file(report);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_GT(file.readAll().count('\n'), kPoints);
 }
 
 TEST(PdfReport, AFailedWriteSaysWhereAndLeavesNothing) {
