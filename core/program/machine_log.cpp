@@ -260,9 +260,73 @@ std::vector<RecordedPosition> read_linuxcnc_positions(std::string_view text,
     return positions;
 }
 
+namespace {
+
+// A [PRB:x,y,z:s] report of grbl's console.
+struct GrblReport {
+    std::size_t line{0};
+    std::array<double, 3> xyz{};
+    bool triggered{false};
+    std::string text;
+};
+
+// The plan's signature (plan_signature, plan.h) in the console's first four
+// reports: each pair's difference along the signature's axis is its d.
+void check_grbl_signature(const std::vector<GrblReport>& reports, const ProbingPlan& plan) {
+    const PlanSignature expected = plan_signature(plan);
+    const std::size_t axis = axis_index(expected.axis);
+    // Not the signature: a console of another plan's or an older ProbeCycle's
+    // program, or one whose signature moves touched something (grbl answers
+    // such a move with :1, and cannot stop the program on it).
+    const auto unsigned_console = [&](std::size_t line) {
+        throw CsvError(
+            line, "",
+            log_message("log_grbl_no_signature",
+                        QT_TRANSLATE_NOOP("MachineLog",
+                                          "the console does not open with the plan's signature "
+                                          "(four [PRB:...:0] answers to the protected moves "
+                                          "before the first probe): it is from another plan's "
+                                          "or an older ProbeCycle's program (make the program "
+                                          "again from this plan), or the probe touched "
+                                          "something during those moves (give it free air); "
+                                          "nothing imported")));
+    };
+    if (reports.size() < 4) unsigned_console(reports.empty() ? 0 : reports.back().line);
+    std::array<int, 2> codes{};
+    for (std::size_t pair = 0; pair < 2; ++pair) {
+        const GrblReport& out = reports[2 * pair];
+        const GrblReport& back = reports[2 * pair + 1];
+        if (out.triggered) unsigned_console(out.line);
+        if (back.triggered) unsigned_console(back.line);
+        const double d_mm = expected.direction * (out.xyz[axis] - back.xyz[axis]);
+        const double code = (d_mm - kSignatureFirst_mm) / kSignatureStep_mm;
+        // Within a quarter step of a code (a motor step is far smaller).
+        if (!(std::abs(code - std::round(code)) < 0.25) || std::round(code) < 0 ||
+            std::round(code) >= kSignatureCodes) {
+            unsigned_console(back.line);
+        }
+        codes[pair] = static_cast<int>(std::round(code));
+    }
+    if (codes != expected.codes) {
+        throw CsvError(
+            reports[3].line, "",
+            log_message(
+                "log_grbl_signature_mismatch",
+                QT_TRANSLATE_NOOP("MachineLog",
+                                  "the console is from another plan (its signature reads "
+                                  "%1, this plan's is %2): give the plan the program was "
+                                  "made from; nothing imported"),
+                {text_arg("found", std::to_string(codes[0]) + "-" + std::to_string(codes[1])),
+                 text_arg("expected", std::to_string(expected.codes[0]) + "-" +
+                                          std::to_string(expected.codes[1]))}));
+    }
+}
+
+}  // namespace
+
 std::vector<RecordedPosition> read_grbl_positions(std::string_view text, const ProbingPlan& plan) {
     const std::vector<const ProgramStep*> probes = probes_of(plan, true);
-    std::vector<RecordedPosition> positions;
+    std::vector<GrblReport> reports;
     for (const auto& [number, line] : lines_of(text)) {
         if (const std::size_t alarm = line.find("ALARM:"); alarm != std::string_view::npos) {
             throw CsvError(
@@ -287,30 +351,37 @@ std::vector<RecordedPosition> read_grbl_positions(std::string_view text, const P
         if (!xyz || (success != "0" && success != "1")) {
             bad_line(number, line, "[PRB:x,y,z:1]");
         }
+        reports.push_back(
+            {number, *xyz, success == "1", std::string(line.substr(at, end - at + 1))});
+    }
+    // The signature first (issue 29: the console names no plan otherwise).
+    check_grbl_signature(reports, plan);
+    std::vector<RecordedPosition> positions;
+    for (std::size_t r = 4; r < reports.size(); ++r) {
+        const GrblReport& report = reports[r];
         // A report past the plan's probes is left to the count's check.
         const bool guard =
             positions.size() < probes.size() && probes[positions.size()]->kind == StepKind::guard;
-        const std::string report(line.substr(at, end - at + 1));
-        if (success == "0" && !guard) {
-            throw CsvError(number, "",
+        if (!report.triggered && !guard) {
+            throw CsvError(report.line, "",
                            log_message("log_no_trigger",
                                        QT_TRANSLATE_NOOP("MachineLog",
                                                          "the probe did not trigger (%1); "
                                                          "nothing imported"),
-                                       {text_arg("report", report)}));
+                                       {text_arg("report", report.text)}));
         }
-        if (success == "1" && guard) {
+        if (report.triggered && guard) {
             throw CsvError(
-                number, "",
+                report.line, "",
                 log_message("log_obstructed",
                             QT_TRANSLATE_NOOP("MachineLog",
                                               "the probe touched something during a protected "
                                               "move (%1): its path is obstructed, and grbl, which "
                                               "cannot stop a program on it, went on; check the "
                                               "machine; nothing imported"),
-                            {text_arg("report", report)}));
+                            {text_arg("report", report.text)}));
         }
-        positions.push_back({number, *xyz});
+        positions.push_back({report.line, report.xyz});
     }
     return positions;
 }

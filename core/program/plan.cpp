@@ -953,4 +953,20 @@ std::string plan_id(const ProbingPlan& plan) {
     return text;
 }
 
+PlanSignature plan_signature(const ProbingPlan& plan) {
+    PlanSignature signature;
+    for (const ProgramStep& step : plan.steps) {
+        if (step.kind != StepKind::probe) continue;
+        if (step.axis == 'Z' && step.direction > 0) signature.direction = -1;
+        break;
+    }
+    const std::string id = plan_id(plan);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const unsigned long part = std::stoul(id.substr(8 * i, 8), nullptr, 16);
+        signature.codes[i] = static_cast<int>(part % static_cast<unsigned long>(kSignatureCodes));
+        signature.back_mm[i] = kSignatureFirst_mm + kSignatureStep_mm * signature.codes[i];
+    }
+    return signature;
+}
+
 }  // namespace probecycle

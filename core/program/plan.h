@@ -9,6 +9,7 @@
 // (probing_plan_json / parse_probing_plan) so that the import, days later, knows which touch
 // was which.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -167,5 +168,29 @@ ProbingPlan parse_probing_plan(std::string_view text);
 // 16 hex digits naming the plan (a hash of probing_plan_json): the program and the
 // LinuxCNC log carry it, so that a log from another plan is told apart.
 std::string plan_id(const ProbingPlan& plan);
+
+// grbl's console holds no text of the program's (issue 29: a console from
+// another plan with the same count of probes imported silently, every touch
+// under the wrong feed). The grbl program therefore opens with a signature
+// of the plan that grbl reports itself: twice, a protected move (G38.3) out
+// in free air of kSignatureOut + d mm, then one back of d mm and a rapid
+// back of kSignatureOut, where d = kSignatureFirst + code * kSignatureStep
+// (two codes, each < kSignatureCodes, from the plan id). grbl answers each
+// protected move with [PRB:...:0], so the import reads d from two reports'
+// difference, whatever the start. One code in 6400 is shared by chance.
+// The probe goes at most kSignatureOut + the largest d (1.09 mm) out, along
+// Z+ (Z- when the plan's first probe moves along Z+, away from its surface).
+constexpr int kSignatureCodes = 80;
+constexpr double kSignatureFirst_mm = 0.20;
+constexpr double kSignatureStep_mm = 0.01;
+constexpr double kSignatureOut_mm = 0.10;
+constexpr double kSignatureFeed_mm_min = 300.0;
+struct PlanSignature {
+    char axis{'Z'};
+    int direction{1};                 // out: +1 or -1
+    std::array<int, 2> codes{};       // each in [0, kSignatureCodes)
+    std::array<double, 2> back_mm{};  // d of each pair
+};
+PlanSignature plan_signature(const ProbingPlan& plan);
 
 }  // namespace probecycle

@@ -321,6 +321,7 @@ std::vector<std::string> result_lines(const ResultSpec& spec, const Dialect& dia
 class Writer {
   public:
     explicit Writer(const Dialect& dialect) : d_(dialect) {}
+    const Dialect& dialect() const { return d_; }
 
     void line(const std::string& text) { out_ += text + "\n"; }
     std::string comment_text(const std::string& text) const {
@@ -422,6 +423,40 @@ void check_program_options(const ProbingPlan& plan, const Dialect& dialect,
     }
 }
 
+// The plan's signature in grbl's own reports (plan_signature, plan.h),
+// before the first move: the import reads it back from the [PRB:] lines.
+void write_grbl_signature(Writer& w, const ProbingPlan& plan, const std::string& id) {
+    const PlanSignature signature = plan_signature(plan);
+    const std::string way = std::string(1, signature.axis) + (signature.direction > 0 ? "+" : "-");
+    w.comment("Plan signature (plan " + id + "): twice, G38.3 out along " + way +
+              " and back; grbl's");
+    const double reach_mm = kSignatureOut_mm + std::max(signature.back_mm[0], signature.back_mm[1]);
+    w.comment("[PRB:...:0] answers tell the import which plan ran. Free air needed: " +
+              program_number(reach_mm) + " mm along " + way + ".");
+    for (const double back : signature.back_mm) {
+        const auto move = [&](StepKind kind, int direction, double distance, double feed) {
+            ProgramStep step;
+            step.kind = kind;
+            step.axis = signature.axis;
+            step.direction = direction * signature.direction;
+            step.distance_mm = distance;
+            step.feed_mm_min = feed;
+            return step;
+        };
+        const ProgramStep out =
+            move(StepKind::guard, 1, kSignatureOut_mm + back, kSignatureFeed_mm_min);
+        const ProgramStep in = move(StepKind::guard, -1, back, kSignatureFeed_mm_min);
+        // At a feed, not a rapid: the header's override advice stays true.
+        const ProgramStep home = move(StepKind::move, -1, kSignatureOut_mm, kSignatureFeed_mm_min);
+        w.line(std::string(w.dialect().guard_word) + " " + w.move_words(out) + " F" +
+               program_feed(out.feed_mm_min));
+        w.line(std::string(w.dialect().guard_word) + " " + w.move_words(in) + " F" +
+               program_feed(in.feed_mm_min));
+        w.line(std::string(w.dialect().feed_word) + " " + w.move_words(home) + " F" +
+               program_feed(home.feed_mm_min));
+    }
+}
+
 std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const std::string& date,
                           const ProgramOptions& options) {
     check_program_options(plan, dialect, options);
@@ -468,8 +503,13 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
     std::size_t recorded = 0;
     std::size_t guard_count = 0;
     double orientation = 0.0;
+    bool signed_plan = dialect.id != DialectId::grbl;
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const ProgramStep& step = plan.steps[i];
+        if (!signed_plan && step.kind != StepKind::pause) {
+            write_grbl_signature(w, plan, id);
+            signed_plan = true;
+        }
         switch (step.kind) {
             case StepKind::pause:
                 if (const std::optional<double> next = next_orientation(plan, i);

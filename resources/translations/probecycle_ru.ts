@@ -732,6 +732,14 @@
         <source>this line is from a %1 log, and no line is from a %2 log: import it as %1 (--dialect %1); nothing imported</source>
         <translation>эта строка из журнала %1, а строк журнала %2 нет: импортируйте его как %1 (--dialect %1); ничего не импортировано</translation>
     </message>
+    <message>
+        <source>the console does not open with the plan&apos;s signature (four [PRB:...:0] answers to the protected moves before the first probe): it is from another plan&apos;s or an older ProbeCycle&apos;s program (make the program again from this plan), or the probe touched something during those moves (give it free air); nothing imported</source>
+        <translation>консоль не начинается с подписи плана (четыре ответа [PRB:...:0] на защищённые перемещения перед первым касанием): она от программы другого плана или более старой ProbeCycle (создайте программу заново по этому плану), либо датчик коснулся чего-то во время этих перемещений (дайте ему свободное пространство); ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>the console is from another plan (its signature reads %1, this plan&apos;s is %2): give the plan the program was made from; nothing imported</source>
+        <translation>консоль от другого плана (её подпись — %1, подпись этого плана — %2): укажите план, по которому создана программа; ничего не импортировано</translation>
+    </message>
 </context>
 <context>
     <name>Optimise</name>

@@ -732,6 +732,14 @@
         <source>this line is from a %1 log, and no line is from a %2 log: import it as %1 (--dialect %1); nothing imported</source>
         <translation>此行来自 %1 日志，且没有任何行来自 %2 日志：请按 %1 导入（--dialect %1）；未导入任何内容</translation>
     </message>
+    <message>
+        <source>the console does not open with the plan&apos;s signature (four [PRB:...:0] answers to the protected moves before the first probe): it is from another plan&apos;s or an older ProbeCycle&apos;s program (make the program again from this plan), or the probe touched something during those moves (give it free air); nothing imported</source>
+        <translation>控制台输出不以计划签名开头（第一次探测之前对保护移动的四个 [PRB:...:0] 应答）：它来自另一个计划或旧版 ProbeCycle 的程序（请按此计划重新生成程序），或者测头在这些移动中碰到了东西（请留出空间）；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>the console is from another plan (its signature reads %1, this plan&apos;s is %2): give the plan the program was made from; nothing imported</source>
+        <translation>控制台输出来自另一个计划（其签名为 %1，本计划为 %2）：请提供生成该程序所用的计划；未导入任何内容</translation>
+    </message>
 </context>
 <context>
     <name>Optimise</name>

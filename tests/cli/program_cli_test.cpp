@@ -6,6 +6,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
+#include <string>
 
 #include "tests/cli/cli_run.h"
 
@@ -59,7 +61,23 @@ TEST(ProgramCli, ImportGivesTheCsvThatLatencyFitReads) {
                   " --out " + quote((dir / "p.nc").string()))
                   .exit_code,
               0);
-    std::string console = "[PRB:0.000,0.000,-20.000:1]\nok\n";
+    // grbl's answers to the program's signature (its G38.3 moves before the
+    // first probe, from Z 0), then the touches.
+    std::string console;
+    {
+        std::istringstream program(read(dir / "p.nc"));
+        double z = 0.0;
+        for (std::string line; std::getline(program, line) && line.rfind("G38.2", 0) != 0;) {
+            if (line.rfind("G38.3 Z", 0) != 0 && line.rfind("G1 Z", 0) != 0) continue;
+            z += std::stod(line.substr(line.find('Z') + 1));
+            if (line[1] == '3') {
+                char report[64];
+                std::snprintf(report, sizeof report, "[PRB:0.000,0.000,%.3f:0]\nok\n", z);
+                console += report;
+            }
+        }
+    }
+    console += "[PRB:0.000,0.000,-20.000:1]\nok\n";
     for (const char* z : {"-20.017", "-20.018", "-20.150", "-20.151"}) {
         console += std::string("[PRB:0.000,0.000,") + z + ":1]\nok\n";
     }
@@ -74,12 +92,14 @@ TEST(ProgramCli, ImportGivesTheCsvThatLatencyFitReads) {
     EXPECT_NE(fit.out.find("\"group\": \"Z-\""), std::string::npos) << fit.out;
 
     // A touch that did not trigger: the line, and no CSV.
-    write(dir / "bad.txt", "[PRB:0.000,0.000,-20.000:1]\n[PRB:0.000,0.000,-20.000:0]\n");
+    const std::string signature = console.substr(0, console.find("[PRB:0.000,0.000,-20.000:1]"));
+    write(dir / "bad.txt",
+          signature + "[PRB:0.000,0.000,-20.000:1]\n[PRB:0.000,0.000,-20.000:0]\n");
     const CliRun bad =
         run("import --dialect grbl --plan " + plan + " " + quote((dir / "bad.txt").string()));
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_EQ(bad.out, "");
-    EXPECT_NE(bad.err.find("bad.txt: line 2: the probe did not trigger"), std::string::npos)
+    EXPECT_NE(bad.err.find("bad.txt: line 10: the probe did not trigger"), std::string::npos)
         << bad.err;
 }
 

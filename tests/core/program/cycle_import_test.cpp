@@ -158,7 +158,7 @@ TEST(CycleImport, GrblConsoleGivesTheResultTheProgramCannotCompute) {
     // and protected move, in the plan's order.
     const ProbingPlan plan =
         make_cycle_plan(program_test::golden_web(), CyclePlanOptions{{'X', 1}, 2.0});
-    std::string console = "Grbl 1.1h ['$' for help]\n";
+    std::string console = "Grbl 1.1h ['$' for help]\n" + program_test::grbl_signature(plan);
     for (const ProgramStep& step : plan.steps) {
         if (step.kind == StepKind::guard) console += program_test::prb(0, 0, 0, 0) + "ok\n";
         if (step.kind != StepKind::probe) continue;

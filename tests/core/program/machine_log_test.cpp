@@ -58,23 +58,63 @@ TEST(MachineLog, GrblConsoleGivesTheDelayCsvOfTheRecordedTouches) {
 TEST(MachineLog, GrblBrokenLogsNameTheLine) {
     const ProbingPlan plan = small_delay_plan();
     const std::string good = grbl_console();
-    // A touch that did not trigger: ":0" (line 6), or the alarm grbl raises.
+    // A touch that did not trigger: ":0" (line 17), and the alarm grbl raises then (18).
     const std::string no_trigger = good.substr(0, good.find("[PRB:0.000,0.000,-20.018:1]")) +
                                    "[PRB:0.000,0.000,-20.018:0]\nALARM:5\n";
-    EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, no_trigger); }), 7);
+    EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, no_trigger); }), 18);
     EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, "ok\nALARM:5\n"); }), 2);
     // A missing touch: the log ends early (its last position named).
     const std::string missing = good.substr(0, good.rfind("[PRB:"));
-    EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, missing); }), 9);
+    EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, missing); }), 19);
     // An extra touch: a "$#" printout after the run repeats the last probe.
     EXPECT_EQ(
-        line_of([&] { import_machine_log(plan, DialectId::grbl, good + prb(0, 0, -20.151)); }), 13);
+        line_of([&] { import_machine_log(plan, DialectId::grbl, good + prb(0, 0, -20.151)); }), 23);
     // Another plan: Y moved between two touches this plan makes along Z alone.
     std::string other = good;
     other.replace(other.find("[PRB:0.000,0.000,-20.150:1]"), 27, "[PRB:0.000,5.000,-20.150:1]");
-    EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, other); }), 9);
+    EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, other); }), 19);
     // An unreadable report.
     EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::grbl, "[PRB:1,2:1]\n"); }), 1);
+}
+
+TEST(MachineLog, AGrblConsoleOfAnotherPlanIsToldByItsSignature) {
+    // Before (issue 29): a console from another plan with the same count and
+    // axis imported silently, every touch under the wrong feed.
+    const ProbingPlan plan = small_delay_plan();
+    ProbingPlan other = plan;
+    other.values.push_back({"probe_feeds", "another"});  // another plan, another id
+    ASSERT_NE(plan_id(other), plan_id(plan));
+    ASSERT_NE(plan_signature(other).codes, plan_signature(plan).codes);
+    std::string console = grbl_console();
+    const std::string own = program_test::grbl_signature(plan);
+    console.replace(console.find(own), own.size(), program_test::grbl_signature(other, {5, 7, -3}));
+    const auto says = [&](const std::string& text) {
+        try {
+            (void)import_machine_log(plan, DialectId::grbl, text);
+        } catch (const CsvError& e) {
+            return std::string(e.what());
+        }
+        return std::string("imported");
+    };
+    EXPECT_NE(says(console).find("line 10: the console is from another plan"), std::string::npos)
+        << says(console);
+    // The signature is read from differences: any start gives the plan.
+    std::string moved = grbl_console();
+    moved.replace(moved.find(own), own.size(), program_test::grbl_signature(plan, {5, 7, -3}));
+    EXPECT_EQ(says(moved), "imported");
+    // A console without one (an older ProbeCycle's program) is refused too.
+    std::string unsigned_console = grbl_console();
+    unsigned_console.erase(unsigned_console.find(own), own.size());
+    EXPECT_NE(says(unsigned_console).find("does not open with the plan's signature"),
+              std::string::npos)
+        << says(unsigned_console);
+    // The probe touched something during them: named as such.
+    std::string touched = grbl_console();
+    const std::size_t first = touched.find(":0]");
+    touched.replace(first, 3, ":1]");
+    EXPECT_NE(says(touched).find("line 3: the console does not open with the plan's signature"),
+              std::string::npos)
+        << says(touched);
 }
 
 using program_test::linuxcnc_log;
@@ -274,20 +314,21 @@ TEST(MachineLog, ProtectedMovesAreMatchedAndATouchOnOneIsRefused) {
     const ProbingPlan plan = program_test::guarded_plan();
     // Out to X20 (line 1), the touch at X25.03 (2), back to the start and
     // the centre (4), down to Z-10 (5).
-    const std::string console =
-        prb(20, 0, 0, 0) + prb(25.03, 0, 0) + "ok\n" + prb(0, 0, 0, 0) + prb(0, 0, -10, 0);
+    // After the signature (lines 1 to 10).
+    const std::string console = program_test::grbl_signature(plan) + prb(20, 0, 0, 0) +
+                                prb(25.03, 0, 0) + "ok\n" + prb(0, 0, 0, 0) + prb(0, 0, -10, 0);
     const std::vector<RecordedPosition> touches =
         recorded_touch_positions(plan, DialectId::grbl, console);
     ASSERT_EQ(touches.size(), 1u);
-    EXPECT_EQ(touches[0].line, 2u);
+    EXPECT_EQ(touches[0].line, 12u);
     EXPECT_DOUBLE_EQ(touches[0].xyz[0], 25.03);
     // The cycle has no table in the lab.
     EXPECT_THROW(import_machine_log(plan, DialectId::grbl, console), InputError);
 
-    // A protected move that touched (line 4), and a probe that did not (line 2).
+    // A protected move that touched (line 14), and a probe that did not (line 12).
     std::string obstructed = console;
-    obstructed.replace(obstructed.find(prb(0, 0, 0, 0)), prb(0, 0, 0, 0).size(), prb(3, 0, 0));
-    EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, obstructed); }), 4);
+    obstructed.replace(obstructed.rfind(prb(0, 0, 0, 0)), prb(0, 0, 0, 0).size(), prb(3, 0, 0));
+    EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, obstructed); }), 14);
     try {
         recorded_touch_positions(plan, DialectId::grbl, obstructed);
     } catch (const CsvError& e) {
@@ -298,7 +339,7 @@ TEST(MachineLog, ProtectedMovesAreMatchedAndATouchOnOneIsRefused) {
     std::string no_trigger = console;
     no_trigger.replace(no_trigger.find(prb(25.03, 0, 0)), prb(25.03, 0, 0).size(),
                        prb(26, 0, 0, 0));
-    EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, no_trigger); }), 2);
+    EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, no_trigger); }), 12);
     // A console of the touch alone: its report stands where the first
     // protected move's is due, and reads as a touch there.
     EXPECT_EQ(line_of([&] { recorded_touch_positions(plan, DialectId::grbl, prb(25.03, 0, 0)); }),
@@ -377,7 +418,7 @@ TEST(MachineLog, ABoresRecordedTouchesAreMatchedInALinuxCncLogAndAGrblConsole) {
     // 8 protected moves, 2 probes at each of the 4 touches.
     ASSERT_EQ(run.every_probe.size(), 16u);
     ASSERT_EQ(run.recorded.size(), 4u);
-    std::string console = "Grbl 1.1h ['$' for help]\n";
+    std::string console = "Grbl 1.1h ['$' for help]\n" + program_test::grbl_signature(plan);
     std::string probe_file;
     std::size_t index = 0;
     for (const ProgramStep& step : plan.steps) {
@@ -409,9 +450,10 @@ TEST(MachineLog, ABoresRecordedTouchesAreMatchedInALinuxCncLogAndAGrblConsole) {
             EXPECT_NEAR(touches[i].xyz[1], expected[i][1], 1e-6);
         }
     }
-    // The X+ touch's line in the console: after the banner, the protected move
-    // out (line 2) and the first touch (line 4), each answered "ok": line 6.
-    EXPECT_EQ(recorded_touch_positions(plan, DialectId::grbl, console)[0].line, 6u);
+    // The X+ touch's line in the console: after the banner and the signature
+    // (lines 2 to 11), the protected move out (line 12) and the first touch
+    // (line 14), each answered "ok": line 16.
+    EXPECT_EQ(recorded_touch_positions(plan, DialectId::grbl, console)[0].line, 16u);
 }
 
 // One probing move on the simulated machine: the surface `surface_mm` along
@@ -473,12 +515,17 @@ std::string simulate_grbl(const std::string& program, const Scenario& scenario, 
     std::istringstream lines(program);
     std::string line;
     while (std::getline(lines, line)) {
-        if (line.rfind("G38.2 ", 0) != 0 && line.rfind("G0 ", 0) != 0 &&
-            line.rfind("G1 ", 0) != 0) {
+        if (line.rfind("G38.2 ", 0) != 0 && line.rfind("G38.3 ", 0) != 0 &&
+            line.rfind("G0 ", 0) != 0 && line.rfind("G1 ", 0) != 0) {
             continue;
         }
         const std::size_t word = line.find(' ') + 2;
         const double move = std::stod(line.substr(word));
+        if (line.rfind("G38.3 ", 0) == 0) {  // the plan's signature, in free air
+            position += move;
+            console += prb(0.0, 0.0, position, 0) + "ok\n";
+            continue;
+        }
         if (line[1] != '3') {
             position += move;
             console += "ok\n";

@@ -157,9 +157,27 @@ inline std::string prb(double x, double y, double z, int ok = 1) {
     return line;
 }
 
-// A grbl console for small_delay_plan(): the locating touch, then 4 recorded.
+// grbl's answers to the plan's signature moves (plan_signature), from
+// `start`: four [PRB:...:0] lines, each followed by "ok".
+inline std::string grbl_signature(const ProbingPlan& plan, std::array<double, 3> start = {}) {
+    const PlanSignature signature = plan_signature(plan);
+    const std::size_t axis = signature.axis == 'X' ? 0 : signature.axis == 'Y' ? 1 : 2;
+    std::string log;
+    for (const double back : signature.back_mm) {
+        std::array<double, 3> at = start;
+        at[axis] += signature.direction * (kSignatureOut_mm + back);
+        log += prb(at[0], at[1], at[2], 0) + "ok\n";
+        at[axis] -= signature.direction * back;
+        log += prb(at[0], at[1], at[2], 0) + "ok\nok\n";
+    }
+    return log;
+}
+
+// A grbl console for small_delay_plan(): the signature (lines 3 to 12),
+// the locating touch (line 13), then 4 recorded (lines 15, 17, 19, 21).
 inline std::string grbl_console() {
     std::string log = "Grbl 1.1h ['$' for help]\nok\n";
+    log += grbl_signature(small_delay_plan());
     log += prb(0, 0, -20.0) + "ok\n";
     for (double z : {-20.017, -20.018, -20.150, -20.151}) log += prb(0, 0, z) + "ok\n";
     return log;

@@ -57,6 +57,14 @@
 G21 G91 G94
 ; check: the probe ball stands at the centre of the bore at the measuring depth; resume to start
 M0
+; Plan signature (plan 9f3fb1d6cfe88929): twice, G38.3 out along Z+ and back; grbl's
+; [PRB:...:0] answers tell the import which plan ran. Free air needed: 0.870 mm along Z+.
+G38.3 Z0.680 F300
+G38.3 Z-0.580 F300
+G1 Z-0.100 F300
+G38.3 Z0.870 F300
+G38.3 Z-0.770 F300
+G1 Z-0.100 F300
 ; out to the start of the X+ touch
 G38.3 X20.000 F3000
 ; X+ first touch at 2000 mm/min

@@ -57,6 +57,14 @@
 G21 G91 G94
 ; check: the probe ball stands at the centre of the bore at the measuring depth; resume to start
 M0
+; Plan signature (plan 015f9a511f61824b): twice, G38.3 out along Z+ and back; grbl's
+; [PRB:...:0] answers tell the import which plan ran. Free air needed: 0.730 mm along Z+.
+G38.3 Z0.310 F300
+G38.3 Z-0.210 F300
+G1 Z-0.100 F300
+G38.3 Z0.730 F300
+G38.3 Z-0.630 F300
+G1 Z-0.100 F300
 ; out to the start of the X+ touch
 G38.3 X20.000 F3000
 ; X+ first touch at 2000 mm/min

@@ -62,6 +62,14 @@
 G21 G91 G94
 ; check: the probe ball stands over the centre of the boss, 10 mm above the measuring depth; resume to start
 M0
+; Plan signature (plan 2025fb52155dcef3): twice, G38.3 out along Z+ and back; grbl's
+; [PRB:...:0] answers tell the import which plan ran. Free air needed: 0.330 mm along Z+.
+G38.3 Z0.320 F300
+G38.3 Z-0.220 F300
+G1 Z-0.100 F300
+G38.3 Z0.330 F300
+G38.3 Z-0.230 F300
+G1 Z-0.100 F300
 ; out over the start of the X+ side
 G38.3 X30.000 F3000
 ; down to the measuring depth

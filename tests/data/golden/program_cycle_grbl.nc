@@ -48,6 +48,14 @@
 G21 G91 G94
 ; check: the probe stands 5 mm in front of the surface, touching along Z-; resume to start
 M0
+; Plan signature (plan d664826e87009ccc): twice, G38.3 out along Z+ and back; grbl's
+; [PRB:...:0] answers tell the import which plan ran. Free air needed: 0.900 mm along Z+.
+G38.3 Z0.440 F300
+G38.3 Z-0.340 F300
+G1 Z-0.100 F300
+G38.3 Z0.900 F300
+G38.3 Z-0.800 F300
+G1 Z-0.100 F300
 ; Z- first touch at 2000 mm/min
 G38.2 Z-8.263 F2000
 G1 Z2.000 F10000 ; backoff

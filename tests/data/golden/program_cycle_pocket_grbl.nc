@@ -60,6 +60,14 @@
 G21 G91 G94
 ; check: the probe ball stands at the centre of the pocket along Y (within 0.5 mm) at the measuring depth; resume to start
 M0
+; Plan signature (plan 85e852007cf7cfe1): twice, G38.3 out along Z+ and back; grbl's
+; [PRB:...:0] answers tell the import which plan ran. Free air needed: 0.630 mm along Z+.
+G38.3 Z0.620 F300
+G38.3 Z-0.520 F300
+G1 Z-0.100 F300
+G38.3 Z0.630 F300
+G38.3 Z-0.530 F300
+G1 Z-0.100 F300
 ; out to the start of the Y+ touch
 G38.3 Y13.000 F3000
 ; touch 1: Y+ 1 of 2 at 300 mm/min

@@ -48,6 +48,14 @@
 G21 G91 G94
 ; check: the probe stands 5 mm in front of the surface, touching along X+; resume to start
 M0
+; Plan signature (plan eeb518b603110ff8): twice, G38.3 out along Z+ and back; grbl's
+; [PRB:...:0] answers tell the import which plan ran. Free air needed: 1.000 mm along Z+.
+G38.3 Z1.000 F300
+G38.3 Z-0.900 F300
+G1 Z-0.100 F300
+G38.3 Z0.380 F300
+G38.3 Z-0.280 F300
+G1 Z-0.100 F300
 ; touch 1: X+ at 300 mm/min
 G38.2 X7.617 F300
 G1 X-5.195 F10000 ; back to the start

@@ -63,6 +63,14 @@
 G21 G91 G94
 ; check: the probe ball stands over the centre of the web along X (within 0.5 mm), 10 mm above the measuring depth; resume to start
 M0
+; Plan signature (plan ac60ace31121f4df): twice, G38.3 out along Z+ and back; grbl's
+; [PRB:...:0] answers tell the import which plan ran. Free air needed: 0.970 mm along Z+.
+G38.3 Z0.970 F300
+G38.3 Z-0.870 F300
+G1 Z-0.100 F300
+G38.3 Z0.770 F300
+G38.3 Z-0.670 F300
+G1 Z-0.100 F300
 ; out over the start of the X+ side
 G38.3 X11.000 F3000
 ; down to the measuring depth

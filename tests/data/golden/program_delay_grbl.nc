@@ -39,6 +39,14 @@
 G21 G91 G94
 ; check: the probe stands in front of the surface, at most 10 mm from it, touching along X+; resume to start
 M0
+; Plan signature (plan ee042f037781f322): twice, G38.3 out along Z+ and back; grbl's
+; [PRB:...:0] answers tell the import which plan ran. Free air needed: 0.970 mm along Z+.
+G38.3 Z0.970 F300
+G38.3 Z-0.870 F300
+G1 Z-0.100 F300
+G38.3 Z0.800 F300
+G38.3 Z-0.700 F300
+G1 Z-0.100 F300
 ; locate the surface at 30 mm/min
 G38.2 X12.514 F30
 G0 X-1.039 ; to 1.015 mm before the surface: room to reach 30 mm/min plus the margin

@@ -42,6 +42,14 @@
 G21 G91 G94
 ; check: the spindle is oriented to 0 deg and the probe ball stands at the gauge centre (within 1 mm) at the measuring depth; resume to start
 M0
+; Plan signature (plan d6a2ab53fa11b3e2): twice, G38.3 out along Z+ and back; grbl's
+; [PRB:...:0] answers tell the import which plan ran. Free air needed: 0.650 mm along Z+.
+G38.3 Z0.650 F300
+G38.3 Z-0.550 F300
+G1 Z-0.100 F300
+G38.3 Z0.320 F300
+G38.3 Z-0.220 F300
+G1 Z-0.100 F300
 ; X+ first touch at 2000 mm/min
 G38.2 X26.263 F2000
 G1 X-2.000 F10000 ; backoff

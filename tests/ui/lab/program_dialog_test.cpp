@@ -376,18 +376,18 @@ TEST_F(MachineLogImport, ABrokenLogLeavesTheTabAsItWasAndNamesTheLine) {
     const QString text = tab.touches_text();
     const double delay_s = tab.delay_fit()->groups[0].delay_s;
 
-    // The log ends early: its last position (line 9) is named.
+    // The log ends early: its last position (line 19) is named.
     const std::string good = grbl_console();
     const QString missing = log("missing.txt", good.substr(0, good.rfind("[PRB:")));
     EXPECT_FALSE(tab.import_machine_log({DialectId::grbl, plan, missing}));
     EXPECT_EQ(tab.touches_text(), text);
     ASSERT_TRUE(tab.delay_fit().has_value());
     EXPECT_EQ(tab.delay_fit()->groups[0].delay_s, delay_s);
-    EXPECT_TRUE(tab.last_error().startsWith(QStringLiteral("missing.txt: line 9")))
+    EXPECT_TRUE(tab.last_error().startsWith(QStringLiteral("missing.txt: line 19")))
         << tab.last_error().toStdString();
     const auto* error = tab.findChild<QLabel*>(QStringLiteral("delay-error"));
     EXPECT_TRUE(error->isVisible());
-    EXPECT_TRUE(error->text().contains(QStringLiteral("line 9")));
+    EXPECT_TRUE(error->text().contains(QStringLiteral("line 19")));
 
     // A ring plan on the Latency tab, a file that is no plan, a plan not there.
     const QString ring_plan = save_plan(ProgramKind::ring, DialectId::grbl);
