@@ -3,6 +3,7 @@
 #include <QAbstractTextDocumentLayout>
 #include <QBuffer>
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QFont>
 #include <QFontMetricsF>
 #include <QPageLayout>
@@ -62,6 +63,29 @@ void PdfReport::add_image(const QImage& image) {
 void PdfReport::add_page_break() {
     blocks_.push_back({Kind::page_break, {}, {}, {}});
 }
+
+namespace {
+
+// Reproducible builds' SOURCE_DATE_EPOCH, when set to whole seconds: the
+// PDF's creation date then comes from it, so the same report is the same
+// bytes (Qt 6.4's QPdfWriter has no setter for the date; it writes the
+// current time as "/CreationDate (D:YYYYMMDDHHmmSSZ)", whose 14 digits are
+// replaced in place so no offset in the file moves).
+void apply_source_date(QByteArray& pdf) {
+    const QByteArray epoch = qgetenv("SOURCE_DATE_EPOCH");
+    bool ok = false;
+    const qint64 seconds = epoch.toLongLong(&ok);
+    if (!ok || seconds < 0) return;
+    const QByteArray digits = QDateTime::fromSecsSinceEpoch(seconds, Qt::UTC)
+                                  .toString(QStringLiteral("yyyyMMddHHmmss"))
+                                  .toLatin1();
+    const QByteArray key = "/CreationDate (D:";
+    const qsizetype at = pdf.indexOf(key);
+    if (at < 0 || digits.size() != 14 || at + key.size() + 14 > pdf.size()) return;
+    pdf.replace(at + key.size(), 14, digits);
+}
+
+}  // namespace
 
 QByteArray PdfReport::render() const {
     QByteArray bytes;
@@ -182,6 +206,7 @@ QByteArray PdfReport::render() const {
         painter.restore();
     }
     painter.end();
+    apply_source_date(bytes);
     return bytes;
 }
 

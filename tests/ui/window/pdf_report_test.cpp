@@ -12,6 +12,7 @@
 #include <QRegularExpression>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QThread>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -238,6 +239,26 @@ TEST(PdfReport, AFailedWriteSaysWhereAndLeavesNothing) {
     EXPECT_TRUE(window->last_error().contains(QStringLiteral("report.pdf")))
         << window->last_error().toStdString();
     EXPECT_FALSE(QFile::exists(path));
+}
+
+TEST(PdfReport, UnderSourceDateEpochTheSameReportIsTheSameBytes) {
+    // Before (issue 29): the creation date was the time of the export.
+    QTemporaryDir dir;
+    auto window = make_window();
+    qputenv("SOURCE_DATE_EPOCH", "1700000000");
+    const QString first = dir.filePath(QStringLiteral("first.pdf"));
+    const QString second = dir.filePath(QStringLiteral("second.pdf"));
+    ASSERT_TRUE(window->export_pdf_report(first));
+    QThread::msleep(1100);  // a second later: the clock's date would differ
+    ASSERT_TRUE(window->export_pdf_report(second));
+    qunsetenv("SOURCE_DATE_EPOCH");
+    QFile a(first);
+    QFile b(second);
+    ASSERT_TRUE(a.open(QIODevice::ReadOnly));
+    ASSERT_TRUE(b.open(QIODevice::ReadOnly));
+    const QByteArray bytes = a.readAll();
+    EXPECT_EQ(bytes, b.readAll());
+    EXPECT_TRUE(bytes.contains("/CreationDate (D:20231114221320Z)"));
 }
 
 }  // namespace
