@@ -52,10 +52,11 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
         const std::size_t comma = text.find(',', start);
         const std::string item = text.substr(start, comma - start);
         if (number_problem(item, min, max)) {
-            throw UsageError(name + ": got '" + text + "'; allowed: numbers separated by commas, " +
-                             "each from " + format_number(min) + " to " + format_number(max) +
-                             " (item " + std::to_string(numbers.size() + 1) +
-                             (item.empty() ? " is empty)" : ", '" + item + "', is not)"));
+            std::string message = name + ": got '" + text + "'; allowed: numbers separated by ";
+            message += "commas, each from " + format_number(min) + " to " + format_number(max);
+            message += " (item " + std::to_string(numbers.size() + 1);
+            message += item.empty() ? " is empty)" : ", '" + item + "', is not)";
+            throw UsageError(message);
         }
         numbers.push_back(*parse_decimal(item));
         if (comma == std::string::npos) return numbers;

@@ -377,6 +377,7 @@ void write_folder_atomically(const std::string& folder_given,
     if (::mkdtemp(temp.data()) == nullptr) fail_write(folder_given, folder_reason(parent, errno));
     try {
         std::vector<OutputFile> inside;
+        inside.reserve(files.size());
         for (const OutputFile& f : files) inside.push_back({temp + "/" + f.path, f.contents});
         write_files_atomically(inside);
         ::chmod(temp.c_str(), 0755);
