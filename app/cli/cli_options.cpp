@@ -52,10 +52,12 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
         const std::size_t comma = text.find(',', start);
         const std::string item = text.substr(start, comma - start);
         if (number_problem(item, min, max)) {
-            std::string message = name + ": got '" + text + "'; allowed: numbers separated by ";
-            message += "commas, each from " + format_number(min) + " to " + format_number(max);
-            message += " (item " + std::to_string(numbers.size() + 1);
-            message += item.empty() ? " is empty)" : ", '" + item + "', is not)";
+            std::string message = name;
+            message.append(": got '").append(text).append("'; allowed: numbers separated by ");
+            message.append("commas, each from ").append(format_number(min)).append(" to ");
+            message.append(format_number(max)).append(" (item ");
+            message.append(std::to_string(numbers.size() + 1));
+            message.append(item.empty() ? " is empty)" : ", '" + item + "', is not)");
             throw UsageError(message);
         }
         numbers.push_back(*parse_decimal(item));
