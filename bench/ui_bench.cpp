@@ -197,14 +197,21 @@ void BM_LargeProject_Open(benchmark::State& state) {
     }
 }
 
-void BM_LargeProject_TabSwitch(benchmark::State& state) {
+// A window with the large project open; nullptr after skipping the benchmark.
+std::unique_ptr<MainWindow> large_project_window(benchmark::State& state) {
     const QString path = large_project(state);
-    if (path.isEmpty()) return;
+    if (path.isEmpty()) return nullptr;
     auto window = make_window(1280, 800);
     if (!window->open_scenario(path)) {
         state.SkipWithError(window->last_error().toStdString().c_str());
-        return;
+        return nullptr;
     }
+    return window;
+}
+
+void BM_LargeProject_TabSwitch(benchmark::State& state) {
+    const auto window = large_project_window(state);
+    if (!window) return;
     auto* tabs = window->findChild<QTabWidget*>(QStringLiteral("tabs"));
     int i = 0;
     for (auto _ : state) {
@@ -215,13 +222,8 @@ void BM_LargeProject_TabSwitch(benchmark::State& state) {
 }
 
 void BM_LargeProject_SliderToCharts(benchmark::State& state) {
-    const QString path = large_project(state);
-    if (path.isEmpty()) return;
-    auto window = make_window(1280, 800);
-    if (!window->open_scenario(path)) {
-        state.SkipWithError(window->last_error().toStdString().c_str());
-        return;
-    }
+    const auto window = large_project_window(state);
+    if (!window) return;
     QSlider* slider = slider_for(*window, 0);
     std::int64_t i = 0;
     for (auto _ : state) {
