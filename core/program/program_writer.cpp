@@ -339,6 +339,10 @@ class Writer {
             start = end + 1;
         }
     }
+    // "<word> <axis><distance> F<feed>": a probe, a protected move or a move at a feed.
+    std::string move_line(const char* word, const ProgramStep& step) const {
+        return std::string(word) + " " + move_words(step) + " F" + program_feed(step.feed_mm_min);
+    }
     std::string move_words(const ProgramStep& step) const {
         std::string words = program_number(step.direction * step.distance_mm);
         words.insert(words.begin(), step.axis);
@@ -433,27 +437,20 @@ void write_grbl_signature(Writer& w, const ProbingPlan& plan, const std::string&
     const double reach_mm = kSignatureOut_mm + std::max(signature.back_mm[0], signature.back_mm[1]);
     w.comment("[PRB:...:0] answers tell the import which plan ran. Free air needed: " +
               program_number(reach_mm) + " mm along " + way + ".");
+    // Each move at the signature's feed (the way back too, not a rapid: the
+    // header's override advice stays true).
+    const auto move = [&](int direction, double distance) {
+        ProgramStep step;
+        step.axis = signature.axis;
+        step.direction = direction * signature.direction;
+        step.distance_mm = distance;
+        step.feed_mm_min = kSignatureFeed_mm_min;
+        return step;
+    };
     for (const double back : signature.back_mm) {
-        const auto move = [&](StepKind kind, int direction, double distance, double feed) {
-            ProgramStep step;
-            step.kind = kind;
-            step.axis = signature.axis;
-            step.direction = direction * signature.direction;
-            step.distance_mm = distance;
-            step.feed_mm_min = feed;
-            return step;
-        };
-        const ProgramStep out =
-            move(StepKind::guard, 1, kSignatureOut_mm + back, kSignatureFeed_mm_min);
-        const ProgramStep in = move(StepKind::guard, -1, back, kSignatureFeed_mm_min);
-        // At a feed, not a rapid: the header's override advice stays true.
-        const ProgramStep home = move(StepKind::move, -1, kSignatureOut_mm, kSignatureFeed_mm_min);
-        w.line(std::string(w.dialect().guard_word) + " " + w.move_words(out) + " F" +
-               program_feed(out.feed_mm_min));
-        w.line(std::string(w.dialect().guard_word) + " " + w.move_words(in) + " F" +
-               program_feed(in.feed_mm_min));
-        w.line(std::string(w.dialect().feed_word) + " " + w.move_words(home) + " F" +
-               program_feed(home.feed_mm_min));
+        w.line(w.move_line(w.dialect().guard_word, move(1, kSignatureOut_mm + back)));
+        w.line(w.move_line(w.dialect().guard_word, move(-1, back)));
+        w.line(w.move_line(w.dialect().feed_word, move(-1, kSignatureOut_mm)));
     }
 }
 
@@ -536,8 +533,7 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                     w.comment(step.text);
                 }
                 w.probe_check(dialect.before_probe, step);
-                w.line(std::string(dialect.probe_word) + " " + w.move_words(step) + " F" +
-                       program_feed(step.feed_mm_min));
+                w.line(w.move_line(dialect.probe_word, step));
                 w.probe_check(dialect.after_probe, step);
                 if (step.recorded) {
                     for (const char* after : dialect.after_recorded_probe) {
@@ -568,15 +564,13 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                 const std::size_t label = 1000 + ++guard_count;
                 w.comment(step.text);
                 w.probe_check(dialect.before_guard, step, label);
-                w.line(std::string(dialect.guard_word) + " " + w.move_words(step) + " F" +
-                       program_feed(step.feed_mm_min));
+                w.line(w.move_line(dialect.guard_word, step));
                 for (const char* after : dialect.after_guard) w.probe_check(after, step, label);
                 break;
             }
             case StepKind::move:
                 if (step.feed_mm_min > 0.0) {
-                    w.line(std::string(dialect.feed_word) + " " + w.move_words(step) + " F" +
-                           program_feed(step.feed_mm_min) + " " + w.comment_text(step.text));
+                    w.line(w.move_line(dialect.feed_word, step) + " " + w.comment_text(step.text));
                 } else {
                     w.line(std::string(dialect.rapid_word) + " " + w.move_words(step) + " " +
                            w.comment_text(step.text));
