@@ -215,18 +215,18 @@ struct Prepared {
     std::string temp;
 };
 
-void write_all(int fd, std::string_view contents, bool& ok) {
+// False when a write failed (errno says why).
+bool write_all(int fd, std::string_view contents) {
     const char* data = contents.data();
     std::size_t left = contents.size();
-    while (ok && left > 0) {
+    while (left > 0) {
         const ssize_t n = ::write(fd, data, left);
         if (n < 0 && errno == EINTR) continue;
-        ok = n > 0;
-        if (ok) {
-            data += n;
-            left -= static_cast<std::size_t>(n);
-        }
+        if (n <= 0) return false;
+        data += n;
+        left -= static_cast<std::size_t>(n);
     }
+    return true;
 }
 
 // The complete file in a temporary beside `target`, flushed to the disk,
@@ -239,9 +239,8 @@ Prepared prepare(const std::string& given, const std::string& target, std::strin
     std::string temp = dir + "/" + temp_prefix(base) + "XXXXXX";
     const int fd = ::mkstemp(temp.data());
     if (fd < 0) fail_write(given, folder_reason(dir, errno));
-    bool ok = true;
-    write_all(fd, contents, ok);
-    const int saved_errno = errno;
+    bool ok = write_all(fd, contents);
+    const int saved_errno = ok ? 0 : errno;
     ok = ok && ::fsync(fd) == 0;
     ok = (::close(fd) == 0) && ok;
     // mkstemp makes the file 0600: give it the old file's mode, or 0644.
@@ -327,7 +326,7 @@ void write_folder_atomically(const std::string& folder_given,
     // The folder as it stands: a link to a folder is followed (the link stays).
     std::error_code ec;
     std::string folder = folder_given;
-    while (!folder.empty() && folder.size() > 1 && folder.back() == '/') folder.pop_back();
+    while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
     if (fs::is_symlink(fs::symlink_status(folder, ec))) {
         const fs::path resolved = fs::canonical(folder, ec);
         if (ec) fail_write(folder_given, system_reason(ec.value()));
@@ -370,7 +369,7 @@ void write_folder_atomically(const std::string& folder_given,
     const auto [parent, base] = split_path(folder);
     if (!fs::is_directory(parent, ec)) {
         fail_write(folder_given,
-                   reason("dangling_link",
+                   reason("no_parent_folder",
                           QT_TRANSLATE_NOOP("FileError", "its parent folder does not exist")));
     }
     std::string temp = parent + "/" + temp_prefix(base, ".new-") + "XXXXXX";
