@@ -137,26 +137,29 @@ ReportHeader report_header_of(const std::string& input, const std::string& fallb
     return header;
 }
 
+namespace {
+
+[[noreturn]] void fail_standard_output(int error) {
+    throw std::runtime_error(
+        std::string("cannot write the standard output") +
+        (error != 0 ? std::string(": ") + std::strerror(error) : std::string()) +
+        "; the output is incomplete");
+}
+
+}  // namespace
+
 void print(const std::string& text) {
     errno = 0;
     std::cout << text;
-    if (std::cout.good()) return;
-    const int error = errno;
-    throw std::runtime_error(standard_output_failure(error));
+    if (!std::cout.good()) fail_standard_output(errno);
 }
 
 void flush_output() {
     errno = 0;
     std::cout.flush();
-    if (std::fflush(stdout) == 0 && std::cout.good() && std::ferror(stdout) == 0) return;
-    const int error = errno;
-    throw std::runtime_error(standard_output_failure(error));
-}
-
-std::string standard_output_failure(int error) {
-    return std::string("cannot write the standard output") +
-           (error != 0 ? std::string(": ") + std::strerror(error) : std::string()) +
-           "; the output is incomplete";
+    if (std::fflush(stdout) != 0 || !std::cout.good() || std::ferror(stdout) != 0) {
+        fail_standard_output(errno);
+    }
 }
 
 void write_output(const std::string& path, const std::string& text) {

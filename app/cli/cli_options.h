@@ -77,13 +77,11 @@ Scenario load_scenario(const ScenarioArgs& args);
 ReportHeader report_header_of(const std::string& input, const std::string& fallback);
 
 // The text to stdout; a failed write (a full disk, a closed stream) throws
-// std::runtime_error with standard_output_failure's text, so the command
-// exits 2 instead of 0 with its output lost.
+// std::runtime_error ("cannot write the standard output: <the system's
+// reason>; ..."), so the command exits 2 instead of 0 with its output lost.
 void print(const std::string& text);
 // Standard output flushed; a failure throws as print() does.
 void flush_output();
-// "cannot write the standard output: <the system's reason>; ..."
-std::string standard_output_failure(int error);
 
 // The text to stdout, or atomically to `path` when one is given.
 void write_output(const std::string& path, const std::string& text);

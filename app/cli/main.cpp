@@ -5,8 +5,6 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -134,8 +132,6 @@ int run(int argc, char** argv) {
     return 2;
 }
 
-}  // namespace
-
 // A standard stream the caller closed (`>&-`) stays closed: /dev/null opened
 // read-only takes its number, so writing to it fails and reports an error
 // instead of a file this program opens later taking the number and
@@ -151,19 +147,20 @@ void hold_closed_standard_streams() {
 #endif
 }
 
-// The output is complete only once standard output took all of it: flushed,
-// and no write to it failed (a full disk, a closed pipe, `>&-`). print()
-// reports a failed write at once; this catches what was still buffered.
+// The output is complete only once standard output took all of it: print()
+// reports a failed write at once; flushing catches what was still buffered.
 // False after saying so on stderr.
 bool standard_output_written() {
-    errno = 0;
-    std::cout.flush();
-    const bool flushed = std::fflush(stdout) == 0;
-    const int error = errno;
-    if (flushed && std::ferror(stdout) == 0 && std::cout.good()) return true;
-    std::cerr << "probecycle-cli: " << probecycle::cli::standard_output_failure(error) << '\n';
-    return false;
+    try {
+        probecycle::cli::flush_output();
+    } catch (const std::exception& e) {
+        std::cerr << "probecycle-cli: " << e.what() << '\n';
+        return false;
+    }
+    return true;
 }
+
+}  // namespace
 
 int main(int argc, char** argv) {
     hold_closed_standard_streams();
