@@ -14,6 +14,7 @@
 #include "core/comparison/comparison_simulator.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/motion.h"
+#include "core/cycle/motion_cache.h"
 #include "core/cycle/sweep.h"
 #include "core/optimise/optimiser.h"
 

@@ -4,6 +4,7 @@
 
 #include "core/common/number_format.h"
 #include "core/common/units.h"
+#include "core/cycle/motion_cache.h"
 
 namespace probecycle {
 

@@ -7,6 +7,7 @@
 
 #include "core/common/number_format.h"
 #include "core/common/units.h"
+#include "core/cycle/motion_cache.h"
 
 // domain.md, "Cycle time versus feed": the knee is the lowest feed whose cycle
 // time is within a small tolerance (cycle.knee_tolerance, 1 % by default) of

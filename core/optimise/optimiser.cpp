@@ -8,6 +8,7 @@
 
 #include "core/common/input_error.h"
 #include "core/common/units.h"
+#include "core/cycle/motion_cache.h"
 #include "core/cycle/uncertainty.h"
 
 namespace probecycle {

@@ -16,6 +16,7 @@
 #include "core/common/units.h"
 #include "core/cycle/fixes.h"
 #include "core/cycle/motion.h"
+#include "core/cycle/motion_cache.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
 

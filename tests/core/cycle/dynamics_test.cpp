@@ -29,6 +29,7 @@
 #include "core/common/units.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/motion.h"
+#include "core/cycle/motion_cache.h"
 #include "core/cycle/scenario.h"
 
 namespace probecycle {
