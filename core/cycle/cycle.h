@@ -17,6 +17,7 @@
 #include "core/cycle/dynamics.h"
 #include "core/cycle/motion.h"
 #include "core/cycle/scenario.h"
+#include "core/cycle/warning.h"
 
 namespace probecycle {
 
@@ -69,87 +70,6 @@ struct PhaseRecord {
     double time_s{0.0};
     double distance_mm{0.0};
 };
-
-enum class WarningCode {
-    overtravel_limit,
-    backoff_too_small,
-    backoff_excess,
-    touch_while_accelerating,
-    feed_beyond_knee,
-    knee_at_range_end,
-    uncertainty_over_target,
-    calibration_feed_mismatch,
-    no_valid_feed,
-    feed_over_probe_limit,     // issue 14: an error
-    start_inside_uncertainty,  // issue 14
-    // A probing move ends before the touch's stop past the farthest place its
-    // surface can be (cycle.search_beyond_mm): an error.
-    search_ends_too_soon,
-    // An obstruction met by a protected positioning move would stop the
-    // probe at or near its overtravel limit: an error at the limit.
-    protected_move_overtravel,
-};
-const char* to_string(WarningCode code);
-
-// Numbers are kept and the message is built on demand, so evaluation stays
-// allocation-light; to_message() says what and by how much.
-struct Warning {
-    WarningCode code{};
-    Severity severity{};
-    // Meaning by code (all in internal units: mm, s, mm/s):
-    // overtravel_limit:         a = overtravel, b = limit, c = the feed override it is
-    //                           at (1.5 for 150 %), d = the touch (1 first, 2 second)
-    // backoff_too_small:        a = backoff, b = recommended backoff, d = its reference
-    //                           (0 where the probe stopped, 1 the recorded trigger)
-    // backoff_excess:           a = backoff, b = recommended, c = time wasted
-    // touch_while_accelerating: a = speed reached, b = programmed feed, c = error, d = touch (0/1)
-    // feed_beyond_knee:         a = feed, b = knee feed, c = time saved beyond the knee,
-    //                           d = the knee tolerance (fraction)
-    // knee_at_range_end:        a = the end feed where the fastest cycle lies, b = knee feed,
-    //                           d = which end (0 the lowest feed, 1 the highest)
-    // uncertainty_over_target:  a = uncertainty, b = target
-    // calibration_feed_mismatch:a = measuring speed, b = calibration speed, c = error
-    // no_valid_feed:            a = lowest feed searched, b = highest (analyse(): no
-    //                           feed between gives a valid cycle, so there is no knee),
-    //                           d = 1 when valid feeds are there but the first touch
-    //                           reaches none of them
-    // feed_over_probe_limit:    a = the touch's feed, b = the probe's rated maximum,
-    //                           d = the touch (0 the probing feed, 1 the measuring feed)
-    // start_inside_uncertainty: a = start distance, b = part position uncertainty,
-    //                           c = distance to reach the probing feed, d = 1 when the
-    //                           start lies inside the uncertainty itself
-    // search_ends_too_soon:     a = cycle.search_beyond_mm, b = the stop it must reach
-    //                           past the surface (the touch's overtravel), d = the touch
-    //                           (1 first, 2 second)
-    // protected_move_overtravel: a = the overtravel past an obstruction, b = the limit,
-    //                           c = the positioning feed, d = the feed override it is at
-    double a{0.0}, b{0.0}, c{0.0}, d{0.0};
-    // The message: code, template and the numbers above as named arguments.
-    Message to_message() const;
-    std::string message() const;  // in English: render(to_message())
-};
-
-// Errors first, then warnings, then notes; in the order computed within each
-// (a stable sort): what makes a cycle invalid is read first.
-void order_by_severity(std::vector<Warning>& warnings);
-
-constexpr unsigned invalid_code_bit(WarningCode code) {
-    return 1u << static_cast<unsigned>(code);
-}
-// Errors that no probing feed changes (a feature's protected moves, at the
-// positioning feed): the knee and a sweep's fastest cycle look past them, so
-// the curve still tells where the probing feed is best, while the cycle
-// itself stays invalid.
-constexpr unsigned kFeedIndependentErrors =
-    invalid_code_bit(WarningCode::protected_move_overtravel);
-// Whether the invalid codes leave a feed that counts for the knee.
-constexpr bool valid_for_knee(unsigned invalid_codes) {
-    return (invalid_codes & ~kFeedIndependentErrors) == 0;
-}
-
-// The codes of invalid_codes() by name, in WarningCode order, joined by
-// `separator` ("backoff_too_small;overtravel_limit"); "" for none.
-std::string invalid_codes_text(unsigned codes, const char* separator);
 
 // Where the probe is at a time in the cycle.
 struct CycleState {

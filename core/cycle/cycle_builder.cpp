@@ -632,7 +632,6 @@ double backoff_cost_s(const Scenario& scenario, const MotionLimits& limits,
            approach_time_s(limits, kernel, measure_v, std::max(0.0, backoff_mm - reference));
 }
 
-
 CycleTimeline build_timeline(const Scenario& scenario, const TimelineBuffers& buffers,
                              MotionCache& cache, Detail detail) {
     buffers.phases.clear();

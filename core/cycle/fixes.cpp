@@ -119,8 +119,8 @@ std::vector<FixKind> kinds_for(const Warning& warning) {
         case WarningCode::touch_while_accelerating:
             // The first touch starts farther out; the second gets the room
             // the recommended backoff includes.
-            return {warning.d < 0.5 ? FixKind::approach_to_reach_feed
-                                    : FixKind::backoff_to_recommended};
+            return {accelerating_touch(warning) == 1 ? FixKind::approach_to_reach_feed
+                                                     : FixKind::backoff_to_recommended};
         case WarningCode::start_inside_uncertainty:
             return {FixKind::approach_to_reach_feed};
         case WarningCode::search_ends_too_soon:
@@ -149,9 +149,8 @@ std::vector<std::pair<std::string, double>> changed_numbers(const Scenario& befo
 
 bool still_warns(const CycleResult& result, const Warning& warning) {
     return std::any_of(result.warnings().begin(), result.warnings().end(), [&](const Warning& w) {
-        if (w.code != warning.code) return false;
-        if (w.code != WarningCode::touch_while_accelerating) return true;
-        return (w.d > 0.5) == (warning.d > 0.5);  // the same touch
+        // The same code; an acceleration warning about the same touch.
+        return w.code == warning.code && accelerating_touch(w) == accelerating_touch(warning);
     });
 }
 

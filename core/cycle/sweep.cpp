@@ -53,12 +53,8 @@ double cycle_time_at(const Scenario& base, double feed_mm_min, const SweepOption
 }
 
 Warning range_end_warning(double end_feed_mm_min, double knee_feed_mm_min, bool highest) {
-    return {WarningCode::knee_at_range_end,
-            Severity::info,
-            mm_min_to_mm_s(end_feed_mm_min),
-            mm_min_to_mm_s(knee_feed_mm_min),
-            0.0,
-            highest ? 1.0 : 0.0};
+    return {Severity::info, warning::KneeAtRangeEnd{mm_min_to_mm_s(end_feed_mm_min),
+                                                    mm_min_to_mm_s(knee_feed_mm_min), highest}};
 }
 
 }  // namespace
@@ -306,9 +302,9 @@ Analysis analyse(const Scenario& scenario) {
     std::vector<Warning>& warnings = analysis.cycle.mutable_warnings();
     if (!analysis.knee_feed_mm_min) {
         // Issue 12: say why there is no knee.
-        warnings.push_back({WarningCode::no_valid_feed, Severity::warning,
-                            mm_min_to_mm_s(kKneeSearchFrom_mm_min), mm_min_to_mm_s(search_to), 0.0,
-                            knee.none_reached ? 1.0 : 0.0});
+        warnings.emplace_back(Severity::warning,
+                              warning::NoValidFeed{mm_min_to_mm_s(kKneeSearchFrom_mm_min),
+                                                   mm_min_to_mm_s(search_to), knee.none_reached});
         order_by_severity(warnings);
         return analysis;
     }
@@ -326,12 +322,74 @@ Analysis analyse(const Scenario& scenario) {
             order_by_severity(warnings);
             return analysis;
         }
-        warnings.push_back({WarningCode::feed_beyond_knee, Severity::info, mm_min_to_mm_s(feed),
-                            mm_min_to_mm_s(knee_feed), *analysis.knee_cycle_time_s - feed_time,
-                            scenario.cycle.knee_tolerance});
+        warnings.emplace_back(
+            Severity::info, warning::FeedBeyondKnee{mm_min_to_mm_s(feed), mm_min_to_mm_s(knee_feed),
+                                                    *analysis.knee_cycle_time_s - feed_time,
+                                                    scenario.cycle.knee_tolerance});
     }
     order_by_severity(warnings);
     return analysis;
 }
+
+// --- The knee's messages (warning.h). ---
+
+namespace warning {
+
+Message FeedBeyondKnee::message(Severity /*severity*/) const {
+    if (time_saved_s <= 0.0) {
+        return warning_message(
+            code,
+            QT_TRANSLATE_NOOP("Warning",
+                              "Probing feed %1 is beyond the knee at %2 and no faster: the cycle "
+                              "takes %3 longer, with more overtravel and uncertainty"),
+            {arg("feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(feed_mm_s), 0),
+             arg("knee_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(knee_feed_mm_s), 0),
+             arg("time_lost_s", ArgKind::time_s, -time_saved_s, 3)});
+    }
+    return warning_message(
+        code,
+        QT_TRANSLATE_NOOP("Warning",
+                          "Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 "
+                          "(under %4) while overtravel and uncertainty grow"),
+        {arg("feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(feed_mm_s), 0),
+         arg("knee_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(knee_feed_mm_s), 0),
+         arg("time_saved_s", ArgKind::time_s, time_saved_s, 3),
+         arg("knee_tolerance_percent", ArgKind::percent, 100.0 * knee_tolerance)});
+}
+
+Message KneeAtRangeEnd::message(Severity /*severity*/) const {
+    const char* text = highest ? QT_TRANSLATE_NOOP("Warning",
+                                                   "The fastest cycle lies at the highest feed "
+                                                   "searched, %1: the knee at %2 depends on that "
+                                                   "range; search faster feeds too")
+                               : QT_TRANSLATE_NOOP("Warning",
+                                                   "The fastest cycle lies at the lowest feed "
+                                                   "searched, %1: the knee at %2 depends on that "
+                                                   "range; search slower feeds too");
+    return warning_message(
+        code, text,
+        {arg("range_end_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(end_feed_mm_s), 0),
+         arg("knee_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(knee_feed_mm_s), 0),
+         text_arg("range_end", highest ? "highest" : "lowest")});
+}
+
+Message NoValidFeed::message(Severity /*severity*/) const {
+    const char* text =
+        unreached ? QT_TRANSLATE_NOOP("Warning",
+                                      "No probing feed from %1 to %2 is reached: the first touch "
+                                      "meets the surface before it reaches even %1, so there is "
+                                      "no knee; start the touch farther out")
+                  : QT_TRANSLATE_NOOP("Warning",
+                                      "No probing feed from %1 to %2 gives a valid cycle: the "
+                                      "overtravel reaches the probe's limit even at %1, so there "
+                                      "is no knee; shorten the delays or use a probe with more "
+                                      "overtravel");
+    return warning_message(
+        code, text,
+        {arg("from_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(from_feed_mm_s), 0),
+         arg("to_feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(to_feed_mm_s), 0)});
+}
+
+}  // namespace warning
 
 }  // namespace probecycle

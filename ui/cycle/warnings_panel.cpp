@@ -170,7 +170,7 @@ void WarningsPanel::show_result(const Computed& c) {
             // Each row's code is unique: the second touch's acceleration
             // warning is told from the first's.
             QString code = QString::fromUtf8(to_string(w.code));
-            if (w.code == WarningCode::touch_while_accelerating && w.d > 0.5) {
+            if (accelerating_touch(w) == 2) {
                 code += QStringLiteral(":second");
             }
             show_row(n++, code, w.severity, warning_title(w.code), warning_text(w), fix,

@@ -98,7 +98,7 @@ std::string describe(const CycleResult& r) {
 
 const Warning* find_warning(const CycleResult& r, WarningCode code, int touch = -1) {
     for (const Warning& w : r.warnings()) {
-        if (w.code == code && (touch < 0 || static_cast<int>(w.d) == touch)) return &w;
+        if (w.code == code && (touch < 0 || accelerating_touch(w) == touch)) return &w;
     }
     return nullptr;
 }
@@ -482,19 +482,23 @@ TEST(Cycle, TouchDuringAccelerationTriggersSlowerAndKeepsAccelerating) {
     ASSERT_NE(w, nullptr) << describe(r);
     EXPECT_EQ(w->severity, Severity::warning);
     // The speed reached (at the touch or the trigger) and the programmed feed.
-    EXPECT_GE(w->a, 50.0 - 1e-9);
-    EXPECT_LE(w->a, a * t_trigger + 1e-9);
-    EXPECT_NEAR(w->b, 100.0, 1e-12);
-    EXPECT_EQ(w->d, 0.0);
+    EXPECT_GE(std::get<warning::TouchWhileAccelerating>(w->figures).speed_mm_s, 50.0 - 1e-9);
+    EXPECT_LE(std::get<warning::TouchWhileAccelerating>(w->figures).speed_mm_s,
+              a * t_trigger + 1e-9);
+    EXPECT_NEAR(std::get<warning::TouchWhileAccelerating>(w->figures).feed_mm_s, 100.0, 1e-12);
+    EXPECT_EQ(std::get<warning::TouchWhileAccelerating>(w->figures).touch, 1);
     // Issue 11, loose end 2: the error follows the real speed through the delay
     // tau = t_i + t_c + t_s/2 = 6 ms: calibration takes v tau = 0.6 mm; the axis,
     // still accelerating, travels v_t tau + a tau^2 / 2.
     const double tau = 0.006;
     const double v_t = a * t_trigger;
     EXPECT_NEAR(r.first_touch().delay_travel_mm, v_t * tau + 0.5 * a * tau * tau, 1e-12);
-    EXPECT_NEAR(w->c, 100.0 * tau - (v_t * tau + 0.5 * a * tau * tau), 1e-12);
+    EXPECT_NEAR(std::get<warning::TouchWhileAccelerating>(w->figures).error_mm,
+                100.0 * tau - (v_t * tau + 0.5 * a * tau * tau), 1e-12);
     // Less than the (v - v_t) tau of a speed stepping at the trigger, by a tau^2 / 2.
-    EXPECT_NEAR(speed_error_mm(s.machine, s.probe, 100.0, v_t) - w->c, 0.5 * a * tau * tau, 1e-12);
+    EXPECT_NEAR(speed_error_mm(s.machine, s.probe, 100.0, v_t) -
+                    std::get<warning::TouchWhileAccelerating>(w->figures).error_mm,
+                0.5 * a * tau * tau, 1e-12);
     EXPECT_FALSE(w->message().empty());
 }
 
@@ -542,7 +546,7 @@ TEST(Cycle, StartingAtTheSurfaceIsFinite) {
         EXPECT_EQ(r.first_touch().touch_speed_mm_s, 0.0);
         EXPECT_GT(r.first_touch().trigger_speed_mm_s, 0.0);
         // The first touch of two-touch only finds the surface: no error to report.
-        EXPECT_EQ(find_warning(r, WarningCode::touch_while_accelerating, 0), nullptr);
+        EXPECT_EQ(find_warning(r, WarningCode::touch_while_accelerating, 1), nullptr);
         double sum = 0.0;
         for (const PhaseRecord& p : r.phases()) {
             EXPECT_TRUE(std::isfinite(p.time_s));
@@ -710,7 +714,7 @@ TEST(BlockChange, EveryMoveAddsItOnceAtRest) {
     Scenario s = surface(Strategy::two_touch, 3000.0, 3.5);
     const auto wasted = [](const CycleResult& r) {
         const Warning* w = find_warning(r, WarningCode::backoff_excess);
-        return w != nullptr ? w->c : -1.0;
+        return w != nullptr ? std::get<warning::BackoffExcess>(w->figures).wasted_s : -1.0;
     };
     const double before = wasted(evaluate(s));
     ASSERT_GT(before, 0.0);
@@ -811,8 +815,8 @@ TEST(Warnings, OvertravelLimit) {
         }
         ASSERT_NE(w, nullptr) << describe(r);
         EXPECT_EQ(w->severity, c.severity);
-        EXPECT_NEAR(w->a, ot, 1e-12);
-        EXPECT_EQ(w->b, c.limit_mm);
+        EXPECT_NEAR(std::get<warning::OvertravelLimit>(w->figures).overtravel_mm, ot, 1e-12);
+        EXPECT_EQ(std::get<warning::OvertravelLimit>(w->figures).limit_mm, c.limit_mm);
         EXPECT_FALSE(w->message().empty());
     }
 }
@@ -825,8 +829,9 @@ TEST(Warnings, BackoffTooSmall) {
     const Warning* w = find_warning(r, WarningCode::backoff_too_small);
     ASSERT_NE(w, nullptr) << describe(r);
     EXPECT_EQ(w->severity, Severity::error);
-    EXPECT_NEAR(w->a, recommended - 0.05, 1e-12);
-    EXPECT_NEAR(w->b, recommended, 1e-12);
+    EXPECT_NEAR(std::get<warning::BackoffTooSmall>(w->figures).backoff_mm, recommended - 0.05,
+                1e-12);
+    EXPECT_NEAR(std::get<warning::BackoffTooSmall>(w->figures).recommended_mm, recommended, 1e-12);
     EXPECT_EQ(find_warning(r, WarningCode::backoff_excess), nullptr);
     EXPECT_FALSE(w->message().empty());
 }
@@ -916,7 +921,7 @@ TEST(BackoffFrom, TheRecordedTriggerPosition) {
     const CycleResult small = evaluate(s);
     const Warning* w = find_warning(small, WarningCode::backoff_too_small);
     ASSERT_NE(w, nullptr) << describe(small);
-    EXPECT_EQ(w->d, 1.0);
+    EXPECT_EQ(std::get<warning::BackoffTooSmall>(w->figures).from, BackoffFrom::trigger);
     EXPECT_NE(w->message().find("from the recorded trigger position"), std::string::npos);
     EXPECT_FALSE(small.valid());
 
@@ -955,10 +960,10 @@ TEST(Warnings, ErrorsComeFirst) {
                   static_cast<int>(r.warnings()[i].severity))
             << describe(r);
     }
-    std::vector<Warning> mixed = {{WarningCode::backoff_excess, Severity::info},
-                                  {WarningCode::touch_while_accelerating, Severity::warning},
-                                  {WarningCode::overtravel_limit, Severity::error},
-                                  {WarningCode::calibration_feed_mismatch, Severity::warning}};
+    std::vector<Warning> mixed = {{Severity::info, warning::BackoffExcess{}},
+                                  {Severity::warning, warning::TouchWhileAccelerating{}},
+                                  {Severity::error, warning::OvertravelLimit{}},
+                                  {Severity::warning, warning::CalibrationFeedMismatch{}}};
     order_by_severity(mixed);
     EXPECT_EQ(mixed[0].code, WarningCode::overtravel_limit);
     EXPECT_EQ(mixed[1].code, WarningCode::touch_while_accelerating);  // stable
@@ -983,12 +988,13 @@ TEST(Warnings, BackoffExcessWithTheTimeItWastes) {
     const Warning* w = find_warning(r, WarningCode::backoff_excess);
     ASSERT_NE(w, nullptr) << describe(r);
     EXPECT_EQ(w->severity, Severity::info);
-    EXPECT_NEAR(w->a, s.cycle.backoff_mm, 1e-12);
-    EXPECT_NEAR(w->b, clean.cycle.backoff_mm, 1e-12);
+    EXPECT_NEAR(std::get<warning::BackoffExcess>(w->figures).backoff_mm, s.cycle.backoff_mm, 1e-12);
+    EXPECT_NEAR(std::get<warning::BackoffExcess>(w->figures).recommended_mm, clean.cycle.backoff_mm,
+                1e-12);
     // 1 mm at 30 mm/min is 2 s, plus at most the longer backoff move.
     const double extra = r.total() - evaluate(clean).total();
-    EXPECT_GE(w->c, 2.0 - 1e-9);
-    EXPECT_LE(w->c, extra + 1e-9);
+    EXPECT_GE(std::get<warning::BackoffExcess>(w->figures).wasted_s, 2.0 - 1e-9);
+    EXPECT_LE(std::get<warning::BackoffExcess>(w->figures).wasted_s, extra + 1e-9);
     EXPECT_EQ(find_warning(r, WarningCode::backoff_too_small), nullptr);
     EXPECT_FALSE(w->message().empty());
 }
@@ -1008,11 +1014,11 @@ TEST(Warnings, TouchWhileAcceleratingOnTheFirstTouch) {
     const double reach = reach_distance_mm(s.motion_limits(), 50.0);  // 1.5 mm
     s.cycle.approach_mm = 0.5 * reach;
     const CycleResult r = evaluate(s);
-    const Warning* w = find_warning(r, WarningCode::touch_while_accelerating, 0);
+    const Warning* w = find_warning(r, WarningCode::touch_while_accelerating, 1);
     ASSERT_NE(w, nullptr) << describe(r);
     EXPECT_EQ(w->severity, Severity::warning);
-    EXPECT_LT(w->a, 50.0);
-    EXPECT_NEAR(w->b, 50.0, 1e-12);
+    EXPECT_LT(std::get<warning::TouchWhileAccelerating>(w->figures).speed_mm_s, 50.0);
+    EXPECT_NEAR(std::get<warning::TouchWhileAccelerating>(w->figures).feed_mm_s, 50.0, 1e-12);
     s.cycle.approach_mm = reach;  // just reaches the feed
     EXPECT_EQ(find_warning(evaluate(s), WarningCode::touch_while_accelerating), nullptr);
 }
@@ -1024,12 +1030,12 @@ TEST(Warnings, TouchWhileAcceleratingOnTheSecondTouch) {
     Scenario s = clean_two_touch();
     s.cycle.backoff_mm = 1.805 + 0.005;
     const CycleResult r = evaluate(s);
-    const Warning* w = find_warning(r, WarningCode::touch_while_accelerating, 1);
+    const Warning* w = find_warning(r, WarningCode::touch_while_accelerating, 2);
     ASSERT_NE(w, nullptr) << describe(r);
-    EXPECT_LT(w->a, 0.5);
-    EXPECT_NEAR(w->b, 0.5, 1e-12);
+    EXPECT_LT(std::get<warning::TouchWhileAccelerating>(w->figures).speed_mm_s, 0.5);
+    EXPECT_NEAR(std::get<warning::TouchWhileAccelerating>(w->figures).feed_mm_s, 0.5, 1e-12);
     EXPECT_NEAR(r.measuring_touch().touch_speed_mm_s, std::sqrt(2.0 * (0.5 / 0.06) * 0.005), 1e-9);
-    EXPECT_EQ(find_warning(r, WarningCode::touch_while_accelerating, 0), nullptr);
+    EXPECT_EQ(find_warning(r, WarningCode::touch_while_accelerating, 1), nullptr);
 }
 
 TEST(Warnings, UncertaintyOverTarget) {
@@ -1039,8 +1045,8 @@ TEST(Warnings, UncertaintyOverTarget) {
     const CycleResult r = evaluate(s);
     const Warning* w = find_warning(r, WarningCode::uncertainty_over_target);
     ASSERT_NE(w, nullptr) << describe(r);
-    EXPECT_NEAR(w->a, u, 1e-15);
-    EXPECT_NEAR(w->b, 0.5 * u, 1e-15);
+    EXPECT_NEAR(std::get<warning::UncertaintyOverTarget>(w->figures).uncertainty_mm, u, 1e-15);
+    EXPECT_NEAR(std::get<warning::UncertaintyOverTarget>(w->figures).target_mm, 0.5 * u, 1e-15);
     EXPECT_FALSE(w->message().empty());
     s.cycle.target_uncertainty_mm = 2.0 * u;
     EXPECT_EQ(find_warning(evaluate(s), WarningCode::uncertainty_over_target), nullptr);
@@ -1130,8 +1136,9 @@ TEST(Repeats, EveryTouchPointOfAFeatureRepeatsAndEveryBackoffCountsAsWasted) {
     const CycleResult longer = evaluate(s);
     const Warning* w = find_warning(longer, WarningCode::backoff_excess);
     ASSERT_NE(w, nullptr) << describe(longer);
-    EXPECT_GE(w->c, 4 * 2 * 2.0 - 1e-9);
-    EXPECT_LE(w->c, longer.total() - r.total() + 1e-9);
+    EXPECT_GE(std::get<warning::BackoffExcess>(w->figures).wasted_s, 4 * 2 * 2.0 - 1e-9);
+    EXPECT_LE(std::get<warning::BackoffExcess>(w->figures).wasted_s,
+              longer.total() - r.total() + 1e-9);
 }
 
 TEST(Warnings, FeedOverTheProbesRatingIsAnError) {
@@ -1142,9 +1149,10 @@ TEST(Warnings, FeedOverTheProbesRatingIsAnError) {
     ASSERT_NE(w, nullptr) << describe(r);
     EXPECT_EQ(w->severity, Severity::error);
     EXPECT_FALSE(r.valid());
-    EXPECT_NEAR(w->a, 50.0, 1e-12);
-    EXPECT_NEAR(w->b, 2000.0 / 60.0, 1e-12);
-    EXPECT_EQ(w->d, 0.0);
+    EXPECT_NEAR(std::get<warning::FeedOverProbeLimit>(w->figures).feed_mm_s, 50.0, 1e-12);
+    EXPECT_NEAR(std::get<warning::FeedOverProbeLimit>(w->figures).max_feed_mm_s, 2000.0 / 60.0,
+                1e-12);
+    EXPECT_FALSE(std::get<warning::FeedOverProbeLimit>(w->figures).measuring);
     EXPECT_NE(w->message().find("Probing feed 3000 mm/min is over the probe's rated maximum 2000"),
               std::string::npos)
         << w->message();
@@ -1160,7 +1168,7 @@ TEST(Warnings, FeedOverTheProbesRatingIsAnError) {
     r = evaluate(s);
     w = find_warning(r, WarningCode::feed_over_probe_limit);
     ASSERT_NE(w, nullptr) << describe(r);
-    EXPECT_EQ(w->d, 1.0);
+    EXPECT_TRUE(std::get<warning::FeedOverProbeLimit>(w->figures).measuring);
     EXPECT_NE(w->message().find("Measuring feed"), std::string::npos) << w->message();
 }
 
@@ -1174,9 +1182,12 @@ TEST(Warnings, StartInsideThePartsPositionUncertainty) {
     struct {
         double approach_mm;
         bool warns;
-        double inside;
-    } cases[] = {
-        {1.0, true, 1.0}, {2.0, true, 1.0}, {3.0, true, 0.0}, {3.5, false, 0.0}, {5.0, false, 0.0}};
+        bool inside;
+    } cases[] = {{1.0, true, true},
+                 {2.0, true, true},
+                 {3.0, true, false},
+                 {3.5, false, false},
+                 {5.0, false, false}};
     for (const auto& c : cases) {
         SCOPED_TRACE(c.approach_mm);
         s.cycle.approach_mm = c.approach_mm;
@@ -1185,7 +1196,7 @@ TEST(Warnings, StartInsideThePartsPositionUncertainty) {
         ASSERT_EQ(w != nullptr, c.warns) << describe(r);
         if (w == nullptr) continue;
         EXPECT_EQ(w->severity, Severity::warning);
-        EXPECT_EQ(w->d, c.inside);
+        EXPECT_EQ(std::get<warning::StartInsideUncertainty>(w->figures).inside, c.inside);
         EXPECT_NE(w->message().find("start at least 3.500 mm out"), std::string::npos)
             << w->message();
         // The one-click fix starts the uncertainty plus the room out, and clears it.
@@ -1248,9 +1259,9 @@ TEST(Search, ASearchSetByHandThatEndsBeforeTheStopIsAnError) {
     ASSERT_NE(w, nullptr) << describe(r);
     EXPECT_EQ(w->severity, Severity::error);
     EXPECT_FALSE(r.valid());
-    EXPECT_NEAR(w->a, 1.5, 1e-12);
-    EXPECT_NEAR(w->b, 1.905, 1e-12);
-    EXPECT_EQ(w->d, 1.0);
+    EXPECT_NEAR(std::get<warning::SearchEndsTooSoon>(w->figures).search_beyond_mm, 1.5, 1e-12);
+    EXPECT_NEAR(std::get<warning::SearchEndsTooSoon>(w->figures).stop_mm, 1.905, 1e-12);
+    EXPECT_EQ(std::get<warning::SearchEndsTooSoon>(w->figures).touch, 1);
     EXPECT_EQ(w->message(),
               "The search ends 1.500 mm past the farthest place the surface can be, before the "
               "first touch's stop 1.905 mm past it: the axis is braking when it touches, "
@@ -1264,8 +1275,8 @@ TEST(Search, ASearchSetByHandThatEndsBeforeTheStopIsAnError) {
     r = evaluate(s);
     w = find_warning(r, WarningCode::search_ends_too_soon);
     ASSERT_NE(w, nullptr) << describe(r);
-    EXPECT_EQ(w->d, 2.0);
-    EXPECT_NEAR(w->b, 1.905, 1e-12);
+    EXPECT_EQ(std::get<warning::SearchEndsTooSoon>(w->figures).touch, 2);
+    EXPECT_NEAR(std::get<warning::SearchEndsTooSoon>(w->figures).stop_mm, 1.905, 1e-12);
     EXPECT_EQ(w->to_message().args.back().number, 2.0);  // the touch, a whole number
     // Automatic never ends too soon.
     s.cycle.search_beyond_mm = 0.0;
@@ -1288,7 +1299,8 @@ TEST(Warnings, ProtectedMovesAreTouchesAtThePositioningFeed) {
     ASSERT_NE(w, nullptr) << describe(a.cycle);
     EXPECT_EQ(w->severity, Severity::error);
     EXPECT_FALSE(a.cycle.valid());
-    EXPECT_NEAR(w->a, 5.0716666666666, 1e-9);
+    EXPECT_NEAR(std::get<warning::ProtectedMoveOvertravel>(w->figures).overtravel_mm,
+                5.0716666666666, 1e-9);
     EXPECT_EQ(w->message(),
               "A protected move at the positioning feed 8000 mm/min that meets an obstruction "
               "stops 5.072 mm past it, 101 % of the probe's 5.000 mm limit: the stylus would be "
@@ -1329,11 +1341,14 @@ TEST(Warnings, CalibrationFeedMismatch) {
     const CycleResult r = evaluate(s);
     const Warning* w = find_warning(r, WarningCode::calibration_feed_mismatch);
     ASSERT_NE(w, nullptr) << describe(r);
-    EXPECT_NEAR(w->a, 0.5, 1e-12);
-    EXPECT_NEAR(w->b, 1.0, 1e-12);
+    EXPECT_NEAR(std::get<warning::CalibrationFeedMismatch>(w->figures).speed_mm_s, 0.5, 1e-12);
+    EXPECT_NEAR(std::get<warning::CalibrationFeedMismatch>(w->figures).calibration_speed_mm_s, 1.0,
+                1e-12);
     // (0.5 - 1.0) * (0.002 + 0.002 + 0.004 / 2) = -0.003 mm
-    EXPECT_NEAR(std::abs(w->c), 0.003, 1e-12);
-    EXPECT_NEAR(w->c, speed_error_mm(s.machine, s.probe, 0.5, 1.0), 1e-12);
+    EXPECT_NEAR(std::abs(std::get<warning::CalibrationFeedMismatch>(w->figures).error_mm), 0.003,
+                1e-12);
+    EXPECT_NEAR(std::get<warning::CalibrationFeedMismatch>(w->figures).error_mm,
+                speed_error_mm(s.machine, s.probe, 0.5, 1.0), 1e-12);
     EXPECT_FALSE(w->message().empty());
 
     s.probe.calibration_feed_mm_min = 30.0;
@@ -1350,7 +1365,8 @@ TEST(Warnings, CalibrationFeedMismatch) {
     const Warning* ws = find_warning(single_result, WarningCode::calibration_feed_mismatch);
     ASSERT_NE(ws, nullptr);
     // (50 - 0.5) * 0.006 = 0.297 mm
-    EXPECT_NEAR(std::abs(ws->c), 0.297, 1e-12);
+    EXPECT_NEAR(std::abs(std::get<warning::CalibrationFeedMismatch>(ws->figures).error_mm), 0.297,
+                1e-12);
 }
 
 TEST(Warnings, FeedBeyondKneeOnlyFromAnalyse) {
@@ -1362,9 +1378,11 @@ TEST(Warnings, FeedBeyondKneeOnlyFromAnalyse) {
     const Warning* w = find_warning(fast.cycle, WarningCode::feed_beyond_knee);
     ASSERT_NE(w, nullptr) << describe(fast.cycle);
     EXPECT_EQ(w->severity, Severity::info);
-    EXPECT_NEAR(w->a, 150.0, 1e-9);
-    EXPECT_NEAR(w->b, mm_min_to_mm_s(*fast.knee_feed_mm_min), 1e-9);
-    EXPECT_LT(w->c, kDefaultKneeTolerance * fast.cycle.total());
+    EXPECT_NEAR(std::get<warning::FeedBeyondKnee>(w->figures).feed_mm_s, 150.0, 1e-9);
+    EXPECT_NEAR(std::get<warning::FeedBeyondKnee>(w->figures).knee_feed_mm_s,
+                mm_min_to_mm_s(*fast.knee_feed_mm_min), 1e-9);
+    EXPECT_LT(std::get<warning::FeedBeyondKnee>(w->figures).time_saved_s,
+              kDefaultKneeTolerance * fast.cycle.total());
     EXPECT_FALSE(w->message().empty());
     // evaluate() alone never gives it.
     EXPECT_EQ(find_warning(evaluate(s), WarningCode::feed_beyond_knee), nullptr);
@@ -1669,7 +1687,7 @@ TEST_F(RandomCycles, EveryWarningExactlyWhenItsConditionHolds) {
         const double reach = reach_distance_mm(limits, v);
         // Reported for the touch that measures: the only one of single-touch.
         const bool accel_first =
-            find_warning(r, WarningCode::touch_while_accelerating, 0) != nullptr;
+            find_warning(r, WarningCode::touch_while_accelerating, 1) != nullptr;
         if (two) {
             EXPECT_FALSE(accel_first);
         }
@@ -1690,7 +1708,7 @@ TEST_F(RandomCycles, EveryWarningExactlyWhenItsConditionHolds) {
             const double vm = mm_min_to_mm_s(s.cycle.measure_feed_mm_min);
             const double gap = b - r.first_touch().mean_overtravel_mm;
             const bool accel_second =
-                find_warning(r, WarningCode::touch_while_accelerating, 1) != nullptr;
+                find_warning(r, WarningCode::touch_while_accelerating, 2) != nullptr;
             if (gap > 0.0 &&
                 clearly_below(gap + s.probe.pretravel_mm, reach_distance_mm(limits, vm)) &&
                 clearly_above(error_of(r.measuring_touch()), kAccelErrorTolerance_mm)) {
@@ -1719,7 +1737,9 @@ TEST_F(RandomCycles, EveryWarningExactlyWhenItsConditionHolds) {
             ASSERT_NE(mismatch, nullptr);
             const double expected = speed_error_mm(
                 s.machine, s.probe, mm_min_to_mm_s(measuring_feed), mm_min_to_mm_s(cal));
-            EXPECT_NEAR(std::abs(mismatch->c), std::abs(expected), rel_tol(expected, 1e-9));
+            EXPECT_NEAR(
+                std::abs(std::get<warning::CalibrationFeedMismatch>(mismatch->figures).error_mm),
+                std::abs(expected), rel_tol(expected, 1e-9));
         }
         EXPECT_EQ(find_warning(r, WarningCode::feed_beyond_knee), nullptr);
         for (const Warning& warning : r.warnings()) EXPECT_FALSE(warning.message().empty());
@@ -1957,7 +1977,7 @@ TEST(FeedOverride, EveryOvertravelCheckHoldsAtTheHighestOverride) {
     const CycleResult short_search = evaluate(two);
     w = find_warning(short_search, WarningCode::search_ends_too_soon);
     ASSERT_NE(w, nullptr);
-    EXPECT_DOUBLE_EQ(w->b, fast_ot);
+    EXPECT_DOUBLE_EQ(std::get<warning::SearchEndsTooSoon>(w->figures).stop_mm, fast_ot);
 }
 
 // The same with dynamics after interpolation (a Fanuc-type machine): the
@@ -2016,9 +2036,7 @@ void expect_same_cycle(const CycleResult& cached, const CycleResult& fresh) {
     ASSERT_EQ(cached.warnings().size(), fresh.warnings().size());
     for (std::size_t i = 0; i < fresh.warnings().size(); ++i) {
         EXPECT_EQ(cached.warnings()[i].code, fresh.warnings()[i].code);
-        EXPECT_EQ(cached.warnings()[i].a, fresh.warnings()[i].a);
-        EXPECT_EQ(cached.warnings()[i].b, fresh.warnings()[i].b);
-        EXPECT_EQ(cached.warnings()[i].c, fresh.warnings()[i].c);
+        EXPECT_TRUE(cached.warnings()[i].figures == fresh.warnings()[i].figures);
     }
     for (double t = 0.0; t < fresh.total(); t += fresh.total() / 37.0) {
         EXPECT_EQ(cached.state_at(t).position_mm, fresh.state_at(t).position_mm) << "t " << t;

@@ -907,8 +907,10 @@ TEST(DynamicsCycle, TouchDuringALinearFiltersRampGoesOnThroughTheWindow) {
     // v tau - delay travel = 0.02 - 0.0091534 mm.
     Warning warning;
     ASSERT_TRUE(has_warning(r, WarningCode::touch_while_accelerating, &warning));
-    EXPECT_NEAR(warning.a, v * t_touch / w, kClose);
-    EXPECT_NEAR(warning.c, v * 0.002 - (v * t_react * t_react / (2.0 * w) - d), kClose);
+    EXPECT_NEAR(std::get<warning::TouchWhileAccelerating>(warning.figures).speed_mm_s,
+                v * t_touch / w, kClose);
+    EXPECT_NEAR(std::get<warning::TouchWhileAccelerating>(warning.figures).error_mm,
+                v * 0.002 - (v * t_react * t_react / (2.0 * w) - d), kClose);
 }
 
 TEST(DynamicsCycle, ATouchAtCruiseThroughALinearFilterIsHandComputable) {

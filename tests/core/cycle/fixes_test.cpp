@@ -124,7 +124,7 @@ TEST(Fixes, NoneWhenEvenTheSlowestFeedOvertravels) {
     EXPECT_FALSE(a.knee_feed_mm_min);
     const Warning* none = find(a.cycle, WarningCode::no_valid_feed);
     ASSERT_NE(none, nullptr);
-    EXPECT_DOUBLE_EQ(none->a, 10.0 / 60.0);
+    EXPECT_DOUBLE_EQ(std::get<warning::NoValidFeed>(none->figures).from_feed_mm_s, 10.0 / 60.0);
     EXPECT_NE(none->message().find("No probing feed from 10 mm/min to 10000 mm/min"),
               std::string::npos)
         << none->message();
@@ -184,7 +184,7 @@ TEST(Fixes, AFixThatWouldMakeTheBackoffTooSmallSetsItToo) {
     ASSERT_TRUE(a.cycle.valid()) << invalid_codes_text(a.cycle.invalid_codes(), ", ");
     const Warning* w = find(a.cycle, WarningCode::start_inside_uncertainty);
     ASSERT_NE(w, nullptr);
-    EXPECT_EQ(w->d, 1.0);
+    EXPECT_TRUE(std::get<warning::StartInsideUncertainty>(w->figures).inside);
     Scenario alone = s;
     alone.cycle.approach_mm =
         round_up_to(2.0 + approach_room_mm(s, s.cycle.probe_feed_mm_min / 60.0), 0.01);

@@ -343,11 +343,15 @@ TEST(Analyse, FeedBeyondKneeReportsTheTimeSaved) {
     // (Faster may even be slower, when the longer return outweighs the approach.)
     const double saved = cycle_time_at(s, *a.knee_feed_mm_min) - a.cycle.total();
     if (saved >= 0.0) {
-        EXPECT_NEAR(w->c, saved, 1e-9);
+        EXPECT_NEAR(std::get<warning::FeedBeyondKnee>(w->figures).time_saved_s, saved, 1e-9);
     } else {
-        EXPECT_TRUE(std::abs(w->c - saved) < 1e-9 || w->c == 0.0) << w->c << " vs " << saved;
+        EXPECT_TRUE(std::abs(std::get<warning::FeedBeyondKnee>(w->figures).time_saved_s - saved) <
+                        1e-9 ||
+                    std::get<warning::FeedBeyondKnee>(w->figures).time_saved_s == 0.0)
+            << std::get<warning::FeedBeyondKnee>(w->figures).time_saved_s << " vs " << saved;
     }
-    EXPECT_LT(w->c, kDefaultKneeTolerance * a.cycle.total() * 1.01);
+    EXPECT_LT(std::get<warning::FeedBeyondKnee>(w->figures).time_saved_s,
+              kDefaultKneeTolerance * a.cycle.total() * 1.01);
 }
 
 // A feed above 10000 mm/min is judged on a curve that reaches it: with a
@@ -368,7 +372,8 @@ TEST(Analyse, KneeSearchReachesAFeedBeyond10000) {
     EXPECT_LE(*a.knee_cycle_time_s, best * (1.0 + kDefaultKneeTolerance) + 1e-12);
     for (const Warning& w : a.cycle.warnings()) {
         if (w.code == WarningCode::feed_beyond_knee) {
-            EXPECT_LT(w.c, kDefaultKneeTolerance * a.cycle.total() * 1.01);
+            EXPECT_LT(std::get<warning::FeedBeyondKnee>(w.figures).time_saved_s,
+                      kDefaultKneeTolerance * a.cycle.total() * 1.01);
         }
     }
 }
@@ -544,9 +549,11 @@ TEST(FindKnee, FastestAtTheHighestFeedSearchedIsSaid) {
     const Warning& w = *knee.range_end_warning;
     EXPECT_EQ(w.code, WarningCode::knee_at_range_end);
     EXPECT_EQ(w.severity, Severity::info);
-    EXPECT_DOUBLE_EQ(w.a, mm_min_to_mm_s(10000.0));
-    EXPECT_DOUBLE_EQ(w.b, mm_min_to_mm_s(*knee.knee_feed_mm_min));
-    EXPECT_EQ(w.d, 1.0);
+    EXPECT_DOUBLE_EQ(std::get<warning::KneeAtRangeEnd>(w.figures).end_feed_mm_s,
+                     mm_min_to_mm_s(10000.0));
+    EXPECT_DOUBLE_EQ(std::get<warning::KneeAtRangeEnd>(w.figures).knee_feed_mm_s,
+                     mm_min_to_mm_s(*knee.knee_feed_mm_min));
+    EXPECT_TRUE(std::get<warning::KneeAtRangeEnd>(w.figures).highest);
     EXPECT_EQ(w.message(),
               "The fastest cycle lies at the highest feed searched, 10000 mm/min: the "
               "knee at " +
@@ -562,7 +569,7 @@ TEST(FindKnee, FastestAtTheLowestFeedSearchedIsSaid) {
     EXPECT_EQ(knee.knee_feed_mm_min, 9500.0);
     EXPECT_EQ(knee.best_feed_mm_min, 9500.0);
     ASSERT_TRUE(knee.range_end_warning.has_value());
-    EXPECT_EQ(knee.range_end_warning->d, 0.0);
+    EXPECT_FALSE(std::get<warning::KneeAtRangeEnd>(knee.range_end_warning->figures).highest);
     EXPECT_NE(knee.range_end_warning->message().find("lowest feed searched, 9500 mm/min"),
               std::string::npos);
     EXPECT_NE(knee.range_end_warning->message().find("search slower feeds too"), std::string::npos);
@@ -577,16 +584,19 @@ TEST(Sweep, FastestAtAnEndOfTheSweepIsSaid) {
     const SweepResult low = sweep_feeds(s, linear_feeds(9500.0, 12000.0, 100.0));
     ASSERT_EQ(low.warnings.size(), 1u);
     EXPECT_EQ(low.warnings[0].code, WarningCode::knee_at_range_end);
-    EXPECT_EQ(low.warnings[0].d, 0.0);
-    EXPECT_DOUBLE_EQ(low.warnings[0].a, mm_min_to_mm_s(9500.0));
+    EXPECT_FALSE(std::get<warning::KneeAtRangeEnd>(low.warnings[0].figures).highest);
+    EXPECT_DOUBLE_EQ(std::get<warning::KneeAtRangeEnd>(low.warnings[0].figures).end_feed_mm_s,
+                     mm_min_to_mm_s(9500.0));
 
     s.cycle.approach_mm = 50.0;
     const SweepResult high = sweep_feeds(s, linear_feeds(100.0, 5000.0, 100.0));
     ASSERT_EQ(high.warnings.size(), 1u);
-    EXPECT_EQ(high.warnings[0].d, 1.0);
-    EXPECT_DOUBLE_EQ(high.warnings[0].a, mm_min_to_mm_s(5000.0));
+    EXPECT_TRUE(std::get<warning::KneeAtRangeEnd>(high.warnings[0].figures).highest);
+    EXPECT_DOUBLE_EQ(std::get<warning::KneeAtRangeEnd>(high.warnings[0].figures).end_feed_mm_s,
+                     mm_min_to_mm_s(5000.0));
     ASSERT_TRUE(high.knee_feed_mm_min.has_value());
-    EXPECT_DOUBLE_EQ(high.warnings[0].b, mm_min_to_mm_s(*high.knee_feed_mm_min));
+    EXPECT_DOUBLE_EQ(std::get<warning::KneeAtRangeEnd>(high.warnings[0].figures).knee_feed_mm_s,
+                     mm_min_to_mm_s(*high.knee_feed_mm_min));
 
     // One feed is no range.
     EXPECT_TRUE(sweep_feeds(s, std::vector<double>{2000.0}).warnings.empty());
@@ -599,7 +609,8 @@ TEST(Analyse, KneeAtTheEndOfTheSearchRangeIsAWarning) {
     const Analysis a = analyse(s);
     const Warning* w = find_warning(a.cycle.warnings(), WarningCode::knee_at_range_end);
     ASSERT_NE(w, nullptr);
-    EXPECT_DOUBLE_EQ(w->a, mm_min_to_mm_s(kKneeSearchTo_mm_min));
+    EXPECT_DOUBLE_EQ(std::get<warning::KneeAtRangeEnd>(w->figures).end_feed_mm_s,
+                     mm_min_to_mm_s(kKneeSearchTo_mm_min));
     EXPECT_EQ(find_warning(analyse(single_touch_surface()).cycle.warnings(),
                            WarningCode::knee_at_range_end),
               nullptr);
@@ -612,7 +623,7 @@ TEST(Analyse, FeedBeyondKneeNamesTheTolerance) {
     const Analysis a = analyse(s);
     const Warning* w = find_warning(a.cycle.warnings(), WarningCode::feed_beyond_knee);
     ASSERT_NE(w, nullptr);
-    EXPECT_EQ(w->d, 0.05);
+    EXPECT_EQ(std::get<warning::FeedBeyondKnee>(w->figures).knee_tolerance, 0.05);
     EXPECT_NE(w->message().find("(under 5 %)"), std::string::npos) << w->message();
 }
 
