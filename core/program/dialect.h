@@ -5,7 +5,7 @@
 // keeps the positions it probed. The generator (program_writer.h) reads the
 // table; a dialect is never a copy of the generator. Each table cites what
 // it was checked against in dialect.cpp; a detail that could not be checked
-// is left out (README, "Programs for your control").
+// is left out (docs/programs.md).
 
 #include <array>
 #include <optional>

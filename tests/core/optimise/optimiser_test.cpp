@@ -447,7 +447,7 @@ TEST(Optimiser, LowersAPositioningFeedThatWouldOverrunTheStylus) {
 // setting faster. Checked here through optimise() itself, on the bore with a
 // 5 um target whose best setting lies well under it (a single touch at about
 // 3 um: the target does not bind) and with a part position uncertainty of
-// 0.5 mm and a probe rated to 5000 mm/min (the README's customer bore): every
+// 0.5 mm and a probe rated to 5000 mm/min (the customer's bore in docs/cli.md): every
 // requirement named binding, relaxed by 10 %, gives a faster best setting,
 // and the target, relaxed, does not where it is not named.
 TEST(Optimiser, EveryBindingRequirementRelaxedGivesAFasterBest) {
@@ -499,7 +499,7 @@ TEST(Optimiser, EveryBindingRequirementRelaxedGivesAFasterBest) {
         if (k == 0) {  // the best lies well under the 5 um target: not binding
             EXPECT_LT(r.best.uncertainty_mm, 0.8 * 0.005);
             EXPECT_FALSE(binds(Requirement::target_uncertainty));
-        } else {  // the README's customer bore: the target binds; the probe's
+        } else {  // docs/cli.md's customer bore: the target binds; the probe's
                   // 5000 mm/min relaxed saves 0.46 ms of 5.18 s, under 0.1 %: not
             EXPECT_TRUE(binds(Requirement::target_uncertainty));
             EXPECT_FALSE(binds(Requirement::probe_max_feed));
