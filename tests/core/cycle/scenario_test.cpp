@@ -864,7 +864,9 @@ TEST(KeyTable, TheDocsListEveryKeyWithItsDefault) {
         EXPECT_EQ(it->second, value_text(defaults, key)) << key.key;
         rows.erase(it);
     }
-    for (const auto& [key, value] : rows) ADD_FAILURE() << key << " is in docs/files.md but not a key";
+    for (const auto& [key, value] : rows) {
+        ADD_FAILURE() << key << " is in docs/files.md but not a key";
+    }
 }
 
 }  // namespace
