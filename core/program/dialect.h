@@ -1,6 +1,6 @@
 #pragma once
 
-// A control's G-code dialect as a small table of syntax (issue 13): the words
+// A control's G-code dialect as a small table of syntax: the words
 // of a probing move, a rapid and a feed move, a pause, and how the control
 // keeps the positions it probed. The generator (program_writer.h) reads the
 // table; a dialect is never a copy of the generator. Each table cites what
