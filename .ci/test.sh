@@ -18,7 +18,7 @@ tools/check_format.sh
 cmake -S . -B build-ci -DCMAKE_BUILD_TYPE=Release -DPROBECYCLE_WARNINGS_AS_ERRORS=ON
 cmake --build build-ci -j"$jobs"
 ctest --test-dir build-ci --output-on-failure -j"$jobs"
-# The benchmarks must still run (figures are taken separately, see README).
+# The benchmarks must still run (figures are taken separately, see docs/speed.md).
 build-ci/bench/probecycle-bench --benchmark_min_time=0.01 >/dev/null
 
 tools/run_clang_tidy.sh build-ci
@@ -29,7 +29,8 @@ cmake --build build-sanitize -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1:halt_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build-sanitize --output-on-failure -j"$jobs"
 
-# Fuzzing: clang with libFuzzer, ASan and UBSan; 20 s a target (README: longer runs).
+# Fuzzing: clang with libFuzzer, ASan and UBSan; 20 s a target (docs/building.md:
+# longer runs).
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DPROBECYCLE_BUILD_FUZZ=ON -DPROBECYCLE_BUILD_UI=OFF -DPROBECYCLE_BUILD_TESTS=OFF \
   -DPROBECYCLE_BUILD_BENCH=OFF -DPROBECYCLE_WARNINGS_AS_ERRORS=ON

@@ -1,4 +1,4 @@
-// probecycle-bench: the core's speed targets (issue 2). Run on one core:
+// probecycle-bench: the core's speed targets (docs/speed.md). Run on one core:
 //   probecycle-bench --benchmark_min_time=0.5
 
 #include <benchmark/benchmark.h>
@@ -85,7 +85,7 @@ void run_sweep1000(benchmark::State& state, const Scenario& scenario) {
     }
 }
 
-// The bore with Fanuc-type dynamics after interpolation (issue 11): the skip
+// The bore with Fanuc-type dynamics after interpolation: the skip
 // feed commanded at once, an exponential filter and a servo lag.
 Scenario filtered_bore() {
     Scenario s = two_touch_bore();
@@ -197,7 +197,7 @@ void BM_Analyse(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(analyse(scenario));
 }
 
-// Issue 14: the optimiser on the bore with the defaults (no target: the
+// The optimiser on the bore with the defaults (no target: the
 // current uncertainty), everything the window shows: the best setting, the
 // binding requirements, the advice (a second optimisation with a latched
 // input) and the 20-point Pareto front.

@@ -1,4 +1,4 @@
-// probecycle-ui-bench: the window's speed targets (issue 3), offscreen.
+// probecycle-ui-bench: the window's speed targets (docs/speed.md), offscreen.
 //
 // BM_SliderToCharts: from a slider value change to every chart updated and
 // painted, 500 points per curve: the slider's signal, the undo command, the

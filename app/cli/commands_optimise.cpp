@@ -1,4 +1,5 @@
-// optimise: the fastest settings that meet the requirements (issue 14).
+// optimise: the fastest settings that meet the requirements (docs/cli.md,
+// "What should I change?").
 
 #include <iostream>
 #include <memory>

@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
                          qPrintable(parser.value(size)), kMinWidth, kMaxSide, kMinHeight, kMaxSide);
             return 2;
         }
-        // Issue 12: any tab can be looked at offscreen. The order is the
+        // Any tab can be looked at offscreen. The order is the
         // window's (main_window.cpp, build_ui).
         const QStringList tab_names = {QStringLiteral("cycle"), QStringLiteral("calibration"),
                                        QStringLiteral("latency"), QStringLiteral("comparison"),
@@ -226,7 +226,7 @@ int main(int argc, char** argv) {
             if (!parser.isSet(screenshot)) return 0;
         }
         // Through the checked writer as every export: a FIFO, a device or a
-        // folder is refused, not replaced (issue 29).
+        // folder is refused, not replaced.
         const QImage image = window.grab().toImage();
         QByteArray png;
         QBuffer buffer(&png);

@@ -4,7 +4,7 @@
 // place, so every report reads the same.
 //
 // Each quantity gets the digits the model supports, not the 9 to 17 a double
-// carries (issue 12): the rest is arithmetic, not the machine.
+// carries: the rest is arithmetic, not the machine.
 // - Times to 1 us: the inputs are delays and scan periods of tenths of a
 //   millisecond, and the smallest difference worth reading (the knee's
 //   rounding, a scan period's share) is 0.01 ms of cycle time.

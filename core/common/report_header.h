@@ -1,6 +1,6 @@
 #pragma once
 
-// The lines every CSV report opens with (issue 12): what the report is, the
+// The lines every CSV report opens with: what the report is, the
 // date, the program's version, and what it is of. They are comment lines
 // ("# date,2026-11-26"): a CSV reader that skips "#" lines skips them, and a
 // spreadsheet shows each as two cells, the name and the value.

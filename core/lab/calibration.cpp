@@ -253,9 +253,10 @@ RingCentre combine_orientations(const std::array<std::optional<CircleFit>, 2>& f
     const auto& fit180 = fits[1];
     RingCentre centre;
     if (fit0 && fit180) {
-        // Issue 4: ball centre = recorded + runout at 0 deg, recorded - runout at
-        // 180 deg. The recorded circles are then centred at C - r and C + r: the
-        // gauge centre C is their mean, the runout r half of (180 - 0).
+        // The convention of docs/cli.md, "Ring gauge": ball centre = recorded +
+        // runout at 0 deg, recorded - runout at 180 deg. The recorded circles are
+        // then centred at C - r and C + r: the gauge centre C is their mean, the
+        // runout r half of (180 - 0).
         centre.center_x_mm = 0.5 * (fit0->center_x_mm + fit180->center_x_mm);
         centre.center_y_mm = 0.5 * (fit0->center_y_mm + fit180->center_y_mm);
         centre.runout_x_mm = 0.5 * (fit180->center_x_mm - fit0->center_x_mm);
@@ -283,9 +284,8 @@ DirectionalRadius directional_radii(std::span<const RingPoint> points,
             const double dx = point.x_mm - fits[o]->center_x_mm;
             const double dy = point.y_mm - fits[o]->center_y_mm;
             // The recorded point less its orientation's centre is the ball centre
-            // less the gauge centre (the runout cancels): domain.md, "Calibration",
-            // "effective ball radius ... gauge radius minus the distance from
-            // centre to trigger point".
+            // less the gauge centre (the runout cancels); the effective radius is
+            // the gauge radius less that distance (docs/cli.md, "Ring gauge").
             if (const auto sector = touch_direction(dx, dy)) {
                 sum[static_cast<std::size_t>(*sector)] += gauge_radius_mm - std::hypot(dx, dy);
                 ++count[static_cast<std::size_t>(*sector)];

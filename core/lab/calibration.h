@@ -1,8 +1,8 @@
 #pragma once
 
-// Probe calibration (domain.md, "Calibration"; issue 4, "Ring-gauge
-// calibration"): the effective ball radius and the stylus runout from touches
-// in a ring gauge, and the effective length from a surface of known Z.
+// Probe calibration (docs/cli.md, "The calibration and latency lab"): the
+// effective ball radius and the stylus runout from touches in a ring gauge,
+// and the effective length from a surface of known Z.
 
 #include <Eigen/Core>
 #include <array>
@@ -95,7 +95,7 @@ struct RingCalibration {
     std::vector<CalibrationWarning> warnings;
 };
 
-// Parses `orientation_deg,x_mm,y_mm` (issue 4). Throws CsvError naming the line
+// Parses `orientation_deg,x_mm,y_mm`. Throws CsvError naming the line
 // and column: not a number, an orientation other than 0 or 180.
 std::vector<RingPoint> parse_ring_csv(std::string_view text);
 
@@ -170,9 +170,9 @@ std::optional<int> touch_direction(double dx_mm, double dy_mm);
 // probing (0 when none). The probe's effective length is then the recorded
 // gauge-line height above the known surface:
 //   length = active_length + trigger_z - surface_z
-// (domain.md, "Calibration", "Length": the known surface position and the
-// trigger position; the difference is taken along the tool axis, so with Z up
-// the trigger is the larger). It includes pretravel and the delay travel at the
+// (the difference between the trigger position and the known surface
+// position, taken along the tool axis, so with Z up the trigger is the larger;
+// docs/cli.md, "Length"). It includes pretravel and the delay travel at the
 // calibration feed, which is why it is "effective".
 struct LengthCalibrationInput {
     double surface_z_mm{0.0};

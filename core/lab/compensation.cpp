@@ -70,7 +70,8 @@ int lag_cycles_for_delay(double delay_s, double interpolation_period_s) {
 }
 
 double compensate_naive_mm(double recorded_mm, int direction, double speed_mm_s, double delay_s) {
-    // The plain v * tau correction of domain.md, "Cycle-lag compensation".
+    // The plain v * tau correction: it assumes the axis kept its speed through
+    // the delay, which is wrong while braking (docs/cli.md, "Compensation").
     return recorded_mm - direction * speed_mm_s * delay_s;
 }
 
@@ -213,8 +214,8 @@ CompensationComparison simulate_compensation(const CompensationSetup& setup) {
     out.trigger_position_mm = position_at(t_trigger);
     out.trigger_speed_mm_s = speed_at(t_trigger);
     // The delay a delay-stability test at constant speed finds for this control
-    // (domain.md, "Measuring the delay"): the lag plus, on average, the half
-    // cycle between the trigger and the end of its cycle.
+    // (the slope of its line, docs/cli.md, "Delay fit"): the lag plus, on
+    // average, the half cycle between the trigger and the end of its cycle.
     out.naive_delay_s = setup.naive_delay_s.value_or((lag + 0.5) * period);
 
     // Cycle j ends at tau_j = t_trigger - dt + j T: j = 0 and 1 bound the cycle

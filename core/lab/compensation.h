@@ -1,7 +1,6 @@
 #pragma once
 
-// Compensation of the trigger position (domain.md, "Latency: measuring it and
-// compensating it"; issue 4, "Compensation of the trigger position"):
+// Compensation of the trigger position (docs/cli.md, "Compensation"):
 // timestamp interpolation, cycle-lag compensation from a ring buffer of
 // encoder increments, and a simulator that compares them with the naive
 // v * tau correction, at constant speed and while braking.
@@ -32,8 +31,9 @@ std::uint64_t counter_mask(int counter_bits);
 // less than half its range.
 std::int64_t counter_increment(std::uint64_t previous, std::uint64_t current, int counter_bits);
 
-// The last 50 per-cycle feedback increments, in counts (the control's ring
-// buffer of domain.md, "Cycle-lag compensation").
+// The last 50 per-cycle feedback increments, in counts: the ring buffer a
+// control with cycle-lag compensation keeps, and whose last N increments it
+// subtracts from the recorded position.
 class IncrementRing {
   public:
     static constexpr std::size_t kCapacity = 50;
@@ -96,9 +96,9 @@ struct CompensationSetup {
     // The control records the position `lag_cycles` cycles after the end of the
     // cycle in which the probe triggered.
     int lag_cycles{8};
-    // The lag the cycle-lag compensation subtracts (issue 11: the published
-    // study compensated 7-9 cycles on a machine that lagged about 10). By
-    // default the true lag_cycles.
+    // The lag the cycle-lag compensation subtracts, set apart from the true lag
+    // (a published study compensated 7-9 cycles on a machine that lagged about
+    // 10). By default the true lag_cycles.
     std::optional<int> compensated_lag_cycles;
     // Where in its cycle the trigger falls: dt = phase * T_ipo, in [0, 1).
     double trigger_phase{0.4};

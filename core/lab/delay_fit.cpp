@@ -70,8 +70,8 @@ struct Curvature {
 };
 
 // Fits measured = p0 + d * (b u + c u^2), u = v / v_max, and compares it with
-// the line: a constant delay makes c vanish (domain.md, "Latency": the line of
-// the delay-stability test holds only when tau does not depend on v).
+// the line: a constant delay makes c vanish (the line of the delay-stability
+// test holds only when tau does not depend on v).
 std::optional<Curvature> curvature(const DelayGroup& group, std::span<const DelayTouch> touches,
                                    const LineFit& line) {
     const auto n = static_cast<Eigen::Index>(touches.size());
@@ -415,7 +415,7 @@ AppliedDelay delay_to_apply(const DelayFit& fit, const Scenario& scenario,
     applied.total_delay_s = chosen->delay_s;
     applied.latched = scenario.machine.latched_input;
     if (applied.latched) {
-        // Issue 11: latched in hardware when the signal arrives: tau = t_i.
+        // Latched in hardware when the signal arrives: tau = t_i.
         applied.key = "probe.interface_delay_s";
         applied.interface_delay_s = applied.total_delay_s;
         applied.previous_s = scenario.probe.interface_delay_s;

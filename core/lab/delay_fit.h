@@ -1,8 +1,7 @@
 #pragma once
 
-// The total trigger delay from touches at several feeds (domain.md, "Latency:
-// measuring it and compensating it", the delay-stability test of ISO 230-10;
-// issue 4, "Delay from touches at several feeds").
+// The total trigger delay from touches at several feeds: the delay-stability
+// test of ISO 230-10 (docs/cli.md, "Delay fit").
 
 #include <cstddef>
 #include <optional>
@@ -54,7 +53,8 @@ struct FeedScatter {
 struct DelayGroup {
     std::string axis;
     int direction{1};
-    // measured = p0 + direction * v * tau (domain.md, "Latency"), v = feed / 60.
+    // measured = p0 + direction * v * tau, v = feed / 60 (docs/cli.md, "Delay
+    // fit").
     double delay_s{0.0};                 // tau
     double zero_speed_position_mm{0.0};  // p0
     std::optional<double> lag_cycles;    // tau / T_ipo, when the period is given
@@ -87,8 +87,8 @@ struct DelayFit {
     std::vector<DelayGroup> groups;
 };
 
-// Parses `axis,direction,feed_mm_min,measured_mm` (issue 4). Throws CsvError
-// naming the line and column.
+// Parses `axis,direction,feed_mm_min,measured_mm`. Throws CsvError naming the
+// line and column.
 std::vector<DelayTouch> parse_delay_csv(std::string_view text);
 
 // Least-squares line per (axis, direction) over all touches. Throws CsvError
@@ -97,13 +97,13 @@ DelayFit fit_delay(std::span<const DelayTouch> touches, const DelayFitOptions& o
 
 // Putting a fitted delay into a scenario. The fitted tau is the whole delay
 // from trigger to recorded position: the interface, the controller, and on
-// average half a scan period (domain.md, "One touch", phases 3 and 4; issue 4's
-// mismatch formula counts the same three). The scenario keeps the interface
-// delay and the scan period as keys of their own, so the controller latency is
-// what remains: tau - t_i - t_s/2. With a latched input (issue 11) the position
-// is captured in hardware when the signal reaches the control, so tau is the
-// interface delay alone: it goes into probe.interface_delay_s, and the
-// controller latency (which still lengthens the overtravel) is left alone.
+// average half a scan period (docs/model.md, "One touch": phases 3 and 4; the
+// calibration's measurement delay tau counts the same three). The scenario
+// keeps the interface delay and the scan period as keys of their own, so the
+// controller latency is what remains: tau - t_i - t_s/2. With a latched input
+// the position is captured in hardware when the signal reaches the control, so
+// tau is the interface delay alone: it goes into probe.interface_delay_s, and
+// the controller latency (which still lengthens the overtravel) is left alone.
 struct AppliedDelay {
     std::string group;  // "X+", the group whose delay was used
     Message rule;       // why that group

@@ -35,7 +35,7 @@ std::string delay_fit_report_csv(std::span<const DelayTouch> touches,
                                                     : std::string(),
                      "s"});
 
-    // The keys of `latency fit`'s JSON (README), one row per group.
+    // The keys of `latency fit`'s JSON (docs/cli.md), one row per group.
     csv +=
         "\n# groups\ngroup,axis,direction,delay_s,zero_speed_position_mm,lag_cycles,"
         "compensation_lag_cycles,residual_2sigma_mm,touches\n";

@@ -1,6 +1,6 @@
 #pragma once
 
-// The delay fit's report, as CSV text (issue 12): the Latency tab's export
+// The delay fit's report, as CSV text: the Latency tab's export
 // and `latency fit --report`, the same bytes. The header and the number
 // formats of every report (report_header.h, csv_writer.h).
 

@@ -60,7 +60,7 @@ double feed_cap_mm_min(const Scenario& scenario) {
 // The largest start distance a bore or pocket allows (validate(): the
 // feature wider than two approaches), on the 0.01 mm grid; the key's maximum
 // for the rest.
-// Issue 28: the start rule. A start at least the part position uncertainty
+// The start rule: a start at least the part position uncertainty
 // plus the room to reach the probing feed (approach_room_mm), and never
 // closer than cycle.min_start_mm: no engineer starts a touch 10 um from a
 // wall whose place is known only to a casting's tolerance.
@@ -78,8 +78,9 @@ double approach_max_mm(const Cycle& cycle) {
     return std::min(key_max, steps / 100.0);
 }
 
-// The model's uncertainty of N averaged measuring touches at speed v (issue
-// 14; issue 28, the budget's fixed terms F): U(v, N)^2 = F^2 +
+// The model's uncertainty of N averaged measuring touches at speed v (the
+// uncertainty budget of docs/model.md, "One touch", F its fixed terms):
+// U(v, N)^2 = F^2 +
 // expanded_uncertainty_mm(scan_range_mm(machine, v), rep)^2 / N, solved for
 // the highest measuring feed whose U meets `bound_mm`;
 // kInf when every feed does, a negative value when none does. A first guess
@@ -210,7 +211,7 @@ class Search {
 
     const Scenario& base() const { return base_; }
     double cap_mm_min() const { return cap_mm_min_; }
-    // The slowest feed a touch may use (cycle.min_feed_mm_min, issue 28).
+    // The slowest feed a touch may use (cycle.min_feed_mm_min).
     double min_feed() const { return min_feed_mm_min_; }
     double overtravel_feed_mm_min() const { return overtravel_feed_mm_min_; }
     double start_feed_mm_min() const { return start_feed_mm_min_; }
@@ -755,7 +756,7 @@ void evaluate_point(const Scenario& scenario, ModelPoint& point) {
     point.cycle_time_s = result.total();
     point.uncertainty_mm = result.uncertainty_mm();
     point.overtravel_mm = result.checked_overtravel_mm();
-    // At the highest feed override, as the checks take them (issue 28).
+    // At the highest feed override, as the checks take them.
     point.first_overtravel_mm = result.first_touch().override_overtravel_mm;
     point.measuring_overtravel_mm = result.measuring_touch().override_overtravel_mm;
     point.recommended_backoff_mm = result.recommended_backoff_mm();
@@ -813,7 +814,7 @@ constexpr double kRelax = 1.1;
 // best by 0.46 ms in 5.18 s).
 constexpr double kMeaningfulSaving = 1e-3;
 
-// The binding requirements of `best` (see OptimiseResult::binding). Issue 28:
+// The binding requirements of `best` (see OptimiseResult::binding):
 // binding means that relaxing the requirement makes the best setting faster,
 // so each one that can be relaxed alone (the uncertainty bound, the
 // overtravel fraction, the probe's maximum feed, the part position
@@ -864,7 +865,7 @@ std::vector<Requirement> binding_requirements(Optimiser& optimiser, const Scenar
         changed.cycle.part_position_uncertainty_mm /= kRelax;
         start_binds = faster_with(changed, fraction);
     }
-    // Issue 28: the shortest start, relaxed as the part's uncertainty is.
+    // The shortest start, relaxed as the part's uncertainty is.
     if (!start_binds && scenario.cycle.min_start_mm > 0.0 &&
         b.approach_mm <= approach_up(scenario.cycle.min_start_mm) + 1e-9) {
         Scenario changed = scenario;
@@ -907,7 +908,7 @@ OptimiseResult optimise(const Scenario& given, const OptimiseRequirements& requi
     ModelPoint current;
     model(given, current);
     result.current = candidate_of(given, current);
-    // Issue 28: a feature's protected moves that would overrun the stylus
+    // A feature's protected moves that would overrun the stylus
     // (an obstruction met at the positioning feed, at the highest feed
     // override, stops at or past the probe's limit) make every setting
     // invalid, and no probing setting changes them: the search then runs with

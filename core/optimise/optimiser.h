@@ -1,10 +1,11 @@
 #pragma once
 
-// The optimiser (issue 14): the fastest settings of a cycle that still meet
-// the user's requirements, what they save against the current settings,
-// which requirement stops the cycle from being faster, and the Pareto front
-// of cycle time against uncertainty. Shared by `probecycle-cli optimise` and
-// the window. Pure: Scenario in, OptimiseResult out, no Qt.
+// The optimiser (docs/cli.md, "What should I change?"): the fastest settings of
+// a cycle that still meet the user's requirements, what they save against the
+// current settings, which requirement stops the cycle from being faster, and
+// the Pareto front of cycle time against uncertainty. Shared by
+// `probecycle-cli optimise` and the window. Pure: Scenario in, OptimiseResult
+// out, no Qt.
 //
 // Free: strategy, probing feed, measuring feed, backoff, start distance
 // (approach), repeats. Required of every setting returned:
@@ -63,7 +64,7 @@ struct Settings {
     double backoff_mm{0.0};
     double approach_mm{0.0};
     int repeats{1};
-    // A feature's protected positioning moves (issue 28): the optimiser lowers
+    // A feature's protected positioning moves: the optimiser lowers
     // the scenario's feed where an obstruction met at it (at the highest feed
     // override) would stop beyond the overtravel requirement. 0: the
     // scenario's.
@@ -94,7 +95,7 @@ enum class Requirement {
     start_distance,       // part position uncertainty + room to reach the feed, at least
                           // cycle.min_start_mm (and a bore's or pocket's size)
     repeats_limit,        // at most kMaxRepeats repeats
-    min_feed,             // cycle.min_feed_mm_min: no touch slower (issue 28)
+    min_feed,             // cycle.min_feed_mm_min: no touch slower
 };
 const char* to_string(Requirement requirement);
 

@@ -1,11 +1,11 @@
 #pragma once
 
-// The import of a cycle program's log (issue 28): the recorded touches
-// matched to the plan, the feature's result computed from them
-// (feature_result.h), checked against the result the program itself logged
-// where it computes one, as text and as JSON. All or nothing: a log the lab's
-// import refuses, or a result line that the touches do not give, is a
-// CsvError naming the line.
+// The import of a cycle program's log (docs/programs.md, "What the cycle
+// program measures"): the recorded touches matched to the plan, the feature's
+// result computed from them (feature_result.h), checked against the result the
+// program itself logged where it computes one, as text and as JSON. All or
+// nothing: a log the lab's import refuses, or a result line that the touches do
+// not give, is a CsvError naming the line.
 
 #include <string>
 #include <string_view>

@@ -58,7 +58,7 @@ namespace probecycle {
 //   writes it; so a G38.3 that does not trip writes its end point too (the
 //   manual says "each successful straight probe"; the source is followed),
 //   and the import counts the protected moves among the file's probes.
-// - A cycle's result (issue 28) in numbered parameters #110-#118:
+// - A cycle's result in numbered parameters #110-#118:
 //   overview.adoc, "Numbered Parameters": "31-5000 - G-code user parameters.
 //   These parameters are global in the G code file, and available for
 //   general use. Volatile."; expressions in [ ], ABS[...], the operators
@@ -205,7 +205,7 @@ const Dialect& grbl_dialect() {
 }
 
 // Fanuc-type macro B: Fanuc, and Haas with the macro option. Checked against
-// (each re-read with the search tool for issue 13):
+// (each passage re-read in the source named):
 // - G31: Fanuc Series 15i/150i-MA Operator's Manual p.564 ("G31 IP_ ;
 //   One-shot G code ... If an external skip signal is input during the
 //   execution of this command, execution of the command is interrupted and
@@ -274,7 +274,7 @@ const Dialect& grbl_dialect() {
 //   G40, G80, G90/G91, G94: Fanuc memory-card format (FS16i/18i-TB p.649: "A
 //   file starts with % or LF ... A file always ends with %"), the Rockwell
 //   8520 example "POPEN; BPRNT[...]; PCLOS; M30;".
-// - A cycle's result (issue 28) in the common variables #110-#118 (#100-#199
+// - A cycle's result in the common variables #110-#118 (#100-#199
 //   are common variables cleared at power off on Fanuc, 15i manual "Custom
 //   macro", variable types), with macro B's arithmetic ([ ], ABS[...], + - /)
 //   and comparisons (LE, EQ: the tutorial above), IF[...]GOTOn to an N label

@@ -1,11 +1,11 @@
 #pragma once
 
-// A control's G-code dialect as a small table of syntax (issue 13): the words
+// A control's G-code dialect as a small table of syntax: the words
 // of a probing move, a rapid and a feed move, a pause, and how the control
 // keeps the positions it probed. The generator (program_writer.h) reads the
 // table; a dialect is never a copy of the generator. Each table cites what
 // it was checked against in dialect.cpp; a detail that could not be checked
-// is left out (README, "Programs for your control").
+// is left out (docs/programs.md).
 
 #include <array>
 #include <optional>

@@ -133,11 +133,12 @@ std::optional<ResultSpec> result_spec(const ProbingPlan& plan) {
     return spec;
 }
 
-// Uncertainties (issue 28). Each point's expanded uncertainty U (k = 2) is
-// the model's whole budget (core/cycle/uncertainty.h). Its terms that differ
-// from touch to touch, U_i (the trigger's, lobing, the machine's
-// repeatability), are independent between the points; for a linear
-// combination y = sum c_i x_i, u(y)^2 = sum c_i^2 u_i^2 (GUM, eq. 10):
+// Uncertainties (docs/programs.md, "What the cycle program measures"). Each
+// point's expanded uncertainty U (k = 2) is the model's whole budget
+// (core/cycle/uncertainty.h). Its terms that differ from touch to touch, U_i
+// (the trigger's, lobing, the machine's repeatability), are independent between
+// the points; for a linear combination y = sum c_i x_i,
+// u(y)^2 = sum c_i^2 u_i^2 (GUM, eq. 10):
 // - a width x1 - x2: u^2 (1 + 1), sqrt(2) U_i;
 // - a centre (x1 + x2)/2: u^2 (1/4 + 1/4), U_i / sqrt(2);
 // - a bore's or boss's diameter, the mean of two widths

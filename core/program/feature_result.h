@@ -39,11 +39,11 @@ struct ResultSpec {
     // The model's expanded (k = 2) uncertainty of one measured point
     // (CycleResult::uncertainty_mm(), the mean of the repeats).
     double point_uncertainty_mm{0.0};
-    // Issue 28: its terms independent between the feature's points
+    // Its terms independent between the feature's points
     // (independent_expanded_uncertainty_mm; a plan without it: the whole
-    // point's), the calibration artefact's certified uncertainty (k = 2; a
-    // size carries it whole, a centre not) and the thermal drift's half-width
-    // (a centre carries it whole, a size not).
+    // point's), the calibration artefact's certified uncertainty (k = 2; a size
+    // carries it whole, a centre not) and the thermal drift's half-width (a
+    // centre carries it whole, a size not).
     double independent_uncertainty_mm{0.0};
     double artefact_uncertainty_mm{0.0};
     double thermal_drift_mm{0.0};

@@ -354,7 +354,7 @@ std::vector<RecordedPosition> read_grbl_positions(std::string_view text, const P
         reports.push_back(
             {number, *xyz, success == "1", std::string(line.substr(at, end - at + 1))});
     }
-    // The signature first (issue 29: the console names no plan otherwise).
+    // The signature first: the console names no plan otherwise.
     check_grbl_signature(reports, plan);
     std::vector<RecordedPosition> positions;
     for (std::size_t r = 4; r < reports.size(); ++r) {
@@ -593,8 +593,8 @@ bool is_signature_line(DialectId id, std::string_view line) {
     return false;
 }
 
-// A log of another control given as this one's (issue 29: a grbl console read
-// as a LinuxCNC log said "the log ends after 0 of the plan's 26 probe
+// A log of another control given as this one's (a grbl console read as a
+// LinuxCNC log once said only "the log ends after 0 of the plan's 26 probe
 // positions"): when no line is the chosen dialect's and one is another's,
 // say which, at that line.
 void check_dialect(DialectId chosen, std::string_view text) {

@@ -1,6 +1,6 @@
 #pragma once
 
-// Reading back what the control recorded (issue 13, "Reading back"): the
+// Reading back what the control recorded (docs/programs.md): the
 // positions of a program's recorded touches, matched one by one to the plan
 // that generated the program, as the lab's CSV (the delay CSV of
 // parse_delay_csv or the ring CSV of parse_ring_csv). All or nothing: a touch

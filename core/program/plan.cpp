@@ -68,8 +68,8 @@ CycleResult single_touch(const Scenario& scenario, double feed_mm_min, double ap
 
 // A touch's stop past its surface, worst case, as the model predicts it: at
 // the programmed feed (what the program's moves back from the stop count on)
-// and at up to the highest feed override (issue 28: what the stylus must
-// survive and the search must reach past).
+// and at up to the highest feed override (what the stylus must survive and
+// the search must reach past).
 struct TouchStops {
     double at_feed_mm{0.0};
     double at_override_mm{0.0};
@@ -370,18 +370,17 @@ void check_feature_plan(const Scenario& scenario, const CyclePlanOptions& option
     }
 }
 
-// Issue 13: a feature's touches as the cycle model moves (cycle.h,
-// start_radius_mm and lifts_over; cycle.cpp, evaluate_into), each with the
-// scenario's strategy (add_point). Every move toward the part is a protected
-// move at the positioning feed. A pocket or bore: from the centre at the
-// measuring depth, out to each touch's start and back to the centre. A boss
-// or web: from above the centre at the clearance height, per side out over
-// its start, down by the clearance, the touch toward the centre, back to the
-// start, up by the clearance at the rapid feed (away from the part, as the
-// model lifts) and back over the centre. Unlike the model, which moves
-// straight from start to start, the probe goes back through (or over) the
-// centre between touches: every move runs along one axis, and the program
-// ends where it started.
+// A feature's touches as the cycle model moves (cycle.h, start_radius_mm and
+// lifts_over; cycle.cpp, evaluate_into), each with the scenario's strategy
+// (add_point). Every move toward the part is a protected move at the
+// positioning feed. A pocket or bore: from the centre at the measuring depth,
+// out to each touch's start and back to the centre. A boss or web: from above
+// the centre at the clearance height, per side out over its start, down by the
+// clearance, the touch toward the centre, back to the start, up by the
+// clearance at the rapid feed (away from the part, as the model lifts) and back
+// over the centre. Unlike the model, which moves straight from start to start,
+// the probe goes back through (or over) the centre between touches: every move
+// runs along one axis, and the program ends where it started.
 void add_feature_touches(ProbingPlan& plan, const Scenario& scenario,
                          const CyclePlanOptions& options) {
     const Cycle& c = scenario.cycle;
@@ -629,7 +628,7 @@ void add_result_values(ProbingPlan& plan, const Scenario& scenario,
     add_value(plan, kBallDiameterValue, options.ball_diameter_mm);
     const CycleResult model = evaluate(scenario);
     add_value(plan, kPointUncertaintyValue, std::round(model.uncertainty_mm() * 1e6) / 1e6);
-    // Issue 28: how the point's budget splits between its points (a size or
+    // How the point's budget splits between its points (a size or
     // a centre combines them; feature_result.cpp).
     add_value(plan, kIndependentUncertaintyValue,
               std::round(independent_expanded_uncertainty_mm(

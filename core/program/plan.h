@@ -1,7 +1,7 @@
 #pragma once
 
-// What a probing program does, before it is written in a control's dialect
-// (issue 13): the delay-stability test, the ring-gauge calibration and the
+// What a probing program does, before it is written in a control's dialect:
+// the delay-stability test, the ring-gauge calibration and the
 // tuned cycle as a list of steps, each an incremental move from where the
 // previous one left the probe. The generator (program_writer.h) writes the
 // steps in a dialect; the importer (machine_log.h) matches what the control
@@ -83,7 +83,7 @@ constexpr std::size_t kMaxPlanSteps = 20000;
 constexpr std::size_t kMaxPlanFeeds = 20;
 constexpr std::size_t kMaxPauseTextChars = 200;
 
-// The delay-stability test (domain.md, "Latency"; ISO 230-10) along one axis
+// The delay-stability test (ISO 230-10; docs/cli.md, "Delay fit") along one axis
 // and direction: `repeats` touches at each feed, each from the distance the axis needs to
 // reach that feed (approach_room_mm) plus `margin_mm`, so every touch is at
 // full speed. The program opens with a pause (the operator checks that the
@@ -104,10 +104,11 @@ struct DelayPlanOptions {
     double margin_mm{1.0};
     double placement_mm{10.0};
 };
-// The default feeds of the test (issue 13).
+// The default feeds of the test: 30, 100, 300, 1000 and 2000 mm/min and the
+// scenario's probing feed (docs/programs.md, `program delay`).
 std::vector<double> default_delay_feeds(const Scenario& scenario);
 
-// The ring-gauge calibration (domain.md, "Calibration"): from the gauge
+// The ring-gauge calibration (docs/cli.md, "Ring gauge"): from the gauge
 // centre, touches at X+, X-, Y+, Y- with the spindle at 0 deg, then the same
 // four at 180 deg (the operator turns the spindle at a pause; every return is
 // measured from the wall, so the probe is back at the centre), each point the scenario's
@@ -169,15 +170,15 @@ ProbingPlan parse_probing_plan(std::string_view text);
 // LinuxCNC log carry it, so that a log from another plan is told apart.
 std::string plan_id(const ProbingPlan& plan);
 
-// grbl's console holds no text of the program's (issue 29: a console from
-// another plan with the same count of probes imported silently, every touch
-// under the wrong feed). The grbl program therefore opens with a signature
-// of the plan that grbl reports itself: twice, a protected move (G38.3) out
-// in free air of kSignatureOut + d mm, then one back of d mm and a rapid
-// back of kSignatureOut, where d = kSignatureFirst + code * kSignatureStep
-// (two codes, each < kSignatureCodes, from the plan id). grbl answers each
-// protected move with [PRB:...:0], so the import reads d from two reports'
-// difference, whatever the start. One code in 6400 is shared by chance.
+// grbl's console holds no text of the program's (without more, a console from
+// another plan with the same count of probes would import silently, every touch
+// under the wrong feed). The grbl program therefore opens with a signature of
+// the plan that grbl reports itself: twice, a protected move (G38.3) out in
+// free air of kSignatureOut + d mm, then one back of d mm and a rapid back of
+// kSignatureOut, where d = kSignatureFirst + code * kSignatureStep (two codes,
+// each < kSignatureCodes, from the plan id). grbl answers each protected move
+// with [PRB:...:0], so the import reads d from two reports' difference,
+// whatever the start. One code in 6400 is shared by chance.
 // The probe goes at most kSignatureOut + the largest d (1.09 mm) out, along
 // Z+ (Z- when the plan's first probe moves along Z+, away from its surface).
 constexpr int kSignatureCodes = 80;

@@ -159,8 +159,8 @@ std::optional<double> next_orientation(const ProbingPlan& plan, std::size_t at) 
 }
 
 // A cycle's result (feature_result.h) in the variables of a control that
-// computes, the same numbers in every such dialect (README, "What the cycle
-// program measures"): #110-#113 the mean stylus-centre coordinate of each
+// computes, the same numbers in every such dialect (docs/programs.md, "What
+// the cycle program measures"): #110-#113 the mean stylus-centre coordinate of each
 // side, #114 the size (a surface: its position), #115 and #116 the centre's
 // X and Y, #117 the deviation from the nominal size, #118 1 when out of
 // tolerance.

@@ -1,11 +1,12 @@
 #pragma once
 
-// A probing plan as a program in a control's dialect (issue 13). The program
-// opens with a header of comments: what it does, the plan's id, the date, the
-// scenario values the plan used, the warning to prove it out at reduced rapid
-// override with the probe clear of the part, and where the control puts the
-// positions. Every move is incremental (G91) from where the probe stands, so
-// the program never drives to a coordinate the user did not choose.
+// A probing plan as a program in a control's dialect (docs/programs.md). The
+// program opens with a header of comments: what it does, the plan's id, the
+// date, the scenario values the plan used, the warning to prove it out at
+// reduced rapid override with the probe clear of the part, and where the
+// control puts the positions. Every move is incremental (G91) from where the
+// probe stands, so the program never drives to a coordinate the user did not
+// choose.
 
 #include <string>
 

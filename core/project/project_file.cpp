@@ -333,7 +333,7 @@ bool is_project_text(std::string_view text) {
     // project, with the project's messages). Nor has it a "format" key or a
     // "scenario" section: a file with both is a project whose format is
     // wrong, refused for that one thing rather than for every section a
-    // scenario does not know (issue 29).
+    // scenario does not know.
     return text.find(std::string("\"") + kFormat + "\"") != std::string_view::npos ||
            (text.find("\"format\"") != std::string_view::npos &&
             text.find("\"scenario\"") != std::string_view::npos);

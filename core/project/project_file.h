@@ -1,7 +1,7 @@
 #pragma once
 
-// The window's whole session as one file (issue 12, "Nothing the user made is
-// lost"; README, "The project file"): the scenario, the pinned baseline, the
+// The window's whole session as one file, so that nothing the user made is lost
+// (docs/files.md, "The project file"): the scenario, the pinned baseline, the
 // lab's inputs and the fits on screen, the compensation setup and the
 // Comparison tab's files and settings. JSON, versioned:
 //   {"format": "probecycle-project", "version": 1,

@@ -1,4 +1,4 @@
-// probecycle-cli run as a subprocess, as a user runs it (issue 2, "probecycle-cli").
+// probecycle-cli run as a subprocess, as a user runs it (docs/cli.md).
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -243,7 +243,7 @@ TEST_F(CycleCli, EvaluateSingleTouchFileMatchesTheHandComputation) {
     EXPECT_NEAR(j["trigger_speed_mm_min"].get<double>(), 3000.0, 1e-6);
     EXPECT_NEAR(j["trigger_uncertainty_mm"].get<double>(),
                 2.0 * std::sqrt(0.2 * 0.2 / 12.0 + 0.001 * 0.001 / 4.0), 1e-7);
-    // Issue 28: with the budget's fixed terms at their defaults (lobing +-1 um,
+    // With the budget's fixed terms at their defaults (lobing +-1 um,
     // artefact 1 um k = 2, machine 2 um 2 sigma, thermal +-2 um).
     const double fixed_u2 = 1e-6 * (1.0 / 3.0 + 0.25 + 1.0 + 4.0 / 3.0);
     EXPECT_NEAR(j["uncertainty_mm"].get<double>(),
@@ -253,7 +253,7 @@ TEST_F(CycleCli, EvaluateSingleTouchFileMatchesTheHandComputation) {
     EXPECT_EQ(budget["lines"][5]["key"], "machine.thermal_drift_mm");
     EXPECT_NEAR(budget["lines"][5]["standard_mm"].get<double>(), 0.002 / std::sqrt(3.0), 1e-12);
     EXPECT_NEAR(budget["expanded_mm"].get<double>(), j["uncertainty_mm"].get<double>(), 1e-15);
-    // Issue 28: the same touch at the default 120 % feed override, 3600 mm/min,
+    // The same touch at the default 120 % feed override, 3600 mm/min,
     // stops 0.005 + 60 x 0.038 = 2.285 mm past: the checks and the
     // recommended backoff take that (2.285 + 0.2 reseat).
     EXPECT_NEAR(j["checked_overtravel_mm"].get<double>(), 2.285, 1e-6);
@@ -308,7 +308,7 @@ TEST_F(CycleCli, SetWorksWithoutAFile) {
     EXPECT_EQ(phase_names(j).size(), 6u);
 }
 
-// Issue 11: a cycle the model cannot run is flagged, with the errors that say why.
+// A cycle the model cannot run is flagged, with the errors that say why.
 TEST_F(CycleCli, EvaluateFlagsAnInvalidCycle) {
     EXPECT_EQ(run_json({"evaluate"})["valid"], true);
     const json j = run_json({"evaluate", "--set", "cycle.backoff_mm=0.5"});
@@ -427,7 +427,7 @@ TEST_F(CycleCli, SweepWithAFileAndSettings) {
     EXPECT_NE(r.err.find("1200"), std::string::npos) << r;
 }
 
-// Issue 11: the knee among valid feeds with the scenario's tolerance; a fastest
+// The knee among valid feeds with the scenario's tolerance; a fastest
 // cycle at the end of the sweep is said on the summary line.
 TEST_F(CycleCli, SweepSummarySaysWhenTheFastestCycleIsAtTheEndOfTheRange) {
     const CliRun at_end =
@@ -499,7 +499,7 @@ TEST_F(CycleCli, ReportIsTheCoreCsvReportOnStdoutOrInAFile) {
     ::unsetenv("SOURCE_DATE_EPOCH");
 }
 
-// Issue 12: the report opens with its title, today's date, the version and
+// The report opens with its title, today's date, the version and
 // the scenario's file name ("untitled" for the defaults).
 TEST_F(CycleCli, ReportHeaderNamesTheDateVersionAndScenarioFile) {
     const std::string file = data_file("scenario_single_touch_3000.json");

@@ -104,7 +104,7 @@ TEST(CompareCli, TheReportIsTheTabsCsv) {
     const CliRun r = run(run_args(kSet) + block_args(kSet) + " --report " + quote(report));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string text = read(report);
-    // The header of every report (issue 12), the test part's file as its subject.
+    // The header of every report, the test part's file as its subject.
     EXPECT_EQ(text.rfind("# ProbeCycle comparison report\n# date,", 0), 0u) << text;
     EXPECT_NE(text.find("\n# test_omm,test_omm.csv\n"), std::string::npos) << text;
     EXPECT_NE(text.find("\n# c_axis\n"), std::string::npos);

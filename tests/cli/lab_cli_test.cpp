@@ -1,4 +1,4 @@
-// The lab subcommands (issue 4) run as a user runs them: a subprocess, its
+// The lab subcommands (docs/cli.md) run as a user runs them: a subprocess, its
 // stdout, stderr and exit status, and the files it writes or must not write.
 
 #include <gtest/gtest.h>
@@ -165,7 +165,7 @@ TEST(LabCalibrateRing, ReportFileIsTheCalibrationReport) {
     EXPECT_NE(text.find("\n# points,lab_ring.csv\n\n# ring\n"), std::string::npos) << text;
 }
 
-// Issue 12: `latency fit --report` writes the Latency tab's report, the
+// `latency fit --report` writes the Latency tab's report, the
 // golden file of its example (golden_test.cpp) with its header.
 TEST(LabLatencyFit, ReportFileIsTheDelayFitReport) {
     const LabTempDir dir;
@@ -309,7 +309,8 @@ TEST(LabLatencyFit, ApplyToWritesTheControllerLatency) {
     EXPECT_EQ(run_lab_cli("evaluate " + lab_quote(scenario.string())).exit_code, 0);
 }
 
-// Issue 11, loose end 1: with a latched input the fit is the interface delay.
+// With a latched input the fit is the interface delay: the position is
+// captured when the signal reaches the control.
 TEST(LabLatencyFit, ApplyToALatchedScenarioWritesTheInterfaceDelayAndSaysSo) {
     const LabTempDir dir;
     const fs::path scenario = dir / "scenario.json";
@@ -366,7 +367,7 @@ TEST_P(LabApplyErrors, WriteNothing) {
     const fs::path scenario = dir / "scenario.json";
     lab_write_scenario(scenario, c.interface_delay_s);
     const std::string before = lab_read(scenario);
-    // With --report too: a refusal writes no report either (issue 29).
+    // With --report too: a refusal writes no report either.
     const auto run = run_lab_cli("latency fit " + lab_quote(lab_data(c.csv)) + " --apply-to " +
                                  lab_quote(scenario.string()) + " --report " +
                                  lab_quote((dir / "report.csv").string()) + " " + c.extra);
@@ -439,7 +440,8 @@ TEST(LabLatencyCompensate, ConstantSpeedDefaults) {
     EXPECT_NEAR(lab_method_error(out, "timestamp"), 0.0, 1e-4);
 }
 
-// Issue 11, loose end 7: the true lag and the compensated lag apart.
+// The true lag and the compensated lag apart: a compensation may subtract
+// fewer cycles than the machine lags.
 TEST(LabLatencyCompensate, CompensatedLagApartFromTheTrueLag) {
     const auto run =
         run_lab_cli("latency compensate --lag-cycles 10 --compensated-lag-cycles 8 --lag-sweep");

@@ -30,7 +30,7 @@ TEST(OptimiseCli, PrintsBestCurrentSavedBindingAndPareto) {
     EXPECT_DOUBLE_EQ(out["saved_s"].get<double>(), out["current"]["cycle_time_s"].get<double>() -
                                                        out["best"]["cycle_time_s"].get<double>());
     EXPECT_LE(out["best"]["uncertainty_mm"].get<double>(), 0.005);  // the example's target
-    // Issue 28: the target holds for the whole budget (3.4 um of it fixed
+    // The target holds for the whole budget (3.4 um of it fixed
     // by default), so the measuring feed spends what is left of 5 um and the
     // target binds.
     EXPECT_EQ(out["binding"], json::array({"target_uncertainty"}));

@@ -1,7 +1,7 @@
-// Outputs never lost, half-written or wrong (issue 29): a failed write to
-// standard output is an error, a refused command writes nothing, and an
-// output of several files (a program and its plan, a comparison's set) is
-// written whole or not at all.
+// Outputs never lost, half-written or wrong (docs/files.md, "Limits on input
+// and output"): a failed write to standard output is an error, a refused
+// command writes nothing, and an output of several files (a program and its
+// plan, a comparison's set) is written whole or not at all.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>

@@ -69,7 +69,7 @@ class DelayLabOnLinuxCnc(unittest.TestCase):
             csv_text = lcnc_support.cli("import", "--dialect", "linuxcnc", "--plan",
                                         self.plans[axis], log).stdout
             csv_files.append(csv_text)
-        # Both programs' imports pasted together, as the README says.
+        # Both programs' imports pasted together, as docs/programs.md says.
         lines = csv_files[0].splitlines()
         for more in csv_files[1:]:
             lines += [line for line in more.splitlines()[1:] if not line.startswith("#")][1:]

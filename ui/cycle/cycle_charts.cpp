@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kFeedLo = kKneeSearchFrom_mm_min;
 constexpr double kFeedHi = kKneeSearchTo_mm_min;
-// Issue 12: the feed axes reach this factor beyond the sweep (a knee dot at
+// The feed axes reach this factor beyond the sweep (a knee dot at
 // 10000 mm/min was cut in half).
 constexpr double kFeedPad = 1.15;
 // The log time axis reaches this fraction of its span beyond the whole decades
@@ -142,7 +142,7 @@ void fill_sweep(QList<QPointF>& out, const SweepResult& sweep, double SweepPoint
     }
 }
 
-// Issue 12: moves the points of a sweep's curve that `keep` refuses into
+// Moves the points of a sweep's curve that `keep` refuses into
 // `out` (with the kept neighbours that join the two, so the line stays whole)
 // and breaks the curve there (NaN); `out` is all NaN when every point is
 // kept. Returns whether any point moved. A point already broken stays broken.
@@ -171,7 +171,7 @@ bool split_invalid(QList<QPointF>& curve, QList<QPointF>& invalid, const SweepRe
     return split_off(curve, invalid, sweep, [](const SweepPoint& p) { return p.valid(); });
 }
 
-// Issue 28: the valid feeds the first touch never reaches from its start
+// The valid feeds the first touch never reaches from its start
 // (dotted, in the curve's colour): not the programmed feed, and not the knee's.
 bool split_unreached(QList<QPointF>& curve, QList<QPointF>& unreached, const SweepResult& sweep) {
     return split_off(curve, unreached, sweep,
@@ -274,7 +274,7 @@ void CycleCharts::build() {
     // The scenario's own cycle: above the two-touch curve by what its backoff wastes.
     ct_cycle_ = add(QStringLiteral("cycle_time.current"), cycle_time_,
                     cycle_time_->add_markers({QStringLiteral("c"), kMarkerColour}, 9.0));
-    // An invalid cycle has no cycle time to plot (issue 12): its feed is a red
+    // An invalid cycle has no cycle time to plot: its feed is a red
     // dashed line across the chart, named as invalid in the legend, in place
     // of the dot and of the feed's grey line, only while the cycle is invalid.
     ct_cycle_invalid_ =
@@ -328,8 +328,8 @@ void CycleCharts::build() {
                                                  Dash::solid, Side::right}));
     ot_feed_ = add(QStringLiteral("overtravel.probe_feed"), overtravel_,
                    overtravel_->add_line({{}, kMarkerColour, 1.5}));
-    // Issue 28: named in the legend (two-touch), and the cycle's own
-    // uncertainty, the readout's figure, marked on it: at the measuring feed.
+    // Named in the legend (two-touch), and the cycle's own uncertainty, the
+    // readout's figure, marked on it: at the measuring feed.
     ot_measure_feed_ =
         add(QStringLiteral("overtravel.measure_feed"), overtravel_,
             overtravel_->add_line({QStringLiteral("m"), kUncertaintyColour, 1.5, Dash::dotted}));
@@ -560,7 +560,7 @@ void CycleCharts::draw_phases(const Computed& c) {
     }
     QStringList labels;
     labels.resize(rows);
-    // Issue 12: one unit down the column of times, not s and ms mixed.
+    // One unit down the column of times, not s and ms mixed.
     std::vector<double> times(static_cast<std::size_t>(rows));
     for (Phase phase : all_phases()) {
         const int row = order[static_cast<std::size_t>(phase)];
@@ -608,14 +608,14 @@ void CycleCharts::draw_phases(const Computed& c) {
         const std::size_t k = static_cast<std::size_t>(phase);
         const Ref& ref = phase_areas_[k];
         ref.plot->set_area(ref.curve, phase_upper_[k], phase_lower_[k]);
-        // Issue 12: an invalid cycle's phases are grey, as the cycle-time
+        // An invalid cycle's phases are grey, as the cycle-time
         // chart's invalid stretches: no bar of it looks like a cycle that runs.
         ref.plot->set_fill(ref.curve, cycle_valid_ ? phase_colour(phase) : kInvalidStretchColour);
         ref.plot->set_visible(ref.curve, phase_present_[k]);
     }
 }
 
-// Issue 28: the curves are the overtravel the limit is checked against, at
+// The curves are the overtravel the limit is checked against, at
 // the highest feed override; their names say so.
 void CycleCharts::name_overtravel_curves() {
     if (overtravel_override_pct_ > 100.0) {
@@ -692,7 +692,7 @@ void CycleCharts::draw_overtravel(const Computed& c) {
         line2_.clear();
     }
     set(ot_target_, line2_);
-    // Issue 12: no "Target" in the legend without a target.
+    // No "Target" in the legend without a target.
     overtravel_->set_visible(ot_target_.curve, target_um > 0.0);
 
     // Shade from the first feed whose overtravel reaches the limit (overtravel grows with feed).

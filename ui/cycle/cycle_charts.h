@@ -104,7 +104,7 @@ class CycleCharts : public QWidget {
     // Curves, by chart.
     Ref ct_single_, ct_two_, ct_feed_, ct_knee_, ct_cycle_, ct_base_single_, ct_base_two_;
     Ref ct_cycle_invalid_;  // the scenario's own feed when the model marks its cycle invalid
-    // Issue 12: the stretches of each curve where the cycles are invalid, grey.
+    // The stretches of each curve where the cycles are invalid, grey.
     Ref ct_single_invalid_, ct_two_invalid_, ct_single_unreached_, ct_two_unreached_;
     std::array<Ref, kPhaseCount> phase_areas_{};
     Ref ot_overtravel_, ot_overtravel2_, ot_limit_, ot_beyond_, ot_uncertainty_, ot_target_,
@@ -118,7 +118,7 @@ class CycleCharts : public QWidget {
     // Two-touch draws each touch's overtravel (a fast first touch can
     // overtravel less than the second); the legend names them then.
     bool two_touch_overtravel_{false};
-    // The feed override the overtravel curves are at (issue 28), in %.
+    // The feed override the overtravel curves are at, in %.
     double overtravel_override_pct_{100.0};
     void name_overtravel_curves();
     Buffer line_, line2_, band_upper_, band_lower_, knee_, current_cycle_, cycle_uncertainty_;

@@ -328,7 +328,7 @@ void OptimisePanel::show_result() {
         return;
     }
     const OptimiseResult& r = *result_;
-    // The overtravel the checks take (issue 28): at the highest feed override.
+    // The overtravel the checks take: at the highest feed override.
     if (QTableWidgetItem* header = table_->verticalHeaderItem(row_count - 1)) {
         header->setText(
             tr("Overtravel at %1 %")

@@ -1,10 +1,11 @@
 #pragma once
 
-// "What should I change?" (issue 14): the requirements, the fastest settings
-// that meet them beside the current ones, the time (and money) saved, what
-// limits the cycle in plain words, what else would save time, one click to
-// apply, and the Pareto front of cycle time against uncertainty. It runs the
-// core's optimiser (core/optimise/optimiser.h), the CLI's `optimise`.
+// "What should I change?" (docs/window.md, the Optimise tab): the
+// requirements, the fastest settings that meet them beside the current ones,
+// the time (and money) saved, what limits the cycle in plain words, what else
+// would save time, one click to apply, and the Pareto front of cycle time
+// against uncertainty. It runs the core's optimiser (core/optimise/optimiser.h),
+// the CLI's `optimise`.
 
 #include <QList>
 #include <QPointF>
@@ -55,7 +56,7 @@ class OptimisePanel : public QWidget {
     QList<QStringList> table_rows() const;
     QList<QPointF> pareto_points() const;  // (uncertainty µm, cycle time s)
     // The uncertainty every setting had to meet, a vertical line on the
-    // Pareto chart (issue 28): its x in µm, none before a result.
+    // Pareto chart: its x in µm, none before a result.
     QList<QPointF> bound_points() const;
     QPair<double, double> pareto_x_range() const;
 

@@ -177,7 +177,7 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
     std::array<double, kReadoutCount> base{};
     std::array<bool, kReadoutCount> has_delta{};
 
-    // Cycle time; an invalid cycle (issue 11) shows no time, but what makes it invalid.
+    // Cycle time; an invalid cycle shows no time, but what makes it invalid.
     now[0] = r.total();
     if (r.valid()) {
         cards_[0].value->setText(format_seconds(r.total()));
@@ -193,8 +193,8 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
         set_alert(cards_[0], Alert::alarm);
     }
 
-    // Overtravel against the limit; issue 28: the limit holds at the highest
-    // feed override, whose figure the detail gives.
+    // Overtravel against the limit; the limit holds at the highest feed
+    // override, whose figure the detail gives.
     const double limit = s.probe.overtravel_limit_mm;
     const double share = r.checked_overtravel_mm() / limit;
     now[1] = r.overtravel_mm();
@@ -238,8 +238,8 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
     const double target = s.cycle.target_uncertainty_mm;
     now[3] = r.uncertainty_mm();
     cards_[3].value->setText(format_length(r.uncertainty_mm()));
-    // Issue 28: the figure is the whole budget; the detail names the
-    // trigger's part of it, the tooltip shows the budget line by line.
+    // The figure is the whole budget; the detail names the trigger's part of
+    // it, the tooltip shows the budget line by line.
     detail[3] = target > 0.0 ? tr("target %1").arg(format_length(target))
                              : tr("trigger %1").arg(format_length(r.trigger_uncertainty_mm()));
     const QString budget =

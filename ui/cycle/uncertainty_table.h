@@ -1,6 +1,6 @@
 #pragma once
 
-// The uncertainty budget (issue 28, core/cycle/uncertainty.h) as a table the
+// The uncertainty budget (core/cycle/uncertainty.h) as a table the
 // window and the PDF report show: one row per term, then the combined and
 // the expanded uncertainty. The readout's tooltip and the report read the
 // same rows.

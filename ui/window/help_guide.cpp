@@ -11,8 +11,9 @@ namespace probecycle::ui {
 
 namespace {
 
-// Each paragraph is one text to translate; the formulas are the README's
-// ("One touch", "Strategies and features", "The calibration and latency lab").
+// Each paragraph is one text to translate; the formulas are those of
+// docs/model.md ("One touch", "Strategies and features") and docs/cli.md ("The
+// calibration and latency lab").
 QString section(const QString& title, const QString& body) {
     return QStringLiteral("<h3>%1</h3><p>%2</p>").arg(title, body);
 }
@@ -82,6 +83,8 @@ QString help_guide_html(const QString& readme_path) {
             "into the scenario. The Calibration tab fits the stylus's runout and effective "
             "radius from a ring gauge touched at spindle 0&deg; and 180&deg;."));
     if (!readme_path.isEmpty()) {
+        // The sections named here are in docs/ now, and the README's links name
+        // them; the text is translated, so it stays as it is.
         html += section(HelpGuide::tr("More"),
                         HelpGuide::tr("The README explains the model in full: sections "
                                       "\"The model\", \"One touch\", \"Cycle time against "

@@ -839,11 +839,11 @@ TEST(ApplySetting, NegativeZeroIsWrittenAsZero) {
     EXPECT_FALSE(std::signbit(direct.cycle.backoff_mm));
 }
 
-// The README's table of keys tells the same story as the key table: every
-// key, with its default, and no other.
-TEST(KeyTable, TheReadmeListsEveryKeyWithItsDefault) {
-    std::ifstream in(PROBECYCLE_README_PATH);
-    ASSERT_TRUE(in) << PROBECYCLE_README_PATH;
+// The table of keys in docs/files.md ("The scenario file") tells the same story
+// as the key table: every key, with its default, and no other.
+TEST(KeyTable, TheDocsListEveryKeyWithItsDefault) {
+    std::ifstream in(PROBECYCLE_FILES_DOC_PATH);
+    ASSERT_TRUE(in) << PROBECYCLE_FILES_DOC_PATH;
     std::map<std::string, std::string> rows;  // key -> default column
     std::string line;
     while (std::getline(in, line)) {
@@ -860,11 +860,13 @@ TEST(KeyTable, TheReadmeListsEveryKeyWithItsDefault) {
     const Scenario defaults;
     for (const KeyInfo& key : scenario_keys()) {
         const auto it = rows.find(key.key);
-        ASSERT_NE(it, rows.end()) << key.key << " is not in the README's key table";
+        ASSERT_NE(it, rows.end()) << key.key << " is not in the key table of docs/files.md";
         EXPECT_EQ(it->second, value_text(defaults, key)) << key.key;
         rows.erase(it);
     }
-    for (const auto& [key, value] : rows) ADD_FAILURE() << key << " is in the README but not a key";
+    for (const auto& [key, value] : rows) {
+        ADD_FAILURE() << key << " is in docs/files.md but not a key";
+    }
 }
 
 }  // namespace

@@ -27,10 +27,10 @@ struct RingCaseName {
     }
 };
 
-// A ring-gauge measurement built from the convention of issue 4: the ball
-// centre touches the bore at gauge radius - ball radius (per direction), and
-// the machine records ball centre - runout at 0 deg, ball centre + runout at
-// 180 deg.
+// A ring-gauge measurement built from the convention of docs/cli.md, "Ring
+// gauge": the ball centre touches the bore at gauge radius - ball radius (per
+// direction), and the machine records ball centre - runout at 0 deg, ball
+// centre + runout at 180 deg.
 struct SyntheticRing {
     double center_x_mm{100.0};
     double center_y_mm{-200.0};

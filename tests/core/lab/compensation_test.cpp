@@ -193,9 +193,9 @@ INSTANTIATE_TEST_SUITE_P(
     CompensationCaseName{});
 // clang-format on
 
-// Issue 11, loose end 7: the machine lags N = 10 cycles, the compensation
-// subtracts N_c. At constant speed the cycle-lag result is the position at the
-// end of cycle 1 + N - N_c: an error of v ((1 + N - N_c) T - dt).
+// The machine lags N = 10 cycles, the compensation subtracts N_c. At constant
+// speed the cycle-lag result is the position at the end of cycle 1 + N - N_c:
+// an error of v ((1 + N - N_c) T - dt).
 TEST(SimulatedWrongLag, EachCycleTooFewLeavesVTMoreError) {
     CompensationSetup setup;
     setup.lag_cycles = 10;

@@ -26,7 +26,7 @@ struct LatencyCaseName {
     }
 };
 
-// Touches on the model of domain.md, "Latency": measured = p0 + dir * v * tau.
+// Touches on the delay-stability test's model: measured = p0 + dir * v * tau.
 void add_touches(std::vector<DelayTouch>& touches, const std::string& axis, int direction,
                  double p0_mm, double tau_s, std::initializer_list<double> feeds_mm_min,
                  int repeats) {
@@ -95,7 +95,7 @@ TEST(DelayFit, ExactDataBothDirections) {
     EXPECT_NEAR(zm.zero_speed_position_mm, -123.456, 1e-11);
 }
 
-// Issue 4, "Apply": controller latency = tau - t_i - t_s/2 (no t_s/2 when latched).
+// Apply: controller latency = tau - t_i - t_s/2 (no t_s/2 when latched).
 TEST(ApplyDelay, ControllerLatencyIsTheDelayLessInterfaceAndHalfScan) {
     std::vector<DelayTouch> touches;
     add_touches(touches, "X", +1, 10.0, 0.0085, {100, 1000, 2000}, 2);
@@ -118,7 +118,7 @@ TEST(ApplyDelay, ControllerLatencyIsTheDelayLessInterfaceAndHalfScan) {
     EXPECT_NEAR(x.value_s, 0.0085 - 0.002 - 0.002, 1e-12);
     EXPECT_NEAR(apply_delay(scenario, x).machine.controller_latency_s, 0.0045, 1e-12);
 
-    // Latched (issue 11): the position is captured when the signal arrives, so
+    // Latched: the position is captured when the signal arrives, so
     // the whole fitted delay is the interface delay; the latency is left alone.
     scenario.machine.latched_input = true;
     const AppliedDelay latched = delay_to_apply(fit, scenario, std::string("X+"));
@@ -184,8 +184,8 @@ TEST(DelayFit, NoLagCyclesWithoutAPeriod) {
 
 TEST(DelayFit, ScannedInputNoisyFixedSeed) {
     // A scanned skip input: the wait for the next scan is uniform in [0, t_s],
-    // so the touches measure tau + t_s / 2 on average (domain.md, "Controller
-    // response"), with scatter v * t_s / sqrt(12) plus the repeatability.
+    // so the touches measure tau + t_s / 2 on average (docs/model.md, "One
+    // touch", phase 4), with scatter v * t_s / sqrt(12) plus the repeatability.
     // Tolerance: 4 standard errors of the least-squares slope and intercept,
     // computed from those variances.
     const double tau_s = 0.006, scan_s = 0.004, repeatability_mm = 0.0005, p0_mm = 50.0;

@@ -1,4 +1,4 @@
-// The optimiser (core/optimise/optimiser.h, issue 14): on varied scenarios
+// The optimiser (core/optimise/optimiser.h): on varied scenarios
 // (every acceleration model, a filter after interpolation, both strategies,
 // surface, bore, pocket and boss, a latched input, a part position
 // uncertainty, a probe's maximum feed) its best setting meets every
@@ -6,7 +6,7 @@
 // the fastest a brute force over a grid of every free setting finds; a
 // hand-computed case; impossible requirements; the Pareto front. The brute
 // force runs on evaluate() and on a stand-in for the model once it averages
-// repeats (issue 14, in progress), where it tries repeat counts up to 20.
+// repeats, where it tries repeat counts up to 20.
 
 #include "core/optimise/optimiser.h"
 
@@ -34,7 +34,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // The search is tested on the trigger's part of the uncertainty, which the
 // feeds and the repeats change, so the hand computations stay short: the
 // budget's fixed terms are zero here unless a case sets them (as
-// OptimiserBudget's tests do; uncertainty.h). So are the bounds of issue 28
+// OptimiserBudget's tests do; uncertainty.h). So are the optimiser's bounds
 // (a known part, no shortest start, 1 mm/min the slowest feed), which
 // OptimiserBounds' tests set.
 Scenario without_fixed_terms(Scenario s) {
@@ -363,9 +363,9 @@ INSTANTIATE_TEST_SUITE_P(Optimise, OptimiserAgainstBruteForce, testing::Values(
     [](const testing::TestParamInfo<BruteCase>& case_info) { return std::string(case_info.param.name); });
 // clang-format on
 
-// A stand-in for the model once repeats are averaged (issue 14): N
-// measuring touches divide the uncertainty by sqrt(N), and each repeat adds
-// a backoff and a measuring approach per touch point.
+// A stand-in for the model once repeats are averaged: N measuring touches
+// divide the uncertainty by sqrt(N), and each repeat adds a backoff and a
+// measuring approach per touch point.
 void averaged_repeats_model(const Scenario& s, ModelPoint& p) {
     evaluate_point(s, p);
     const double n = s.cycle.repeats;
@@ -410,7 +410,7 @@ TEST(Optimiser, WithAveragedRepeatsFindsTheFastestRepeatCount) {
 // v = sqrt((s + p) v_r / t_s) = 17343 mm/min; the overtravel p + v t_s at
 // most half the 1 mm limit caps it first: v = (0.5 - 0.0051)/0.004 =
 // 123.725 mm/s = 7423.5 mm/min, to the editors' digits 7423.
-// Issue 28: a bore on the Fanuc-type machine (lags of 85 ms) at the default
+// A bore on the Fanuc-type machine (lags of 85 ms) at the default
 // 120 % feed override: its protected moves at 3000 mm/min meet an obstruction
 // at 3600 mm/min and stop 5.105 mm past it, over the 5 mm limit, so every
 // setting is invalid and no probing setting changes that. The optimiser
@@ -443,11 +443,11 @@ TEST(Optimiser, LowersAPositioningFeedThatWouldOverrunTheStylus) {
     EXPECT_EQ(optimise(safe, requirements).best.settings.position_feed_mm_min, 2000.0);
 }
 
-// Issue 28: "binding" means that relaxing the requirement makes the best
+// "Binding" means that relaxing the requirement makes the best
 // setting faster. Checked here through optimise() itself, on the bore with a
 // 5 um target whose best setting lies well under it (a single touch at about
 // 3 um: the target does not bind) and with a part position uncertainty of
-// 0.5 mm and a probe rated to 5000 mm/min (the README's customer bore): every
+// 0.5 mm and a probe rated to 5000 mm/min (the customer's bore in docs/cli.md): every
 // requirement named binding, relaxed by 10 %, gives a faster best setting,
 // and the target, relaxed, does not where it is not named.
 TEST(Optimiser, EveryBindingRequirementRelaxedGivesAFasterBest) {
@@ -499,7 +499,7 @@ TEST(Optimiser, EveryBindingRequirementRelaxedGivesAFasterBest) {
         if (k == 0) {  // the best lies well under the 5 um target: not binding
             EXPECT_LT(r.best.uncertainty_mm, 0.8 * 0.005);
             EXPECT_FALSE(binds(Requirement::target_uncertainty));
-        } else {  // the README's customer bore: the target binds; the probe's
+        } else {  // docs/cli.md's customer bore: the target binds; the probe's
                   // 5000 mm/min relaxed saves 0.46 ms of 5.18 s, under 0.1 %: not
             EXPECT_TRUE(binds(Requirement::target_uncertainty));
             EXPECT_FALSE(binds(Requirement::probe_max_feed));
@@ -570,7 +570,7 @@ TEST(Optimiser, ATargetUnderTheRepeatabilityIsRefusedNamingIt) {
     EXPECT_NE(text.find("smallest achievable"), std::string::npos) << text;
 }
 
-// Issue 28: the target holds for the whole budget, whose fixed terms no
+// The target holds for the whole budget, whose fixed terms no
 // feed or repeat count lowers.
 TEST(OptimiserBudget, TheBestMeetsTheTargetWithTheFixedTerms) {
     const Scenario s =
@@ -663,12 +663,11 @@ TEST(Optimiser, TheParetoFrontSpansTheUncertainties) {
 namespace probecycle {
 namespace {
 
-// Issue 28, item 4: what the optimiser proposes is what a shop would run. On
-// the bore example and the defaults, on every machine preset, with the
-// default bounds (the part within 0.5 mm, no start under 1 mm, no feed under
-// 10 mm/min) and a 5 um target for the whole budget: every start and feed
-// within them, and the settings applied ("Apply", --apply) give a valid
-// cycle that carries no error.
+// What the optimiser proposes is what a shop would run. On the bore example and
+// the defaults, on every machine preset, with the default bounds (the part
+// within 0.5 mm, no start under 1 mm, no feed under 10 mm/min) and a 5 um
+// target for the whole budget: every start and feed within them, and the
+// settings applied ("Apply", --apply) give a valid cycle that carries no error.
 TEST(OptimiserBounds, EveryBestOnEveryPresetIsWithinTheBoundsAndValid) {
     const std::filesystem::path resources = PROBECYCLE_RESOURCES_DIR;
     const std::vector<std::pair<std::string, Scenario>> bases = {

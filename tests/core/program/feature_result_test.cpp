@@ -109,7 +109,7 @@ TEST(FeatureResult, SurfacePositionIsHalfTheBallBeyondTheStylusCentre) {
 
 // The points' independent terms: a difference of two has sqrt(2) a point's,
 // their mean 1/sqrt(2); a bore's diameter, the mean of two widths, a point's.
-// The shared terms (issue 28): a size carries the calibration artefact's
+// The shared terms: a size carries the calibration artefact's
 // uncertainty whole, a centre the thermal drift's (feature_result.cpp). The
 // point's is the model's whole budget.
 TEST(FeatureResult, UncertaintiesCombineTheIndependentTermsAndTheSharedOnes) {

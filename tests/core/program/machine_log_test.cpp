@@ -78,7 +78,7 @@ TEST(MachineLog, GrblBrokenLogsNameTheLine) {
 }
 
 TEST(MachineLog, AGrblConsoleOfAnotherPlanIsToldByItsSignature) {
-    // Before (issue 29): a console from another plan with the same count and
+    // Before the signature, a console from another plan with the same count and
     // axis imported silently, every touch under the wrong feed.
     const ProbingPlan plan = small_delay_plan();
     ProbingPlan other = plan;

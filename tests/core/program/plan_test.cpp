@@ -239,7 +239,7 @@ TEST(CyclePlan, ABoreTwoTouchGoesOutFromItsCentreAndBackProtected) {
     const CycleResult model = model_touch(bore);
     const double s = c.approach_mm;
     const double measuring = model.measuring_touch().overtravel_mm;
-    // Halfway from each touch's stop at the highest feed override (issue 28)
+    // Halfway from each touch's stop at the highest feed override
     // to the 5 mm overtravel limit.
     const double first_stop = model.first_touch().override_overtravel_mm;
     const double first_beyond = 0.5 * (first_stop + bore.probe.overtravel_limit_mm);
@@ -291,7 +291,7 @@ TEST(CyclePlan, ABossSingleTouchGoesOverEachSideDownAndTouchesTowardTheCentre) {
     const TouchResult touch = model_touch(boss).first_touch();
     const double overtravel = touch.overtravel_mm;
     const double s = c.approach_mm;
-    // Past the stop at the highest feed override (issue 28).
+    // Past the stop at the highest feed override.
     const double beyond = search_beyond_mm(boss, touch.override_overtravel_mm);
     // cycle.repeats 2: each side touched twice, back to the start in between.
     ASSERT_EQ(plan.steps.size(), 1u + 4u * 8u);
@@ -343,7 +343,7 @@ TEST(CyclePlan, RepeatsMakeTheMeasuringTouchAgainFromItsStop) {
     const CycleResult model = model_touch(scenario);
     const double s = c.approach_mm;
     const double measuring = model.measuring_touch().overtravel_mm;
-    // Past each stop at the highest feed override (issue 28).
+    // Past each stop at the highest feed override.
     const double first_beyond =
         search_beyond_mm(scenario, model.first_touch().override_overtravel_mm);
     const double measuring_beyond =
@@ -460,7 +460,7 @@ TEST(CyclePlan, WhatAFeaturesProgramCannotDoIsRefusedNamingTheKey) {
               "cycle.position_feed_mm_min: got 8000; allowed: a feed at which an obstruction met "
               "by a protected move stops short of the probe's 5.000 mm limit (now 5.072 mm past "
               "it)");
-    // Issue 28: at the default 120 % feed override, 7000 mm/min is 8400 mm/min.
+    // At the default 120 % feed override, 7000 mm/min is 8400 mm/min.
     fast.cycle.feed_override_max_pct = 120.0;
     fast.cycle.position_feed_mm_min = 7000.0;
     EXPECT_EQ(refusal(fast, CyclePlanOptions{}),

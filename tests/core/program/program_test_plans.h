@@ -39,7 +39,7 @@ struct NamedPlan {
 
 // The default scenario for a known part (part position uncertainty 0): the
 // golden files and the hand-computed plans were made so; the default's 0.5 mm
-// (issue 28) lengthens each first search by it, which CyclePlan's tests check.
+// lengthens each first search by it, which CyclePlan's tests check.
 inline Scenario known_part() {
     Scenario s;
     s.cycle.part_position_uncertainty_mm = 0.0;

@@ -1,5 +1,5 @@
-// LinuxCNC's own interpreter checks the LinuxCNC programs (issue 13, "A real
-// interpreter checks us"): rs274, the stand-alone interpreter of the Debian
+// LinuxCNC's own interpreter checks the LinuxCNC programs (docs/programs.md,
+// "What is verified"): rs274, the stand-alone interpreter of the Debian
 // package linuxcnc-uspace, runs every program the tests write
 // (`rs274 -g FILE`: batch mode, the canonical calls on stdout). It must read
 // every line without an error, and its STRAIGHT_PROBE calls must be the

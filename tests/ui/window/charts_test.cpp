@@ -1,8 +1,7 @@
-// The cycle charts drawn offscreen from a Computation (issue 12, items 1 and
-// 5): what an invalid cycle and invalid feeds look like, what the legends
-// name, the log time axis's labels and the room around the markers. Mirrors
-// ui/cycle/cycle_charts.h; the PlotView tests at the end mirror
-// ui/common/plot_view.h.
+// The cycle charts drawn offscreen from a Computation: what an invalid cycle
+// and invalid feeds look like, what the legends name, the log time axis's
+// labels and the room around the markers. Mirrors ui/cycle/cycle_charts.h;
+// the PlotView tests at the end mirror ui/common/plot_view.h.
 
 #include "ui/cycle/cycle_charts.h"
 
@@ -276,7 +275,7 @@ TEST_F(ChartsTest, TheOvertravelLegendHasATargetOnlyWhenOneIsSet) {
     EXPECT_FALSE(overtravel_->legend_texts().contains(QStringLiteral("Target")));
 }
 
-// Issue 28: the chart shows what the readout says. Two-touch measures at the
+// The chart shows what the readout says. Two-touch measures at the
 // measuring feed: the cycle's uncertainty is a dot there (the readout's
 // figure), and the measuring feed's line is in the legend; single-touch's dot
 // is at the probing feed. The overtravel curves name the feed override they
@@ -307,7 +306,7 @@ TEST_F(ChartsTest, TheUncertaintyDotIsTheReadoutsAtTheFeedThatMeasures) {
     EXPECT_TRUE(legend.contains(QStringLiteral("Overtravel"))) << joined(legend);
 }
 
-// Issue 28: feeds the first touch never reaches from its start are dotted in
+// Feeds the first touch never reaches from its start are dotted in
 // the curve's colour, named in the legend, and out of the solid curve (the
 // Renishaw note's geometry: 2.5 mm start, T = 0.06 s, so up to about 5000
 // mm/min).

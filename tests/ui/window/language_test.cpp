@@ -1,7 +1,7 @@
-// Issue 12, item 4: every language, every size. At 1280x800, in English,
-// Chinese and Russian, every tab shows its texts whole; after a language
-// switch no text stays in the previous language; Russian numbers use its
-// decimal comma everywhere in the window.
+// Every language, every size. At 1280x800, in English, Chinese and Russian,
+// every tab shows its texts whole; after a language switch no text stays in the
+// previous language; Russian numbers use its decimal comma everywhere in the
+// window.
 
 #include <gtest/gtest.h>
 

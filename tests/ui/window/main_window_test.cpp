@@ -140,7 +140,7 @@ TEST_F(MainWindowTest, EveryScenarioKeyHasAnEditorWithUnitRangeAndTooltip) {
     }
 }
 
-// Issue 11, loose end 3: the backoff measured from the recorded trigger position.
+// The backoff measured from the recorded trigger position.
 TEST_F(MainWindowTest, BackoffFromTheTriggerPosition) {
     auto* combo = window_->findChild<QComboBox*>(QStringLiteral("combo:cycle.backoff_from"));
     ASSERT_NE(combo, nullptr);
@@ -152,7 +152,7 @@ TEST_F(MainWindowTest, BackoffFromTheTriggerPosition) {
     EXPECT_EQ(window_->scenario().cycle.backoff_from, BackoffFrom::trigger);
     // 0.205 mm recorded past the surface + 0.2 mm reseat, against 1.272 + 0.2 from the stop;
     // at the default 120 % feed override the touch at 2400 mm/min is recorded
-    // 0.005 + 40 x 0.006 = 0.245 mm past, + 0.2 reseat (issue 28).
+    // 0.005 + 40 x 0.006 = 0.245 mm past, + 0.2 reseat.
     EXPECT_NEAR(window_->computed().cycle().recommended_backoff_mm(), 0.445, 1e-9);
     EXPECT_LT(window_->computed().cycle().recommended_backoff_mm(), from_stop);
     ASSERT_TRUE(window_->apply_fix_for(QStringLiteral("backoff_excess")));
@@ -167,7 +167,7 @@ TEST_F(MainWindowTest, BackoffFromTheTriggerPosition) {
     EXPECT_FALSE(combo->isVisibleTo(window_.get()));
 }
 
-// Issue 11: the filter after interpolation; its keys show with it.
+// The filter after interpolation; its keys show with it.
 TEST_F(MainWindowTest, FilterAfterInterpolationShowsItsKeysAndChangesTheCycle) {
     auto* combo = window_->findChild<QComboBox*>(QStringLiteral("combo:machine.filter"));
     ASSERT_NE(combo, nullptr);
@@ -299,7 +299,7 @@ TEST_F(MainWindowTest, OneClickFixDropsTheFeedToTheKnee) {
     EXPECT_FALSE(window_->warning_codes().contains(QStringLiteral("feed_beyond_knee")));
 }
 
-// Issue 11: with a 50 mm approach every faster feed still saves time up to the
+// With a 50 mm approach every faster feed still saves time up to the
 // end of the knee search; the window says the knee depends on that range, with
 // no fix to offer. A looser knee tolerance moves the knee down.
 TEST_F(MainWindowTest, FastestCycleAtTheEndOfTheSearchRangeIsSaid) {
@@ -372,9 +372,9 @@ TEST_F(MainWindowTest, CsvExportWritesTheCoreReport) {
     EXPECT_EQ(rows, static_cast<qsizetype>(report_feeds(c.scenario, c.analysis).size()));
 }
 
-// Issue 12, item 6: the toolbar's CSV report is the current tab's: the
-// cycle's, or the Calibration and Latency tabs' own reports, which say
-// nothing was fitted rather than write an empty file.
+// The toolbar's CSV report is the current tab's: the cycle's, or the
+// Calibration and Latency tabs' own reports, which say nothing was fitted
+// rather than write an empty file.
 TEST_F(MainWindowTest, CsvExportWritesTheCurrentTabsReport) {
     QTemporaryDir dir;
     auto* tabs = window_->findChild<QTabWidget*>(QStringLiteral("tabs"));
@@ -413,9 +413,9 @@ TEST_F(MainWindowTest, CsvExportWritesTheCurrentTabsReport) {
     EXPECT_EQ(first_line(cycle), QStringLiteral("# ProbeCycle cycle report"));
 }
 
-// Issue 12, item 5: every slider stops at round numbers in its unit (the feed
-// went 3000 -> 3220), finely enough to drag, and a round value typed in the
-// spin box puts the slider on it and back.
+// Every slider stops at round numbers in its unit (the feed went 3000 -> 3220),
+// finely enough to drag, and a round value typed in the spin box puts the
+// slider on it and back.
 TEST_F(MainWindowTest, SlidersStopAtRoundValuesThatRoundTripThroughTheSpinBox) {
     const QList<QSlider*> sliders = window_->findChildren<QSlider*>();
     int checked = 0;
@@ -481,7 +481,7 @@ TEST_F(MainWindowTest, SlidersStopAtRoundValuesThatRoundTripThroughTheSpinBox) {
     EXPECT_EQ(window_->scenario().cycle.probe_feed_mm_min, 3200.0);
 }
 
-// Issue 12: the report says what it is, when, by which version and of which
+// The report says what it is, when, by which version and of which
 // scenario, in comment lines a spreadsheet shows as name and value.
 TEST_F(MainWindowTest, CsvReportOpensWithTitleDateVersionAndTheScenariosName) {
     QTemporaryDir dir;
@@ -519,7 +519,7 @@ TEST_F(MainWindowTest, ChartsExportAsPng) {
     ASSERT_TRUE(window_->export_charts_png(path));
     QImage image(path);
     EXPECT_FALSE(image.isNull());
-    // Issue 12: at the width asked for (1920 by default), whatever the window's.
+    // At the width asked for (1920 by default), whatever the window's.
     EXPECT_GE(image.width(), 1920);
     EXPECT_GT(image.height(), 400);
 
@@ -537,7 +537,7 @@ TEST_F(MainWindowTest, ChartsExportAsPng) {
               latency.copy(0, latency.height() / 2, 200, 50));
 }
 
-// Issue 12: New and Open ask before unsaved edits would go.
+// New and Open ask before unsaved edits would go.
 TEST_F(MainWindowTest, NewAsksBeforeUnsavedEditsGo) {
     Scenario edited = window_->scenario();
     edited.cycle.probe_feed_mm_min = 1234.0;
@@ -708,7 +708,7 @@ TEST_F(MainWindowTest, ABadLinuxCncIniIsRefusedAndChangesNothing) {
     EXPECT_EQ(window_->undo_stack()->count(), steps);
 }
 
-// Issue 4: the Latency tab's Apply puts the fitted delay into the scenario
+// The Latency tab's Apply puts the fitted delay into the scenario
 // as one undoable edit (the delay less the interface and half the scan).
 TEST_F(MainWindowTest, LatencyTabAppliesTheFittedDelayUndoably) {
     auto* tab = window_->findChild<LatencyTab*>();
@@ -771,7 +771,7 @@ TEST_F(MainWindowTest, AFixThatWouldInvalidateTheScenarioIsNotOffered) {
     EXPECT_TRUE(validate(window_->scenario()).empty());
 }
 
-// Issue 12: errors first, counted in the panel's title and on the Cycle tab.
+// Errors first, counted in the panel's title and on the Cycle tab.
 TEST_F(MainWindowTest, ErrorsAreListedFirstAndCounted) {
     Scenario s = window_->scenario();  // two-touch surface
     s.cycle.approach_mm = 0.2;         // inside the part's position uncertainty: a warning
@@ -799,7 +799,7 @@ TEST_F(MainWindowTest, ErrorsAreListedFirstAndCounted) {
     EXPECT_EQ(tabs->tabText(0), problems == 0 ? QStringLiteral("Cycle") : tabs->tabText(0));
 }
 
-// Issue 12: the panel keeps room for about three problems at 1280x800, and
+// The warnings panel keeps room for about three problems at 1280x800, and
 // dragging it up leaves the charts readable.
 TEST_F(MainWindowTest, WarningsPanelAndChartsKeepTheirRoom) {
     auto* box = window_->findChild<QWidget*>(QStringLiteral("warnings-box"));
@@ -813,7 +813,7 @@ TEST_F(MainWindowTest, WarningsPanelAndChartsKeepTheirRoom) {
     EXPECT_GE(splitter->widget(0)->height(), 20 * line);
 }
 
-// Issue 12: every one-click fix offered, on every preset over the defaults
+// Every one-click fix offered, on every preset over the defaults
 // and over the README's bore example, clears the warning it fixes.
 TEST_F(MainWindowTest, EveryOneClickFixOnEveryPresetClearsItsWarning) {
     Scenario bore;  // resources/examples/bore_two_touch.json
@@ -873,7 +873,7 @@ TEST_F(MainWindowTest, UndoRestoresAndRedoReapplies) {
     EXPECT_EQ(json(), dragged);
 }
 
-// Issue 12: a preset says what it overwrote (here a measured latency), and
+// A preset says what it overwrote (here a measured latency), and
 // Undo brings it back.
 TEST_F(MainWindowTest, APresetSaysWhatItOverwrote) {
     Scenario measured = window_->scenario();
@@ -929,14 +929,14 @@ TEST_F(MainWindowTest, PinnedBaselineStaysDrawnAndReadoutsShowTheDifference) {
     EXPECT_FALSE(window_->readout_detail(Readout::cycle_time).contains(QStringLiteral("baseline")));
 }
 
-// Issue 11, loose end 8: a backoff too small makes the cycle invalid. The
-// readout shows no time but why, the chart's dot is the invalid one, and
-// against a pinned baseline no time difference is offered.
-// Issue 12: an invalid cycle is drawn as invalid. Its feed is a red dashed
-// rule (no dot at a time it does not have), the curves are grey where their
-// cycles are invalid, with one legend entry; the legend names the baseline and
-// has no target without one; the log time axis labels values under 1 s; and a
-// dot at the end of the feed axis is drawn whole.
+// A backoff too small makes the cycle invalid. The readout shows no time but
+// why, the chart's dot is the invalid one, and against a pinned baseline no
+// time difference is offered.
+// An invalid cycle is drawn as invalid. Its feed is a red dashed rule (no dot
+// at a time it does not have), the curves are grey where their cycles are
+// invalid, with one legend entry; the legend names the baseline and has no
+// target without one; the log time axis labels values under 1 s; and a dot at
+// the end of the feed axis is drawn whole.
 TEST_F(MainWindowTest, ChartsDrawInvalidCyclesAsInvalidAndNameWhatTheyShow) {
     auto* cycle_time = window_->findChild<PlotView*>(QStringLiteral("chart:cycle_time"));
     auto* overtravel = window_->findChild<PlotView*>(QStringLiteral("chart:overtravel"));
@@ -1056,7 +1056,7 @@ TEST_F(MainWindowTest, LanguagesSwitchTheInterface) {
     EXPECT_EQ(window_->menuBar()->actions().first()->text(), english);
 }
 
-// Issue 12: Help has a guide (F1) with the phases, the formulas, the charts
+// Help has a guide (F1) with the phases, the formulas, the charts
 // and how to measure the delay, in the interface language, with a link to
 // the README.
 TEST_F(MainWindowTest, HelpHasAGuideInTheInterfaceLanguage) {
@@ -1082,7 +1082,7 @@ TEST_F(MainWindowTest, HelpHasAGuideInTheInterfaceLanguage) {
     guide->close();
 }
 
-// Issue 12: Quit asks about unsaved edits (untitled ones too) and means the
+// Quit asks about unsaved edits (untitled ones too) and means the
 // answer: Save keeps them in the file and they come back; Discard does not
 // bring them back; Cancel keeps the window open.
 TEST(MainWindowSettingsTest, QuitSavesOrDiscardsAsAnswered) {
@@ -1160,7 +1160,7 @@ TEST_F(MainWindowTest, InvalidCombinationIsShownAndKeepsTheLastCharts) {
     EXPECT_EQ(window_->series_points(QStringLiteral("cycle_time.two_touch")).size(), 500);
 }
 
-// Issue 13: File > "Program for the Control…" opens the tuned cycle's dialog
+// File > "Program for the Control…" opens the tuned cycle's dialog
 // on the window's scenario (the default: a surface); its program is the
 // core's for that scenario.
 TEST_F(MainWindowTest, ProgramForTheControlWritesTheWindowsCycle) {

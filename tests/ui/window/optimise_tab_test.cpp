@@ -1,7 +1,7 @@
-// The Optimise tab (issue 14; OptimisePanel in ui/cycle/optimise_panel.h and
-// its place in MainWindow): it shows the core optimiser's answer for the
-// current scenario, its requirements edit the scenario as undoable steps,
-// Apply is one undoable edit, and a requirement nothing meets is named.
+// The Optimise tab (docs/window.md; OptimisePanel in ui/cycle/optimise_panel.h
+// and its place in MainWindow): it shows the core optimiser's answer for the
+// current scenario, its requirements edit the scenario as undoable steps, Apply
+// is one undoable edit, and a requirement nothing meets is named.
 
 #include <gtest/gtest.h>
 
@@ -51,7 +51,7 @@ TEST(OptimiseTab, ShowsTheCoresAnswerAndAppliesItAsOneUndoableStep) {
     EXPECT_TRUE(panel->saved_text().contains(QStringLiteral("save")))
         << panel->saved_text().toStdString();
     EXPECT_TRUE(panel->binding_text().startsWith(QStringLiteral("What limits it:")));
-    // The target lies on the Pareto chart, a vertical line (issue 28).
+    // The target lies on the Pareto chart, a vertical line.
     const QList<QPointF> bound = panel->bound_points();
     ASSERT_EQ(bound.size(), 1);
     EXPECT_DOUBLE_EQ(bound[0].x(), 1000.0 * panel->result()->uncertainty_bound_mm);

@@ -1,4 +1,4 @@
-// The PDF report to hand over (issue 14; MainWindow::export_pdf_report in
+// The PDF report to hand over (docs/window.md; MainWindow::export_pdf_report in
 // ui/window/main_window.h): produced offscreen, with the pages and the texts
 // the window shows, in the interface's language, written atomically. The
 // texts are read back with pdftotext and the pages counted with pdfinfo
@@ -106,7 +106,7 @@ TEST(PdfReport, TheCycleReportHasTheResultsTheWarningsTheirFixesAndEveryInput) {
         has(window->readout_text(r));
         has(window->readout_detail(r).section(QLatin1Char('\n'), 0, 0));
     }
-    // Issue 28: the uncertainty budget, each term and the expanded figure
+    // The uncertainty budget, each term and the expanded figure
     // the readout shows.
     has(QStringLiteral("Uncertainty budget"));
     for (const QStringList& row :
@@ -242,7 +242,8 @@ TEST(PdfReport, AFailedWriteSaysWhereAndLeavesNothing) {
 }
 
 TEST(PdfReport, UnderSourceDateEpochTheSameReportIsTheSameBytes) {
-    // Before (issue 29): the creation date was the time of the export.
+    // The creation date was once the time of the export, so two exports of
+    // one report differed.
     QTemporaryDir dir;
     auto window = make_window();
     qputenv("SOURCE_DATE_EPOCH", "1700000000");

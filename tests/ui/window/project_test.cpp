@@ -1,4 +1,4 @@
-// The window's project file (issue 12, "Nothing the user made is lost";
+// The window's project file (docs/files.md, "The project file";
 // MainWindow::save_project/open_scenario in ui/window/main_window.h): the
 // whole session opens again exactly, a bad file changes nothing, plain
 // scenario files keep working, and unsaved lab data is asked about.
