@@ -240,7 +240,7 @@ void evaluate_into(const Scenario& scenario, CycleResult& r, MotionCache& cache,
     // Uncertainty: the scan phase and the repeatability are random from touch
     // to touch, so the mean of N touches has 1/sqrt(N) of their uncertainty;
     // the budget's fixed terms (uncertainty.h) join it as the GUM combines
-    // independent terms (docs/model.md, "Uncertainty").
+    // independent terms (docs/model.md, "One touch").
     r.trigger_speed_mm_s_ = measuring.trigger_speed_mm_s;
     r.scan_range_mm_ = scan_range_mm(scenario.machine, r.trigger_speed_mm_s_);
     r.trigger_uncertainty_mm_ =
