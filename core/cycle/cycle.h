@@ -271,6 +271,13 @@ constexpr double kBackoffStep_mm = 0.001;
 inline double feed_step_mm_min(double feed_mm_min) {
     return feed_mm_min >= 100.0 ? 1.0 : 0.1;
 }
+// A feed rounded down or up to those digits (round_down_to, round_up_to).
+inline double round_feed_down(double feed_mm_min) {
+    return round_down_to(feed_mm_min, feed_step_mm_min(feed_mm_min));
+}
+inline double round_feed_up(double feed_mm_min) {
+    return round_up_to(feed_mm_min, feed_step_mm_min(feed_mm_min));
+}
 // The highest feed from `lo_mm_min` up to `hi_mm_min`, rounded down to the
 // editors' digits, at which `under` holds, for a test that holds up to some
 // feed and not beyond (an overtravel under a limit: it grows with the feed);
@@ -285,7 +292,7 @@ std::optional<double> highest_feed_where(double lo_mm_min, double hi_mm_min, Und
         const double mid = 0.5 * (lo + hi);
         (under(mid) ? lo : hi) = mid;
     }
-    const double feed = round_down_to(lo, feed_step_mm_min(lo));
+    const double feed = round_feed_down(lo);
     if (feed <= 0.0 || !under(feed)) return std::nullopt;
     return feed;
 }

@@ -49,9 +49,8 @@ void check_touch_while_accelerating(const Checked& in, std::vector<Warning>& out
 void check_overtravel(const Checked& in, std::vector<Warning>& out) {
     const double overtravel = in.result.checked_overtravel_mm();
     const double limit = in.scenario.probe.overtravel_limit_mm;
-    const warning::OvertravelLimit figures{overtravel, limit,
-                                           feed_override_factor(in.scenario.cycle),
-                                           in.result.overtravel_touch()};
+    const warning::OvertravelLimit figures{
+        overtravel, limit, feed_override_factor(in.scenario.cycle), in.result.overtravel_touch()};
     if (overtravel >= limit) {
         out.emplace_back(Severity::error, figures);
     } else if (overtravel >= kOvertravelWarningFraction * limit) {
@@ -80,8 +79,8 @@ void check_backoff(const Checked& in, std::vector<Warning>& out) {
     // own phases.
     const MotionLimits limits = in.scenario.motion_limits();
     const auto excess = [&](double cost_s, const TouchResult& from) {
-        return cost_s - backoff_cost_s(in.scenario, limits, in.dynamics(), recommended, from,
-                                       in.cache);
+        return cost_s -
+               backoff_cost_s(in.scenario, limits, in.dynamics(), recommended, from, in.cache);
     };
     const int repeats = repeat_count(c);
     double wasted = excess(in.timeline.first_backoff_cost_s, in.result.first_touch());
@@ -126,9 +125,8 @@ void check_start(const Checked& in, std::vector<Warning>& out) {
     const double part_u = c.part_position_uncertainty_mm;
     if (part_u <= 0.0) return;
     const double s = c.approach_mm;
-    const double room =
-        approach_room(in.scenario, in.scenario.motion_limits(), in.dynamics(),
-                      mm_min_to_mm_s(c.probe_feed_mm_min), &in.cache);
+    const double room = approach_room(in.scenario, in.scenario.motion_limits(), in.dynamics(),
+                                      mm_min_to_mm_s(c.probe_feed_mm_min), &in.cache);
     if (s <= part_u || (!in.two_touch() && s < part_u + room - 1e-9)) {
         out.emplace_back(Severity::warning,
                          warning::StartInsideUncertainty{s, part_u, room, s <= part_u});
@@ -159,9 +157,9 @@ void check_protected_moves(const Checked& in, std::vector<Warning>& out) {
     const double guard = protected_move_overtravel_mm(in.scenario, position_v);
     const double limit = in.scenario.probe.overtravel_limit_mm;
     if (guard >= kOvertravelWarningFraction * limit) {
-        out.emplace_back(guard >= limit ? Severity::error : Severity::warning,
-                         warning::ProtectedMoveOvertravel{guard, limit, position_v,
-                                                          feed_override_factor(c)});
+        out.emplace_back(
+            guard >= limit ? Severity::error : Severity::warning,
+            warning::ProtectedMoveOvertravel{guard, limit, position_v, feed_override_factor(c)});
     }
 }
 
@@ -226,8 +224,7 @@ Message OvertravelLimit::message(Severity severity) const {
         code, text,
         {arg("overtravel_mm", ArgKind::length_mm, overtravel_mm, 3),
          arg("percent_of_limit", ArgKind::number, 100.0 * overtravel_mm / limit_mm, 0),
-         arg("limit_mm", ArgKind::length_mm, limit_mm, 3),
-         arg("touch", ArgKind::integer, touch),
+         arg("limit_mm", ArgKind::length_mm, limit_mm, 3), arg("touch", ArgKind::integer, touch),
          arg("feed_override_pct", ArgKind::number, 100.0 * std::max(feed_override, 1.0), 0)});
 }
 
@@ -270,11 +267,11 @@ Message TouchWhileAccelerating::message(Severity /*severity*/) const {
                                                       "distance needed to reach its feed: it "
                                                       "triggers at %1 instead of %2, an error "
                                                       "of %3 against a calibration at full feed");
-    return warning_message(code, text,
-                           {arg("speed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(speed_mm_s), 1),
-                            arg("feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(feed_mm_s), 1),
-                            arg("error_mm", ArgKind::length_mm, error_mm, 4),
-                            arg("touch", ArgKind::integer, touch)});
+    return warning_message(
+        code, text,
+        {arg("speed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(speed_mm_s), 1),
+         arg("feed_mm_min", ArgKind::feed_mm_min, mm_s_to_mm_min(feed_mm_s), 1),
+         arg("error_mm", ArgKind::length_mm, error_mm, 4), arg("touch", ArgKind::integer, touch)});
 }
 
 Message UncertaintyOverTarget::message(Severity /*severity*/) const {

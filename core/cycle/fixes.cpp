@@ -30,13 +30,6 @@ const char* to_string(FixKind kind) {
 
 namespace {
 
-// Values are rounded to what the editors show, the way that clears the
-// warning: a backoff or a start distance up, a feed down. Feeds are shown to
-// 1 mm/min from 100 mm/min up, to 0.1 mm/min below.
-double round_feed_down(double feed_mm_min) {
-    return round_down_to(feed_mm_min, feed_step_mm_min(feed_mm_min));
-}
-
 // The highest probing feed, rounded down, under `feed_mm_min` at which the
 // overtravel is under the warning fraction of the limit; nullopt when even
 // the slowest feed searched is not. Overtravel grows with the probing feed,

@@ -17,11 +17,14 @@ namespace probecycle {
 // and the servo (dynamics.h).
 enum class AccelModel { time_constant, constant_accel, jerk_limited, none };
 
+// The time constant of a machine that sets none (machine.time_constant_s).
+constexpr double kDefaultTimeConstant_s = 0.06;
+
 struct MotionLimits {
     AccelModel model{AccelModel::time_constant};
-    double time_constant_s{0.06};    // time_constant: a = v / T
-    double max_accel_mm_s2{2000.0};  // constant_accel, jerk_limited
-    double max_jerk_mm_s3{40000.0};  // jerk_limited
+    double time_constant_s{kDefaultTimeConstant_s};  // time_constant: a = v / T
+    double max_accel_mm_s2{2000.0};                  // constant_accel, jerk_limited
+    double max_jerk_mm_s3{40000.0};                  // jerk_limited
 
     bool operator==(const MotionLimits&) const = default;
 };

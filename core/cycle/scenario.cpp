@@ -391,7 +391,7 @@ const std::vector<KeyEntry>& key_table() {
                     "feed; any more is approached again at the slow measuring feed and wasted."),
                 QT_TRANSLATE_NOOP("Parameter", "Backoff")},
                PC_NUMBER(cycle, backoff_mm)),
-        number({"cycle.repeats", "", 1.0, 20.0,
+        number({"cycle.repeats", "", 1.0, kMaxRepeats,
                 QT_TRANSLATE_NOOP(
                     "Parameter",
                     "How many times the measuring touch is made and averaged (two-touch: back "
@@ -716,8 +716,7 @@ std::vector<FieldError> validate(const Scenario& scenario) {
     // Internal features: both start positions lie inside the feature
     // (domain.md, "Features"), so it must be wider than two approach distances.
     const Cycle& c = scenario.cycle;
-    if ((c.feature == Feature::pocket || c.feature == Feature::bore) &&
-        !(c.feature_size_mm > 2.0 * c.approach_mm)) {
+    if (is_internal(c.feature) && !(c.feature_size_mm > 2.0 * c.approach_mm)) {
         Message allowed = allowed_text(
             "feature_narrower_than_approach",
             QT_TRANSLATE_NOOP("FieldError", "more than twice cycle.approach_mm (%1) for a %2"));

@@ -18,6 +18,13 @@ namespace probecycle {
 
 enum class Strategy { single_touch, two_touch };
 enum class Feature { surface, web, pocket, bore, boss };
+// A pocket or bore: the probe measures from inside, starting at the centre.
+constexpr bool is_internal(Feature feature) {
+    return feature == Feature::pocket || feature == Feature::bore;
+}
+// How many times a measuring touch may be repeated and averaged
+// (cycle.repeats): the key's range and the optimiser's search.
+constexpr int kMaxRepeats = 20;
 // Where a two-touch backoff is measured from (issue 11): where the probe
 // stopped (Renishaw's cycles) or the trigger position the control recorded
 // (the skip position many macros back off from).
@@ -29,7 +36,7 @@ enum class ToleranceAction { flag, stop };
 
 struct Machine {
     AccelModel accel_model{AccelModel::time_constant};
-    double time_constant_s{0.06};
+    double time_constant_s{kDefaultTimeConstant_s};
     double max_accel_mm_s2{2000.0};
     double max_jerk_mm_s3{40000.0};
     // Dynamics after interpolation (issue 11); none and 0 = the ideal axis.

@@ -277,9 +277,8 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
     // unless that would pass the last valid feed.
     {
         const double knee = *out.knee_feed_mm_min;
-        const double step = feed_step_mm_min(knee);
-        const double up = round_up_to(knee, step);
-        out.knee_feed_mm_min = up <= out.valid_to_mm_min ? up : round_down_to(knee, step);
+        const double up = round_feed_up(knee);
+        out.knee_feed_mm_min = up <= out.valid_to_mm_min ? up : round_feed_down(knee);
     }
     // At an end of the searched range the fastest cycle may lie beyond it. Not
     // when invalid cycles end the range: that end does not move.

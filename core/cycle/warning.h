@@ -183,10 +183,9 @@ struct ProtectedMoveOvertravel {
 
 using WarningFigures =
     std::variant<warning::OvertravelLimit, warning::BackoffTooSmall, warning::BackoffExcess,
-                 warning::TouchWhileAccelerating, warning::FeedBeyondKnee,
-                 warning::KneeAtRangeEnd, warning::UncertaintyOverTarget,
-                 warning::CalibrationFeedMismatch, warning::NoValidFeed,
-                 warning::FeedOverProbeLimit, warning::StartInsideUncertainty,
+                 warning::TouchWhileAccelerating, warning::FeedBeyondKnee, warning::KneeAtRangeEnd,
+                 warning::UncertaintyOverTarget, warning::CalibrationFeedMismatch,
+                 warning::NoValidFeed, warning::FeedOverProbeLimit, warning::StartInsideUncertainty,
                  warning::SearchEndsTooSoon, warning::ProtectedMoveOvertravel>;
 
 struct Warning {

@@ -22,10 +22,6 @@ constexpr double kMinFeed_mm_min = 1.0;
 // scenario's uncertainty is the bound when there is no target).
 constexpr double kUncertaintyRelTolerance = 1e-12;
 
-bool is_internal(Feature feature) {
-    return feature == Feature::pocket || feature == Feature::bore;
-}
-
 // The start distance rounded up to kApproachStep_mm, strictly: never under
 // `distance_mm` (round_up_to forgives a millionth of a step, which the start
 // rule's check would not).
@@ -36,17 +32,6 @@ double approach_up(double distance_mm) {
     return rounded;
 }
 static_assert(kApproachStep_mm == 0.01, "approach_up divides by 100");
-
-// A feed to the editors' digits (feed_step_mm_min, cycle.h), down or up;
-// steps per mm/min (1 or 10) so that a tenth is divided, not multiplied in.
-double feed_down(double feed_mm_min) {
-    const double per = 1.0 / feed_step_mm_min(feed_mm_min);
-    return std::floor(feed_mm_min * per + 1e-9) / per;
-}
-double feed_up(double feed_mm_min) {
-    const double per = 1.0 / feed_step_mm_min(feed_mm_min);
-    return std::ceil(feed_mm_min * per - 1e-9) / per;
-}
 
 // The highest feed a setting may use: the probe's rated maximum (when set),
 // the machine's rapid feed, the key's range.
@@ -522,13 +507,13 @@ class Optimiser {
         const bool two = outcome.strategy == Strategy::two_touch;
         const auto feeds_near = [&](double feed) {
             std::vector<double> feeds;
-            const double down = feed_down(feed);
+            const double down = round_feed_down(feed);
             if (down >= search_.min_feed()) {
                 feeds.push_back(down);
-                const double lower = feed_down(down - 0.5 * feed_step_mm_min(down - 0.05));
+                const double lower = round_feed_down(down - 0.5 * feed_step_mm_min(down - 0.05));
                 if (lower >= search_.min_feed()) feeds.push_back(lower);
             }
-            const double up = feed_up(feed);
+            const double up = round_feed_up(feed);
             if (up <= s.cap_mm_min() && up != down) feeds.push_back(up);
             if (feeds.empty()) feeds.push_back(search_.min_feed());
             return feeds;
@@ -548,7 +533,7 @@ class Optimiser {
             const double corner =
                 last_ok_log([&](double f) { return s.approach_min_mm(f) <= start + 1e-12; },
                             search_.min_feed(), feed_hi);
-            const double feed = feed_down(corner);
+            const double feed = round_feed_down(corner);
             if (feed >= search_.min_feed() && s.approach_min_mm(feed) <= start + 1e-12 &&
                 std::find(probes.begin(), probes.end(), feed) == probes.end()) {
                 probes.push_back(feed);

@@ -50,8 +50,6 @@ struct OptimiseRequirements {
 constexpr double kMinOvertravelFraction = 0.01;
 constexpr double kMaxOvertravelFraction = 1.0;
 constexpr int kMaxParetoPoints = 200;
-// The scenario key's range of cycle.repeats.
-constexpr int kMaxRepeats = 20;
 // The start distance is set to this step (0.01 mm), rounded up.
 constexpr double kApproachStep_mm = 0.01;
 
