@@ -1,6 +1,6 @@
 #pragma once
 
-// The comparison's input files (README, "Comparison measurement: files"):
+// The comparison's input files (docs/comparison.md, "Files"):
 // - the inspection plan, x_mm,y_mm,z_mm,i,j,k: a nominal point and its unit
 //   outward normal (the side the probe comes from) per line;
 // - measured points, x_mm,y_mm,z_mm, one per plan point in the plan's order

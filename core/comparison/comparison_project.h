@@ -1,7 +1,7 @@
 #pragma once
 
 // The Comparison tab's project file: its file paths and settings, as JSON
-// (README, "Comparison measurement: the project file"):
+// (docs/comparison.md, "Files"):
 //   {"format": "probecycle-comparison", "version": 1,
 //    "plan": "plan.csv", "reference_cmm": ..., "test_omm": ...,
 //    "reference_omm": ..., "block_c0": "", "block_c180": "",

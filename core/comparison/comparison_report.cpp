@@ -49,7 +49,7 @@ std::string row(std::initializer_list<std::string> fields) {
     return out + "\n";
 }
 
-// Issue 12: the digits the method supports (csv_writer.h). Lengths and
+// The digits the method supports (csv_writer.h). Lengths and
 // deviations to 0.1 um; the C axis's angles to 0.01 urad (its uncertainty on
 // a part is tens of urad); the inputs (the plan's points and normals, the
 // C axis's position, the angle, the tolerance) exactly as given.

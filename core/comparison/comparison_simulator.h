@@ -1,7 +1,7 @@
 #pragma once
 
-// A whole comparison data set with a known truth (README, "Simulated
-// example"): a freeform design face of a few millimetres' height over
+// A whole comparison data set with a known truth (docs/comparison.md, "The
+// simulated example"): a freeform design face of a few millimetres' height over
 // 80 x 60 mm, 100 mm beside the C axis; a test part and a reference part
 // with smooth machining errors along the normal; the C axis's six errors; a
 // smooth systematic OMM error (axis scale and squareness, a thermal Z

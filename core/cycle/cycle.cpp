@@ -111,13 +111,13 @@ std::optional<double> highest_position_feed_mm_min(const Scenario& scenario, dou
     });
 }
 
-// domain.md, "One touch": interface response t_i, controller latency t_c and,
+// docs/model.md, "One touch": interface response t_i, controller latency t_c and,
 // worst case, a full scan period t_s pass between trigger and reaction.
 double reaction_time_s(const Machine& machine, const Probe& probe) {
     return probe.interface_delay_s + machine.controller_latency_s + machine.scan_period_s;
 }
 
-// domain.md, "Controller response": the wait for the next scan is anywhere in
+// docs/model.md, "One touch": the wait for the next scan is anywhere in
 // [0, t_s], a range of v_t * t_s; a latched input removes it from the value.
 double scan_range_mm(const Machine& machine, double trigger_speed_mm_s) {
     return machine.latched_input ? 0.0 : trigger_speed_mm_s * machine.scan_period_s;
@@ -129,11 +129,11 @@ double expanded_uncertainty_mm(double range_mm, double repeatability_2sigma_mm) 
     return std::sqrt(range_mm * range_mm / 3.0 + repeatability_2sigma_mm * repeatability_2sigma_mm);
 }
 
-// Issue 4, "Calibration feed versus measuring feed": the delay travel
-// calibrated at one speed is wrong at another by (v - v_cal) * tau, tau =
-// t_i + t_c + t_s/2 with a scanned input. Issue 11: a latched input captures
-// the position when the signal reaches the control, before the controller's
-// latency and scan, so there tau = t_i alone.
+// docs/model.md, "One touch" (calibration feed): the delay travel calibrated at
+// one speed is wrong at another by (v - v_cal) * tau, tau = t_i + t_c + t_s/2
+// with a scanned input. A latched input captures the position when the signal
+// reaches the control, before the controller's latency and scan, so there
+// tau = t_i alone.
 double measurement_delay_s(const Machine& machine, const Probe& probe) {
     if (machine.latched_input) return probe.interface_delay_s;
     return probe.interface_delay_s + machine.controller_latency_s + 0.5 * machine.scan_period_s;
@@ -158,8 +158,8 @@ int touch_count(Feature feature) {
     return 1;
 }
 
-// Issue 11, loose end 6: the moves of a feature as real cycles make them
-// (cycle.h).
+// The moves of a feature as real cycles make them (cycle.h; docs/model.md,
+// "Strategies and features").
 double start_radius_mm(const Cycle& cycle) {
     const double half = 0.5 * cycle.feature_size_mm;
     return lifts_over(cycle.feature) ? half + cycle.approach_mm : half - cycle.approach_mm;

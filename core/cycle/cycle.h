@@ -1,7 +1,7 @@
 #pragma once
 
-// The probing cycle, phase by phase (domain.md, "One touch, phase by phase",
-// "Strategies").
+// The probing cycle, phase by phase (docs/model.md, "One touch", "Strategies
+// and features").
 
 #include <array>
 #include <cmath>
@@ -92,7 +92,7 @@ struct TimedSegment {
     KinematicState start{};     // path state at start (position 0)
     double jerk_mm_s3{0.0};
     int touch{0};
-    // With dynamics after interpolation (issue 11): the block's actual motion
+    // With dynamics after interpolation (dynamics.h): the block's actual motion
     // is CycleResult::motions()[motion] at (t - start_s); start and jerk are
     // then unused. -1: the constant-jerk piece above.
     int motion{-1};
@@ -118,7 +118,7 @@ struct TouchResult {
     // touch the backoff less this stop to approach.
     double mean_overtravel_mm{0.0};
     double mean_recorded_mm{0.0};
-    // Issue 28: where the touch stops, worst case, with its feed at up to
+    // Where the touch stops, worst case, with its feed at up to
     // the highest feed override (cycle.feed_override_max_pct) from the same
     // start: the farther of the stops at 100 % and at that override (a touch
     // that does not reach its feed at the override may stop nearer). The
@@ -147,7 +147,7 @@ class CycleResult {
     double phase_time(Phase phase) const { return phase_time_s_[static_cast<std::size_t>(phase)]; }
 
     double overtravel_mm() const { return overtravel_mm_; }  // worst over all touches
-    // Issue 28: the overtravel the stylus must survive, which every check
+    // The overtravel the stylus must survive, which every check
     // takes: the worst over all touches at up to the highest feed override
     // (TouchResult::override_overtravel_mm).
     double checked_overtravel_mm() const { return checked_overtravel_mm_; }
@@ -157,14 +157,14 @@ class CycleResult {
     double trigger_speed_mm_s() const { return trigger_speed_mm_s_; }  // of the measuring touch
     double scan_range_mm() const { return scan_range_mm_; }
     // Expanded (k = 2) uncertainty of the measured point, the whole budget
-    // (issue 28, uncertainty.h): the trigger's part below, combined with the
+    // (uncertainty.h): the trigger's part below, combined with the
     // terms no feed changes (lobing, calibration artefact, machine
     // repeatability, thermal drift). The target, the optimiser and the
     // reports take this figure.
     double uncertainty_mm() const { return uncertainty_mm_; }
     // The trigger's part: uniform scan phase combined with the probe's
     // repeatability, over sqrt(cycle.repeats) for the mean of the repeated
-    // touches (issue 14).
+    // touches.
     double trigger_uncertainty_mm() const { return trigger_uncertainty_mm_; }
     // The backoff the cycle needs, rounded up to kBackoffStep_mm: the value
     // shown is the value that clears backoff_too_small.
@@ -175,12 +175,12 @@ class CycleResult {
     const std::vector<Warning>& warnings() const { return warnings_; }
     const std::vector<TimedSegment>& segments() const { return segments_; }
     const std::vector<AxisMotion>& motions() const { return motions_; }
-    // Issue 11: false when the cycle as set cannot run as modelled, which an
+    // False when the cycle as set cannot run as modelled, which an
     // error says: backoff_too_small (the second touch would start with the
     // stylus still deflected) or overtravel_limit at or over the limit (the
     // stylus is overrun). Its time is then no cycle time to compare or to
     // optimise for; invalid_codes() names why. A time or an overtravel that is
-    // not a finite number is never valid either (issue 29: the scenario's
+    // not a finite number is never valid either (the scenario's
     // checks keep it from happening; this keeps a NaN from being shown as a
     // valid cycle should a value slip through).
     bool valid() const {
@@ -243,7 +243,7 @@ double protected_move_overtravel_mm(const Scenario& scenario, double feed_mm_s);
 std::optional<double> highest_position_feed_mm_min(const Scenario& scenario, double upper_mm_min,
                                                    double fraction);
 
-// --- Small closed forms (domain.md, "One touch"), each testable alone. ---
+// --- Small closed forms (docs/model.md, "One touch"), each testable alone. ---
 // Travel between trigger and the controller's reaction, worst case (full scan).
 double reaction_time_s(const Machine& machine, const Probe& probe);
 // Range of the scan-phase error at a trigger speed; 0 with a latched input.
@@ -251,8 +251,8 @@ double scan_range_mm(const Machine& machine, double trigger_speed_mm_s);
 // k = 2 combination of a uniform range and a 2-sigma repeatability.
 double expanded_uncertainty_mm(double scan_range_mm, double repeatability_2sigma_mm);
 // The delay between trigger and recorded position that calibration absorbs:
-// t_i + t_c + t_s/2 with a scanned input (issue 4), t_i alone with a latched
-// one (issue 11: the position is captured when the signal arrives).
+// t_i + t_c + t_s/2 with a scanned input, t_i alone with a latched one (the
+// position is captured when the signal arrives).
 double measurement_delay_s(const Machine& machine, const Probe& probe);
 // Error in the measured value from a speed other than the calibrated one:
 // (v - v_cal) * measurement_delay_s.
@@ -266,8 +266,8 @@ constexpr double kAccelErrorTolerance_mm = 1e-4;
 // The recommended backoff is rounded up to this (1 µm), the editors' digits.
 constexpr double kBackoffStep_mm = 0.001;
 // Feeds are shown, set and programmed to 1 mm/min from 100 mm/min up and to
-// 0.1 mm/min below: the knee is a feed of these digits (issue 12: the readout,
-// the fix and the report showed 4449, 4448 and 4448.7).
+// 0.1 mm/min below: the knee is a feed of these digits, so that the readout, the
+// one-click fix and the report name one feed (they once showed 4449, 4448 and 4448.7).
 inline double feed_step_mm_min(double feed_mm_min) {
     return feed_mm_min >= 100.0 ? 1.0 : 0.1;
 }
@@ -296,7 +296,7 @@ std::optional<double> highest_feed_where(double lo_mm_min, double hi_mm_min, Und
     if (feed <= 0.0 || !under(feed)) return std::nullopt;
     return feed;
 }
-// Issue 28: whether a touch meets its surface at its programmed feed (to
+// Whether a touch meets its surface at its programmed feed (to
 // within kFeedReachedFraction): a probing feed the first touch never reaches
 // from its start is not the programmed feed. The knee looks past such feeds,
 // and the curves show them as such: their cycle times fall again only

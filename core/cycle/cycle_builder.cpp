@@ -245,7 +245,7 @@ class CycleBuilder {
         return touch;
     }
 
-    // A touch solved for its figures only (issue 28: the stop at the feed
+    // A touch solved for its figures only (such as its stop at the highest feed
     // override): nothing of it stays in the result.
     TouchResult solve_touch(const Scenario& scenario, const MotionLimits& limits, double feed_mm_s,
                             double distance_mm, const TouchPhases& names) {
@@ -316,7 +316,7 @@ class CycleBuilder {
         add_phase(phase, duration, distance_mm);
     }
 
-    // domain.md, "One touch, phase by phase": approach from rest `distance_mm`
+    // docs/model.md, "One touch": approach from rest `distance_mm`
     // in front of the surface, pretravel, interface and controller response
     // (after the mean scan wait; the overtravel after a full one), then braking. The axis follows
     // its planned acceleration until it reacts, so a touch while still accelerating triggers at the
@@ -394,12 +394,13 @@ class CycleBuilder {
         return touch;
     }
 
-    // The touch with dynamics after interpolation (issue 11): the actual
-    // position touches and triggers; the control reacts after the trigger
-    // chain, the interpolator then stops its command (at once, or braking as
-    // its plan does), and the axis drains the filters and the servo lag. The
-    // overtravel is where it comes to rest, the command's end; the next block
-    // starts when the in-position check passes.
+    // The touch with dynamics after interpolation (docs/model.md, "Controller
+    // dynamics after interpolation"): the actual position touches and triggers;
+    // the control reacts after the trigger chain, the interpolator then stops
+    // its command (at once, or braking as its plan does), and the axis drains
+    // the filters and the servo lag. The overtravel is where it comes to rest,
+    // the command's end; the next block starts when the in-position check
+    // passes.
     TouchResult add_filtered_touch(const Scenario& scenario, const MotionLimits& limits,
                                    double feed_mm_s, double distance_mm, const TouchPhases& names) {
         const Machine& m = scenario.machine;
@@ -590,8 +591,8 @@ const AxisKernel* active_kernel(const AxisKernel& kernel) {
     return kernel.active() ? &kernel : nullptr;
 }
 
-// Where the backoff is measured from, beyond the surface (issue 11): where the
-// first touch stopped, or where the control recorded it.
+// Where the backoff is measured from, beyond the surface (cycle.backoff_from):
+// where the first touch stopped, or where the control recorded it.
 double backoff_reference_mm(const Cycle& cycle, const TouchResult& first, TouchCase which) {
     const bool mean = which == TouchCase::mean;
     if (cycle.backoff_from == BackoffFrom::stop) {

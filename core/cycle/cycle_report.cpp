@@ -78,7 +78,7 @@ std::string evaluation_to_json(const Scenario& scenario, const Analysis& analysi
     const CycleResult& r = analysis.cycle;
     Json out = Json::object();
     out["cycle_time_s"] = r.total();
-    // Issue 11: an invalid cycle's time is no cycle time; the errors say why.
+    // An invalid cycle's time is no cycle time; the errors say why.
     out["valid"] = r.valid();
     Json reasons = Json::array();
     for (const Warning& w : r.warnings()) {
@@ -86,12 +86,12 @@ std::string evaluation_to_json(const Scenario& scenario, const Analysis& analysi
     }
     out["invalid_reasons"] = std::move(reasons);
     out["overtravel_mm"] = r.overtravel_mm();
-    // Issue 28: at up to the highest feed override, as the checks take it.
+    // At up to the highest feed override, as the checks take it.
     out["checked_overtravel_mm"] = r.checked_overtravel_mm();
     out["overtravel_touch"] = r.overtravel_touch() == 2 ? "second" : "first";
     out["trigger_speed_mm_min"] = mm_s_to_mm_min(r.trigger_speed_mm_s());
     out["uncertainty_mm"] = r.uncertainty_mm();
-    // Issue 28: the trigger's part of it, and the budget line by line.
+    // The trigger's part of it, and the budget line by line.
     out["trigger_uncertainty_mm"] = r.trigger_uncertainty_mm();
     out["uncertainty_budget"] = budget_json(uncertainty_budget(scenario, r.trigger_speed_mm_s()));
     out["scan_range_mm"] = r.scan_range_mm();
@@ -164,8 +164,9 @@ std::string sweep_to_csv(const SweepResult& sweep, const SweepResult* optimised)
 }
 
 std::string sweep_summary(const SweepResult& sweep, const Scenario& scenario) {
-    // Issue 12: one knee everywhere, find_knee's on the optimised curve (as
-    // analyse()), here over the sweep's own range.
+    // One knee everywhere (the sweep, the readout, the report, the CLI):
+    // find_knee's on the optimised curve (as analyse()), here over the sweep's
+    // own range.
     double from = std::numeric_limits<double>::infinity();
     double to = 0.0;
     for (const SweepPoint& p : sweep.points) {
@@ -226,7 +227,7 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
         csv += std::string(key.key) + ',' + csv_exact(*get_number(scenario, key.key)) + ',' +
                key.unit + '\n';
     }
-    // The keys of `probecycle-cli evaluate` (README), with their units.
+    // The keys of `probecycle-cli evaluate` (docs/cli.md), with their units.
     const auto row = [&csv](const char* key, const std::string& value, const char* unit) {
         csv += csv_line({key, value, unit});
     };
@@ -246,7 +247,7 @@ std::string csv_report(const Scenario& scenario, const Analysis& analysis,
         analysis.knee_feed_mm_min ? csv_feed_mm_min(*analysis.knee_feed_mm_min) : std::string(),
         "mm/min");
     row("knee_cycle_time_s", csv_time_s(analysis.knee_cycle_time_s), "s");
-    // Issue 28: the budget behind uncertainty_mm, one line per term.
+    // The budget behind uncertainty_mm, one line per term.
     const UncertaintyBudget budget = uncertainty_budget(scenario, r.trigger_speed_mm_s());
     csv += "\n# uncertainty budget (k = " + csv_exact(kCoverageFactor) + ", repeats " +
            std::to_string(budget.repeats) +

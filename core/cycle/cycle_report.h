@@ -47,7 +47,7 @@ std::vector<double> report_feeds(const Scenario& scenario, const Analysis& analy
 
 // The report an engineer hands over: the header (report_header.h: title,
 // date, version, the scenario's file name), then sections "# scenario" (the
-// values as given), "# summary" (evaluate's keys, README), "# phases",
+// values as given), "# summary" (evaluate's keys, docs/cli.md), "# phases",
 // "# warnings", "# sweep", each a CSV table, numbers to the digits the model
 // supports (csv_writer.h). The sweep varies the probe feed over `feeds` with
 // the rest as in the scenario (and, for two-touch, also with the recommended

@@ -5,7 +5,7 @@
 #include <limits>
 #include <utility>
 
-// Formulas: dynamics.h and domain.md, "Controller dynamics after
+// Formulas: dynamics.h and docs/model.md, "Controller dynamics after
 // interpolation". The first-order lag's response to a ramp r_m solves
 // y' = (r_m - y) / T from rest: the particular solution sum_k (-T)^k r_(m-k)
 // plus the homogeneous term that makes y(0) = 0.

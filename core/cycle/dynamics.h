@@ -1,9 +1,8 @@
 #pragma once
 
-// Controller dynamics after interpolation (domain.md, "Controller dynamics
-// after interpolation"; issue 11): the interpolator's command passes an
-// acc/dec filter after interpolation, then the servo, before it is the axis's
-// actual motion.
+// Controller dynamics after interpolation (docs/model.md, "Controller dynamics
+// after interpolation"): the interpolator's command passes an acc/dec filter
+// after interpolation, then the servo, before it is the axis's actual motion.
 //
 //   command x_c --> filter (moving averages or a first-order lag) --> servo
 //   (first-order lag, Tp = 1/Kv) --> actual x_a

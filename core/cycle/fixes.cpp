@@ -74,7 +74,8 @@ std::optional<Scenario> candidate(const Scenario& scenario, const Analysis& anal
         }
         case FixKind::approach_to_reach_feed: {
             const double feed_mm_s = cycle.first_touch().programmed_feed_mm_s;
-            // Issue 14: beyond the part's position uncertainty too.
+            // Beyond the part's position uncertainty too: the touch is at full feed
+            // wherever the part is.
             s.cycle.approach_mm = round_up_to(
                 s.cycle.part_position_uncertainty_mm + approach_room_mm(s, feed_mm_s), 0.01);
             return s;

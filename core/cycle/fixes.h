@@ -1,6 +1,6 @@
 #pragma once
 
-// One-click fixes for a cycle's warnings (issue 12): the scenario after the
+// One-click fixes for a cycle's warnings: the scenario after the
 // change a warning suggests, rounded to the digits the editors show in the
 // direction that clears it. A fix is offered only when the scenario it makes
 // passes validation, no longer carries the warning it fixes and carries no

@@ -11,8 +11,8 @@ namespace probecycle {
 
 Histogram monte_carlo_trigger_error(const Machine& machine, const Probe& probe,
                                     double trigger_speed_mm_s, const MonteCarloOptions& options) {
-    // domain.md, "Controller response": the scan wait is uniform in [0, t_s]
-    // (none with a latched input); its mean, range/2, is removed by calibration.
+    // The scan wait is uniform in [0, t_s] (none with a latched input); its
+    // mean, range/2, is removed by calibration (docs/model.md, "One touch").
     const double range = scan_range_mm(machine, trigger_speed_mm_s);
     const double sigma = 0.5 * probe.repeatability_2sigma_mm;
     const std::uint64_t n = std::max<std::uint64_t>(options.samples, 1);

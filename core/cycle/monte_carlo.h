@@ -1,9 +1,9 @@
 #pragma once
 
-// Monte Carlo of the single-touch trigger error (domain.md, "Controller
-// response"): the wait for the next scan is uniform in [0, t_s] and the
-// probe adds its repeatability (normal, 2 sigma as specified). The mean lag
-// is what calibration removes, so errors are reported about it.
+// Monte Carlo of the single-touch trigger error (docs/model.md, "Monte Carlo";
+// "One touch"): the wait for the next scan is uniform in [0, t_s] and the probe
+// adds its repeatability (normal, 2 sigma as specified). The mean lag is what
+// calibration removes, so errors are reported about it.
 
 #include <cstdint>
 #include <vector>

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-// Formulas: domain.md, "Acceleration models". The jerk-limited rest-to-rest
+// Formulas: docs/model.md, "Motion". The jerk-limited rest-to-rest
 // profile is the time-optimal one for symmetric limits: the acceleration phase
 // is a (possibly reduced) trapezoid in acceleration, the braking phase its
 // mirror image, and the distance of either is v * t / 2 by symmetry.

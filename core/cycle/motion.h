@@ -1,6 +1,6 @@
 #pragma once
 
-// Motion models of a single CNC axis (domain.md, "Acceleration models").
+// Motion models of a single CNC axis (docs/model.md, "Motion").
 //
 // Every model is expressed as a sequence of constant-jerk segments, so one
 // integrator serves all of them; the closed forms below are the fast path and
@@ -11,7 +11,7 @@
 
 namespace probecycle {
 
-// none (issue 11): the interpolator commands the feed at once and stops at
+// none: the interpolator commands the feed at once and stops at
 // once, as on a skip block without acceleration (Mitsubishi G31 without
 // acc/dec); what smooths the motion then is the filter after interpolation
 // and the servo (dynamics.h).

@@ -590,7 +590,7 @@ Message with_detail(const char* code, const char* text, std::string detail) {
 // -0 and +0 are one value; the files and reports write 0. A subnormal
 // number (under 2.2e-308) cannot be told from zero by the model: its inverse
 // overflows (a servo time constant of 4.9e-324 s gave a NaN cycle time), so
-// it is zero too (issue 29).
+// it is zero too.
 double without_negative_zero(double value) {
     return value == 0.0 || std::fpclassify(value) == FP_SUBNORMAL ? 0.0 : value;
 }
@@ -714,7 +714,8 @@ std::vector<FieldError> validate(const Scenario& scenario) {
         }
     }
     // Internal features: both start positions lie inside the feature
-    // (domain.md, "Features"), so it must be wider than two approach distances.
+    // (docs/model.md, "Strategies and features"), so it must be wider than two
+    // approach distances.
     const Cycle& c = scenario.cycle;
     if (is_internal(c.feature) && !(c.feature_size_mm > 2.0 * c.approach_mm)) {
         Message allowed = allowed_text(
@@ -724,7 +725,7 @@ std::vector<FieldError> validate(const Scenario& scenario) {
                         feature_arg("feature", c.feature)};
         errors.push_back({"cycle.feature_size_mm", number_text(c.feature_size_mm), allowed});
     }
-    // A count of measurements: a whole number (issue 14).
+    // A count of measurements (cycle.repeats): a whole number.
     if (std::isfinite(c.repeats) && c.repeats != std::floor(c.repeats)) {
         const KeyInfo& key = *find_key("cycle.repeats");
         Message allowed = allowed_text(

@@ -25,7 +25,7 @@ constexpr bool is_internal(Feature feature) {
 // How many times a measuring touch may be repeated and averaged
 // (cycle.repeats): the key's range and the optimiser's search.
 constexpr int kMaxRepeats = 20;
-// Where a two-touch backoff is measured from (issue 11): where the probe
+// Where a two-touch backoff is measured from: where the probe
 // stopped (Renishaw's cycles) or the trigger position the control recorded
 // (the skip position many macros back off from).
 enum class BackoffFrom { stop, trigger };
@@ -39,7 +39,8 @@ struct Machine {
     double time_constant_s{kDefaultTimeConstant_s};
     double max_accel_mm_s2{2000.0};
     double max_jerk_mm_s3{40000.0};
-    // Dynamics after interpolation (issue 11); none and 0 = the ideal axis.
+    // Dynamics after interpolation (docs/model.md, "Controller dynamics after
+    // interpolation"); none and 0 = the ideal axis.
     FilterKind filter{FilterKind::none};
     double filter_time_s{0.03};
     double filter2_time_s{0.01};
@@ -52,7 +53,7 @@ struct Machine {
     double scan_period_s{0.004};
     double controller_latency_s{0.002};
     bool latched_input{false};
-    // Uncertainty budget (issue 28, uncertainty.h): the axes' positioning
+    // Uncertainty budget (uncertainty.h): the axes' positioning
     // repeatability (2 sigma) and the thermal drift between calibration and
     // measurement (a half-width). Typical of a machining centre in a shop.
     double repeatability_2sigma_mm{0.002};
@@ -63,7 +64,7 @@ struct Probe {
     double pretravel_mm{0.005};
     double interface_delay_s{0.002};
     double repeatability_2sigma_mm{0.001};
-    // Uncertainty budget (issue 28, uncertainty.h): the pretravel variation
+    // Uncertainty budget (uncertainty.h): the pretravel variation
     // over directions left after calibration (a half-width; a kinematic
     // probe's data sheet gives about 1 µm of 2D lobing), and the calibration
     // artefact's certified uncertainty (k = 2; a ring gauge's certificate).
@@ -73,7 +74,8 @@ struct Probe {
     double reseat_mm{0.2};
     // Feed at which the probe was calibrated; 0 = the measuring feed.
     double calibration_feed_mm_min{0.0};
-    // The maker's rated maximum probing speed; 0 = no limit (issue 14).
+    // The maker's rated maximum probing speed; 0 = no limit. A probing or
+    // measuring feed over it is an error (feed_over_probe_limit).
     double max_feed_mm_min{0.0};
 };
 
@@ -85,9 +87,10 @@ struct Cycle {
     double feature_size_mm{50.0};
     double approach_mm{5.0};
     // How far the surface may lie from nominal; the start distance must cover
-    // it plus the distance to reach the probing feed (issue 14). 0 = a known
-    // part. Issue 28: 0.5 mm by default, a part set in a fixture or a vise by
-    // hand, or a casting's tolerance; a known part is the exception.
+    // it plus the distance to reach the probing feed, so the touch is at full
+    // feed wherever the part is. 0 = a known part. 0.5 mm by default, a part
+    // set in a fixture or a vise by hand, or a casting's tolerance; a known
+    // part is the exception.
     double part_position_uncertainty_mm{0.5};
     // How far a probing move searches past the farthest place its surface can
     // be: the nominal surface plus the part position uncertainty, or for a
@@ -101,15 +104,15 @@ struct Cycle {
     double measure_feed_mm_min{30.0};
     double backoff_mm{2.0};
     BackoffFrom backoff_from{BackoffFrom::stop};
-    // The measuring touch is made this many times and averaged (issue 14): a
+    // The measuring touch is made this many times and averaged: a
     // whole number, stored as a number as every key of the table is.
     double repeats{1.0};
     double return_feed_mm_min{10000.0};
     // Protected positioning moves of a feature (probe armed): between touches
-    // and from/to the centre (issue 11).
+    // and from/to the centre (docs/model.md, "Strategies and features").
     double position_feed_mm_min{3000.0};
-    // The highest feed override the operator may turn the cycle up to, in %
-    // (issue 28): every overtravel check (the touches, the protected moves,
+    // The highest feed override the operator may turn the cycle up to, in %:
+    // every overtravel check (the touches, the protected moves,
     // the searches and the backoff that must clear the first touch's stop)
     // holds at it. 120 %: an operator can turn every common control's dial
     // that far (Siemens' panels and LinuxCNC's sample configurations stop
@@ -118,7 +121,7 @@ struct Cycle {
     // Boss/web: height the probe lifts to, over the wall, between touches.
     double clearance_mm{10.0};
     double target_uncertainty_mm{0.0};  // 0 = no target
-    // Bounds of what the optimiser proposes (issue 28): no touch starts
+    // Bounds of what the optimiser proposes: no touch starts
     // closer to its surface than min_start_mm (a shop keeps the probe a
     // millimetre off a wall it has not yet found), and no touch is slower
     // than min_feed_mm_min (a probing feed a shop would accept).
@@ -129,9 +132,9 @@ struct Cycle {
     double size_tolerance_mm{0.0};
     ToleranceAction tolerance_action{ToleranceAction::flag};
     // The knee is the lowest feed whose cycle time is within this fraction of
-    // the best (domain.md, "Cycle time versus feed").
+    // the best (docs/model.md, "Cycle time against feed").
     double knee_tolerance{0.01};
-    // Savings of optimised settings (issue 14); 0 = not shown.
+    // Savings of optimised settings (the optimiser's report); 0 = not shown.
     double parts_per_year{0.0};
     double cycles_per_part{0.0};
     double machine_rate_per_hour{0.0};  // any currency

@@ -9,12 +9,12 @@
 #include "core/common/units.h"
 #include "core/cycle/motion_cache.h"
 
-// domain.md, "Cycle time versus feed": the knee is the lowest feed whose cycle
-// time is within a small tolerance (cycle.knee_tolerance, 1 % by default) of
-// the best over the range. Issue 11: among the valid feeds only
-// (CycleResult::valid(): overtravel under the probe's limit, backoff enough),
-// and a fastest cycle at an end of the range is said (knee_at_range_end),
-// since the knee then depends on the range.
+// docs/model.md, "Cycle time against feed": the knee is the lowest feed whose
+// cycle time is within a small tolerance (cycle.knee_tolerance, 1 % by default)
+// of the best over the range, among the valid feeds only (CycleResult::valid():
+// overtravel under the probe's limit, backoff enough), and a fastest cycle at
+// an end of the range is said (knee_at_range_end), since the knee then depends
+// on the range.
 
 namespace probecycle {
 
@@ -32,8 +32,9 @@ MotionCache& scratch_cache() {
     return cache;
 }
 
-// Whether the evaluation in `scratch` counts for the knee: valid for it, and
-// at the feed it says (issue 28).
+// Whether the evaluation in `scratch` counts for the knee: valid for it, and at
+// the feed it says (a cycle whose first touch never reaches its feed can look
+// faster only because of that).
 bool counts_for_knee(const CycleResult& scratch) {
     return valid_for_knee(scratch.invalid_codes()) && reaches_feed(scratch.first_touch());
 }
@@ -161,7 +162,7 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
         return cycle_time_at(scenario, feed, options, scratch);
     };
     if (to_mm_min == from_mm_min) {
-        // One feed (a one-feed sweep, issue 29): the knee of a single valid
+        // One feed (a sweep from a feed to itself): the knee of a single valid
         // feed is that feed; there is no range whose end it could be.
         const double t = time_at(from_mm_min);
         if (!counts_for_knee(scratch)) {
@@ -272,7 +273,8 @@ KneeSearch find_knee(const Scenario& scenario, double from_mm_min, double to_mm_
         }
         out.knee_feed_mm_min = hi;
     }
-    // A feed of the editors' digits (issue 12): rounded up, so that its cycle
+    // A feed of the editors' digits, so that the readout, the one-click fix,
+    // the report and the CLI name the same feed: rounded up, so that its cycle
     // stays within the tolerance (the curve falls towards the fastest cycle),
     // unless that would pass the last valid feed.
     {
@@ -300,7 +302,7 @@ Analysis analyse(const Scenario& scenario) {
     analysis.knee_feed_mm_min = knee.knee_feed_mm_min;
     std::vector<Warning>& warnings = analysis.cycle.mutable_warnings();
     if (!analysis.knee_feed_mm_min) {
-        // Issue 12: say why there is no knee.
+        // No feed of the range counts: say why there is no knee.
         warnings.emplace_back(Severity::warning,
                               warning::NoValidFeed{mm_min_to_mm_s(kKneeSearchFrom_mm_min),
                                                    mm_min_to_mm_s(search_to), knee.none_reached});
@@ -315,7 +317,7 @@ Analysis analyse(const Scenario& scenario) {
     if (feed > knee_feed * (1.0 + 1e-6)) {
         // Both times on the same (optimised) curve the knee was found on. A
         // feed the first touch does not reach may be faster than the knee
-        // only because of that (issue 28): then not "no faster".
+        // only because of that: then not "no faster".
         const double feed_time = cycle_time_at(scenario, feed, optimised, scratch);
         if (!reaches_feed(scratch.first_touch()) && feed_time < *analysis.knee_cycle_time_s) {
             order_by_severity(warnings);

@@ -1,6 +1,6 @@
 #pragma once
 
-// Cycle time against feed (domain.md, "Cycle time versus feed").
+// Cycle time against feed (docs/model.md, "Cycle time against feed").
 
 #include <array>
 #include <optional>
@@ -16,7 +16,7 @@ struct SweepPoint {
     double feed_mm_min{0.0};
     double cycle_time_s{0.0};
     double overtravel_mm{0.0};  // the worst touch's
-    // Issue 28: the worst touch's at up to the highest feed override, which
+    // The worst touch's at up to the highest feed override, which
     // the limit is checked against (CycleResult::checked_overtravel_mm).
     double checked_overtravel_mm{0.0};
     // Of each touch, at up to the highest feed override: a fast first touch
@@ -28,8 +28,8 @@ struct SweepPoint {
     std::array<double, kPhaseCount> phase_time_s{};  // by Phase, summed over touches
     // CycleResult::invalid_codes() at this feed (0: a valid cycle).
     unsigned invalid_codes{0};
-    // Issue 28: whether the first touch meets the surface at this feed
-    // (reaches_feed()); a feed it never reaches does not count for the knee.
+    // Whether the first touch meets the surface at this feed (reaches_feed());
+    // a feed it never reaches does not count for the knee.
     bool feed_reached{true};
     bool valid() const { return invalid_codes == 0; }
     // Valid for the knee (valid_for_knee()) and at the feed it says.
@@ -54,7 +54,8 @@ struct SweepResult {
 struct SweepOptions {
     // Two-touch: at each feed set the backoff to the recommended one (first
     // touch's overtravel + reseat) instead of the scenario's, i.e. the curve of
-    // an optimised cycle (domain.md, "Strategies"). Costs a second evaluation.
+    // an optimised cycle (docs/model.md, "Strategies and features"). Costs a
+    // second evaluation.
     bool recommended_backoff{false};
 };
 
@@ -77,8 +78,8 @@ std::vector<double> log_feeds(double from_mm_min, double to_mm_min, std::size_t 
 // the search stops at the feed where the cycle turns invalid (overtravel
 // reaches the probe's limit, or a fixed backoff becomes too small; both grow
 // with feed, so feeds beyond the first invalid one are not looked at), or
-// where the first touch no longer reaches the feed from its start (issue 28:
-// that too only grows with the feed).
+// where the first touch no longer reaches the feed from its start (that too
+// only grows with the feed).
 struct KneeSearch {
     std::optional<double> knee_feed_mm_min;  // none when even `from` is invalid
     std::optional<double> best_feed_mm_min;  // where the fastest valid cycle lies

@@ -1,14 +1,14 @@
 #pragma once
 
-// The measurement's uncertainty budget (issue 28): the terms the model
-// computes from the touch (the scan wait at the trigger speed and the probe's
-// repeatability) and the terms an engineer knows from the probe's data sheet,
-// the calibration certificate and the machine's acceptance test, each a key
-// of the scenario. They are independent, so the budget combines them as the
-// GUM does (JCGM 100:2008: 5.1.2, the law of propagation with unit
-// sensitivity coefficients; 4.3.7, a rectangular distribution of half-width
-// a has u = a/sqrt(3); 6.2.1, U = k u_c): the combined standard uncertainty
-// is the root sum of the terms' squares, expanded with k = 2.
+// The measurement's uncertainty budget (docs/model.md, "One touch"): the terms
+// the model computes from the touch (the scan wait at the trigger speed and the
+// probe's repeatability) and the terms an engineer knows from the probe's data
+// sheet, the calibration certificate and the machine's acceptance test, each a
+// key of the scenario. They are independent, so the budget combines them as the
+// GUM does (JCGM 100:2008: 5.1.2, the law of propagation with unit sensitivity
+// coefficients; 4.3.7, a rectangular distribution of half-width a has
+// u = a/sqrt(3); 6.2.1, U = k u_c): the combined standard uncertainty is the
+// root sum of the terms' squares, expanded with k = 2.
 
 #include <array>
 #include <cstddef>

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The window's --screenshot goes through the checked writer (issue 29): a FIFO,
-# a link to a FIFO and a folder are refused (exit 2, the path named) and left
-# as they were; --size names its range. (A link to a FIFO stands for a link
-# to a device: a writer that regressed must not replace a real device.)
+# The window's --screenshot goes through the checked writer (docs/files.md,
+# "Limits on input and output"): a FIFO, a link to a FIFO and a folder are
+# refused (exit 2, the path named) and left as they were; --size names its
+# range. (A link to a FIFO stands for a link to a device: a writer that
+# regressed must not replace a real device.)
 set -u
 probecycle=${1:?usage: screenshot_refusals.sh PROBECYCLE}
 dir=$(mktemp -d)

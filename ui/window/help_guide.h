@@ -1,6 +1,6 @@
 #pragma once
 
-// The in-window guide (Help > Guide, F1; issue 12): what each phase means,
+// The in-window guide (Help > Guide, F1): what each phase means,
 // how to read the charts, how to measure the delay, with the formulas the
 // tooltips show, in the interface language, and where the README says more.
 

@@ -140,7 +140,7 @@ QString shown_word(const Scenario& s, const KeyInfo& key) {
     return QString::fromStdString(value_text(s, key));
 }
 
-// Issue 12: what a preset overwrote, "label: old -> new" per key it changed,
+// What a preset overwrote, "label: old -> new" per key it changed,
 // in the editors' units.
 QStringList changed_keys(const Scenario& before, const Scenario& after) {
     QStringList out;
@@ -239,7 +239,7 @@ void MainWindow::build_ui() {
     right_splitter_->addWidget(warnings_box);
     right_splitter_->setStretchFactor(0, 3);
     right_splitter_->setStretchFactor(1, 1);
-    // Issue 12: room for about three problems, and charts that stay readable
+    // Room for about three problems, and charts that stay readable
     // however far the user drags the panel up.
     const int line = fontMetrics().height();
     warnings_box->setMinimumHeight(8 * line);
@@ -261,7 +261,7 @@ void MainWindow::build_ui() {
     main_splitter_->setChildrenCollapsible(false);
     main_splitter_->setSizes({320, 960});
 
-    // The lab (issue 4): calibration and latency from the user's own touches.
+    // The lab: calibration and latency from the user's own touches.
     calibration_tab_ = new CalibrationTab;
     latency_tab_ = new LatencyTab;
     connect(latency_tab_, &LatencyTab::delay_applied, this,
@@ -278,7 +278,7 @@ void MainWindow::build_ui() {
     tabs_->addTab(latency_tab_, QString());
     comparison_tab_ = new ComparisonTab;
     tabs_->addTab(comparison_tab_, QString());
-    // Issue 14: "What should I change?"
+    // "What should I change?": the optimiser's tab.
     optimise_ = new OptimisePanel;
     tabs_->addTab(optimise_, QString());
     connect(optimise_, &OptimisePanel::requirement_edited, this,
@@ -707,7 +707,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         event->ignore();
         return;
     }
-    // Issue 12: Discard means discard (the edits are still unsaved here). The
+    // Discard means discard (the edits are still unsaved here). The
     // next start shows the file as it was saved, or the defaults.
     if (options_.persistent) save_settings(/*with_scenario=*/!has_unsaved_changes());
     event->accept();
@@ -940,7 +940,7 @@ std::string MainWindow::lab_snapshot() const {
 }
 
 bool MainWindow::export_csv_report(const QString& path) {
-    // Issue 12: the current tab's report. A lab or comparison tab writes its
+    // The current tab's report. A lab or comparison tab writes its
     // own (and says so beside its button too).
     QWidget* tab = tabs_->currentWidget();
     if (tab == calibration_tab_ || tab == latency_tab_ || tab == comparison_tab_) {
@@ -991,7 +991,7 @@ ReportHeader MainWindow::report_header() const {
     return header;
 }
 
-// Issue 12: the current tab (the Cycle tab's charts, or the whole lab or
+// The current tab (the Cycle tab's charts, or the whole lab or
 // comparison tab), drawn at `width` pixels (the widgets are vector-drawn, so
 // no upscaled pixels), under a title line naming the scenario, the tab, the
 // date and the program version.

@@ -82,7 +82,7 @@ class MainWindow : public QMainWindow {
     // Without dialogs: the answer the next questions about unsaved edits get.
     void set_unsaved_answer(UnsavedAnswer answer) { options_.unsaved_answer = answer; }
     // A scenario file (the scenario only; the lab keeps its data) or a
-    // project file (everything, README "The project file"), told apart by
+    // project file (everything, docs/files.md, "The project file"), told apart by
     // content. Does not ask about unsaved edits: open_asking() does.
     bool open_scenario(const QString& path);
     // Asks first when unsaved work would be lost (a project replaces the
@@ -96,20 +96,20 @@ class MainWindow : public QMainWindow {
     // lab's and the comparison's too.
     bool has_unsaved_changes() const;
     // The current tab's CSV report: the cycle's, or the Calibration, Latency
-    // or Comparison tab's own (issue 12).
+    // or Comparison tab's own.
     bool export_csv_report(const QString& path);
     // The header of the cycle report: today's date (SOURCE_DATE_EPOCH's when
     // set, as the CLI) and the scenario's file name, or "untitled".
     ReportHeader report_header() const;
-    // The current tab's charts at `width` pixels under a title line (issue 12).
+    // The current tab's charts at `width` pixels under a title line.
     bool export_charts_png(const QString& path, int width = 1920);
     // `titled`: under the title line (the PNG export); the PDF report has its own.
     QImage export_image(int width, bool titled = true);
-    // The report to hand over (issue 14), of the current tab: A4 pages in the
+    // The report to hand over, of the current tab: A4 pages in the
     // interface's language (main_window_pdf.cpp). Written atomically.
     bool export_pdf_report(const QString& path);
     QByteArray pdf_report_bytes();
-    // File > "Program for the Control…" (issue 13): the tuned cycle, the
+    // File > "Program for the Control…" (docs/programs.md): the tuned cycle, the
     // scenario's cycle as plain probing moves, in the control's dialect.
     ProgramDialog* open_cycle_program_dialog();
     // The Cycle tab's four charts at `width` pixels, whichever tab is shown.
@@ -134,7 +134,7 @@ class MainWindow : public QMainWindow {
     bool pin_baseline_of(const Scenario& scenario);
     void clear_baseline();
     bool has_baseline() const { return baseline_.has_value(); }
-    // The Optimise tab (issue 14), optimised for the current scenario.
+    // The Optimise tab ("What should I change?"), optimised for the current scenario.
     OptimisePanel* optimise_panel();
 
     // Help > Guide (F1): the in-window guide, one window, shown and raised.
@@ -256,7 +256,7 @@ class MainWindow : public QMainWindow {
     CalibrationTab* calibration_tab_{nullptr};
     LatencyTab* latency_tab_{nullptr};
     ComparisonTab* comparison_tab_{nullptr};
-    // Issue 14: optimised when its tab is shown, again on every change while
+    // Optimised when its tab is shown, again on every change while
     // it is; marked stale otherwise (the optimiser costs far more than a
     // recompute).
     OptimisePanel* optimise_{nullptr};

@@ -1,4 +1,4 @@
-// The PDF report to hand over (issue 14): MainWindow::export_pdf_report and
+// The PDF report to hand over (docs/window.md): MainWindow::export_pdf_report and
 // what each tab puts in it.
 
 #include <QCoreApplication>
@@ -175,7 +175,7 @@ QByteArray MainWindow::pdf_report_bytes() {
                         readouts_->detail_text(readout)});
     }
     report.add_table(results);
-    // Issue 28: what the uncertainty holds.
+    // What the uncertainty holds, term by term.
     report.add_heading(tr("Uncertainty budget"));
     report.add_table(uncertainty_budget_rows(scenario_, computed().cycle()));
     report.add_image(charts_image(kChartsWidth));
@@ -191,7 +191,7 @@ QByteArray MainWindow::pdf_report_bytes() {
         report.add_item(tr("%1: %2").arg(row[0], row[1]), text);
     }
 
-    // Issue 14: the fastest settings that meet the requirements, and their worth.
+    // The fastest settings that meet the requirements, and their worth.
     report.add_heading(tr("The optimiser's recommendation"));
     const OptimisePanel* optimiser = optimise_panel();
     if (optimiser->result()) {

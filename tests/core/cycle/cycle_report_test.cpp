@@ -292,8 +292,8 @@ TEST(CsvReport, SectionsInOrder) {
     EXPECT_NE(report.find("machine.scan_period_s"), std::string::npos);
 }
 
-// Issue 12: the summary speaks evaluate's keys (the README documents them),
-// each value evaluate's rounded to the digits its unit gets in the reports.
+// The summary speaks evaluate's keys (docs/cli.md documents them), each value
+// evaluate's rounded to the digits its unit gets in the reports.
 TEST(CsvReport, SummaryHasEvaluatesKeysRoundedToTheModelsDigits) {
     for (Scenario s : {two_touch_with_warnings(), Scenario{}}) {
         if (s.cycle.backoff_mm < 3.0) s.cycle.backoff_mm = 0.5;  // invalid: backoff_too_small

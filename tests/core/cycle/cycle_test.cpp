@@ -130,7 +130,7 @@ std::vector<Phase> touch_sequence(Strategy strategy) {
             Phase::return_move};
 }
 
-// Issue 11: a pocket or bore from its centre and back; a boss or web from
+// A pocket or bore from its centre and back; a boss or web from
 // above its centre, lifting over the wall between touches.
 std::vector<Phase> cycle_sequence(Strategy strategy, Feature feature) {
     std::vector<Phase> out;
@@ -213,7 +213,7 @@ TEST(TouchCount, PerFeature) {
 }
 
 // ---------------------------------------------------------------------------
-// Small closed forms (domain.md "One touch, phase by phase").
+// Small closed forms (docs/model.md, "One touch").
 
 TEST(ReactionTime, InterfacePlusLatencyPlusFullScan) {
     Machine m;
@@ -235,7 +235,7 @@ struct ScanRangeCase {
 // clang-format off
 const ScanRangeCase kScanRangeCases[] = {
     // name                  F [mm/min]  t_s [s]   latched  range [mm]
-    {"standard_3000",        3000.0,     0.004,    false,   0.2},     // domain.md
+    {"standard_3000",        3000.0,     0.004,    false,   0.2},     // 50 mm/s x 4 ms
     {"high_speed_3000",      3000.0,     0.000004, false,   0.0002},  // 4 us -> 0.2 um
     {"delay_480_5ms",        480.0,      0.005,    false,   0.04},    // 480 mm/min, 5 ms
     {"slow_30",              30.0,       0.004,    false,   0.002},
@@ -281,7 +281,7 @@ TEST(SpeedError, SpeedMinusCalibratedTimesDelaysWithHalfTheScan) {
     EXPECT_NEAR(speed_error_mm(m, p, 0.5, 1.0), -0.003, 1e-15);
     EXPECT_NEAR(speed_error_mm(m, p, 1.0, 0.5), 0.003, 1e-15);
     EXPECT_EQ(speed_error_mm(m, p, 0.5, 0.5), 0.0);
-    // Latched (issue 11): captured when the signal arrives, so only the interface
+    // Latched: captured when the signal arrives, so only the interface
     // delay: (0.5 - 1.0) * 0.002 = -0.001. The latency and scan still lengthen the
     // overtravel (reaction_time_s).
     m.latched_input = true;
@@ -347,7 +347,7 @@ TEST(SingleTouch, SurfaceAt3000PhaseByPhase) {
     EXPECT_NEAR(r.first_touch().touch_speed_mm_s, 50.0, 1e-12);
     EXPECT_NEAR(r.first_touch().react_speed_mm_s, 50.0, 1e-12);
     EXPECT_NEAR(r.first_touch().programmed_feed_mm_s, 50.0, 1e-12);
-    EXPECT_NEAR(r.scan_range_mm(), 0.2, 1e-12);  // domain.md: 3000 mm/min, 4 ms
+    EXPECT_NEAR(r.scan_range_mm(), 0.2, 1e-12);  // 3000 mm/min, 4 ms
     EXPECT_NEAR(r.trigger_uncertainty_mm(), 2.0 * std::sqrt(0.04 / 12.0 + 0.001 * 0.001 / 4.0),
                 1e-12);
     EXPECT_NEAR(r.recommended_backoff_mm(), 1.905 + 0.2, 1e-12);
@@ -404,7 +404,7 @@ struct PretravelCase {
     double time_s;
 };
 
-// domain.md: 2 um at 30 mm/min takes 0.004 s; 50 um at 30 mm/min 0.1 s.
+// Pretravel p/v: 2 um at 30 mm/min takes 0.004 s; 50 um at 30 mm/min 0.1 s.
 // clang-format off
 const PretravelCase kPretravelCases[] = {
     // F [mm/min]  p [mm]   t [s]
@@ -487,7 +487,7 @@ TEST(Cycle, TouchDuringAccelerationTriggersSlowerAndKeepsAccelerating) {
               a * t_trigger + 1e-9);
     EXPECT_NEAR(std::get<warning::TouchWhileAccelerating>(w->figures).feed_mm_s, 100.0, 1e-12);
     EXPECT_EQ(std::get<warning::TouchWhileAccelerating>(w->figures).touch, 1);
-    // Issue 11, loose end 2: the error follows the real speed through the delay
+    // The error follows the real speed through the delay
     // tau = t_i + t_c + t_s/2 = 6 ms: calibration takes v tau = 0.6 mm; the axis,
     // still accelerating, travels v_t tau + a tau^2 / 2.
     const double tau = 0.006;
@@ -836,7 +836,7 @@ TEST(Warnings, BackoffTooSmall) {
     EXPECT_FALSE(w->message().empty());
 }
 
-// Issue 11, loose end 8: an error makes the cycle invalid; warnings and notes do not.
+// An error makes the cycle invalid; warnings and notes do not.
 TEST(Validity, AnErrorMakesTheCycleInvalidAndNamesWhy) {
     Scenario s = clean_two_touch();
     EXPECT_TRUE(evaluate(s).valid());
@@ -866,7 +866,7 @@ TEST(Validity, AnErrorMakesTheCycleInvalidAndNamesWhy) {
     EXPECT_TRUE(r.valid());
 }
 
-// Issue 11, loose end 5: with a reseat distance shorter than the distance to
+// With a reseat distance shorter than the distance to
 // reach the measuring feed, the recommended backoff leaves that distance.
 // 600 mm/min = 10 mm/s, T = 0.06 s: reach = v T / 2 = 0.3 mm > reseat 0.005 mm.
 TEST(RecommendedBackoff, LeavesTheSecondTouchRoomToReachTheMeasuringFeed) {
@@ -876,7 +876,7 @@ TEST(RecommendedBackoff, LeavesTheSecondTouchRoomToReachTheMeasuringFeed) {
     s.cycle.measure_feed_mm_min = 600.0;
     const CycleResult r = evaluate(s);
     ASSERT_NEAR(r.first_touch().overtravel_mm, 1.27166667, 1e-8);
-    // Issue 12: rounded up to the micrometre, the value shown.
+    // Rounded up to the micrometre, the value shown.
     EXPECT_DOUBLE_EQ(r.recommended_backoff_mm(), 1.572);
     // Following it: no touch while accelerating, no backoff warning.
     s.cycle.backoff_mm = r.recommended_backoff_mm();
@@ -892,8 +892,8 @@ TEST(RecommendedBackoff, LeavesTheSecondTouchRoomToReachTheMeasuringFeed) {
     EXPECT_NE(find_warning(old_rule, WarningCode::backoff_too_small), nullptr);
 }
 
-// Issue 11, loose end 3: the backoff from the recorded trigger position. At
-// 2000 mm/min (33.33 mm/s) the control records the touch after pretravel,
+// The backoff from the recorded trigger position (cycle.backoff_from = trigger).
+// At 2000 mm/min (33.33 mm/s) the control records the touch after pretravel,
 // interface delay and a full scan: 0.005 + 33.33 (0.002 + 0.004) = 0.205 mm past
 // the surface; the axis stops at 1.27167 mm. A 2 mm backoff from there moves
 // 2 + 1.27167 - 0.205 = 3.06667 mm. On average (half a scan, 2 ms, less of
@@ -944,8 +944,8 @@ TEST(BackoffFrom, TheRecordedTriggerPosition) {
 }
 
 // A recommendation written back rounded to the editors' 0.001 mm is followed
-// (issue 12 found 2.1050000000000004 refused as 2.105): 1 nm of tolerance.
-// Issue 12: errors first, then warnings, then notes, each in the order computed.
+// (2.1050000000000004 was once refused as 2.105): 1 nm of tolerance.
+// Errors first, then warnings, then notes, each in the order computed.
 TEST(Warnings, ErrorsComeFirst) {
     Scenario s;                 // two-touch surface at 2000 mm/min
     s.cycle.approach_mm = 0.2;  // start_inside_uncertainty (a warning)
@@ -1054,7 +1054,7 @@ TEST(Warnings, UncertaintyOverTarget) {
     EXPECT_EQ(find_warning(evaluate(s), WarningCode::uncertainty_over_target), nullptr);
 }
 
-// Issue 14: repeated measuring touches.
+// Repeated measuring touches (cycle.repeats).
 TEST(Repeats, SingleTouchReturnsToTheStartAndTouchesAgain) {
     Scenario s = surface(Strategy::single_touch, 3000.0);
     const CycleResult once = evaluate(s);
@@ -1329,7 +1329,7 @@ TEST(Warnings, ProtectedMovesAreTouchesAtThePositioningFeed) {
         "controller_latency_s": 0.014}, "cycle": {"feed_override_max_pct": 100}})");
     EXPECT_NEAR(protected_move_overtravel_mm(fanuc, 8000.0 / 60.0),
                 0.005 + 8000.0 / 60.0 * (0.002 + 0.014 + 0.004 + 0.032 + 0.033), 1e-9);
-    // Issue 28: at 150 % feed override the move runs at 12000 mm/min: 17.0 mm.
+    // At 150 % feed override the move runs at 12000 mm/min: 17.0 mm.
     fanuc.cycle.feed_override_max_pct = 150.0;
     EXPECT_NEAR(protected_move_overtravel_mm(fanuc, 8000.0 / 60.0),
                 0.005 + 12000.0 / 60.0 * (0.002 + 0.014 + 0.004 + 0.032 + 0.033), 1e-9);
@@ -1534,12 +1534,12 @@ TEST_F(RandomCycles, FormulasOfATouchAtFullSpeed) {
         const double v = mm_min_to_mm_s(s.cycle.probe_feed_mm_min);
         const TouchResult& first = r.first_touch();
         EXPECT_NEAR(first.programmed_feed_mm_s, v, rel_tol(v));
-        // Issue 11: room to reseat and to reach the measuring feed, whichever is more.
+        // Room to reseat and to reach the measuring feed, whichever is more.
         const double room =
             std::max(s.probe.reseat_mm,
                      reach_distance_mm(limits, mm_min_to_mm_s(s.cycle.measure_feed_mm_min)));
-        // Issue 12: rounded up to the micrometre.
-        // Issue 28: and at the highest feed override, room to reseat.
+        // Rounded up to the micrometre; and at the highest feed override, room
+        // to reseat.
         const double needed =
             std::max(first.overtravel_mm + room, first.override_overtravel_mm + s.probe.reseat_mm);
         EXPECT_GE(r.recommended_backoff_mm(), needed - rel_tol(needed));
@@ -1916,7 +1916,7 @@ TEST(Overtravel, NamesTheTouchThatOvertravelsMost) {
     EXPECT_EQ(evaluate(s).overtravel_touch(), 1);
 }
 
-// Issue 28: the operator may turn the feed override up to
+// The operator may turn the feed override up to
 // cycle.feed_override_max_pct. The touches then run at that multiple of their
 // feeds from the same starts, and every overtravel check holds there; the
 // cycle time stays the programmed one.

@@ -1,4 +1,4 @@
-// Controller dynamics after interpolation (core/cycle/dynamics.h, issue 11).
+// Controller dynamics after interpolation (core/cycle/dynamics.h; docs/model.md).
 //
 // The command x_c passes an acc/dec filter (linear: a moving average of the
 // speed over W; exponential: a first-order lag T; bell: two moving averages

@@ -1,4 +1,4 @@
-// One-click fixes (core/cycle/fixes.h, issue 12): each fix offered clears the
+// One-click fixes (core/cycle/fixes.h): each fix offered clears the
 // warning it fixes, on hand-made cases and on every example and preset.
 
 #include "core/cycle/fixes.h"
@@ -58,7 +58,7 @@ TEST(Fixes, BackoffTooSmallSetsTheRecommendedBackoffOnTheMicrometreGrid) {
 }
 
 TEST(Fixes, TheRecommendationShownIsTheValueThatClearsTheWarning) {
-    // Issue 12: reseat 0.2002 mm made the recommendation 2.1052 mm, shown as
+    // Reseat 0.2002 mm made the recommendation 2.1052 mm, shown as
     // 2.105; typed back, it was refused. Now it is 2.106, and 2.106 passes.
     Scenario s;
     s.cycle.feed_override_max_pct = 100.0;  // the touches at their programmed feeds

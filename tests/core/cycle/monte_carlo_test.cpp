@@ -15,7 +15,7 @@
 namespace probecycle {
 namespace {
 
-// 3000 mm/min with a 4 ms scan: a 0.2 mm range (domain.md).
+// 3000 mm/min with a 4 ms scan: a 0.2 mm range.
 constexpr double kSpeed_mm_s = 50.0;
 
 Machine scanned_machine() {

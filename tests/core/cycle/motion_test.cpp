@@ -150,7 +150,7 @@ double max_speed_in(const SegmentPlan& plan) {
 }
 
 // ---------------------------------------------------------------------------
-// Named cases, computed by hand (domain.md "Acceleration models").
+// Named cases, computed by hand (docs/model.md, "Motion").
 
 TEST(Integrate, ConstantJerkClosedForm) {
     // x = 1 + 3*2 + 4*2^2/2 + 6*2^3/6 = 23; v = 3 + 4*2 + 6*2^2/2 = 23; a = 4 + 6*2 = 16.
@@ -272,7 +272,7 @@ struct ReachCase {
 // clang-format off
 const ReachCase kReachCases[] = {
     // name            limits                         F [mm/min]  t [s]   d [mm]
-    // domain.md: T = 0.06 s, 50 mm/min needs 0.025 mm, 5000 mm/min needs 2.5 mm.
+    // v T / 2 with T = 0.06 s: 50 mm/min needs 0.025 mm, 5000 mm/min needs 2.5 mm.
     {"tc_50",          time_constant(0.06),           50.0,       0.06,   0.025},
     {"tc_5000",        time_constant(0.06),           5000.0,     0.06,   2.5},
     {"ca_6000",        constant_accel(2000.0),        6000.0,     0.05,   2.5},

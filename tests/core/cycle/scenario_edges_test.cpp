@@ -1,6 +1,7 @@
 // Every key at and just inside its limits, and at the values that cannot be
-// told from zero (issue 29): a value the scenario accepts gives finite
-// figures everywhere the evaluation prints them; a subnormal number is zero.
+// told from zero (a subnormal servo time constant once gave a NaN cycle time
+// marked valid): a value the scenario accepts gives finite figures everywhere
+// the evaluation prints them; a subnormal number is zero.
 // Beside the random scenarios of cycle_property_test.cpp, which never draw
 // these edges.
 #include <gtest/gtest.h>

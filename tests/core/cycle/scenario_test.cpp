@@ -700,7 +700,7 @@ TEST(KeyTable, EveryKeyHasALabelADescriptionAndADefaultInRange) {
         EXPECT_FALSE(value.empty());
         if (key.kind == KeyKind::number) {
             // A number without a unit is a fraction (cycle.knee_tolerance), a
-            // count or an amount of any currency (issue 14).
+            // count or an amount of any currency.
             const std::set<std::string> counts = {"cycle.repeats", "cycle.parts_per_year",
                                                   "cycle.cycles_per_part",
                                                   "cycle.machine_rate_per_hour"};

@@ -30,9 +30,9 @@ Scenario single_touch_surface() {
     return s;
 }
 
-// The knee by its definition: among the valid points (CycleResult::valid())
-// whose first touch reaches its feed (issue 28), the lowest feed whose cycle
-// time is within the tolerance of the fastest.
+// The knee by its definition (docs/model.md, "Cycle time against feed"): among
+// the valid points (CycleResult::valid()) whose first touch reaches its feed,
+// the lowest feed whose cycle time is within the tolerance of the fastest.
 std::optional<double> knee_of(const std::vector<SweepPoint>& points,
                               double tolerance = kDefaultKneeTolerance) {
     double best = std::numeric_limits<double>::infinity();
@@ -52,7 +52,7 @@ std::optional<double> max_feed_meeting(const std::vector<SweepPoint>& points, do
     std::optional<double> best;
     if (target <= 0.0) return best;
     for (const SweepPoint& p : points) {
-        // Issue 12: valid feeds only.
+        // Valid feeds only.
         if (p.valid() && p.uncertainty_mm <= target && (!best || p.feed_mm_min > *best)) {
             best = p.feed_mm_min;
         }
@@ -181,7 +181,7 @@ TEST(Sweep, TwoTouchTargetDependsOnTheMeasuringFeedOnly) {
     s.cycle.strategy = Strategy::two_touch;
     s.cycle.target_uncertainty_mm = 0.01;  // met at 30 mm/min whatever the first feed
     // With the recommended backoff every feed is valid (a fixed backoff is too
-    // small from 2900 mm/min: issue 12, invalid feeds do not count).
+    // small from 2900 mm/min, and invalid feeds do not count).
     const SweepResult sweep =
         sweep_feeds(s, linear_feeds(100.0, 3000.0, 100.0), {.recommended_backoff = true});
     ASSERT_TRUE(sweep.max_feed_meeting_target_mm_min.has_value());
@@ -378,7 +378,7 @@ TEST(Analyse, KneeSearchReachesAFeedBeyond10000) {
     }
 }
 
-// --- Issue 11, loose end 4: the knee among valid feeds, its tolerance, the range's ends ---
+// --- The knee among valid feeds, its tolerance, the range's ends ---
 
 const Warning* find_warning(const std::vector<Warning>& warnings, WarningCode code) {
     for (const Warning& w : warnings) {
@@ -420,7 +420,7 @@ TEST(Sweep, NoValidFeedGivesNoKnee) {
     EXPECT_FALSE(find_knee(s, 10.0, 1000.0).knee_feed_mm_min.has_value());
 }
 
-// Issue 28: the Renishaw note's geometry (single touch, 2.5 mm start,
+// The Renishaw note's geometry (single touch, 2.5 mm start,
 // T = 0.06 s, return at 5000 mm/min). Its cycle time is lowest near 4500
 // mm/min, rises, then falls again above about 6500 mm/min only because the
 // touch no longer reaches the programmed feed in 2.5 mm: those feeds are not
@@ -523,7 +523,7 @@ TEST(FindKnee, TheToleranceMovesTheKnee) {
         EXPECT_LE(cycle_time_at(s, *knee.knee_feed_mm_min),
                   knee.best_cycle_time_s * (1.0 + tolerance) * (1.0 + 1e-9));
         knees.push_back(*knee.knee_feed_mm_min);
-        // A feed of the editors' digits (whole mm/min from 100 mm/min up, issue 12) ...
+        // A feed of the editors' digits (whole mm/min from 100 mm/min up) ...
         EXPECT_EQ(*knee.knee_feed_mm_min, std::round(*knee.knee_feed_mm_min));
         if (tolerance == 0.0) {
             // ... so with no tolerance, the fastest feed to within that step.

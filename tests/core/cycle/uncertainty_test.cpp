@@ -1,4 +1,4 @@
-// The uncertainty budget (issue 28): hand-computed lines, the GUM
+// The uncertainty budget (uncertainty.h): hand-computed lines, the GUM
 // combination, repeats averaging only the touch's random terms, and the
 // cycle's figure being the budget's.
 #include "core/cycle/uncertainty.h"
@@ -22,7 +22,7 @@ TEST(UncertaintyBudget, HandComputedAtTheDefaultsSingleTouchAt3000) {
     s.cycle.probe_feed_mm_min = 3000.0;
     const UncertaintyBudget b = uncertainty_budget(s, 50.0);  // 3000 mm/min
     ASSERT_EQ(b.lines.size(), kBudgetTermCount);
-    // domain.md: 3000 mm/min with a 4 ms scan is a 0.2 mm range; u = R/sqrt(12).
+    // 3000 mm/min (50 mm/s) with a 4 ms scan is a 0.2 mm range; u = R/sqrt(12).
     EXPECT_EQ(b.lines[0].term, BudgetTerm::scan_wait);
     EXPECT_STREQ(b.lines[0].key, "machine.scan_period_s");
     EXPECT_NEAR(b.lines[0].value_mm, 0.2, 1e-15);

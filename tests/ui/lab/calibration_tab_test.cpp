@@ -231,7 +231,7 @@ TEST_F(LabCalibrationTab, ExportWritesTheReportRows) {
     const QString path = dir.filePath(QStringLiteral("calibration.csv"));
     ASSERT_TRUE(tab_.export_report(path)) << tab_.last_error().toStdString();
     const QString csv = read_file(path);
-    // The header of every report (issue 12), naming the imported file.
+    // The header of every report, naming the imported file.
     EXPECT_TRUE(csv.startsWith(QStringLiteral("# ProbeCycle calibration report\n# date,") +
                                QString::fromStdString(report_date())))
         << csv.toStdString();

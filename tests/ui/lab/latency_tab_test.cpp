@@ -124,7 +124,7 @@ TEST_F(LabLatencyTab, BadFilesNameTheLineAndKeepThePreviousFit) {
     EXPECT_EQ(tab_.results_text(), shown);
 }
 
-// Issue 12: the tab exports its fit and stability results, the bytes of
+// The tab exports its fit and stability results, the bytes of
 // `latency fit --report` (core delay_fit_report.h), under a header naming the
 // touches' file while they are that file's, and "pasted" once edited.
 TEST_F(LabLatencyTab, ExportWritesTheCoresFitAndStabilityReport) {
@@ -210,7 +210,7 @@ TEST_F(LabLatencyTab, ApplyEmitsTheControllerLatencyByTheCliRule) {
     EXPECT_TRUE(breakdown->text().contains(QStringLiteral("4.500")))
         << breakdown->text().toStdString();
 
-    // A latched input (issue 11): the fitted delay is the interface delay, and
+    // A latched input: the fitted delay is the interface delay, and
     // the controller latency is left alone, which the breakdown says.
     scenario.machine.latched_input = true;
     tab_.set_scenario(scenario);
@@ -236,7 +236,8 @@ TEST_F(LabLatencyTab, ANegativeControllerLatencyIsAnErrorAndEmitsNothing) {
         << tab_.last_error().toStdString();
 }
 
-// Issue 11, loose end 7: the machine lags 10 cycles, the control compensates 8.
+// The machine lags 10 cycles, the control compensates 8: the true lag and the
+// compensated lag apart.
 TEST_F(LabLatencyTab, TheCompensatedLagIsSetApartAndCharted) {
     tab_.set_scenario(Scenario{});
     LatencyTab::CompensationInputs inputs;

@@ -1,8 +1,8 @@
-// Programs for the control and its log read back, in the window (issue 13,
-// "CLI and window"): the dialog's program is the core's for the same plan,
-// a refusal is shown in place and disables Save, Save writes the program and
-// its plan, and "Import machine log" fills a tab's paste box and fits, or
-// leaves the tab as it was and names the line; in every language.
+// Programs for the control and its log read back, in the window
+// (docs/programs.md, "In the window"): the dialog's program is the core's for
+// the same plan, a refusal is shown in place and disables Save, Save writes the
+// program and its plan, and "Import machine log" fills a tab's paste box and
+// fits, or leaves the tab as it was and names the line; in every language.
 
 #include "ui/lab/program_dialog.h"
 
