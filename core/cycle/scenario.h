@@ -58,6 +58,7 @@ struct Machine {
     // measurement (a half-width). Typical of a machining centre in a shop.
     double repeatability_2sigma_mm{0.002};
     double thermal_drift_mm{0.002};
+    bool operator==(const Machine&) const = default;
 };
 
 struct Probe {
@@ -77,6 +78,7 @@ struct Probe {
     // The maker's rated maximum probing speed; 0 = no limit. A probing or
     // measuring feed over it is an error (feed_over_probe_limit).
     double max_feed_mm_min{0.0};
+    bool operator==(const Probe&) const = default;
 };
 
 struct Cycle {
@@ -138,6 +140,7 @@ struct Cycle {
     double parts_per_year{0.0};
     double cycles_per_part{0.0};
     double machine_rate_per_hour{0.0};  // any currency
+    bool operator==(const Cycle&) const = default;
 };
 
 struct Scenario {
@@ -147,6 +150,7 @@ struct Scenario {
 
     MotionLimits motion_limits() const;
     AxisDynamics axis_dynamics() const;
+    bool operator==(const Scenario&) const = default;
 };
 
 class ScenarioError : public std::runtime_error {

@@ -180,6 +180,12 @@ void OptimisePanel::show_scenario(const Scenario& scenario) {
     }
     OptimiseRequirements requirements;
     requirements.max_overtravel_fraction = overtravel_fraction();
+    if (optimised_scenario_ == scenario &&
+        optimised_fraction_ == requirements.max_overtravel_fraction) {
+        return;  // shown already
+    }
+    optimised_scenario_ = scenario;
+    optimised_fraction_ = requirements.max_overtravel_fraction;
     try {
         clear_vector_upper_state();  // what Qt painted may have left them in use
         result_ = optimise(scenario, requirements);

@@ -76,6 +76,10 @@ class OptimisePanel : public QWidget {
     void show_result();
 
     Scenario scenario_;
+    // What result_ (or refusal_) was found for: the optimiser (its front
+    // included, about 20 ms) runs again only when one of them changed.
+    std::optional<Scenario> optimised_scenario_;
+    double optimised_fraction_{0.0};
     std::optional<OptimiseResult> result_;
     std::optional<Message> refusal_;
     int optimise_count_{0};

@@ -87,6 +87,30 @@ TEST(OptimiseTab, ShowsTheCoresAnswerAndAppliesItAsOneUndoableStep) {
     EXPECT_EQ(window->scenario().cycle.approach_mm, before.cycle.approach_mm);
 }
 
+// The optimiser (its front included) runs again only when the scenario or
+// the overtravel requirement changed: a recompute that changed neither keeps
+// the result it has.
+TEST(OptimiseTab, OptimisesAgainOnlyWhenTheScenarioChanged) {
+    auto window = make_window();
+    window->edit_scenario(bore(), QStringLiteral("bore"));
+    OptimisePanel* panel = window->optimise_panel();
+    show_tab(*window, panel);
+    ASSERT_TRUE(panel->result().has_value());
+    const int runs = panel->optimise_count();
+    panel->show_scenario(window->scenario());
+    EXPECT_EQ(panel->optimise_count(), runs);
+    Scenario faster = window->scenario();
+    faster.cycle.probe_feed_mm_min += 100.0;
+    panel->show_scenario(faster);
+    EXPECT_EQ(panel->optimise_count(), runs + 1);
+    panel->set_overtravel_fraction(0.7);  // (the window may optimise its own scenario)
+    panel->show_scenario(faster);
+    const int after = panel->optimise_count();
+    EXPECT_GT(after, runs + 1);
+    panel->show_scenario(faster);
+    EXPECT_EQ(panel->optimise_count(), after);
+}
+
 TEST(OptimiseTab, ARequirementIsAnUndoableEditAndOptimisesAgain) {
     auto window = make_window();
     window->edit_scenario(bore(), QStringLiteral("bore"));
