@@ -15,6 +15,7 @@
 #include "core/cycle/cycle.h"
 #include "core/cycle/motion.h"
 #include "core/cycle/motion_cache.h"
+#include "core/cycle/preset.h"
 #include "core/cycle/sweep.h"
 #include "core/optimise/optimiser.h"
 
@@ -107,7 +108,9 @@ Scenario filtered_bore() {
 Scenario preset_bore(const char* preset) {
     Scenario s = two_touch_bore();
     s.cycle.backoff_mm = 3.0;  // over the recommended backoff of both presets: valid cycles
-    return merge_json(s, read_text_file(std::string(PROBECYCLE_PRESETS_DIR "/") + preset));
+    return merge_json(s,
+                      parse_preset(read_text_file(std::string(PROBECYCLE_PRESETS_DIR "/") + preset))
+                          .scenario_json);
 }
 Scenario mitsubishi_bore() {
     return preset_bore("machine_mitsubishi_g31.json");

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "core/common/file_io.h"
+#include "core/cycle/preset.h"
 #include "ui/cycle/computation.h"
 #include "ui/window/main_window.h"
 
@@ -157,8 +158,10 @@ void BM_Recompute(benchmark::State& state) {
 void BM_Recompute_Fanuc(benchmark::State& state) {
     run_recompute(state, probecycle::merge_json(
                              probecycle::Scenario{},
-                             probecycle::read_text_file(std::string(
-                                 PROBECYCLE_PRESETS_DIR "/machine_fanuc_exponential_servo.json"))));
+                             probecycle::parse_preset(probecycle::read_text_file(std::string(
+                                                          PROBECYCLE_PRESETS_DIR
+                                                          "/machine_fanuc_exponential_servo.json")))
+                                 .scenario_json));
 }
 
 void BM_LaunchToFirstPaint(benchmark::State& state) {

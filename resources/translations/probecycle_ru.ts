@@ -1422,6 +1422,97 @@
     </message>
 </context>
 <context>
+    <name>Preset</name>
+    <message>
+        <source>Fanuc-type: exponential acc/dec after interpolation + servo</source>
+        <translation>Типа Fanuc: экспоненциальный разгон/торможение после интерполяции + сервопривод</translation>
+    </message>
+    <message>
+        <source>The skip feed is commanded at once and smoothed after interpolation by an exponential filter (32 ms), then a servo lag (33 ms); 20 ms from trigger to reaction with the probe&apos;s 2 ms. Overtravel at cruise: F/60 × (20 + Tc + Ts) / 1000 mm. Typical values: replace them with your machine&apos;s.</source>
+        <translation>Подача пропуска задаётся сразу и сглаживается после интерполяции экспоненциальным фильтром (32 мс), затем запаздывание сервопривода (33 мс); 20 мс от срабатывания до реакции вместе с 2 мс щупа. Перебег на установившейся подаче: F/60 × (20 + Tc + Ts) / 1000 мм. Типичные значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>High-speed skip input (4 µs scan)</source>
+        <translation>Быстрый вход пропуска (опрос 4 мкс)</translation>
+    </message>
+    <message>
+        <source>A direct, high-speed skip input scanned every 4 µs with a 0.5 ms latency. Typical values: replace them with your machine&apos;s.</source>
+        <translation>Прямой быстрый вход пропуска с опросом каждые 4 мкс и задержкой 0,5 мс. Типовые значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>Latched input (position captured in hardware)</source>
+        <translation>Вход с защёлкой (положение фиксируется аппаратно)</translation>
+    </message>
+    <message>
+        <source>The control latches the axis positions at the trigger: the scan wait leaves the measured value but not the travel. Typical values: replace them with your machine&apos;s.</source>
+        <translation>ЧПУ защёлкивает положения осей в момент срабатывания: ожидание опроса уходит из измеренного значения, но не из пути. Типовые значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>Linear acc/dec after interpolation</source>
+        <translation>Линейный разгон/торможение после интерполяции</translation>
+    </message>
+    <message>
+        <source>The feed is commanded at once and averaged over 64 ms after interpolation, then a 20 ms servo lag: a touch during the ramp does not brake at once. Typical values: replace them with your machine&apos;s.</source>
+        <translation>Подача задаётся сразу и усредняется за 64 мс после интерполяции, затем запаздывание сервопривода 20 мс: касание во время разгона не тормозит ось сразу. Типичные значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>LinuxCNC (1 ms servo period)</source>
+        <translation>LinuxCNC (период сервоцикла 1 мс)</translation>
+    </message>
+    <message>
+        <source>LinuxCNC 2.9 in exact stop (G61.1), as ProbeCycle&apos;s programs run it: constant acceleration (1000 mm/s²), the probe input read once per 1 ms servo period and braking two periods later, no filter after interpolation, ideal drives. Typical values: replace them with your machine&apos;s, or read them from its INI file with File &gt; Import Machine.</source>
+        <translation>LinuxCNC 2.9 в режиме точного останова (G61.1), как его используют программы ProbeCycle: постоянное ускорение (1000 мм/с²), вход щупа опрашивается раз в период сервоцикла 1 мс, торможение начинается двумя периодами позже, без фильтра после интерполяции, идеальные приводы. Типичные значения: замените их значениями вашего станка или прочитайте их из его INI-файла через «Файл &gt; Импорт станка».</translation>
+    </message>
+    <message>
+        <source>Mitsubishi-type: G31 without acc/dec</source>
+        <translation>Типа Mitsubishi: G31 без разгона/торможения</translation>
+    </message>
+    <message>
+        <source>The skip block moves without acceleration: the command starts and stops at once and only the servo lag (Tp = 30 ms) smooths it; 5 ms response delay with the probe&apos;s 2 ms, 1 ms scan. Overtravel: F/60 × (Tp + t1 ± t2). Typical values: replace them with your machine&apos;s.</source>
+        <translation>Кадр пропуска выполняется без разгона: задание начинается и прекращается сразу, сглаживает его только запаздывание сервопривода (Tp = 30 мс); задержка отклика 5 мс вместе с 2 мс щупа, опрос 1 мс. Перебег: F/60 × (Tp + t1 ± t2). Типичные значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>Standard skip input (4 ms scan)</source>
+        <translation>Стандартный вход пропуска (опрос 4 мс)</translation>
+    </message>
+    <message>
+        <source>A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms) without a filter after interpolation or servo lag. Typical values: replace them with your machine&apos;s.</source>
+        <translation>Вход пропуска с опросом каждые 4 мс и задержкой 2 мс на станке с постоянной времени (T = 60 мс), без фильтра после интерполяции и без запаздывания сервопривода. Типичные значения: замените их значениями вашего станка.</translation>
+    </message>
+    <message>
+        <source>Kinematic probe, optical transmission</source>
+        <translation>Кинематический датчик, оптическая передача</translation>
+    </message>
+    <message>
+        <source>Resistive kinematic probe with an optical receiver: 5 µm pretravel, 2 ms interface response, 1 µm repeatability. Typical values: replace them with the ones you measure.</source>
+        <translation>Резистивный кинематический датчик с оптическим приёмником: предход 5 мкм, отклик интерфейса 2 мс, повторяемость 1 мкм. Типовые значения: замените их измеренными.</translation>
+    </message>
+    <message>
+        <source>Kinematic probe, radio transmission</source>
+        <translation>Кинематический датчик, радиопередача</translation>
+    </message>
+    <message>
+        <source>Kinematic probe with a radio receiver: the transmission adds about 10 ms of interface response. Typical values: replace them with the ones you measure.</source>
+        <translation>Кинематический датчик с радиоприёмником: передача добавляет около 10 мс к отклику интерфейса. Типовые значения: замените их измеренными.</translation>
+    </message>
+    <message>
+        <source>Short stylus / small bore (2 mm overtravel)</source>
+        <translation>Короткий наконечник / малое отверстие (перебег 2 мм)</translation>
+    </message>
+    <message>
+        <source>A probe with a short stylus or in a small bore, where only about 2 mm of overtravel is safe. Typical values: replace them with the ones you measure.</source>
+        <translation>Датчик с коротким наконечником или в малом отверстии, где безопасен перебег лишь около 2 мм. Типовые значения: замените их измеренными.</translation>
+    </message>
+    <message>
+        <source>Strain-gauge probe (high accuracy)</source>
+        <translation>Тензометрический датчик (высокая точность)</translation>
+    </message>
+    <message>
+        <source>Strain-gauge probe: sub-micrometre pretravel and repeatability, low trigger force. Typical values: replace them with the ones you measure.</source>
+        <translation>Тензометрический датчик: предход и повторяемость меньше микрометра, малое усилие срабатывания. Типовые значения: замените их измеренными.</translation>
+    </message>
+</context>
+<context>
     <name>Program</name>
     <message>
         <source>the backoff %1 does not clear the first touch&apos;s overtravel %2: set cycle.backoff_mm to at least %3 (the recommended backoff)</source>
@@ -3011,58 +3102,6 @@
 <context>
     <name>probecycle::ui::MainWindow</name>
     <message>
-        <source>Standard skip input (4 ms scan)</source>
-        <translation>Стандартный вход пропуска (опрос 4 мс)</translation>
-    </message>
-    <message>
-        <source>High-speed skip input (4 µs scan)</source>
-        <translation>Быстрый вход пропуска (опрос 4 мкс)</translation>
-    </message>
-    <message>
-        <source>A direct, high-speed skip input scanned every 4 µs with a 0.5 ms latency. Typical values: replace them with your machine&apos;s.</source>
-        <translation>Прямой быстрый вход пропуска с опросом каждые 4 мкс и задержкой 0,5 мс. Типовые значения: замените их значениями вашего станка.</translation>
-    </message>
-    <message>
-        <source>Latched input (position captured in hardware)</source>
-        <translation>Вход с защёлкой (положение фиксируется аппаратно)</translation>
-    </message>
-    <message>
-        <source>The control latches the axis positions at the trigger: the scan wait leaves the measured value but not the travel. Typical values: replace them with your machine&apos;s.</source>
-        <translation>ЧПУ защёлкивает положения осей в момент срабатывания: ожидание опроса уходит из измеренного значения, но не из пути. Типовые значения: замените их значениями вашего станка.</translation>
-    </message>
-    <message>
-        <source>Kinematic probe, optical transmission</source>
-        <translation>Кинематический датчик, оптическая передача</translation>
-    </message>
-    <message>
-        <source>Resistive kinematic probe with an optical receiver: 5 µm pretravel, 2 ms interface response, 1 µm repeatability. Typical values: replace them with the ones you measure.</source>
-        <translation>Резистивный кинематический датчик с оптическим приёмником: предход 5 мкм, отклик интерфейса 2 мс, повторяемость 1 мкм. Типовые значения: замените их измеренными.</translation>
-    </message>
-    <message>
-        <source>Kinematic probe, radio transmission</source>
-        <translation>Кинематический датчик, радиопередача</translation>
-    </message>
-    <message>
-        <source>Kinematic probe with a radio receiver: the transmission adds about 10 ms of interface response. Typical values: replace them with the ones you measure.</source>
-        <translation>Кинематический датчик с радиоприёмником: передача добавляет около 10 мс к отклику интерфейса. Типовые значения: замените их измеренными.</translation>
-    </message>
-    <message>
-        <source>Strain-gauge probe (high accuracy)</source>
-        <translation>Тензометрический датчик (высокая точность)</translation>
-    </message>
-    <message>
-        <source>Strain-gauge probe: sub-micrometre pretravel and repeatability, low trigger force. Typical values: replace them with the ones you measure.</source>
-        <translation>Тензометрический датчик: предход и повторяемость меньше микрометра, малое усилие срабатывания. Типовые значения: замените их измеренными.</translation>
-    </message>
-    <message>
-        <source>Short stylus / small bore (2 mm overtravel)</source>
-        <translation>Короткий наконечник / малое отверстие (перебег 2 мм)</translation>
-    </message>
-    <message>
-        <source>A probe with a short stylus or in a small bore, where only about 2 mm of overtravel is safe. Typical values: replace them with the ones you measure.</source>
-        <translation>Датчик с коротким наконечником или в малом отверстии, где безопасен перебег лишь около 2 мм. Типовые значения: замените их измеренными.</translation>
-    </message>
-    <message>
         <source>About ProbeCycle</source>
         <translation>О программе ProbeCycle</translation>
     </message>
@@ -3349,34 +3388,6 @@
         <translation>Сравнение</translation>
     </message>
     <message>
-        <source>A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms) without a filter after interpolation or servo lag. Typical values: replace them with your machine&apos;s.</source>
-        <translation>Вход пропуска с опросом каждые 4 мс и задержкой 2 мс на станке с постоянной времени (T = 60 мс), без фильтра после интерполяции и без запаздывания сервопривода. Типичные значения: замените их значениями вашего станка.</translation>
-    </message>
-    <message>
-        <source>Fanuc-type: exponential acc/dec after interpolation + servo</source>
-        <translation>Типа Fanuc: экспоненциальный разгон/торможение после интерполяции + сервопривод</translation>
-    </message>
-    <message>
-        <source>The skip feed is commanded at once and smoothed after interpolation by an exponential filter (32 ms), then a servo lag (33 ms); 20 ms from trigger to reaction with the probe&apos;s 2 ms. Overtravel at cruise: F/60 × (20 + Tc + Ts) / 1000 mm. Typical values: replace them with your machine&apos;s.</source>
-        <translation>Подача пропуска задаётся сразу и сглаживается после интерполяции экспоненциальным фильтром (32 мс), затем запаздывание сервопривода (33 мс); 20 мс от срабатывания до реакции вместе с 2 мс щупа. Перебег на установившейся подаче: F/60 × (20 + Tc + Ts) / 1000 мм. Типичные значения: замените их значениями вашего станка.</translation>
-    </message>
-    <message>
-        <source>Mitsubishi-type: G31 without acc/dec</source>
-        <translation>Типа Mitsubishi: G31 без разгона/торможения</translation>
-    </message>
-    <message>
-        <source>The skip block moves without acceleration: the command starts and stops at once and only the servo lag (Tp = 30 ms) smooths it; 5 ms response delay with the probe&apos;s 2 ms, 1 ms scan. Overtravel: F/60 × (Tp + t1 ± t2). Typical values: replace them with your machine&apos;s.</source>
-        <translation>Кадр пропуска выполняется без разгона: задание начинается и прекращается сразу, сглаживает его только запаздывание сервопривода (Tp = 30 мс); задержка отклика 5 мс вместе с 2 мс щупа, опрос 1 мс. Перебег: F/60 × (Tp + t1 ± t2). Типичные значения: замените их значениями вашего станка.</translation>
-    </message>
-    <message>
-        <source>Linear acc/dec after interpolation</source>
-        <translation>Линейный разгон/торможение после интерполяции</translation>
-    </message>
-    <message>
-        <source>The feed is commanded at once and averaged over 64 ms after interpolation, then a 20 ms servo lag: a touch during the ramp does not brake at once. Typical values: replace them with your machine&apos;s.</source>
-        <translation>Подача задаётся сразу и усредняется за 64 мс после интерполяции, затем запаздывание сервопривода 20 мс: касание во время разгона не тормозит ось сразу. Типичные значения: замените их значениями вашего станка.</translation>
-    </message>
-    <message>
         <source>&amp;Machine (skip input, control)</source>
         <translation>&amp;Станок (вход пропуска, ЧПУ)</translation>
     </message>
@@ -3578,14 +3589,6 @@
     <message>
         <source>The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), with the values set here</source>
         <translation>Цикл как программа измерения для вашей ЧПУ (LinuxCNC, grbl, типа Fanuc) со значениями, заданными здесь</translation>
-    </message>
-    <message>
-        <source>LinuxCNC (1 ms servo period)</source>
-        <translation>LinuxCNC (период сервоцикла 1 мс)</translation>
-    </message>
-    <message>
-        <source>LinuxCNC 2.9 in exact stop (G61.1), as ProbeCycle&apos;s programs run it: constant acceleration (1000 mm/s²), the probe input read once per 1 ms servo period and braking two periods later, no filter after interpolation, ideal drives. Typical values: replace them with your machine&apos;s, or read them from its INI file with File &gt; Import Machine.</source>
-        <translation>LinuxCNC 2.9 в режиме точного останова (G61.1), как его используют программы ProbeCycle: постоянное ускорение (1000 мм/с²), вход щупа опрашивается раз в период сервоцикла 1 мс, торможение начинается двумя периодами позже, без фильтра после интерполяции, идеальные приводы. Типичные значения: замените их значениями вашего станка или прочитайте их из его INI-файла через «Файл &gt; Импорт станка».</translation>
     </message>
     <message>
         <source>&amp;LinuxCNC INI…</source>

@@ -1422,6 +1422,97 @@
     </message>
 </context>
 <context>
+    <name>Preset</name>
+    <message>
+        <source>Fanuc-type: exponential acc/dec after interpolation + servo</source>
+        <translation>Fanuc 类型：插补后指数型加减速 + 伺服</translation>
+    </message>
+    <message>
+        <source>The skip feed is commanded at once and smoothed after interpolation by an exponential filter (32 ms), then a servo lag (33 ms); 20 ms from trigger to reaction with the probe&apos;s 2 ms. Overtravel at cruise: F/60 × (20 + Tc + Ts) / 1000 mm. Typical values: replace them with your machine&apos;s.</source>
+        <translation>跳跃进给立即给出，插补后经指数型滤波器（32 ms）平滑，再经伺服滞后（33 ms）；从触发到响应共 20 ms（含测头的 2 ms）。匀速时的过行程：F/60 × (20 + Tc + Ts) / 1000 mm。典型值：请换成您机床的值。</translation>
+    </message>
+    <message>
+        <source>High-speed skip input (4 µs scan)</source>
+        <translation>高速跳跃输入（4 µs 扫描）</translation>
+    </message>
+    <message>
+        <source>A direct, high-speed skip input scanned every 4 µs with a 0.5 ms latency. Typical values: replace them with your machine&apos;s.</source>
+        <translation>每 4 µs 扫描一次、延迟 0.5 ms 的直接高速跳跃输入。典型值：请替换为您机床的实测值。</translation>
+    </message>
+    <message>
+        <source>Latched input (position captured in hardware)</source>
+        <translation>锁存输入（硬件捕获位置）</translation>
+    </message>
+    <message>
+        <source>The control latches the axis positions at the trigger: the scan wait leaves the measured value but not the travel. Typical values: replace them with your machine&apos;s.</source>
+        <translation>数控系统在触发时锁存各轴位置：扫描等待不再影响测量值，但仍影响行程。典型值：请替换为您机床的实测值。</translation>
+    </message>
+    <message>
+        <source>Linear acc/dec after interpolation</source>
+        <translation>插补后直线型加减速</translation>
+    </message>
+    <message>
+        <source>The feed is commanded at once and averaged over 64 ms after interpolation, then a 20 ms servo lag: a touch during the ramp does not brake at once. Typical values: replace them with your machine&apos;s.</source>
+        <translation>进给立即给出，插补后在 64 ms 内平均，再经 20 ms 伺服滞后：加速中触碰时不会立即制动。典型值：请换成您机床的值。</translation>
+    </message>
+    <message>
+        <source>LinuxCNC (1 ms servo period)</source>
+        <translation>LinuxCNC（1 ms 伺服周期）</translation>
+    </message>
+    <message>
+        <source>LinuxCNC 2.9 in exact stop (G61.1), as ProbeCycle&apos;s programs run it: constant acceleration (1000 mm/s²), the probe input read once per 1 ms servo period and braking two periods later, no filter after interpolation, ideal drives. Typical values: replace them with your machine&apos;s, or read them from its INI file with File &gt; Import Machine.</source>
+        <translation>准停模式（G61.1）下的 LinuxCNC 2.9，与 ProbeCycle 的程序运行方式相同：恒定加速度（1000 mm/s²），测头输入每个 1 ms 伺服周期读取一次，两个周期后开始制动，无插补后滤波器，理想驱动。典型值：请换成您机床的值，或用“文件 &gt; 导入机床”从其 INI 文件读取。</translation>
+    </message>
+    <message>
+        <source>Mitsubishi-type: G31 without acc/dec</source>
+        <translation>三菱类型：无加减速的 G31</translation>
+    </message>
+    <message>
+        <source>The skip block moves without acceleration: the command starts and stops at once and only the servo lag (Tp = 30 ms) smooths it; 5 ms response delay with the probe&apos;s 2 ms, 1 ms scan. Overtravel: F/60 × (Tp + t1 ± t2). Typical values: replace them with your machine&apos;s.</source>
+        <translation>跳跃程序段不加减速：指令立即开始、立即停止，只有伺服滞后（Tp = 30 ms）使其平滑；响应延迟 5 ms（含测头的 2 ms），扫描 1 ms。过行程：F/60 × (Tp + t1 ± t2)。典型值：请换成您机床的值。</translation>
+    </message>
+    <message>
+        <source>Standard skip input (4 ms scan)</source>
+        <translation>标准跳跃输入（4 ms 扫描）</translation>
+    </message>
+    <message>
+        <source>A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms) without a filter after interpolation or servo lag. Typical values: replace them with your machine&apos;s.</source>
+        <translation>跳跃输入每 4 ms 扫描一次，延迟 2 ms，机床采用时间常数（T = 60 ms），无插补后滤波器、无伺服滞后。典型值：请换成您机床的值。</translation>
+    </message>
+    <message>
+        <source>Kinematic probe, optical transmission</source>
+        <translation>机械式测头，光学传输</translation>
+    </message>
+    <message>
+        <source>Resistive kinematic probe with an optical receiver: 5 µm pretravel, 2 ms interface response, 1 µm repeatability. Typical values: replace them with the ones you measure.</source>
+        <translation>带光学接收器的电阻式机械测头：预行程 5 µm，接口响应 2 ms，重复性 1 µm。典型值：请替换为您的实测值。</translation>
+    </message>
+    <message>
+        <source>Kinematic probe, radio transmission</source>
+        <translation>机械式测头，无线电传输</translation>
+    </message>
+    <message>
+        <source>Kinematic probe with a radio receiver: the transmission adds about 10 ms of interface response. Typical values: replace them with the ones you measure.</source>
+        <translation>带无线电接收器的机械式测头：传输使接口响应增加约 10 ms。典型值：请替换为您的实测值。</translation>
+    </message>
+    <message>
+        <source>Short stylus / small bore (2 mm overtravel)</source>
+        <translation>短测针 / 小孔（过行程 2 mm）</translation>
+    </message>
+    <message>
+        <source>A probe with a short stylus or in a small bore, where only about 2 mm of overtravel is safe. Typical values: replace them with the ones you measure.</source>
+        <translation>短测针或在小孔中测量的测头，只有约 2 mm 的过行程是安全的。典型值：请替换为您的实测值。</translation>
+    </message>
+    <message>
+        <source>Strain-gauge probe (high accuracy)</source>
+        <translation>应变片式测头（高精度）</translation>
+    </message>
+    <message>
+        <source>Strain-gauge probe: sub-micrometre pretravel and repeatability, low trigger force. Typical values: replace them with the ones you measure.</source>
+        <translation>应变片式测头：亚微米级的预行程和重复性，触发力小。典型值：请替换为您的实测值。</translation>
+    </message>
+</context>
+<context>
     <name>Program</name>
     <message>
         <source>the backoff %1 does not clear the first touch&apos;s overtravel %2: set cycle.backoff_mm to at least %3 (the recommended backoff)</source>
@@ -3011,58 +3102,6 @@
 <context>
     <name>probecycle::ui::MainWindow</name>
     <message>
-        <source>Standard skip input (4 ms scan)</source>
-        <translation>标准跳跃输入（4 ms 扫描）</translation>
-    </message>
-    <message>
-        <source>High-speed skip input (4 µs scan)</source>
-        <translation>高速跳跃输入（4 µs 扫描）</translation>
-    </message>
-    <message>
-        <source>A direct, high-speed skip input scanned every 4 µs with a 0.5 ms latency. Typical values: replace them with your machine&apos;s.</source>
-        <translation>每 4 µs 扫描一次、延迟 0.5 ms 的直接高速跳跃输入。典型值：请替换为您机床的实测值。</translation>
-    </message>
-    <message>
-        <source>Latched input (position captured in hardware)</source>
-        <translation>锁存输入（硬件捕获位置）</translation>
-    </message>
-    <message>
-        <source>The control latches the axis positions at the trigger: the scan wait leaves the measured value but not the travel. Typical values: replace them with your machine&apos;s.</source>
-        <translation>数控系统在触发时锁存各轴位置：扫描等待不再影响测量值，但仍影响行程。典型值：请替换为您机床的实测值。</translation>
-    </message>
-    <message>
-        <source>Kinematic probe, optical transmission</source>
-        <translation>机械式测头，光学传输</translation>
-    </message>
-    <message>
-        <source>Resistive kinematic probe with an optical receiver: 5 µm pretravel, 2 ms interface response, 1 µm repeatability. Typical values: replace them with the ones you measure.</source>
-        <translation>带光学接收器的电阻式机械测头：预行程 5 µm，接口响应 2 ms，重复性 1 µm。典型值：请替换为您的实测值。</translation>
-    </message>
-    <message>
-        <source>Kinematic probe, radio transmission</source>
-        <translation>机械式测头，无线电传输</translation>
-    </message>
-    <message>
-        <source>Kinematic probe with a radio receiver: the transmission adds about 10 ms of interface response. Typical values: replace them with the ones you measure.</source>
-        <translation>带无线电接收器的机械式测头：传输使接口响应增加约 10 ms。典型值：请替换为您的实测值。</translation>
-    </message>
-    <message>
-        <source>Strain-gauge probe (high accuracy)</source>
-        <translation>应变片式测头（高精度）</translation>
-    </message>
-    <message>
-        <source>Strain-gauge probe: sub-micrometre pretravel and repeatability, low trigger force. Typical values: replace them with the ones you measure.</source>
-        <translation>应变片式测头：亚微米级的预行程和重复性，触发力小。典型值：请替换为您的实测值。</translation>
-    </message>
-    <message>
-        <source>Short stylus / small bore (2 mm overtravel)</source>
-        <translation>短测针 / 小孔（过行程 2 mm）</translation>
-    </message>
-    <message>
-        <source>A probe with a short stylus or in a small bore, where only about 2 mm of overtravel is safe. Typical values: replace them with the ones you measure.</source>
-        <translation>短测针或在小孔中测量的测头，只有约 2 mm 的过行程是安全的。典型值：请替换为您的实测值。</translation>
-    </message>
-    <message>
         <source>About ProbeCycle</source>
         <translation>关于 ProbeCycle</translation>
     </message>
@@ -3349,34 +3388,6 @@
         <translation>比较测量</translation>
     </message>
     <message>
-        <source>A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms) without a filter after interpolation or servo lag. Typical values: replace them with your machine&apos;s.</source>
-        <translation>跳跃输入每 4 ms 扫描一次，延迟 2 ms，机床采用时间常数（T = 60 ms），无插补后滤波器、无伺服滞后。典型值：请换成您机床的值。</translation>
-    </message>
-    <message>
-        <source>Fanuc-type: exponential acc/dec after interpolation + servo</source>
-        <translation>Fanuc 类型：插补后指数型加减速 + 伺服</translation>
-    </message>
-    <message>
-        <source>The skip feed is commanded at once and smoothed after interpolation by an exponential filter (32 ms), then a servo lag (33 ms); 20 ms from trigger to reaction with the probe&apos;s 2 ms. Overtravel at cruise: F/60 × (20 + Tc + Ts) / 1000 mm. Typical values: replace them with your machine&apos;s.</source>
-        <translation>跳跃进给立即给出，插补后经指数型滤波器（32 ms）平滑，再经伺服滞后（33 ms）；从触发到响应共 20 ms（含测头的 2 ms）。匀速时的过行程：F/60 × (20 + Tc + Ts) / 1000 mm。典型值：请换成您机床的值。</translation>
-    </message>
-    <message>
-        <source>Mitsubishi-type: G31 without acc/dec</source>
-        <translation>三菱类型：无加减速的 G31</translation>
-    </message>
-    <message>
-        <source>The skip block moves without acceleration: the command starts and stops at once and only the servo lag (Tp = 30 ms) smooths it; 5 ms response delay with the probe&apos;s 2 ms, 1 ms scan. Overtravel: F/60 × (Tp + t1 ± t2). Typical values: replace them with your machine&apos;s.</source>
-        <translation>跳跃程序段不加减速：指令立即开始、立即停止，只有伺服滞后（Tp = 30 ms）使其平滑；响应延迟 5 ms（含测头的 2 ms），扫描 1 ms。过行程：F/60 × (Tp + t1 ± t2)。典型值：请换成您机床的值。</translation>
-    </message>
-    <message>
-        <source>Linear acc/dec after interpolation</source>
-        <translation>插补后直线型加减速</translation>
-    </message>
-    <message>
-        <source>The feed is commanded at once and averaged over 64 ms after interpolation, then a 20 ms servo lag: a touch during the ramp does not brake at once. Typical values: replace them with your machine&apos;s.</source>
-        <translation>进给立即给出，插补后在 64 ms 内平均，再经 20 ms 伺服滞后：加速中触碰时不会立即制动。典型值：请换成您机床的值。</translation>
-    </message>
-    <message>
         <source>&amp;Machine (skip input, control)</source>
         <translation>机床（跳跃输入、控制系统）(&amp;M)</translation>
     </message>
@@ -3578,14 +3589,6 @@
     <message>
         <source>The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), with the values set here</source>
         <translation>将此循环生成为适用于您的数控系统（LinuxCNC、grbl、Fanuc 类）的测量程序，使用此处设定的值</translation>
-    </message>
-    <message>
-        <source>LinuxCNC (1 ms servo period)</source>
-        <translation>LinuxCNC（1 ms 伺服周期）</translation>
-    </message>
-    <message>
-        <source>LinuxCNC 2.9 in exact stop (G61.1), as ProbeCycle&apos;s programs run it: constant acceleration (1000 mm/s²), the probe input read once per 1 ms servo period and braking two periods later, no filter after interpolation, ideal drives. Typical values: replace them with your machine&apos;s, or read them from its INI file with File &gt; Import Machine.</source>
-        <translation>准停模式（G61.1）下的 LinuxCNC 2.9，与 ProbeCycle 的程序运行方式相同：恒定加速度（1000 mm/s²），测头输入每个 1 ms 伺服周期读取一次，两个周期后开始制动，无插补后滤波器，理想驱动。典型值：请换成您机床的值，或用“文件 &gt; 导入机床”从其 INI 文件读取。</translation>
     </message>
     <message>
         <source>&amp;LinuxCNC INI…</source>

@@ -49,6 +49,7 @@
 #include "ui/lab/latency_tab.h"
 #include "ui/lab/program_dialog.h"
 #include "ui/window/help_guide.h"
+#include "ui/window/preset_list.h"
 #include "ui/window/scenario_command.h"
 
 namespace probecycle::ui {
@@ -56,52 +57,6 @@ namespace probecycle::ui {
 namespace {
 
 constexpr int kMaxRecentFiles = 8;
-
-struct PresetDef {
-    const char* path;
-    const char* name;
-    const char* tip;
-};
-
-// clang-format off
-const PresetDef kMachinePresets[] = {
-    {":/presets/machine_standard_skip.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Standard skip input (4 ms scan)"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "A skip input scanned every 4 ms with a 2 ms latency, on a time-constant machine (T = 60 ms) without a filter after interpolation or servo lag. Typical values: replace them with your machine's.")},
-    {":/presets/machine_high_speed_skip.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "High-speed skip input (4 µs scan)"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "A direct, high-speed skip input scanned every 4 µs with a 0.5 ms latency. Typical values: replace them with your machine's.")},
-    {":/presets/machine_latched_input.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Latched input (position captured in hardware)"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "The control latches the axis positions at the trigger: the scan wait leaves the measured value but not the travel. Typical values: replace them with your machine's.")},
-    {":/presets/machine_fanuc_exponential_servo.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Fanuc-type: exponential acc/dec after interpolation + servo"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "The skip feed is commanded at once and smoothed after interpolation by an exponential filter (32 ms), then a servo lag (33 ms); 20 ms from trigger to reaction with the probe's 2 ms. Overtravel at cruise: F/60 × (20 + Tc + Ts) / 1000 mm. Typical values: replace them with your machine's.")},
-    {":/presets/machine_mitsubishi_g31.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Mitsubishi-type: G31 without acc/dec"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "The skip block moves without acceleration: the command starts and stops at once and only the servo lag (Tp = 30 ms) smooths it; 5 ms response delay with the probe's 2 ms, 1 ms scan. Overtravel: F/60 × (Tp + t1 ± t2). Typical values: replace them with your machine's.")},
-    {":/presets/machine_linear_after_interpolation.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Linear acc/dec after interpolation"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "The feed is commanded at once and averaged over 64 ms after interpolation, then a 20 ms servo lag: a touch during the ramp does not brake at once. Typical values: replace them with your machine's.")},
-    {":/presets/machine_linuxcnc.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "LinuxCNC (1 ms servo period)"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "LinuxCNC 2.9 in exact stop (G61.1), as ProbeCycle's programs run it: constant acceleration (1000 mm/s²), the probe input read once per 1 ms servo period and braking two periods later, no filter after interpolation, ideal drives. Typical values: replace them with your machine's, or read them from its INI file with File > Import Machine.")},
-};
-const PresetDef kProbePresets[] = {
-    {":/presets/probe_kinematic_optical.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Kinematic probe, optical transmission"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Resistive kinematic probe with an optical receiver: 5 µm pretravel, 2 ms interface response, 1 µm repeatability. Typical values: replace them with the ones you measure.")},
-    {":/presets/probe_kinematic_radio.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Kinematic probe, radio transmission"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Kinematic probe with a radio receiver: the transmission adds about 10 ms of interface response. Typical values: replace them with the ones you measure.")},
-    {":/presets/probe_strain_gauge.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Strain-gauge probe (high accuracy)"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Strain-gauge probe: sub-micrometre pretravel and repeatability, low trigger force. Typical values: replace them with the ones you measure.")},
-    {":/presets/probe_small_stylus.json",
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "Short stylus / small bore (2 mm overtravel)"),
-     QT_TRANSLATE_NOOP("probecycle::ui::MainWindow", "A probe with a short stylus or in a small bore, where only about 2 mm of overtravel is safe. Typical values: replace them with the ones you measure.")},
-};
-// clang-format on
 
 QString read_file(const QString& path, QString& error) {
     QFile file(path);
@@ -379,17 +334,11 @@ void MainWindow::build_actions() {
                 .arg(QCoreApplication::applicationVersion()));
     });
 
-    for (const PresetDef& def : kMachinePresets) {
+    for (const PresetEntry& entry : preset_list()) {
         auto* action = new QAction(this);
-        const QString path = QString::fromUtf8(def.path);
+        const QString path = entry.path;
         connect(action, &QAction::triggered, this, [this, path] { apply_preset(path); });
-        preset_actions_.append({action, def.name, def.tip});
-    }
-    for (const PresetDef& def : kProbePresets) {
-        auto* action = new QAction(this);
-        const QString path = QString::fromUtf8(def.path);
-        connect(action, &QAction::triggered, this, [this, path] { apply_preset(path); });
-        preset_actions_.append({action, def.name, def.tip});
+        preset_actions_.append({action, &entry.preset});
     }
     presets_note_ = new QAction(this);
     presets_note_->setEnabled(false);
@@ -444,10 +393,9 @@ void MainWindow::build_menus() {
     presets_menu_->addSeparator();
     machine_presets_menu_ = presets_menu_->addMenu(QString());
     probe_presets_menu_ = presets_menu_->addMenu(QString());
-    const qsizetype machine_count = static_cast<qsizetype>(std::size(kMachinePresets));
-    for (qsizetype i = 0; i < preset_actions_.size(); ++i) {
-        (i < machine_count ? machine_presets_menu_ : probe_presets_menu_)
-            ->addAction(preset_actions_[i].action);
+    for (const PresetAction& preset : preset_actions_) {
+        (preset.preset->machine ? machine_presets_menu_ : probe_presets_menu_)
+            ->addAction(preset.action);
     }
     presets_menu_->setToolTipsVisible(true);
     machine_presets_menu_->setToolTipsVisible(true);
@@ -528,9 +476,9 @@ void MainWindow::retranslate() {
     about_->setText(tr("&About ProbeCycle"));
     presets_note_->setText(tr("Presets hold typical values: replace them with measured ones"));
     for (const PresetAction& preset : preset_actions_) {
-        preset.action->setText(tr(preset.name));
-        preset.action->setToolTip(tr(preset.tip));
-        preset.action->setStatusTip(tr(preset.tip));
+        preset.action->setText(preset_title(*preset.preset));
+        preset.action->setToolTip(preset_description(*preset.preset));
+        preset.action->setStatusTip(preset_description(*preset.preset));
     }
     for (QAction* action : language_actions_) {
         const QString code = action->data().toString();
@@ -1070,7 +1018,10 @@ bool MainWindow::apply_preset(const QString& resource_path) {
     // Only the keys the preset names change; everything else stays as the user set it.
     Scenario next;
     try {
-        next = merge_json(scenario_, text.toStdString());
+        next = merge_json(scenario_, parse_preset(text.toStdString()).scenario_json);
+    } catch (const PresetError& e) {
+        report_error(QT_TR_NOOP("Could not apply the preset"), QString::fromStdString(e.what()));
+        return false;
     } catch (const ScenarioError& e) {
         report_error(QT_TR_NOOP("Could not apply the preset"), error_list(e));
         return false;
@@ -1132,13 +1083,8 @@ void MainWindow::import_linuxcnc_dialog() {
 }
 
 QString MainWindow::preset_name(const QString& resource_path) {
-    for (const PresetDef& def : kMachinePresets) {
-        if (resource_path == QLatin1String(def.path)) return tr(def.name);
-    }
-    for (const PresetDef& def : kProbePresets) {
-        if (resource_path == QLatin1String(def.path)) return tr(def.name);
-    }
-    return QFileInfo(resource_path).baseName();
+    const PresetEntry* entry = find_preset(resource_path);
+    return entry != nullptr ? preset_title(entry->preset) : QFileInfo(resource_path).baseName();
 }
 
 void MainWindow::show_status(std::function<QString()> make, int timeout_ms) {

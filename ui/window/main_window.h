@@ -22,6 +22,7 @@
 #include <string>
 
 #include "core/common/report_header.h"
+#include "core/cycle/preset.h"
 #include "core/project/project_file.h"
 #include "ui/cycle/computation.h"
 #include "ui/cycle/readouts.h"
@@ -296,8 +297,7 @@ class MainWindow : public QMainWindow {
     QList<QAction*> language_actions_;
     struct PresetAction {
         QAction* action;
-        const char* name;
-        const char* tip;
+        const Preset* preset;  // in preset_list()
     };
     QList<PresetAction> preset_actions_;
     QString language_choice_;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/common/number_format.h"
+#include "core/cycle/preset.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
 
@@ -148,8 +149,10 @@ TEST(Fixes, FirstTouchWhileAcceleratingStartsFartherOut) {
 // mm out, where the faster first touch overran the backoff).
 TEST(Fixes, TheFirstTouchOfTwoTouchMayTouchWhileAccelerating) {
     const std::filesystem::path resources = PROBECYCLE_RESOURCES_DIR;
-    Scenario s = merge_json(scenario_from_json(slurp(resources / "examples/bore_two_touch.json")),
-                            slurp(resources / "presets/machine_fanuc_exponential_servo.json"));
+    Scenario s =
+        merge_json(scenario_from_json(slurp(resources / "examples/bore_two_touch.json")),
+                   parse_preset(slurp(resources / "presets/machine_fanuc_exponential_servo.json"))
+                       .scenario_json);
     // (At the default 150 % override its protected moves at 3000 mm/min
     // overrun the stylus: FeedOverride tests that.)
     s.cycle.feed_override_max_pct = 100.0;
@@ -175,8 +178,10 @@ TEST(Fixes, TheFirstTouchOfTwoTouchMayTouchWhileAccelerating) {
 // backoff set for the short start allows; the fix sets the recommended
 // backoff with it, one change, and the cycle stays valid.
 TEST(Fixes, AFixThatWouldMakeTheBackoffTooSmallSetsItToo) {
-    Scenario s = merge_json(Scenario{}, slurp(std::filesystem::path(PROBECYCLE_RESOURCES_DIR) /
-                                              "presets/machine_fanuc_exponential_servo.json"));
+    Scenario s =
+        merge_json(Scenario{}, parse_preset(slurp(std::filesystem::path(PROBECYCLE_RESOURCES_DIR) /
+                                                  "presets/machine_fanuc_exponential_servo.json"))
+                                   .scenario_json);
     s.cycle.part_position_uncertainty_mm = 2.0;
     s.cycle.approach_mm = 1.5;  // inside the uncertainty
     s.cycle.backoff_mm = evaluate(s).recommended_backoff_mm();
@@ -258,7 +263,8 @@ TEST(Fixes, EveryFixOnEveryExampleAndPresetClearsItsWarning) {
     std::map<FixKind, int> by_kind;
     for (const auto& [base_name, base] : bases) {
         for (const std::filesystem::path& preset : presets) {
-            const Scenario with_preset = merge_json(base, slurp(preset));
+            const Scenario with_preset =
+                merge_json(base, parse_preset(slurp(preset)).scenario_json);
             for (Strategy strategy : {Strategy::single_touch, Strategy::two_touch}) {
                 for (double feed : {300.0, 3000.0, 6000.0, 9500.0, 15000.0}) {
                     // A start too close to reach the feed; a search set

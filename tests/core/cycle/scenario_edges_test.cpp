@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/cycle/cycle_report.h"
+#include "core/cycle/preset.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
 
@@ -56,7 +57,7 @@ Scenario preset(const std::string& name) {
     std::ifstream in(std::filesystem::path(PROBECYCLE_RESOURCES_DIR) / "presets" / name);
     std::ostringstream text;
     text << in.rdbuf();
-    return scenario_from_json(text.str());
+    return scenario_from_json(parse_preset(text.str()).scenario_json);
 }
 
 TEST(ScenarioEdges, ASubnormalNumberIsZero) {

@@ -9,6 +9,7 @@
 // repeats, where it tries repeat counts up to 20.
 
 #include "core/optimise/optimiser.h"
+#include "core/cycle/preset.h"
 
 #include <gtest/gtest.h>
 
@@ -679,7 +680,8 @@ TEST(OptimiserBounds, EveryBestOnEveryPresetIsWithinTheBoundsAndValid) {
         for (const auto& entry : std::filesystem::directory_iterator(resources / "presets")) {
             if (entry.path().filename().string().rfind("machine_", 0) != 0) continue;
             SCOPED_TRACE(name + " + " + entry.path().filename().string());
-            Scenario s = merge_json(base, read_text_file(entry.path().string()));
+            Scenario s =
+                merge_json(base, parse_preset(read_text_file(entry.path().string())).scenario_json);
             s.cycle.target_uncertainty_mm = 0.005;
             const OptimiseResult r = optimise(s);
             const Settings& b = r.best.settings;

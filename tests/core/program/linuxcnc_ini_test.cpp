@@ -4,6 +4,7 @@
 // naming the section, the key, the line and what is allowed.
 
 #include "core/program/linuxcnc_ini.h"
+#include "core/cycle/preset.h"
 
 #include <gtest/gtest.h>
 
@@ -134,7 +135,7 @@ TEST(LinuxCncIni, ItsMachineSectionIsAScenarioFile) {
 TEST(LinuxCncIni, ThePresetIsTheSampleMill) {
     const std::filesystem::path preset =
         std::filesystem::path(PROBECYCLE_RESOURCES_DIR) / "presets" / "machine_linuxcnc.json";
-    const Scenario from_preset = merge_json(Scenario{}, slurp(preset));
+    const Scenario from_preset = merge_json(Scenario{}, parse_preset(slurp(preset)).scenario_json);
     Scenario from_ini;
     from_ini.machine = machine_from_linuxcnc_ini(data("mill_mm.ini"));
     from_ini.machine.rapid_feed_mm_min = Scenario{}.machine.rapid_feed_mm_min;
