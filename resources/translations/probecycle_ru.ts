@@ -2898,15 +2898,6 @@
         <translation>Не удалось прочитать %1: %2</translation>
     </message>
     <message>
-        <source>Unexpected error: %1</source>
-        <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
-        <translation>Непредвиденная ошибка: %1</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>Сохранено: %1</translation>
-    </message>
-    <message>
         <source>CSV files (*.csv)</source>
         <translation>Файлы CSV (*.csv)</translation>
     </message>
@@ -4106,6 +4097,18 @@
     <message>
         <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Бюджет неопределённости измерения: стандартная неопределённость каждого члена, сложенная как корень из суммы квадратов и расширенная с k = 2. Члены задаются в разделах «Станок» и «Датчик».&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::StatusText</name>
+    <message>
+        <source>Unexpected error: %1</source>
+        <extracomment>an exception the window does not expect (out of memory...); %1 its English text</extracomment>
+        <translation>Непредвиденная ошибка: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Сохранено: %1</translation>
     </message>
 </context>
 <context>

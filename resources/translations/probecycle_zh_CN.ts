@@ -2898,15 +2898,6 @@
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <source>Unexpected error: %1</source>
-        <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
-        <translation>意外错误：%1</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>已保存 %1</translation>
-    </message>
-    <message>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
@@ -4106,6 +4097,18 @@
     <message>
         <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
         <translation>&lt;p&gt;测量的不确定度预算：各项的标准不确定度按平方和的平方根合成，并以 k = 2 扩展。各项在“机床”和“测头”中设置。&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::StatusText</name>
+    <message>
+        <source>Unexpected error: %1</source>
+        <extracomment>an exception the window does not expect (out of memory...); %1 its English text</extracomment>
+        <translation>意外错误：%1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
     </message>
 </context>
 <context>

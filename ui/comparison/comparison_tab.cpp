@@ -39,8 +39,10 @@
 #include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
+#include "ui/common/status_text.h"
 #include "ui/common/text_format.h"
-#include "ui/lab/lab_widgets.h"
+#include "ui/common/unit_spin_box.h"
+#include "ui/common/warning_list.h"
 
 namespace probecycle::ui {
 
@@ -359,7 +361,7 @@ QWidget* ComparisonTab::build_result_column() {
     summary_title_ = title();
     summary_table_ = table(3, 5, "comparison-summary");
     warnings_title_ = title();
-    warnings_ = new LabWarningList(result_group_);
+    warnings_ = new WarningList(result_group_);
     warnings_->setObjectName(QStringLiteral("comparison-warnings"));
     points_title_ = title();
     point_model_ = new PointTableModel(this);
@@ -536,7 +538,7 @@ bool ComparisonTab::run() {
         set_error(file_error_text(e));
         return false;
     } catch (const std::exception& e) {
-        set_error(lab_error_text(e));  // a FileError names the file already
+        set_error(error_text(e));  // a FileError names the file already
         return false;
     }
     set_error({});
@@ -586,7 +588,7 @@ QString ComparisonTab::file_error_text(const ComparisonFileError& error) const {
     try {
         if (error.cause()) std::rethrow_exception(error.cause());
     } catch (const std::exception& e) {
-        cause = lab_error_text(e);
+        cause = error_text(e);
     }
     return QFileInfo(file(error.file())).fileName() + QStringLiteral(": ") + cause;
 }
@@ -616,7 +618,7 @@ bool ComparisonTab::simulate_example(const QString& folder) {
                 f.text);
         }
     } catch (const std::exception& e) {
-        set_error(lab_error_text(e));
+        set_error(error_text(e));
         return false;
     }
     for (int i = 0; i < kInputFiles; ++i) {
@@ -707,7 +709,7 @@ bool ComparisonTab::save_project(const QString& path) {
         write_file_atomically(QFile::encodeName(path).toStdString(),
                               comparison_project_json(settings(folder)));
     } catch (const std::exception& e) {
-        set_error(lab_error_text(e));
+        set_error(error_text(e));
         return false;
     }
     set_remembered_folder(folder);
@@ -719,10 +721,10 @@ bool ComparisonTab::open_project(const QString& path) {
     try {
         project = parse_comparison_project(read_text_file(QFile::encodeName(path).toStdString()));
     } catch (const FileError& e) {
-        set_error(lab_error_text(e));
+        set_error(error_text(e));
         return false;
     } catch (const std::exception& e) {
-        set_error(QFileInfo(path).fileName() + QStringLiteral(": ") + lab_error_text(e));
+        set_error(QFileInfo(path).fileName() + QStringLiteral(": ") + error_text(e));
         return false;
     }
     const QString folder = QFileInfo(path).absolutePath();
@@ -774,10 +776,10 @@ int ComparisonTab::map_point_count() const {
 
 void ComparisonTab::show_result() {
     export_button_->setEnabled(result_.has_value());
-    std::vector<LabWarningList::Item> items;
+    std::vector<WarningList::Item> items;
     if (result_) {
         for (const ComparisonWarning& w : result_->warnings) {
-            LabWarningList::Item item;
+            WarningList::Item item;
             item.code = QString::fromStdString(w.code);
             item.severity = w.severity;
             item.message = translate(w.message);

@@ -36,10 +36,10 @@ class QToolButton;
 
 namespace probecycle::ui {
 
-class LabWarningList;
 class PointTableModel;
 class PlotView;
 class UnitSpinBox;
+class WarningList;
 
 class ComparisonTab : public QWidget {
     Q_OBJECT
@@ -159,7 +159,7 @@ class ComparisonTab : public QWidget {
     QLabel* summary_title_{nullptr};
     QTableWidget* summary_table_{nullptr};
     QLabel* warnings_title_{nullptr};
-    LabWarningList* warnings_{nullptr};
+    WarningList* warnings_{nullptr};
     QLabel* points_title_{nullptr};
     QTableView* point_table_{nullptr};
     PointTableModel* point_model_{nullptr};

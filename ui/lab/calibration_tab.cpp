@@ -26,6 +26,7 @@
 #include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
+#include "ui/common/unit_spin_box.h"
 #include "ui/lab/lab_widgets.h"
 #include "ui/lab/program_dialog.h"
 
@@ -170,7 +171,7 @@ QGroupBox* CalibrationTab::build_length_group() {
     length_result_label_->setObjectName(QStringLiteral("length-result"));
     length_result_label_->setWordWrap(true);
     length_result_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    length_warnings_ = new LabWarningList(length_group_);
+    length_warnings_ = new WarningList(length_group_);
     length_form_ = new QFormLayout;
     length_form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     // QFormLayout makes no label for an empty text; retranslate() fills these.
@@ -239,7 +240,7 @@ QGroupBox* CalibrationTab::build_result_group() {
     result_values_[row_radius]->setFont(bold);
     warnings_title_ = new QLabel(result_group_);
     warnings_title_->setFont(bold);
-    warnings_ = new LabWarningList(result_group_);
+    warnings_ = new WarningList(result_group_);
     warnings_->setObjectName(QStringLiteral("ring-warnings"));
     export_button_ = new QPushButton(result_group_);
     export_button_->setEnabled(false);
@@ -479,7 +480,7 @@ void CalibrationTab::set_error(LiveText text) {
 
 void CalibrationTab::show_result() {
     for (QLabel* value : result_values_) value->setText(result_ ? QString() : QStringLiteral("—"));
-    std::vector<LabWarningList::Item> items;
+    std::vector<WarningList::Item> items;
     if (result_) {
         const RingCalibration& r = *result_;
         // One coordinate a line: a narrow column (and a long translation)
@@ -744,7 +745,7 @@ void CalibrationTab::compute_length() {
     length_result_.reset();
     length_input_.reset();
     length_error_.clear();
-    std::vector<LabWarningList::Item> items;
+    std::vector<WarningList::Item> items;
 
     LengthCalibrationInput input;
     input.surface_z_mm = surface_z_->internal_value();
@@ -767,7 +768,7 @@ void CalibrationTab::compute_length() {
             length_result_ = calibrate_length(input);
             length_input_ = input;
         } catch (const std::exception& e) {
-            length_error_ = lab_error_text(e);
+            length_error_ = error_text(e);
         }
     }
 

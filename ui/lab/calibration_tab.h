@@ -40,10 +40,10 @@ class QPushButton;
 
 namespace probecycle::ui {
 
-class LabWarningList;
 class PlotView;
 class ProgramDialog;
 class UnitSpinBox;
+class WarningList;
 
 class CalibrationTab : public QWidget {
     Q_OBJECT
@@ -175,7 +175,7 @@ class CalibrationTab : public QWidget {
     UnitSpinBox* active_length_{nullptr};
     UnitSpinBox* nominal_length_{nullptr};
     QLabel* length_result_label_{nullptr};
-    LabWarningList* length_warnings_{nullptr};
+    WarningList* length_warnings_{nullptr};
 
     // Drawing
     QLabel* magnification_label_{nullptr};
@@ -194,7 +194,7 @@ class CalibrationTab : public QWidget {
     QLabel* result_labels_[8]{};
     QLabel* result_values_[8]{};
     QLabel* warnings_title_{nullptr};
-    LabWarningList* warnings_{nullptr};
+    WarningList* warnings_{nullptr};
     QPushButton* export_button_{nullptr};
     QLabel* export_status_{nullptr};
 

@@ -24,6 +24,7 @@
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
 #include "ui/common/text_format.h"
+#include "ui/common/unit_spin_box.h"
 #include "ui/lab/lab_widgets.h"
 #include "ui/lab/program_dialog.h"
 
@@ -136,7 +137,7 @@ QWidget* DelayFitPanel::build_results_column() {
     QFont bold = warnings_title_->font();
     bold.setBold(true);
     warnings_title_->setFont(bold);
-    warnings_ = new LabWarningList;
+    warnings_ = new WarningList;
     warnings_->setObjectName(QStringLiteral("delay-warnings"));
     auto* warnings_scroll = new QScrollArea(this);
     warnings_scroll->setWidget(warnings_);
@@ -401,7 +402,7 @@ void DelayFitPanel::set_error(LiveText text) {
 
 void DelayFitPanel::show_fit() {
     tree_->clear();
-    std::vector<LabWarningList::Item> items;
+    std::vector<WarningList::Item> items;
     if (fit_) {
         for (const DelayGroup& g : fit_->groups) {
             const QString name = QString::fromStdString(g.name());
@@ -590,7 +591,7 @@ DelayFitPanel::ApplyState DelayFitPanel::evaluate_apply() const {
         state.applied = std::move(applied);
     } catch (const std::exception& e) {
         // InputError from the rule, ScenarioError from the key's range.
-        state.problem = lab_error_text(e);
+        state.problem = error_text(e);
     }
     return state;
 }

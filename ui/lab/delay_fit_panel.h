@@ -36,10 +36,10 @@ class QTreeWidget;
 
 namespace probecycle::ui {
 
-class LabWarningList;
 class PlotView;
 class ProgramDialog;
 class UnitSpinBox;
+class WarningList;
 
 class DelayFitPanel : public QGroupBox {
     Q_OBJECT
@@ -168,7 +168,7 @@ class DelayFitPanel : public QGroupBox {
     std::vector<GroupCurves> group_curves_;
     QTreeWidget* tree_{nullptr};
     QLabel* warnings_title_{nullptr};
-    LabWarningList* warnings_{nullptr};
+    WarningList* warnings_{nullptr};
     QLabel* apply_label_{nullptr};
     QComboBox* apply_group_{nullptr};
     QLabel* apply_breakdown_{nullptr};

@@ -27,6 +27,7 @@
 #include "ui/common/language.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/text_format.h"
+#include "ui/common/unit_spin_box.h"
 #include "ui/lab/lab_widgets.h"
 
 namespace probecycle::ui {
