@@ -2894,10 +2894,6 @@
         <translation>%1: %2</translation>
     </message>
     <message>
-        <source>%1 could not be read: %2</source>
-        <translation>Не удалось прочитать %1: %2</translation>
-    </message>
-    <message>
         <source>CSV files (*.csv)</source>
         <translation>Файлы CSV (*.csv)</translation>
     </message>
@@ -3809,6 +3805,13 @@
     <message>
         <source>The defaults and the presets are typical values for a machining centre and its probe. Replace them with the ones measured on your machine.</source>
         <translation>Значения по умолчанию и предустановки — типовые для обрабатывающего центра и его датчика. Замените их измеренными на вашем станке.</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::PasteBox</name>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>Не удалось прочитать %1: %2</translation>
     </message>
 </context>
 <context>

@@ -2894,10 +2894,6 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <source>%1 could not be read: %2</source>
-        <translation>无法读取 %1：%2</translation>
-    </message>
-    <message>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
@@ -3809,6 +3805,13 @@
     <message>
         <source>The defaults and the presets are typical values for a machining centre and its probe. Replace them with the ones measured on your machine.</source>
         <translation>默认值和预设是加工中心及其测头的典型值。请替换为在您机床上测得的值。</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::PasteBox</name>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
     </message>
 </context>
 <context>

@@ -28,7 +28,7 @@
 #include "ui/common/plot_view.h"
 #include "ui/common/unit_spin_box.h"
 #include "ui/lab/lab_widgets.h"
-#include "ui/lab/program_dialog.h"
+#include "ui/program/program_dialog.h"
 
 namespace probecycle::ui {
 

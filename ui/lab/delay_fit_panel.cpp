@@ -26,7 +26,7 @@
 #include "ui/common/text_format.h"
 #include "ui/common/unit_spin_box.h"
 #include "ui/lab/lab_widgets.h"
-#include "ui/lab/program_dialog.h"
+#include "ui/program/program_dialog.h"
 
 namespace probecycle::ui {
 

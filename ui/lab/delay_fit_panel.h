@@ -25,8 +25,9 @@
 #include "core/cycle/scenario.h"
 #include "core/lab/delay_fit.h"
 #include "core/project/project_file.h"
+#include "ui/common/paste_box.h"
 #include "ui/lab/lab_widgets.h"
-#include "ui/lab/machine_log_import.h"
+#include "ui/program/machine_log_import.h"
 
 class QComboBox;
 class QLabel;

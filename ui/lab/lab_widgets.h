@@ -1,10 +1,9 @@
 #pragma once
 
 // What the two lab tabs share: the translated titles of the lab's warning
-// codes, the paste box, the report's export and the lab's number formats.
+// codes, the report's export and the lab's number formats.
 
 #include <QString>
-#include <optional>
 #include <string>
 
 #include "core/lab/calibration.h"
@@ -13,33 +12,12 @@
 #include "ui/common/warning_list.h"
 
 class QLabel;
-class QPlainTextEdit;
 class QWidget;
 
 namespace probecycle::ui {
 
 WarningList::Item warning_item(const CalibrationWarning& warning);
 WarningList::Item warning_item(const LatencyWarning& warning, const QString& group);
-
-// The paste box of a lab tab: CSV text in a fixed-width font.
-QPlainTextEdit* make_csv_editor(QWidget* parent);
-// Replaces the editor's text as one undoable edit (setPlainText would drop
-// the undo history, and with it what the user had pasted).
-void replace_text_undoably(QPlainTextEdit* editor, const QString& text);
-// Reads a CSV file into a paste box as one undoable edit: a bad file's named
-// line can then be corrected there, and undo brings back what was pasted.
-// Returns the text, or nullopt with `error` saying why the file was unreadable.
-std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& path,
-                                       LiveText& error);
-
-// Where a lab tab's data came from, for its report's header (report_header.h):
-// the file it was imported from while the text is still that file's, else
-// "pasted".
-struct ImportedText {
-    QString file_name;  // without its folder
-    QString text;
-};
-std::string data_source_name(const std::optional<ImportedText>& imported, const QString& text);
 
 // A lab tab's report export (issue 12): the save dialog, starting in the last
 // folder used (dialog_start) with `file_name`, ".csv" added; empty when the
