@@ -1722,14 +1722,6 @@
         <translation>Предупреждать, если точка лежит дальше этого от подобранной окружности: грязь, плохое касание или незакреплённое кольцо.</translation>
     </message>
     <message>
-        <source>Import CSV…</source>
-        <translation>Импорт CSV…</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Подобрать</translation>
-    </message>
-    <message>
         <source>Length from a surface of known Z</source>
         <translation>Длина по поверхности с известной Z</translation>
     </message>
@@ -1847,14 +1839,6 @@
         <translation>Экспорт отчёта CSV…</translation>
     </message>
     <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>The result shown is still that of the previous fit.</source>
-        <translation>Показан результат предыдущего подбора.</translation>
-    </message>
-    <message>
         <source>X %1</source>
         <translation>X %1</translation>
     </message>
@@ -1911,10 +1895,6 @@
         <translation>Импорт точек установочного кольца</translation>
     </message>
     <message>
-        <source>CSV files (*.csv);;All files (*)</source>
-        <translation>Файлы CSV (*.csv);;Все файлы (*)</translation>
-    </message>
-    <message>
         <source>Export calibration report</source>
         <translation>Экспорт отчёта о калибровке</translation>
     </message>
@@ -1935,16 +1915,8 @@
         <translation>Касаний: %1, разброс %2</translation>
     </message>
     <message>
-        <source>Program…</source>
-        <translation>Программа…</translation>
-    </message>
-    <message>
         <source>The ring-gauge calibration as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
         <translation>Калибровка по установочному кольцу как программа для вашей ЧПУ (LinuxCNC, grbl) вместе с планом, который нужен для импорта её журнала.</translation>
-    </message>
-    <message>
-        <source>Import machine log…</source>
-        <translation>Импорт журнала ЧПУ…</translation>
     </message>
     <message>
         <source>What the control recorded while it ran the program, read with the program&apos;s plan into the points and fitted.</source>
@@ -2629,14 +2601,6 @@
         <translation>нет</translation>
     </message>
     <message>
-        <source>Import CSV…</source>
-        <translation>Импорт CSV…</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Подобрать</translation>
-    </message>
-    <message>
         <source>Measured minus zero-speed position, against feed</source>
         <translation>Отклонение от положения при нулевой скорости</translation>
     </message>
@@ -2709,14 +2673,6 @@
         <translation>Применить к сценарию</translation>
     </message>
     <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>The result shown is still that of the previous fit.</source>
-        <translation>Показан результат предыдущего подбора.</translation>
-    </message>
-    <message>
         <source>Longest delay (safe side)</source>
         <translation>Наибольшая задержка (с запасом)</translation>
     </message>
@@ -2727,10 +2683,6 @@
     <message>
         <source>Import touches</source>
         <translation>Импорт касаний</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv);;All files (*)</source>
-        <translation>Файлы CSV (*.csv);;Все файлы (*)</translation>
     </message>
     <message>
         <source>Fit the touches first.</source>
@@ -2771,20 +2723,43 @@
         <translation>Экспорт отчёта о задержке</translation>
     </message>
     <message>
-        <source>Program…</source>
-        <translation>Программа…</translation>
-    </message>
-    <message>
         <source>The delay-stability test as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
         <translation>Испытание стабильности задержки как программа для вашей ЧПУ (LinuxCNC, grbl) вместе с планом, который нужен для импорта её журнала.</translation>
+    </message>
+    <message>
+        <source>What the control recorded while it ran the program, read with the program&apos;s plan into the touches and fitted.</source>
+        <translation>То, что ЧПУ записала при выполнении программы: читается вместе с планом программы в касания и подбирается.</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::FitInput</name>
+    <message>
+        <source>Import CSV…</source>
+        <translation>Импорт CSV…</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Подобрать</translation>
+    </message>
+    <message>
+        <source>Program…</source>
+        <translation>Программа…</translation>
     </message>
     <message>
         <source>Import machine log…</source>
         <translation>Импорт журнала ЧПУ…</translation>
     </message>
     <message>
-        <source>What the control recorded while it ran the program, read with the program&apos;s plan into the touches and fitted.</source>
-        <translation>То, что ЧПУ записала при выполнении программы: читается вместе с планом программы в касания и подбирается.</translation>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>Файлы CSV (*.csv);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>The result shown is still that of the previous fit.</source>
+        <translation>Показан результат предыдущего подбора.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>

@@ -26,7 +26,6 @@
 #include "core/cycle/scenario.h"
 #include "core/lab/calibration.h"
 #include "core/project/project_file.h"
-#include "ui/common/paste_box.h"
 #include "ui/lab/lab_widgets.h"
 #include "ui/program/machine_log_import.h"
 
@@ -41,6 +40,7 @@ class QPushButton;
 
 namespace probecycle::ui {
 
+class FitInput;
 class PlotView;
 class ProgramDialog;
 class UnitSpinBox;
@@ -148,25 +148,20 @@ class CalibrationTab : public QWidget {
     void compute_length();
     void retranslate();
     void import_dialog();
-    void import_machine_log_dialog();
 
     Scenario scenario_;
 
     // Input
     QGroupBox* ring_group_{nullptr};
     QLabel* format_hint_{nullptr};
-    QPlainTextEdit* points_edit_{nullptr};
+    FitInput* input_{nullptr};
+    QPlainTextEdit* points_edit_{nullptr};  // input_'s
     QLabel* diameter_label_{nullptr};
     UnitSpinBox* diameter_{nullptr};
     QLabel* runout_limit_label_{nullptr};
     UnitSpinBox* runout_limit_{nullptr};
     QLabel* residual_limit_label_{nullptr};
     UnitSpinBox* residual_limit_{nullptr};
-    QPushButton* import_button_{nullptr};
-    QPushButton* fit_button_{nullptr};
-    QPushButton* program_button_{nullptr};
-    QPushButton* log_button_{nullptr};
-    QLabel* error_label_{nullptr};
 
     // Length
     QGroupBox* length_group_{nullptr};
@@ -200,9 +195,7 @@ class CalibrationTab : public QWidget {
     QLabel* export_status_{nullptr};
 
     std::vector<RingPoint> points_;
-    QString fitted_text_;  // the CSV behind result_
-    std::optional<ImportedText> imported_;
-    MachineLogChoice log_choice_;        // the last import's, or the last program saved
+    QString fitted_text_;                // the CSV behind result_
     std::string points_from_{"pasted"};  // the report's subject: points_' file, or "pasted"
     RingCalibrationOptions options_;     // of result_
     std::optional<RingCalibration> result_;

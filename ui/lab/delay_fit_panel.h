@@ -25,7 +25,6 @@
 #include "core/cycle/scenario.h"
 #include "core/lab/delay_fit.h"
 #include "core/project/project_file.h"
-#include "ui/common/paste_box.h"
 #include "ui/lab/lab_widgets.h"
 #include "ui/program/machine_log_import.h"
 
@@ -37,6 +36,7 @@ class QTreeWidget;
 
 namespace probecycle::ui {
 
+class FitInput;
 class PlotView;
 class ProgramDialog;
 class UnitSpinBox;
@@ -142,7 +142,6 @@ class DelayFitPanel : public QGroupBox {
     void update_apply();
     void retranslate();
     void import_dialog();
-    void import_machine_log_dialog();
     std::optional<std::string> chosen_group() const;
     struct ApplyState {
         std::optional<AppliedDelay> applied;
@@ -153,14 +152,10 @@ class DelayFitPanel : public QGroupBox {
     std::optional<Scenario> scenario_;
 
     QLabel* format_hint_{nullptr};
-    QPlainTextEdit* touches_edit_{nullptr};
+    FitInput* input_{nullptr};
+    QPlainTextEdit* touches_edit_{nullptr};  // input_'s
     QLabel* period_label_{nullptr};
     UnitSpinBox* period_{nullptr};
-    QPushButton* import_button_{nullptr};
-    QPushButton* fit_button_{nullptr};
-    QPushButton* program_button_{nullptr};
-    QPushButton* log_button_{nullptr};
-    QLabel* error_label_{nullptr};
     PlotView* delay_plot_{nullptr};
     struct GroupCurves {
         int touches{-1};
@@ -178,9 +173,7 @@ class DelayFitPanel : public QGroupBox {
     QPushButton* export_button_{nullptr};
 
     std::vector<DelayTouch> touches_;
-    QString fitted_text_;  // the CSV behind fit_
-    std::optional<ImportedText> imported_;
-    MachineLogChoice log_choice_;         // the last import's, or the last program saved
+    QString fitted_text_;                 // the CSV behind fit_
     std::string touches_from_{"pasted"};  // the report's subject: touches_' file, or "pasted"
     DelayFitOptions fit_options_;
     std::optional<DelayFit> fit_;
