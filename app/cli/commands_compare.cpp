@@ -8,11 +8,11 @@
 
 #include "app/cli/cli_options.h"
 #include "app/cli/commands.h"
-#include "app/cli/lab_input.h"
 #include "core/common/csv_reader.h"
 #include "core/common/file_io.h"
 #include "core/common/number_format.h"
 #include "core/comparison/comparison.h"
+#include "core/comparison/comparison_files.h"
 #include "core/comparison/comparison_project.h"
 #include "core/comparison/comparison_report.h"
 #include "core/comparison/comparison_simulator.h"
@@ -51,22 +51,12 @@ CAxisSetup axis_setup(const AxisArgs& args) {
     return setup;
 }
 
-std::vector<Eigen::Vector3d> read_points(const std::string& path,
-                                         const std::vector<PlanPoint>& plan) {
-    return read_lab_csv(
-        path, [&plan](const std::string& text) { return parse_points_for_plan(text, plan); });
-}
-
-std::vector<BlockTouch> read_block(const std::string& path) {
-    return read_lab_csv(path, [](const std::string& text) { return parse_block(text); });
-}
-
 std::string format_axis(const CAxisSetup& setup) {
     return format_number(setup.x_mm) + "," + format_number(setup.y_mm);
 }
 
-void require_both(const std::string& c0, const std::string& c180) {
-    if (c0.empty() != c180.empty()) {
+void require_both(const ComparisonFiles& files) {
+    if (!blocks_paired(files)) {
         throw UsageError(
             "the block is needed at both angles: give --block-c0 and --block-c180 together");
     }
@@ -115,19 +105,13 @@ void add_run(CLI::App& compare) {
                     "Also write the Comparison tab's CSV report to FILE (atomically)")
         ->type_name("FILE");
     cmd->callback([args] {
-        require_both(args->block_c0, args->block_c180);
-        ComparisonInput input;
-        input.c_axis = axis_setup(args->axis);
+        const ComparisonFiles files{args->plan,          args->reference_cmm, args->test_omm,
+                                    args->reference_omm, args->block_c0,      args->block_c180};
+        require_both(files);
+        const CAxisSetup c_axis = axis_setup(args->axis);
+        ComparisonInput input = read_comparison_files(files);
+        input.c_axis = c_axis;
         input.tolerance_mm = args->tolerance.optional();
-        input.plan =
-            read_lab_csv(args->plan, [](const std::string& text) { return parse_plan(text); });
-        input.reference_cmm = read_points(args->reference_cmm, input.plan);
-        input.test_omm = read_points(args->test_omm, input.plan);
-        input.reference_omm = read_points(args->reference_omm, input.plan);
-        if (!args->block_c0.empty()) {
-            input.block_at_zero = read_block(args->block_c0);
-            input.block_turned = read_block(args->block_c180);
-        }
         const ComparisonResult result = run_comparison(input);
         if (!args->report.empty()) {
             write_output(
@@ -158,8 +142,10 @@ void add_cerrors(CLI::App& compare) {
     add_axis_args(*cmd, args->axis);
     cmd->callback([args] {
         const CAxisSetup setup = axis_setup(args->axis);
-        const std::vector<BlockTouch> zero = read_block(args->block_c0);
-        const std::vector<BlockTouch> turned = read_block(args->block_c180);
+        const std::vector<BlockTouch> zero =
+            read_block_file(ComparisonFile::block_c0, args->block_c0);
+        const std::vector<BlockTouch> turned =
+            read_block_file(ComparisonFile::block_c180, args->block_c180);
         const CAxisIdentification result = identify_c_axis(zero, turned, setup);
         print(c_axis_identification_json(result, setup).dump(2) + '\n');
     });
@@ -192,23 +178,15 @@ void add_simulate(CLI::App& compare) {
         namespace fs = std::filesystem;
         const fs::path dir(args->out);
         const ComparisonInput& in = data.input;
-        const std::vector<std::pair<const char*, std::string>> files = {
-            {"plan.csv", plan_csv(in.plan)},
-            {"reference_cmm.csv", points_csv(in.reference_cmm)},
-            {"test_omm.csv", points_csv(in.test_omm)},
-            {"reference_omm.csv", points_csv(in.reference_omm)},
-            {"block_c0.csv", block_csv(in.block_at_zero)},
-            {"block_c180.csv", block_csv(in.block_turned)},
-            {"truth.csv", truth_csv(in.plan, data.truth_mm)},
-            {"simulation.json", simulation_json(data, options).dump(2) + "\n"},
-        };
+        std::vector<ComparisonExampleFile> files = comparison_example_files(data);
+        files.push_back({"simulation.json", simulation_json(data, options).dump(2) + "\n"});
         // One set: built beside the folder and swapped in whole, so a reader
         // never meets files of two seeds, and a refusal leaves none.
         std::vector<OutputFile> set;
         nlohmann::ordered_json written = nlohmann::ordered_json::array();
-        for (const auto& [name, text] : files) {
-            set.push_back({name, text});
-            written.push_back(name);
+        for (const ComparisonExampleFile& file : files) {
+            set.push_back({file.name, file.text});
+            written.push_back(file.name);
         }
         write_folder_atomically(args->out, set);
         const std::string d = dir.string() + "/";

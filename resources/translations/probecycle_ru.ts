@@ -1813,14 +1813,6 @@
         <translation>Предупреждать, если точка лежит дальше этого от подобранной окружности: грязь, плохое касание или незакреплённое кольцо.</translation>
     </message>
     <message>
-        <source>Import CSV…</source>
-        <translation>Импорт CSV…</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Подобрать</translation>
-    </message>
-    <message>
         <source>Length from a surface of known Z</source>
         <translation>Длина по поверхности с известной Z</translation>
     </message>
@@ -1938,14 +1930,6 @@
         <translation>Экспорт отчёта CSV…</translation>
     </message>
     <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>The result shown is still that of the previous fit.</source>
-        <translation>Показан результат предыдущего подбора.</translation>
-    </message>
-    <message>
         <source>X %1</source>
         <translation>X %1</translation>
     </message>
@@ -2002,10 +1986,6 @@
         <translation>Импорт точек установочного кольца</translation>
     </message>
     <message>
-        <source>CSV files (*.csv);;All files (*)</source>
-        <translation>Файлы CSV (*.csv);;Все файлы (*)</translation>
-    </message>
-    <message>
         <source>Export calibration report</source>
         <translation>Экспорт отчёта о калибровке</translation>
     </message>
@@ -2026,16 +2006,8 @@
         <translation>Касаний: %1, разброс %2</translation>
     </message>
     <message>
-        <source>Program…</source>
-        <translation>Программа…</translation>
-    </message>
-    <message>
         <source>The ring-gauge calibration as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
         <translation>Калибровка по установочному кольцу как программа для вашей ЧПУ (LinuxCNC, grbl) вместе с планом, который нужен для импорта её журнала.</translation>
-    </message>
-    <message>
-        <source>Import machine log…</source>
-        <translation>Импорт журнала ЧПУ…</translation>
     </message>
     <message>
         <source>What the control recorded while it ran the program, read with the program&apos;s plan into the points and fitted.</source>
@@ -2720,14 +2692,6 @@
         <translation>нет</translation>
     </message>
     <message>
-        <source>Import CSV…</source>
-        <translation>Импорт CSV…</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Подобрать</translation>
-    </message>
-    <message>
         <source>Measured minus zero-speed position, against feed</source>
         <translation>Отклонение от положения при нулевой скорости</translation>
     </message>
@@ -2800,14 +2764,6 @@
         <translation>Применить к сценарию</translation>
     </message>
     <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>The result shown is still that of the previous fit.</source>
-        <translation>Показан результат предыдущего подбора.</translation>
-    </message>
-    <message>
         <source>Longest delay (safe side)</source>
         <translation>Наибольшая задержка (с запасом)</translation>
     </message>
@@ -2818,10 +2774,6 @@
     <message>
         <source>Import touches</source>
         <translation>Импорт касаний</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv);;All files (*)</source>
-        <translation>Файлы CSV (*.csv);;Все файлы (*)</translation>
     </message>
     <message>
         <source>Fit the touches first.</source>
@@ -2862,20 +2814,43 @@
         <translation>Экспорт отчёта о задержке</translation>
     </message>
     <message>
-        <source>Program…</source>
-        <translation>Программа…</translation>
-    </message>
-    <message>
         <source>The delay-stability test as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
         <translation>Испытание стабильности задержки как программа для вашей ЧПУ (LinuxCNC, grbl) вместе с планом, который нужен для импорта её журнала.</translation>
+    </message>
+    <message>
+        <source>What the control recorded while it ran the program, read with the program&apos;s plan into the touches and fitted.</source>
+        <translation>То, что ЧПУ записала при выполнении программы: читается вместе с планом программы в касания и подбирается.</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::FitInput</name>
+    <message>
+        <source>Import CSV…</source>
+        <translation>Импорт CSV…</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Подобрать</translation>
+    </message>
+    <message>
+        <source>Program…</source>
+        <translation>Программа…</translation>
     </message>
     <message>
         <source>Import machine log…</source>
         <translation>Импорт журнала ЧПУ…</translation>
     </message>
     <message>
-        <source>What the control recorded while it ran the program, read with the program&apos;s plan into the touches and fitted.</source>
-        <translation>То, что ЧПУ записала при выполнении программы: читается вместе с планом программы в касания и подбирается.</translation>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>Файлы CSV (*.csv);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>The result shown is still that of the previous fit.</source>
+        <translation>Показан результат предыдущего подбора.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2983,19 +2958,6 @@
         <source>%1: %2</source>
         <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
         <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>%1 could not be read: %2</source>
-        <translation>Не удалось прочитать %1: %2</translation>
-    </message>
-    <message>
-        <source>Unexpected error: %1</source>
-        <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
-        <translation>Непредвиденная ошибка: %1</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>Сохранено: %1</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
@@ -3824,6 +3786,13 @@
     </message>
 </context>
 <context>
+    <name>probecycle::ui::PasteBox</name>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>Не удалось прочитать %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>probecycle::ui::ProgramDialog</name>
     <message>
         <source>Ring-gauge calibration program</source>
@@ -4109,6 +4078,18 @@
     <message>
         <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Бюджет неопределённости измерения: стандартная неопределённость каждого члена, сложенная как корень из суммы квадратов и расширенная с k = 2. Члены задаются в разделах «Станок» и «Датчик».&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::StatusText</name>
+    <message>
+        <source>Unexpected error: %1</source>
+        <extracomment>an exception the window does not expect (out of memory...); %1 its English text</extracomment>
+        <translation>Непредвиденная ошибка: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Сохранено: %1</translation>
     </message>
 </context>
 <context>

@@ -1813,14 +1813,6 @@
         <translation>当某点偏离其拟合圆超过此值时警告：污物、触测不良或环规松动。</translation>
     </message>
     <message>
-        <source>Import CSV…</source>
-        <translation>导入 CSV…</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>拟合</translation>
-    </message>
-    <message>
         <source>Length from a surface of known Z</source>
         <translation>由已知 Z 的表面确定长度</translation>
     </message>
@@ -1938,14 +1930,6 @@
         <translation>导出 CSV 报告…</translation>
     </message>
     <message>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
-        <source>The result shown is still that of the previous fit.</source>
-        <translation>显示的仍是上一次拟合的结果。</translation>
-    </message>
-    <message>
         <source>X %1</source>
         <translation>X %1</translation>
     </message>
@@ -2002,10 +1986,6 @@
         <translation>导入环规测点</translation>
     </message>
     <message>
-        <source>CSV files (*.csv);;All files (*)</source>
-        <translation>CSV 文件 (*.csv);;所有文件 (*)</translation>
-    </message>
-    <message>
         <source>Export calibration report</source>
         <translation>导出标定报告</translation>
     </message>
@@ -2026,16 +2006,8 @@
         <translation>触测：%1 次，分散 %2</translation>
     </message>
     <message>
-        <source>Program…</source>
-        <translation>程序…</translation>
-    </message>
-    <message>
         <source>The ring-gauge calibration as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
         <translation>将环规标定生成为适用于您的数控系统（LinuxCNC、grbl）的程序，并附带导入其日志所需的计划。</translation>
-    </message>
-    <message>
-        <source>Import machine log…</source>
-        <translation>导入数控日志…</translation>
     </message>
     <message>
         <source>What the control recorded while it ran the program, read with the program&apos;s plan into the points and fitted.</source>
@@ -2720,14 +2692,6 @@
         <translation>无</translation>
     </message>
     <message>
-        <source>Import CSV…</source>
-        <translation>导入 CSV…</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>拟合</translation>
-    </message>
-    <message>
         <source>Measured minus zero-speed position, against feed</source>
         <translation>测量值减零速位置，与进给率的关系</translation>
     </message>
@@ -2800,14 +2764,6 @@
         <translation>应用到场景</translation>
     </message>
     <message>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
-        <source>The result shown is still that of the previous fit.</source>
-        <translation>显示的仍是上一次拟合的结果。</translation>
-    </message>
-    <message>
         <source>Longest delay (safe side)</source>
         <translation>最长延迟（安全侧）</translation>
     </message>
@@ -2818,10 +2774,6 @@
     <message>
         <source>Import touches</source>
         <translation>导入触测</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv);;All files (*)</source>
-        <translation>CSV 文件 (*.csv);;所有文件 (*)</translation>
     </message>
     <message>
         <source>Fit the touches first.</source>
@@ -2862,20 +2814,43 @@
         <translation>导出延迟拟合报告</translation>
     </message>
     <message>
-        <source>Program…</source>
-        <translation>程序…</translation>
-    </message>
-    <message>
         <source>The delay-stability test as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
         <translation>将延迟稳定性测试生成为适用于您的数控系统（LinuxCNC、grbl）的程序，并附带导入其日志所需的计划。</translation>
+    </message>
+    <message>
+        <source>What the control recorded while it ran the program, read with the program&apos;s plan into the touches and fitted.</source>
+        <translation>数控系统运行程序时记录的内容，按程序的计划读入触测并拟合。</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::FitInput</name>
+    <message>
+        <source>Import CSV…</source>
+        <translation>导入 CSV…</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <source>Program…</source>
+        <translation>程序…</translation>
     </message>
     <message>
         <source>Import machine log…</source>
         <translation>导入数控日志…</translation>
     </message>
     <message>
-        <source>What the control recorded while it ran the program, read with the program&apos;s plan into the touches and fitted.</source>
-        <translation>数控系统运行程序时记录的内容，按程序的计划读入触测并拟合。</translation>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>CSV 文件 (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>The result shown is still that of the previous fit.</source>
+        <translation>显示的仍是上一次拟合的结果。</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
     </message>
 </context>
 <context>
@@ -2983,19 +2958,6 @@
         <source>%1: %2</source>
         <extracomment>%1 the group (&quot;X+&quot;), %2 the warning&apos;s title</extracomment>
         <translation>%1：%2</translation>
-    </message>
-    <message>
-        <source>%1 could not be read: %2</source>
-        <translation>无法读取 %1：%2</translation>
-    </message>
-    <message>
-        <source>Unexpected error: %1</source>
-        <extracomment>an exception the lab does not expect (out of memory...); %1 its English text</extracomment>
-        <translation>意外错误：%1</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>已保存 %1</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
@@ -3824,6 +3786,13 @@
     </message>
 </context>
 <context>
+    <name>probecycle::ui::PasteBox</name>
+    <message>
+        <source>%1 could not be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>probecycle::ui::ProgramDialog</name>
     <message>
         <source>Ring-gauge calibration program</source>
@@ -4109,6 +4078,18 @@
     <message>
         <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
         <translation>&lt;p&gt;测量的不确定度预算：各项的标准不确定度按平方和的平方根合成，并以 k = 2 扩展。各项在“机床”和“测头”中设置。&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::StatusText</name>
+    <message>
+        <source>Unexpected error: %1</source>
+        <extracomment>an exception the window does not expect (out of memory...); %1 its English text</extracomment>
+        <translation>意外错误：%1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,5 @@
 #include "ui/common/quantity_edit.h"
 
-#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -69,13 +68,10 @@ QuantityEdit::QuantityEdit(const KeyInfo& info, QWidget* parent)
     : QWidget(parent), info_(info), view_(parameter_view(info)) {
     setObjectName(QStringLiteral("edit:") + view_.key);
     label_ = new QLabel(this);
-    spin_ = new QDoubleSpinBox(this);
+    spin_ = new UnitSpinBox(view_.min, view_.max, view_.decimals, value_, this, view_.factor);
     spin_->setObjectName(QStringLiteral("spin:") + view_.key);
-    spin_->setKeyboardTracking(false);  // one edit per value typed, not per keystroke
-    spin_->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
-    spin_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     spin_->setMinimumWidth(124);
-    spin_->setAccelerated(true);
+    spin_->set_unit([this] { return view_.unit; });
     label_->setBuddy(spin_);
     label_->setWordWrap(true);  // long labels (Russian) take two lines, not more width
 
@@ -101,12 +97,11 @@ QuantityEdit::QuantityEdit(const KeyInfo& info, QWidget* parent)
 void QuantityEdit::apply_view() {
     const QSignalBlocker block(spin_);
     label_->setText(view_.label);
-    spin_->setLocale(QLocale());  // follows the interface language
+    spin_->retranslate();  // the locale of the interface language, the unit
     spin_->setDecimals(view_.decimals);
     spin_->setRange(view_.min * view_.factor, view_.max * view_.factor);
-    spin_->setSuffix(QStringLiteral(" ") + view_.unit);
     spin_->setSpecialValueText(view_.zero_text);
-    spin_->setValue(value_ * view_.factor);
+    spin_->set_internal_value(value_);
 
     const QLocale locale;
     QString tip = QStringLiteral("<p><b>%1</b></p><p>%2</p><p>").arg(view_.label, view_.help);
@@ -143,7 +138,7 @@ void QuantityEdit::set_value(double value) {
     value_ = value;
     {
         const QSignalBlocker block(spin_);
-        spin_->setValue(value * view_.factor);
+        spin_->set_internal_value(value);
     }
     if (slider_ != nullptr) {
         const QSignalBlocker block(slider_);

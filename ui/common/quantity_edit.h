@@ -1,16 +1,16 @@
 #pragma once
 
-// A typed editor for one quantity: label, value with unit and range, and for
-// the quantities engineers sweep by hand a slider (log scale where the range
-// spans decades), stopping at round numbers in the display unit. It shows
-// display units and speaks internal units.
+// A typed editor for one scenario key: label, value with unit and range (a
+// UnitSpinBox), and for the quantities engineers sweep by hand a slider (log
+// scale where the range spans decades), stopping at round numbers in the
+// display unit. It shows display units and speaks internal units.
 
 #include <QWidget>
 #include <vector>
 
 #include "ui/common/parameter_info.h"
+#include "ui/common/unit_spin_box.h"
 
-class QDoubleSpinBox;
 class QLabel;
 class QSlider;
 
@@ -30,7 +30,7 @@ class QuantityEdit : public QWidget {
     void retranslate();
 
     QSlider* slider() const { return slider_; }
-    QDoubleSpinBox* spin_box() const { return spin_; }
+    UnitSpinBox* spin_box() const { return spin_; }
 
   signals:
     // A user edit, in internal units.
@@ -47,7 +47,7 @@ class QuantityEdit : public QWidget {
     ParameterView view_;
     double value_{0.0};
     QLabel* label_{nullptr};
-    QDoubleSpinBox* spin_{nullptr};
+    UnitSpinBox* spin_{nullptr};
     QSlider* slider_{nullptr};
     // The round values the slider stops at, display units, ascending; the
     // slider's position is an index into them.

@@ -25,11 +25,13 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include "core/common/csv_reader.h"
 #include "core/common/file_io.h"
 #include "core/common/vector_state.h"
+#include "core/comparison/comparison_files.h"
 #include "core/comparison/comparison_input.h"
 #include "core/comparison/comparison_project.h"
 #include "core/comparison/comparison_report.h"
@@ -37,8 +39,10 @@
 #include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
+#include "ui/common/status_text.h"
 #include "ui/common/text_format.h"
-#include "ui/lab/lab_widgets.h"
+#include "ui/common/unit_spin_box.h"
+#include "ui/common/warning_list.h"
 
 namespace probecycle::ui {
 
@@ -72,15 +76,36 @@ QString um(double mm, int decimals = 1) {
     return format_number(mm * 1000.0, decimals) + QChar(0x00A0) + unit_um();
 }
 
-// Reads one input file whole (FileError names it) and parses it.
-template <typename Parse>
-auto read_input(const QString& path, Parse parse) {
-    const std::string name = QFile::encodeName(path).toStdString();
-    const std::string text = read_text_file(name);
-    return parse(text);
+// What tells a file's content apart without reading it: its path, its
+// modification time and its size (an empty path: a file not given).
+struct FileStamp {
+    std::string path;
+    std::filesystem::file_time_type modified{};
+    std::uintmax_t size{0};
+
+    bool operator==(const FileStamp&) const = default;
+};
+
+// Nullopt for a file that cannot be stamped (missing, a pipe): read each time.
+std::optional<FileStamp> stamp_of(const std::string& path) {
+    FileStamp stamp{path};
+    if (path.empty()) return stamp;
+    std::error_code error;
+    stamp.modified = std::filesystem::last_write_time(path, error);
+    if (error) return std::nullopt;
+    stamp.size = std::filesystem::file_size(path, error);
+    if (error) return std::nullopt;
+    return stamp;
 }
 
 }  // namespace
+
+// The files last read and their content: a change of a setting reruns the
+// comparison without reading them again.
+struct ComparisonTab::FileCache {
+    std::array<std::optional<FileStamp>, kComparisonFiles> stamps;
+    std::optional<ComparisonInput> input;
+};
 
 // The points, worst first, formatted only when shown: a table widget would
 // hold an item per cell, over a million for the 200 000 points a plan file
@@ -160,7 +185,8 @@ class PointTableModel final : public QAbstractTableModel {
     QStringList headers_;
 };
 
-ComparisonTab::ComparisonTab(QWidget* parent) : QWidget(parent) {
+ComparisonTab::ComparisonTab(QWidget* parent)
+    : QWidget(parent), file_cache_(std::make_unique<FileCache>()) {
     setObjectName(QStringLiteral("comparison"));
     auto* input_widget = new QWidget(this);
     auto* input_column = new QVBoxLayout(input_widget);
@@ -335,7 +361,7 @@ QWidget* ComparisonTab::build_result_column() {
     summary_title_ = title();
     summary_table_ = table(3, 5, "comparison-summary");
     warnings_title_ = title();
-    warnings_ = new LabWarningList(result_group_);
+    warnings_ = new WarningList(result_group_);
     warnings_->setObjectName(QStringLiteral("comparison-warnings"));
     points_title_ = title();
     point_model_ = new PointTableModel(this);
@@ -499,64 +525,72 @@ void ComparisonTab::set_error(const QString& text) {
 }
 
 bool ComparisonTab::run() {
-    ComparisonInput input;
-    input.c_axis = {axis_x_->internal_value(), axis_y_->internal_value(), angle_->internal_value()};
-    input.tolerance_mm = tolerance_->internal_value();
-    QString current;  // the file being read, for the message
     try {
-        for (InputFile which : {InputFile::plan, InputFile::reference_cmm, InputFile::test_omm,
-                                InputFile::reference_omm}) {
-            if (file(which).isEmpty()) {
-                set_error(tr("Choose a file for “%1”.")
-                              .arg(file_labels_[static_cast<std::size_t>(which)]->text()));
-                return false;
-            }
-        }
-        const bool c0 = !file(InputFile::block_c0).isEmpty();
-        const bool c180 = !file(InputFile::block_c180).isEmpty();
-        if (c0 != c180) {
-            set_error(
-                tr("The block is needed at both angles: choose both block files, or "
-                   "neither."));
-            return false;
-        }
-        current = file(InputFile::plan);
-        input.plan = read_input(current, [](const std::string& t) { return parse_plan(t); });
-        const auto points = [&](InputFile which) {
-            current = file(which);
-            return read_input(current, [&input](const std::string& t) {
-                return parse_points_for_plan(t, input.plan);
-            });
-        };
-        input.reference_cmm = points(InputFile::reference_cmm);
-        input.test_omm = points(InputFile::test_omm);
-        input.reference_omm = points(InputFile::reference_omm);
-        if (c0) {
-            current = file(InputFile::block_c0);
-            input.block_at_zero =
-                read_input(current, [](const std::string& t) { return parse_block(t); });
-            current = file(InputFile::block_c180);
-            input.block_turned =
-                read_input(current, [](const std::string& t) { return parse_block(t); });
-        }
-        current.clear();
+        ComparisonInput input = read_files();
+        input.c_axis = {axis_x_->internal_value(), axis_y_->internal_value(),
+                        angle_->internal_value()};
+        input.tolerance_mm = tolerance_->internal_value();
         clear_vector_upper_state();  // what Qt painted may have left them in use
         ComparisonResult result = run_comparison(input);
         input_ = std::move(input);
         result_ = std::move(result);
-    } catch (const FileError& e) {
-        set_error(lab_error_text(e));  // names the file already
+    } catch (const ComparisonFileError& e) {
+        set_error(file_error_text(e));
         return false;
     } catch (const std::exception& e) {
-        const QString text = lab_error_text(e);
-        set_error(current.isEmpty() ? text
-                                    : QFileInfo(current).fileName() + QStringLiteral(": ") + text);
+        set_error(error_text(e));  // a FileError names the file already
         return false;
     }
     set_error({});
     export_status_->hide();
     show_result();
     return true;
+}
+
+ComparisonInput ComparisonTab::read_files() {
+    const auto path = [this](InputFile which) {
+        return QFile::encodeName(file(which)).toStdString();
+    };
+    const ComparisonFiles files{path(InputFile::plan),     path(InputFile::reference_cmm),
+                                path(InputFile::test_omm), path(InputFile::reference_omm),
+                                path(InputFile::block_c0), path(InputFile::block_c180)};
+    std::array<std::optional<FileStamp>, kComparisonFiles> stamps;
+    for (std::size_t k = 0; k < kComparisonFiles; ++k) {
+        stamps[k] = stamp_of(files.path(static_cast<ComparisonFile>(k)));
+    }
+    const bool stamped =
+        std::all_of(stamps.begin(), stamps.end(), [](const auto& s) { return s.has_value(); });
+    if (stamped && file_cache_->input && stamps == file_cache_->stamps) {
+        return *file_cache_->input;
+    }
+    file_cache_->input.reset();
+    ComparisonInput input = read_comparison_files(files);
+    if (stamped) {
+        file_cache_->stamps = stamps;
+        file_cache_->input = input;
+    }
+    return input;
+}
+
+QString ComparisonTab::file_error_text(const ComparisonFileError& error) const {
+    switch (error.problem()) {
+        case ComparisonFileError::Problem::not_given:
+            return tr("Choose a file for “%1”.")
+                .arg(file_labels_[static_cast<std::size_t>(error.file())]->text());
+        case ComparisonFileError::Problem::one_block:
+            return tr(
+                "The block is needed at both angles: choose both block files, or "
+                "neither.");
+        case ComparisonFileError::Problem::refused:
+            break;
+    }
+    QString cause;
+    try {
+        if (error.cause()) std::rethrow_exception(error.cause());
+    } catch (const std::exception& e) {
+        cause = error_text(e);
+    }
+    return QFileInfo(file(error.file())).fileName() + QStringLiteral(": ") + cause;
 }
 
 void ComparisonTab::rerun_if_shown() {
@@ -575,27 +609,22 @@ bool ComparisonTab::simulate_example(const QString& folder) {
     }
     const ComparisonDataSet example = simulate_comparison({});
     const ComparisonInput& in = example.input;
-    const std::array<std::pair<QString, std::string>, 7> files = {{
-        {QStringLiteral("plan.csv"), plan_csv(in.plan)},
-        {QStringLiteral("reference_cmm.csv"), points_csv(in.reference_cmm)},
-        {QStringLiteral("test_omm.csv"), points_csv(in.test_omm)},
-        {QStringLiteral("reference_omm.csv"), points_csv(in.reference_omm)},
-        {QStringLiteral("block_c0.csv"), block_csv(in.block_at_zero)},
-        {QStringLiteral("block_c180.csv"), block_csv(in.block_turned)},
-        {QStringLiteral("truth.csv"), truth_csv(in.plan, example.truth_mm)},
-    }};
+    const std::vector<ComparisonExampleFile> files = comparison_example_files(example);
     try {
-        for (const auto& [name, text] : files) {
-            write_file_atomically(QFile::encodeName(dir + QLatin1Char('/') + name).toStdString(),
-                                  text);
+        for (const ComparisonExampleFile& f : files) {
+            write_file_atomically(
+                QFile::encodeName(dir + QLatin1Char('/') + QString::fromStdString(f.name))
+                    .toStdString(),
+                f.text);
         }
     } catch (const std::exception& e) {
-        set_error(lab_error_text(e));
+        set_error(error_text(e));
         return false;
     }
     for (int i = 0; i < kInputFiles; ++i) {
         set_file(static_cast<InputFile>(i),
-                 dir + QLatin1Char('/') + files[static_cast<std::size_t>(i)].first);
+                 dir + QLatin1Char('/') +
+                     QString::fromStdString(files[static_cast<std::size_t>(i)].name));
     }
     set_c_axis(in.c_axis.x_mm, in.c_axis.y_mm);
     set_angle_deg(in.c_axis.angle_deg);
@@ -680,7 +709,7 @@ bool ComparisonTab::save_project(const QString& path) {
         write_file_atomically(QFile::encodeName(path).toStdString(),
                               comparison_project_json(settings(folder)));
     } catch (const std::exception& e) {
-        set_error(lab_error_text(e));
+        set_error(error_text(e));
         return false;
     }
     set_remembered_folder(folder);
@@ -692,10 +721,10 @@ bool ComparisonTab::open_project(const QString& path) {
     try {
         project = parse_comparison_project(read_text_file(QFile::encodeName(path).toStdString()));
     } catch (const FileError& e) {
-        set_error(lab_error_text(e));
+        set_error(error_text(e));
         return false;
     } catch (const std::exception& e) {
-        set_error(QFileInfo(path).fileName() + QStringLiteral(": ") + lab_error_text(e));
+        set_error(QFileInfo(path).fileName() + QStringLiteral(": ") + error_text(e));
         return false;
     }
     const QString folder = QFileInfo(path).absolutePath();
@@ -747,10 +776,10 @@ int ComparisonTab::map_point_count() const {
 
 void ComparisonTab::show_result() {
     export_button_->setEnabled(result_.has_value());
-    std::vector<LabWarningList::Item> items;
+    std::vector<WarningList::Item> items;
     if (result_) {
         for (const ComparisonWarning& w : result_->warnings) {
-            LabWarningList::Item item;
+            WarningList::Item item;
             item.code = QString::fromStdString(w.code);
             item.severity = w.severity;
             item.message = translate(w.message);

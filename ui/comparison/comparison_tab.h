@@ -18,10 +18,12 @@
 #include <QStringList>
 #include <QWidget>
 #include <array>
+#include <memory>
 #include <optional>
 
 #include "core/common/report_summary.h"
 #include "core/comparison/comparison.h"
+#include "core/comparison/comparison_files.h"
 #include "core/comparison/comparison_project.h"
 
 class QGroupBox;
@@ -34,17 +36,17 @@ class QToolButton;
 
 namespace probecycle::ui {
 
-class LabWarningList;
 class PointTableModel;
 class PlotView;
 class UnitSpinBox;
+class WarningList;
 
 class ComparisonTab : public QWidget {
     Q_OBJECT
 
   public:
-    enum class InputFile { plan, reference_cmm, test_omm, reference_omm, block_c0, block_c180 };
-    static constexpr int kInputFiles = 6;
+    using InputFile = ComparisonFile;
+    static constexpr int kInputFiles = static_cast<int>(kComparisonFiles);
 
     explicit ComparisonTab(QWidget* parent = nullptr);
     ~ComparisonTab() override;
@@ -117,6 +119,12 @@ class ComparisonTab : public QWidget {
     void simulate_dialog();
     // Rerun with the current inputs when a result is on screen.
     void rerun_if_shown();
+    // The files' content, read anew only when a path or a file's
+    // modification time or size changed since the last read.
+    ComparisonInput read_files();
+    // The error in the interface language: the file's label, or its name and
+    // what is wrong with its content.
+    QString file_error_text(const ComparisonFileError& error) const;
 
     std::array<QLabel*, kInputFiles> file_labels_{};
     std::array<QLineEdit*, kInputFiles> file_edits_{};
@@ -151,13 +159,15 @@ class ComparisonTab : public QWidget {
     QLabel* summary_title_{nullptr};
     QTableWidget* summary_table_{nullptr};
     QLabel* warnings_title_{nullptr};
-    LabWarningList* warnings_{nullptr};
+    WarningList* warnings_{nullptr};
     QLabel* points_title_{nullptr};
     QTableView* point_table_{nullptr};
     PointTableModel* point_model_{nullptr};
     QPushButton* export_button_{nullptr};
     QLabel* export_status_{nullptr};
 
+    struct FileCache;
+    std::unique_ptr<FileCache> file_cache_;
     ComparisonInput input_;  // of result_
     std::optional<ComparisonResult> result_;
     QString last_error_;

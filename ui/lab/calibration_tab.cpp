@@ -26,8 +26,10 @@
 #include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
+#include "ui/common/unit_spin_box.h"
+#include "ui/lab/fit_input.h"
 #include "ui/lab/lab_widgets.h"
-#include "ui/lab/program_dialog.h"
+#include "ui/program/program_dialog.h"
 
 namespace probecycle::ui {
 
@@ -101,8 +103,12 @@ QGroupBox* CalibrationTab::build_ring_group() {
     ring_group_ = new QGroupBox(this);
     format_hint_ = new QLabel(ring_group_);
     format_hint_->setWordWrap(true);
-    points_edit_ = make_csv_editor(ring_group_);
-    points_edit_->setObjectName(QStringLiteral("ring-points"));
+    input_ = new FitInput(ProgramKind::ring,
+                          {"ring-points", "ring-program", "ring-import-log", "ring-error"}, this,
+                          last_error_, [this] { return result_.has_value(); });
+    input_->set_fit_text(
+        [this](const QString& text, const QString& source) { return fit_text(text, source); });
+    points_edit_ = input_->make_editor(ring_group_);
     diameter_ = new UnitSpinBox(0.1, 2000.0, 4, 50.0, ring_group_);
     diameter_->setObjectName(QStringLiteral("gauge-diameter"));
     diameter_->set_unit(unit_mm);
@@ -119,39 +125,19 @@ QGroupBox* CalibrationTab::build_ring_group() {
     runout_limit_label_->setBuddy(runout_limit_);
     residual_limit_label_ = new QLabel(ring_group_);
     residual_limit_label_->setBuddy(residual_limit_);
-    import_button_ = new QPushButton(ring_group_);
-    fit_button_ = new QPushButton(ring_group_);
-    fit_button_->setDefault(true);
-    program_button_ = new QPushButton(ring_group_);
-    program_button_->setObjectName(QStringLiteral("ring-program"));
-    log_button_ = new QPushButton(ring_group_);
-    log_button_->setObjectName(QStringLiteral("ring-import-log"));
-    error_label_ = new QLabel(ring_group_);
-    error_label_->setObjectName(QStringLiteral("ring-error"));
-    error_label_->setWordWrap(true);
-    error_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    error_label_->hide();
+    input_->make_buttons(ring_group_);
+    input_->fit_button()->setDefault(true);
 
     auto* ring_form = new QFormLayout;
     ring_form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
     ring_form->addRow(diameter_label_, diameter_);
     ring_form->addRow(runout_limit_label_, runout_limit_);
     ring_form->addRow(residual_limit_label_, residual_limit_);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(import_button_);
-    buttons->addStretch(1);
-    buttons->addWidget(fit_button_);
-    auto* machine_buttons = new QHBoxLayout;
-    machine_buttons->addWidget(program_button_);
-    machine_buttons->addWidget(log_button_);
-    machine_buttons->addStretch(1);
     auto* ring_column = new QVBoxLayout(ring_group_);
     ring_column->addWidget(format_hint_);
     ring_column->addWidget(points_edit_, 1);
     ring_column->addLayout(ring_form);
-    ring_column->addLayout(buttons);
-    ring_column->addLayout(machine_buttons);
-    ring_column->addWidget(error_label_);
+    input_->add_buttons_to(ring_column);
     return ring_group_;
 }
 
@@ -170,7 +156,7 @@ QGroupBox* CalibrationTab::build_length_group() {
     length_result_label_->setObjectName(QStringLiteral("length-result"));
     length_result_label_->setWordWrap(true);
     length_result_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    length_warnings_ = new LabWarningList(length_group_);
+    length_warnings_ = new WarningList(length_group_);
     length_form_ = new QFormLayout;
     length_form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     // QFormLayout makes no label for an empty text; retranslate() fills these.
@@ -239,7 +225,7 @@ QGroupBox* CalibrationTab::build_result_group() {
     result_values_[row_radius]->setFont(bold);
     warnings_title_ = new QLabel(result_group_);
     warnings_title_->setFont(bold);
-    warnings_ = new LabWarningList(result_group_);
+    warnings_ = new WarningList(result_group_);
     warnings_->setObjectName(QStringLiteral("ring-warnings"));
     export_button_ = new QPushButton(result_group_);
     export_button_->setEnabled(false);
@@ -263,10 +249,9 @@ QGroupBox* CalibrationTab::build_result_group() {
 
 // Edits refit the ring (with a result), redraw or recompute the length.
 void CalibrationTab::connect_inputs() {
-    connect(fit_button_, &QPushButton::clicked, this, [this] { fit(); });
-    connect(import_button_, &QPushButton::clicked, this, &CalibrationTab::import_dialog);
-    connect(program_button_, &QPushButton::clicked, this, [this] { open_program_dialog(); });
-    connect(log_button_, &QPushButton::clicked, this, &CalibrationTab::import_machine_log_dialog);
+    connect(input_->import_button(), &QPushButton::clicked, this, &CalibrationTab::import_dialog);
+    connect(input_->program_button(), &QPushButton::clicked, this,
+            [this] { open_program_dialog(); });
     connect(export_button_, &QPushButton::clicked, this, &CalibrationTab::export_dialog);
     for (UnitSpinBox* box : {diameter_, runout_limit_, residual_limit_}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] {
@@ -300,14 +285,11 @@ void CalibrationTab::retranslate() {
     residual_limit_->setToolTip(
         tr("Warn when a point lies further than this off its fitted circle: dirt, a bad touch "
            "or a loose gauge."));
-    import_button_->setText(tr("Import CSV…"));
-    fit_button_->setText(tr("Fit"));
-    program_button_->setText(tr("Program…"));
-    program_button_->setToolTip(
+    input_->retranslate();
+    input_->program_button()->setToolTip(
         tr("The ring-gauge calibration as a program for your control (LinuxCNC, grbl), with the "
            "plan that the import of its log needs."));
-    log_button_->setText(tr("Import machine log…"));
-    log_button_->setToolTip(
+    input_->log_button()->setToolTip(
         tr("What the control recorded while it ran the program, read with the program's plan "
            "into the points and fitted."));
 
@@ -410,19 +392,11 @@ RingCalibrationOptions CalibrationTab::options() const {
 }
 
 bool CalibrationTab::fit() {
-    return fit_text(points_edit_->toPlainText(), QString());
+    return input_->fit();
 }
 
 bool CalibrationTab::import_file(const QString& path) {
-    LiveText error;
-    const std::optional<QString> text = import_csv_into(points_edit_, path, error);
-    if (!text) {
-        set_error(error);
-        return false;
-    }
-    remember_folder_of(path);
-    imported_ = ImportedText{QFileInfo(path).fileName(), *text};
-    return fit_text(*text, QFileInfo(path).fileName());
+    return input_->import_file(path);
 }
 
 bool CalibrationTab::fit_text(const QString& text, const QString& source) {
@@ -433,16 +407,11 @@ bool CalibrationTab::fit_text(const QString& text, const QString& source) {
         points = parse_ring_csv(text.toStdString());
         result = calibrate_ring(points, options);
     } catch (const std::exception&) {
-        // CsvError names the line and column; InputError says what is wrong.
-        LiveText message = current_error_text();
-        if (!source.isEmpty()) {
-            message = [source, message] { return tr("%1: %2").arg(source, message()); };
-        }
-        set_error(std::move(message));
+        input_->show_fit_error(source);
         return false;
     }
     points_ = std::move(points);
-    points_from_ = data_source_name(imported_, text);
+    points_from_ = input_->source_of(text);
     options_ = options;
     result_ = std::move(result);
     fitted_text_ = text;
@@ -467,19 +436,12 @@ bool CalibrationTab::refit() {
 }
 
 void CalibrationTab::set_error(LiveText text) {
-    // Built again after a language switch, with the note as it stood.
-    const bool previous = text && result_;
-    show_live_error(error_label_, [this, text = std::move(text), previous] {
-        last_error_ = text ? text() : QString();
-        return previous ? last_error_ + QLatin1Char('\n') +
-                              tr("The result shown is still that of the previous fit.")
-                        : last_error_;
-    });
+    input_->set_error(std::move(text));
 }
 
 void CalibrationTab::show_result() {
     for (QLabel* value : result_values_) value->setText(result_ ? QString() : QStringLiteral("—"));
-    std::vector<LabWarningList::Item> items;
+    std::vector<WarningList::Item> items;
     if (result_) {
         const RingCalibration& r = *result_;
         // One coordinate a line: a narrow column (and a long translation)
@@ -744,7 +706,7 @@ void CalibrationTab::compute_length() {
     length_result_.reset();
     length_input_.reset();
     length_error_.clear();
-    std::vector<LabWarningList::Item> items;
+    std::vector<WarningList::Item> items;
 
     LengthCalibrationInput input;
     input.surface_z_mm = surface_z_->internal_value();
@@ -767,7 +729,7 @@ void CalibrationTab::compute_length() {
             length_result_ = calibrate_length(input);
             length_input_ = input;
         } catch (const std::exception& e) {
-            length_error_ = lab_error_text(e);
+            length_error_ = error_text(e);
         }
     }
 
@@ -819,15 +781,11 @@ bool CalibrationTab::export_report(const QString& path, ReportRows rows) {
 }
 
 void CalibrationTab::import_dialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Import ring gauge points"), dialog_start(),
-                                     tr("CSV files (*.csv);;All files (*)"));
-    if (!path.isEmpty()) import_file(path);
+    input_->import_dialog(tr("Import ring gauge points"));
 }
 
 ProgramDialog* CalibrationTab::open_program_dialog() {
-    ProgramDialog* dialog =
-        ui::open_program_dialog(this, ProgramKind::ring, scenario_, log_choice_);
+    ProgramDialog* dialog = input_->open_program_dialog(scenario_);
     RingPlanOptions options;
     options.gauge_diameter_mm = diameter_->internal_value();
     dialog->set_ring_options(options);
@@ -835,17 +793,7 @@ ProgramDialog* CalibrationTab::open_program_dialog() {
 }
 
 bool CalibrationTab::import_machine_log(const MachineLogChoice& choice) {
-    log_choice_ = choice;
-    return import_machine_log_into(
-        points_edit_, choice, ProgramKind::ring, imported_,
-        [this](const QString& text, const QString& source) { return fit_text(text, source); },
-        [this](LiveText error) { set_error(std::move(error)); });
-}
-
-void CalibrationTab::import_machine_log_dialog() {
-    open_machine_log_dialog(
-        this, ProgramKind::ring, log_choice_,
-        [this](const MachineLogChoice& choice) { return import_machine_log(choice); });
+    return input_->import_machine_log(choice);
 }
 
 void CalibrationTab::export_dialog() {

@@ -27,7 +27,7 @@
 #include "core/lab/calibration.h"
 #include "core/project/project_file.h"
 #include "ui/lab/lab_widgets.h"
-#include "ui/lab/machine_log_import.h"
+#include "ui/program/machine_log_import.h"
 
 class QComboBox;
 class QFormLayout;
@@ -40,10 +40,11 @@ class QPushButton;
 
 namespace probecycle::ui {
 
-class LabWarningList;
+class FitInput;
 class PlotView;
 class ProgramDialog;
 class UnitSpinBox;
+class WarningList;
 
 class CalibrationTab : public QWidget {
     Q_OBJECT
@@ -147,25 +148,20 @@ class CalibrationTab : public QWidget {
     void compute_length();
     void retranslate();
     void import_dialog();
-    void import_machine_log_dialog();
 
     Scenario scenario_;
 
     // Input
     QGroupBox* ring_group_{nullptr};
     QLabel* format_hint_{nullptr};
-    QPlainTextEdit* points_edit_{nullptr};
+    FitInput* input_{nullptr};
+    QPlainTextEdit* points_edit_{nullptr};  // input_'s
     QLabel* diameter_label_{nullptr};
     UnitSpinBox* diameter_{nullptr};
     QLabel* runout_limit_label_{nullptr};
     UnitSpinBox* runout_limit_{nullptr};
     QLabel* residual_limit_label_{nullptr};
     UnitSpinBox* residual_limit_{nullptr};
-    QPushButton* import_button_{nullptr};
-    QPushButton* fit_button_{nullptr};
-    QPushButton* program_button_{nullptr};
-    QPushButton* log_button_{nullptr};
-    QLabel* error_label_{nullptr};
 
     // Length
     QGroupBox* length_group_{nullptr};
@@ -175,7 +171,7 @@ class CalibrationTab : public QWidget {
     UnitSpinBox* active_length_{nullptr};
     UnitSpinBox* nominal_length_{nullptr};
     QLabel* length_result_label_{nullptr};
-    LabWarningList* length_warnings_{nullptr};
+    WarningList* length_warnings_{nullptr};
 
     // Drawing
     QLabel* magnification_label_{nullptr};
@@ -194,14 +190,12 @@ class CalibrationTab : public QWidget {
     QLabel* result_labels_[8]{};
     QLabel* result_values_[8]{};
     QLabel* warnings_title_{nullptr};
-    LabWarningList* warnings_{nullptr};
+    WarningList* warnings_{nullptr};
     QPushButton* export_button_{nullptr};
     QLabel* export_status_{nullptr};
 
     std::vector<RingPoint> points_;
-    QString fitted_text_;  // the CSV behind result_
-    std::optional<ImportedText> imported_;
-    MachineLogChoice log_choice_;        // the last import's, or the last program saved
+    QString fitted_text_;                // the CSV behind result_
     std::string points_from_{"pasted"};  // the report's subject: points_' file, or "pasted"
     RingCalibrationOptions options_;     // of result_
     std::optional<RingCalibration> result_;

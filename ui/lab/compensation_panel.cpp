@@ -19,6 +19,7 @@
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
 #include "ui/common/text_format.h"
+#include "ui/common/unit_spin_box.h"
 #include "ui/lab/lab_widgets.h"
 
 namespace probecycle::ui {

@@ -24,8 +24,10 @@
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
 #include "ui/common/text_format.h"
+#include "ui/common/unit_spin_box.h"
+#include "ui/lab/fit_input.h"
 #include "ui/lab/lab_widgets.h"
-#include "ui/lab/program_dialog.h"
+#include "ui/program/program_dialog.h"
 
 namespace probecycle::ui {
 
@@ -52,10 +54,9 @@ DelayFitPanel::DelayFitPanel(QWidget* parent) : QGroupBox(parent) {
     column->addLayout(top, 1);
     column->addLayout(build_apply_row());
 
-    connect(fit_button_, &QPushButton::clicked, this, [this] { fit(); });
-    connect(import_button_, &QPushButton::clicked, this, &DelayFitPanel::import_dialog);
-    connect(program_button_, &QPushButton::clicked, this, [this] { open_program_dialog(); });
-    connect(log_button_, &QPushButton::clicked, this, &DelayFitPanel::import_machine_log_dialog);
+    connect(input_->import_button(), &QPushButton::clicked, this, &DelayFitPanel::import_dialog);
+    connect(input_->program_button(), &QPushButton::clicked, this,
+            [this] { open_program_dialog(); });
     connect(period_, &QDoubleSpinBox::valueChanged, this, &DelayFitPanel::apply_period);
     connect(apply_group_, &QComboBox::currentIndexChanged, this, [this] { update_apply(); });
     connect(apply_button_, &QPushButton::clicked, this, [this] { apply_to_scenario(); });
@@ -69,44 +70,28 @@ DelayFitPanel::~DelayFitPanel() = default;
 QWidget* DelayFitPanel::build_input_column() {
     format_hint_ = new QLabel(this);
     format_hint_->setWordWrap(true);
-    touches_edit_ = make_csv_editor(this);
-    touches_edit_->setObjectName(QStringLiteral("delay-touches"));
+    input_ = new FitInput(ProgramKind::delay,
+                          {"delay-touches", "delay-program", "delay-import-log", "delay-error"},
+                          this, last_error_, [this] { return fit_.has_value(); });
+    input_->set_fit_text(
+        [this](const QString& text, const QString& source) { return fit_text(text, source); });
+    touches_edit_ = input_->make_editor(this);
     period_ = new UnitSpinBox(0.0, 0.1, 3, 0.0, this, 1000.0);
     period_->setObjectName(QStringLiteral("fit-interpolation-period"));
     period_->set_unit(unit_ms);
     period_label_ = new QLabel(this);
     period_label_->setBuddy(period_);
-    import_button_ = new QPushButton(this);
-    fit_button_ = new QPushButton(this);
-    program_button_ = new QPushButton(this);
-    program_button_->setObjectName(QStringLiteral("delay-program"));
-    log_button_ = new QPushButton(this);
-    log_button_->setObjectName(QStringLiteral("delay-import-log"));
-    error_label_ = new QLabel(this);
-    error_label_->setObjectName(QStringLiteral("delay-error"));
-    error_label_->setWordWrap(true);
-    error_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    error_label_->hide();
+    input_->make_buttons(this);
     auto* period_row = new QHBoxLayout;
     period_row->addWidget(period_label_);
     period_row->addWidget(period_, 1);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(import_button_);
-    buttons->addStretch(1);
-    buttons->addWidget(fit_button_);
-    auto* machine_buttons = new QHBoxLayout;
-    machine_buttons->addWidget(program_button_);
-    machine_buttons->addWidget(log_button_);
-    machine_buttons->addStretch(1);
     auto* input = new QWidget(this);
     auto* input_column = new QVBoxLayout(input);
     input_column->setContentsMargins(0, 0, 0, 0);
     input_column->addWidget(format_hint_);
     input_column->addWidget(touches_edit_, 1);
     input_column->addLayout(period_row);
-    input_column->addLayout(buttons);
-    input_column->addLayout(machine_buttons);
-    input_column->addWidget(error_label_);
+    input_->add_buttons_to(input_column);
     input->setFixedWidth(320);
     return input;
 }
@@ -136,7 +121,7 @@ QWidget* DelayFitPanel::build_results_column() {
     QFont bold = warnings_title_->font();
     bold.setBold(true);
     warnings_title_->setFont(bold);
-    warnings_ = new LabWarningList;
+    warnings_ = new WarningList;
     warnings_->setObjectName(QStringLiteral("delay-warnings"));
     auto* warnings_scroll = new QScrollArea(this);
     warnings_scroll->setWidget(warnings_);
@@ -204,14 +189,11 @@ void DelayFitPanel::retranslate() {
         tr("The control's interpolation cycle, to express the delay in cycles "
            "(optional)."));
     period_->setSpecialValueText(tr("none"));
-    import_button_->setText(tr("Import CSV…"));
-    fit_button_->setText(tr("Fit"));
-    program_button_->setText(tr("Program…"));
-    program_button_->setToolTip(
+    input_->retranslate();
+    input_->program_button()->setToolTip(
         tr("The delay-stability test as a program for your control (LinuxCNC, grbl), with the "
            "plan that the import of its log needs."));
-    log_button_->setText(tr("Import machine log…"));
-    log_button_->setToolTip(
+    input_->log_button()->setToolTip(
         tr("What the control recorded while it ran the program, read with the program's plan "
            "into the touches and fitted."));
     delay_plot_->set_title(tr("Measured minus zero-speed position, against feed"));
@@ -295,19 +277,11 @@ void DelayFitPanel::apply_period() {
 }
 
 bool DelayFitPanel::fit() {
-    return fit_text(touches_edit_->toPlainText(), QString());
+    return input_->fit();
 }
 
 bool DelayFitPanel::import_file(const QString& path) {
-    LiveText error;
-    const std::optional<QString> text = import_csv_into(touches_edit_, path, error);
-    if (!text) {
-        set_error(error);
-        return false;
-    }
-    remember_folder_of(path);
-    imported_ = ImportedText{QFileInfo(path).fileName(), *text};
-    return fit_text(*text, QFileInfo(path).fileName());
+    return input_->import_file(path);
 }
 
 bool DelayFitPanel::export_report(const QString& path, ReportRows rows) {
@@ -341,15 +315,11 @@ bool DelayFitPanel::fit_text(const QString& text, const QString& source) {
         touches = parse_delay_csv(text.toStdString());
         fit = fit_delay(touches, options);
     } catch (const std::exception&) {
-        LiveText message = current_error_text();
-        if (!source.isEmpty()) {
-            message = [source, message] { return tr("%1: %2").arg(source, message()); };
-        }
-        set_error(std::move(message));
+        input_->show_fit_error(source);
         return false;
     }
     touches_ = std::move(touches);
-    touches_from_ = data_source_name(imported_, text);
+    touches_from_ = input_->source_of(text);
     fit_options_ = options;
     fit_ = std::move(fit);
     fitted_text_ = text;
@@ -389,19 +359,12 @@ bool DelayFitPanel::restore(const DelaySession& session) {
 }
 
 void DelayFitPanel::set_error(LiveText text) {
-    // Built again after a language switch, with the note as it stood.
-    const bool previous = text && fit_;
-    show_live_error(error_label_, [this, text = std::move(text), previous] {
-        last_error_ = text ? text() : QString();
-        return previous ? last_error_ + QLatin1Char('\n') +
-                              tr("The result shown is still that of the previous fit.")
-                        : last_error_;
-    });
+    input_->set_error(std::move(text));
 }
 
 void DelayFitPanel::show_fit() {
     tree_->clear();
-    std::vector<LabWarningList::Item> items;
+    std::vector<WarningList::Item> items;
     if (fit_) {
         for (const DelayGroup& g : fit_->groups) {
             const QString name = QString::fromStdString(g.name());
@@ -537,28 +500,15 @@ QList<QPointF> DelayFitPanel::plotted_line(int group) const {
 }
 
 void DelayFitPanel::import_dialog() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Import touches"), dialog_start(),
-                                                      tr("CSV files (*.csv);;All files (*)"));
-    if (!path.isEmpty()) import_file(path);
+    input_->import_dialog(tr("Import touches"));
 }
 
 ProgramDialog* DelayFitPanel::open_program_dialog() {
-    return ui::open_program_dialog(this, ProgramKind::delay, scenario_.value_or(Scenario{}),
-                                   log_choice_);
+    return input_->open_program_dialog(scenario_.value_or(Scenario{}));
 }
 
 bool DelayFitPanel::import_machine_log(const MachineLogChoice& choice) {
-    log_choice_ = choice;
-    return import_machine_log_into(
-        touches_edit_, choice, ProgramKind::delay, imported_,
-        [this](const QString& text, const QString& source) { return fit_text(text, source); },
-        [this](LiveText error) { set_error(std::move(error)); });
-}
-
-void DelayFitPanel::import_machine_log_dialog() {
-    open_machine_log_dialog(
-        this, ProgramKind::delay, log_choice_,
-        [this](const MachineLogChoice& choice) { return import_machine_log(choice); });
+    return input_->import_machine_log(choice);
 }
 
 void DelayFitPanel::set_applied_group(const QString& name) {
@@ -590,7 +540,7 @@ DelayFitPanel::ApplyState DelayFitPanel::evaluate_apply() const {
         state.applied = std::move(applied);
     } catch (const std::exception& e) {
         // InputError from the rule, ScenarioError from the key's range.
-        state.problem = lab_error_text(e);
+        state.problem = error_text(e);
     }
     return state;
 }

@@ -26,7 +26,7 @@
 #include "core/lab/delay_fit.h"
 #include "core/project/project_file.h"
 #include "ui/lab/lab_widgets.h"
-#include "ui/lab/machine_log_import.h"
+#include "ui/program/machine_log_import.h"
 
 class QComboBox;
 class QLabel;
@@ -36,10 +36,11 @@ class QTreeWidget;
 
 namespace probecycle::ui {
 
-class LabWarningList;
+class FitInput;
 class PlotView;
 class ProgramDialog;
 class UnitSpinBox;
+class WarningList;
 
 class DelayFitPanel : public QGroupBox {
     Q_OBJECT
@@ -141,7 +142,6 @@ class DelayFitPanel : public QGroupBox {
     void update_apply();
     void retranslate();
     void import_dialog();
-    void import_machine_log_dialog();
     std::optional<std::string> chosen_group() const;
     struct ApplyState {
         std::optional<AppliedDelay> applied;
@@ -152,14 +152,10 @@ class DelayFitPanel : public QGroupBox {
     std::optional<Scenario> scenario_;
 
     QLabel* format_hint_{nullptr};
-    QPlainTextEdit* touches_edit_{nullptr};
+    FitInput* input_{nullptr};
+    QPlainTextEdit* touches_edit_{nullptr};  // input_'s
     QLabel* period_label_{nullptr};
     UnitSpinBox* period_{nullptr};
-    QPushButton* import_button_{nullptr};
-    QPushButton* fit_button_{nullptr};
-    QPushButton* program_button_{nullptr};
-    QPushButton* log_button_{nullptr};
-    QLabel* error_label_{nullptr};
     PlotView* delay_plot_{nullptr};
     struct GroupCurves {
         int touches{-1};
@@ -168,7 +164,7 @@ class DelayFitPanel : public QGroupBox {
     std::vector<GroupCurves> group_curves_;
     QTreeWidget* tree_{nullptr};
     QLabel* warnings_title_{nullptr};
-    LabWarningList* warnings_{nullptr};
+    WarningList* warnings_{nullptr};
     QLabel* apply_label_{nullptr};
     QComboBox* apply_group_{nullptr};
     QLabel* apply_breakdown_{nullptr};
@@ -177,9 +173,7 @@ class DelayFitPanel : public QGroupBox {
     QPushButton* export_button_{nullptr};
 
     std::vector<DelayTouch> touches_;
-    QString fitted_text_;  // the CSV behind fit_
-    std::optional<ImportedText> imported_;
-    MachineLogChoice log_choice_;         // the last import's, or the last program saved
+    QString fitted_text_;                 // the CSV behind fit_
     std::string touches_from_{"pasted"};  // the report's subject: touches_' file, or "pasted"
     DelayFitOptions fit_options_;
     std::optional<DelayFit> fit_;

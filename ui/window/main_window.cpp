@@ -47,7 +47,7 @@
 #include "ui/cycle/parameter_panel.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
-#include "ui/lab/program_dialog.h"
+#include "ui/program/program_dialog.h"
 #include "ui/window/help_guide.h"
 #include "ui/window/preset_list.h"
 #include "ui/window/scenario_command.h"

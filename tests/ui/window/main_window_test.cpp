@@ -33,7 +33,7 @@
 #include "ui/common/plot_view.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
-#include "ui/lab/program_dialog.h"
+#include "ui/program/program_dialog.h"
 #include "ui/window/help_guide.h"
 
 namespace probecycle::ui {

@@ -1,4 +1,4 @@
-#include "ui/lab/program_dialog.h"
+#include "ui/program/program_dialog.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -26,8 +26,9 @@
 #include "ui/common/file_write.h"
 #include "ui/common/language.h"
 #include "ui/common/parameter_info.h"
+#include "ui/common/status_text.h"
 #include "ui/common/text_format.h"
-#include "ui/lab/lab_widgets.h"
+#include "ui/common/unit_spin_box.h"
 
 namespace probecycle::ui {
 

@@ -1,4 +1,4 @@
-#include "ui/lab/machine_log_import.h"
+#include "ui/program/machine_log_import.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -21,7 +21,7 @@
 #include "core/cycle/scenario.h"
 #include "core/program/machine_log.h"
 #include "ui/common/file_write.h"
-#include "ui/lab/program_dialog.h"
+#include "ui/program/program_dialog.h"
 
 namespace probecycle::ui {
 

@@ -14,7 +14,7 @@
 
 #include "core/program/dialect.h"
 #include "core/program/plan.h"
-#include "ui/lab/lab_widgets.h"
+#include "ui/common/paste_box.h"
 
 class QComboBox;
 class QLabel;

@@ -4,7 +4,7 @@
 // program and its plan, and "Import machine log" fills a tab's paste box and
 // fits, or leaves the tab as it was and names the line; in every language.
 
-#include "ui/lab/program_dialog.h"
+#include "ui/program/program_dialog.h"
 
 #include <gtest/gtest.h>
 
@@ -31,7 +31,7 @@
 #include "ui/common/language.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
-#include "ui/lab/machine_log_import.h"
+#include "ui/program/machine_log_import.h"
 
 namespace probecycle::ui {
 namespace {
