@@ -1,4 +1,4 @@
-// A control's log (issue 13, "Reading back"), imported for a plan. The first
+// A control's log (docs/programs.md), imported for a plan. The first
 // byte picks the plan and the dialect: '0' to '8' (every byte picks one,
 // modulo 9) stand for plan (digit / 3: delay, ring, cycle, each from the
 // default scenario and options) and dialect (digit % 3: linuxcnc, grbl,

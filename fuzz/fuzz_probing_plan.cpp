@@ -1,4 +1,4 @@
-// Probing plan file (issue 13): parse, write back, read the written file
+// Probing plan file (docs/programs.md): parse, write back, read the written file
 // again. Any input either is refused with a ScenarioError (whose messages are
 // built, as the CLI prints them) or is a plan with a recorded probe that
 // writes a file reading back to the same text and the same plan id.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Kill test of ProbeCycle's writers (issue 29): each writer is started again
+"""Kill test of ProbeCycle's writers (docs/files.md): each writer is started again
 and again over its own earlier output and killed (SIGKILL) at a random moment;
 after every kill each output must still be whole, one complete version and
 never a mix:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fails when two different English labels get the same translation (issue 12:
+"""Fails when two different English labels get the same translation (once
 the probing feed and the measuring feed were both 测量进给率). Labels are the
 short texts: at most five words, whatever their context. Pairs that are one
 word in a language (listed in ALLOWED) are allowed.

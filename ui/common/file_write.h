@@ -13,7 +13,7 @@ namespace probecycle::ui {
 // False on failure, with `error` the reason in the interface language.
 bool write_file(const QString& path, const QByteArray& bytes, QString& error);
 
-// Where a file dialog starts (issue 12): the folder of the last file the user
+// Where a file dialog starts: the folder of the last file the user
 // opened or wrote in any tab, else the user's documents, never "/"; with
 // `file_name` the suggested file in it.
 QString dialog_start(const QString& file_name = {});

@@ -1,6 +1,6 @@
 #pragma once
 
-// A report to hand over (issue 14): A4 pages of headings, paragraphs, tables
+// A report to hand over (docs/window.md): A4 pages of headings, paragraphs, tables
 // and pictures, with a footer on every page (what the figures are and are not,
 // and the page number). Laid out by QTextDocument and written by QPdfWriter,
 // which embeds the fonts it uses (DejaVu for Cyrillic, Noto CJK for Chinese),

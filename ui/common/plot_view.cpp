@@ -129,7 +129,7 @@ bool elided(const QString& text) {
     return text.endsWith(QStringLiteral("...")) || text.endsWith(QChar(0x2026));
 }
 
-// Issue 12: our own legend instead of Qt Charts' single row, which elides its
+// Our own legend instead of Qt Charts' single row, which elides its
 // entries when they do not fit. Below the plot the entries flow into as many
 // rows as the width needs; beside it, one a row. A swatch drawn with the
 // curve's own pen or brush, then the name in full.

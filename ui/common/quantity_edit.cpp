@@ -16,7 +16,7 @@ namespace probecycle::ui {
 
 namespace {
 
-// Issue 12: a slider stops only at round numbers in its unit, so a drag goes
+// A slider stops only at round numbers in its unit, so a drag goes
 // 3000 -> 3200 mm/min, not 3000 -> 3220. Log sliders step through
 // 1-1.9 by 0.1, 2-4.8 by 0.2 and 5-9.5 by 0.5 of each decade: two
 // significant digits, 35 stops a decade, each 4-10 % from the next (a

@@ -1,6 +1,6 @@
 #pragma once
 
-// The Comparison tab (issue 10; README, "Five-axis comparison measurement"):
+// The Comparison tab (docs/comparison.md):
 // the plan, the reference part's CMM points, the two on-machine measurements
 // and optionally the block touched at both angles, the C axis's position, the
 // angle and the tolerance; one Run. It shows the C axis's errors, direct OMM

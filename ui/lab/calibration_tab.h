@@ -1,7 +1,7 @@
 #pragma once
 
-// The Calibration tab of the lab (issue 4, "Tabs in the window"; domain.md,
-// "Calibration"): touches in a ring gauge at spindle orientations 0 and 180
+// The Calibration tab of the lab (docs/cli.md, "The calibration and latency
+// lab"): touches in a ring gauge at spindle orientations 0 and 180
 // degrees, pasted or imported as CSV, give the gauge centre, the stylus runout
 // and the effective ball radius; the two fitted circles are drawn with the
 // points. A small group computes the effective length from a surface of known

@@ -83,7 +83,7 @@ CompensationPanel::CompensationPanel(QWidget* parent) : QGroupBox(parent) {
     auto* row = new QHBoxLayout(this);
     row->addWidget(input);
     // Two charts, one at a time at full size: the methods while braking, and
-    // the real increments against the compensated lag (issue 11).
+    // the real increments against the compensated lag.
     charts_ = new QTabWidget(this);
     charts_->setObjectName(QStringLiteral("compensation-charts"));
     charts_->setDocumentMode(true);
@@ -188,8 +188,8 @@ void CompensationPanel::build_plot() {
     }
 }
 
-// Issue 11: the real-increments method's error against the lag it
-// compensates, with the machine's true lag as set.
+// The real-increments method's error against the lag it compensates, with
+// the machine's true lag as set: a lag set wrong shows as a slope.
 void CompensationPanel::build_lag_plot() {
     lag_plot_ = new PlotView(this);
     lag_plot_->setObjectName(QStringLiteral("lag-plot"));

@@ -1,7 +1,7 @@
 #pragma once
 
-// The compensation half of the Latency tab (issue 4, "Compensation of the
-// trigger position"; domain.md, "Cycle-lag compensation").
+// The compensation half of the Latency tab (docs/cli.md, "The calibration
+// and latency lab": how the recorded trigger position is compensated).
 //
 // The core simulates a touch at constant speed or while braking and corrects
 // the recorded position four ways; the chart sweeps the speed at the trigger
@@ -60,7 +60,7 @@ class CompensationPanel : public QGroupBox {
     QString comparison_error() const { return comparison_error_; }
     PlotView* comparison_plot() const { return comparison_plot_; }
     // (compensated lag in cycles, error µm) of the real-increments method,
-    // with the machine's lag as set (issue 11).
+    // with the machine's lag as set.
     QList<QPointF> lag_curve() const;
     PlotView* lag_plot() const { return lag_plot_; }
 

@@ -1,7 +1,7 @@
 #pragma once
 
-// The delay-fit half of the Latency tab (issue 4, "Delay from touches at
-// several feeds"; domain.md, "Latency: measuring it and compensating it").
+// The delay-fit half of the Latency tab (docs/cli.md, "The calibration and
+// latency lab").
 //
 // Touches of one surface at several feeds (CSV `axis,direction,feed_mm_min,
 // measured_mm`, pasted or imported) give the total delay per axis and

@@ -92,7 +92,7 @@ QString ask_report_path(QWidget* parent, const QString& title, const QString& fi
 bool write_report(const QString& path, const std::string& csv, QLabel* status, QString& error) {
     QString reason;
     if (!write_file(path, QByteArray::fromStdString(csv), reason)) {
-        // Said again in the new language after a switch (issue 12).
+        // Said again in the new language after a switch.
         const auto message = [path, reason] {
             return tr_lab(QT_TRANSLATE_NOOP("probecycle::ui::Lab", "%1 could not be written: %2"))
                 .arg(QDir::toNativeSeparators(path), reason);

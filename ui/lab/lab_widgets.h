@@ -19,7 +19,7 @@ namespace probecycle::ui {
 WarningList::Item warning_item(const CalibrationWarning& warning);
 WarningList::Item warning_item(const LatencyWarning& warning, const QString& group);
 
-// A lab tab's report export (issue 12): the save dialog, starting in the last
+// A lab tab's report export: the save dialog, starting in the last
 // folder used (dialog_start) with `file_name`, ".csv" added; empty when the
 // user cancels.
 QString ask_report_path(QWidget* parent, const QString& title, const QString& file_name);

@@ -1,7 +1,7 @@
 #pragma once
 
-// The Latency tab of the lab (issue 4, "Tabs in the window"; domain.md,
-// "Latency: measuring it and compensating it"): two panels one above the
+// The Latency tab of the lab (docs/cli.md, "The calibration and latency
+// lab"; docs/window.md): two panels one above the
 // other, the delay fit (delay_fit_panel.h) and the compensation comparison
 // (compensation_panel.h). The tab hands the scenario to both and lets the
 // comparison take its period and lag from the fit.

@@ -1,7 +1,7 @@
 #pragma once
 
-// "Import machine log…" on the Latency and Calibration tabs (issue 13,
-// "Reading back"): what the control recorded while it ran a program of ours,
+// "Import machine log…" on the Latency and Calibration tabs (docs/programs.md,
+// reading the results back): what the control recorded while it ran a program of ours,
 // read with the plan saved beside the program and turned into the lab's CSV
 // by the core (import_machine_log, the CLI's `import`). The tab then puts the
 // CSV into its paste box and fits it, as Import CSV does. All or nothing: on

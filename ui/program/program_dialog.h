@@ -1,7 +1,7 @@
 #pragma once
 
 // "Program…" on the Latency and Calibration tabs and File > "Program for
-// the Control…" (issue 13, "CLI and window"): the delay-stability test, the
+// the Control…" (docs/programs.md): the delay-stability test, the
 // ring-gauge calibration or the tuned cycle as a program for the user's
 // control. The plan and the program are the core's (core/program/plan.h,
 // program_writer.h), the same calls as `probecycle-cli program

@@ -49,9 +49,9 @@ TEST(Preset, EveryShippedPresetHasItsTextsAndApplies) {
 }
 
 TEST(Preset, TheBlockIsTakenOutAndTheRestKept) {
-    const Preset p = parse_preset(
-        R"({"preset": {"title": "T", "description": "What it is", "order": 2},)"
-        R"( "probe": {"pretravel_mm": 0.01}})");
+    const Preset p =
+        parse_preset(R"({"preset": {"title": "T", "description": "What it is", "order": 2},)"
+                     R"( "probe": {"pretravel_mm": 0.01}})");
     EXPECT_EQ(p.title, "T");
     EXPECT_EQ(p.description, "What it is");
     EXPECT_EQ(p.order, 2);
