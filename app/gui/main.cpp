@@ -18,7 +18,6 @@
 #include <QSettings>
 #include <QSize>
 #include <QStatusBar>
-#include <QTabWidget>
 #include <QTimer>
 #include <chrono>
 #include <cstdio>
@@ -196,20 +195,12 @@ int main(int argc, char** argv) {
                          qPrintable(parser.value(size)), kMinWidth, kMaxSide, kMinHeight, kMaxSide);
             return 2;
         }
-        // Any tab can be looked at offscreen. The order is the
-        // window's (main_window.cpp, build_ui).
-        const QStringList tab_names = {QStringLiteral("cycle"), QStringLiteral("calibration"),
-                                       QStringLiteral("latency"), QStringLiteral("comparison"),
-                                       QStringLiteral("optimise")};
-        const qsizetype tab_index = tab_names.indexOf(parser.value(tab));
-        if (tab_index < 0) {
+        // Any tab can be looked at offscreen.
+        if (!window.select_tab(parser.value(tab))) {
             std::fprintf(stderr, "probecycle: --tab: got '%s'; allowed: %s\n",
                          qPrintable(parser.value(tab)),
-                         qPrintable(tab_names.join(QStringLiteral(", "))));
+                         qPrintable(window.tab_keys().join(QStringLiteral(", "))));
             return 2;
-        }
-        if (auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("tabs"))) {
-            tabs->setCurrentIndex(static_cast<int>(tab_index));
         }
         window.resize(*wanted);
         window.show();

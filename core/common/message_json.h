@@ -24,4 +24,16 @@ nlohmann::ordered_json message_json(const Message& message);
 nlohmann::ordered_json warning_json(std::string_view code, Severity severity,
                                     const Message& message);
 
+// The findings of a list whose items hold a code, a severity and a message
+// (the lab's, the comparison's), each by warning_json(); `code_name` gives a
+// code's text.
+template <typename Warnings, typename CodeName>
+nlohmann::ordered_json warnings_json(const Warnings& warnings, CodeName code_name) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const auto& w : warnings) {
+        out.push_back(warning_json(code_name(w.code), w.severity, w.message));
+    }
+    return out;
+}
+
 }  // namespace probecycle

@@ -34,15 +34,6 @@ std::string code_of(CAxisWarningCode code) {
     return to_string(code);
 }
 
-template <typename W>
-Json warnings_json(const std::vector<W>& warnings) {
-    Json out = Json::array();
-    for (const auto& w : warnings) {
-        out.push_back(warning_json(code_of(w.code), w.severity, w.message));
-    }
-    return out;
-}
-
 std::string row(std::initializer_list<std::string> fields) {
     std::string out;
     for (const std::string& f : fields) out += (out.empty() ? "" : ",") + f;
@@ -118,7 +109,8 @@ Json comparison_json(const ComparisonResult& result) {
     out["surfaces"] = {{"cmm_residual_max_mm", result.cmm_fit.max_mm},
                        {"design_residual_max_mm", result.design_fit.max_mm},
                        {"calibrated_residual_max_mm", result.calibrated_fit.max_mm}};
-    out["warnings"] = warnings_json(result.warnings);
+    out["warnings"] =
+        warnings_json(result.warnings, [](const auto& code) { return code_of(code); });
     return out;
 }
 
@@ -145,7 +137,8 @@ Json c_axis_identification_json(const CAxisIdentification& result, const CAxisSe
                          {"planes", planes}});
     }
     out["blocks"] = poses;
-    out["warnings"] = warnings_json(result.warnings);
+    out["warnings"] =
+        warnings_json(result.warnings, [](const auto& code) { return code_of(code); });
     return out;
 }
 

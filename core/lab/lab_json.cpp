@@ -12,15 +12,6 @@ Json optional_json(const std::optional<double>& value) {
     return value ? Json(*value) : Json(nullptr);
 }
 
-template <typename W>
-Json warnings_json(const std::vector<W>& warnings) {
-    Json out = Json::array();
-    for (const auto& w : warnings) {
-        out.push_back(warning_json(to_string(w.code), w.severity, w.message));
-    }
-    return out;
-}
-
 Json errors_json(const std::array<double, kCompensationMethodCount>& errors) {
     Json out = Json::object();
     for (std::size_t m = 0; m < kCompensationMethodCount; ++m) {
@@ -56,7 +47,7 @@ Json ring_calibration_json(const RingCalibration& result, const RingCalibrationO
                         {"residual_max_mm", fit.residual_max_mm}});
     }
     out["fits"] = fits;
-    out["warnings"] = warnings_json(result.warnings);
+    out["warnings"] = warnings_json(result.warnings, [](auto code) { return to_string(code); });
     return out;
 }
 
@@ -70,7 +61,7 @@ Json length_calibration_json(const LengthCalibrationInput& input, const LengthCa
     out["trigger_z_mean_mm"] = result.trigger_z_mean_mm;
     out["trigger_z_range_mm"] = result.trigger_z_range_mm;
     out["touches"] = result.touches;
-    out["warnings"] = warnings_json(result.warnings);
+    out["warnings"] = warnings_json(result.warnings, [](auto code) { return to_string(code); });
     return out;
 }
 

@@ -32,6 +32,7 @@
 #include <functional>
 #include <iterator>
 #include <stdexcept>
+#include <utility>
 
 #include "core/common/file_io.h"
 #include "core/cycle/cycle_report.h"
@@ -57,6 +58,8 @@ namespace probecycle::ui {
 namespace {
 
 constexpr int kMaxRecentFiles = 8;
+// The property that holds a tab's key ("cycle", "calibration", ...).
+constexpr const char* kTabKeyProperty = "probecycle_tab_key";
 
 QString read_file(const QString& path, QString& error) {
     QFile file(path);
@@ -228,14 +231,20 @@ void MainWindow::build_ui() {
     tabs_ = new QTabWidget;
     tabs_->setObjectName(QStringLiteral("tabs"));
     tabs_->setDocumentMode(true);
-    tabs_->addTab(main_splitter_, QString());
-    tabs_->addTab(calibration_tab_, QString());
-    tabs_->addTab(latency_tab_, QString());
     comparison_tab_ = new ComparisonTab;
-    tabs_->addTab(comparison_tab_, QString());
     // "What should I change?": the optimiser's tab.
     optimise_ = new OptimisePanel;
-    tabs_->addTab(optimise_, QString());
+    // The tabs in their order, each with the key `--tab` and tab_keys() name
+    // it by.
+    const std::pair<const char*, QWidget*> pages[] = {{"cycle", main_splitter_},
+                                                      {"calibration", calibration_tab_},
+                                                      {"latency", latency_tab_},
+                                                      {"comparison", comparison_tab_},
+                                                      {"optimise", optimise_}};
+    for (const auto& [key, page] : pages) {
+        page->setProperty(kTabKeyProperty, QString::fromLatin1(key));
+        tabs_->addTab(page, QString());
+    }
     connect(optimise_, &OptimisePanel::requirement_edited, this,
             [this](const QString& key, double value) {
                 Scenario s = scenario_;
@@ -435,10 +444,10 @@ void MainWindow::build_menus() {
 
 void MainWindow::retranslate() {
     update_warning_counts();
-    tabs_->setTabText(1, tr("Calibration"));
-    tabs_->setTabText(2, tr("Latency"));
-    tabs_->setTabText(3, tr("Comparison"));
-    tabs_->setTabText(4, tr("Optimise"));
+    tabs_->setTabText(tabs_->indexOf(calibration_tab_), tr("Calibration"));
+    tabs_->setTabText(tabs_->indexOf(latency_tab_), tr("Latency"));
+    tabs_->setTabText(tabs_->indexOf(comparison_tab_), tr("Comparison"));
+    tabs_->setTabText(tabs_->indexOf(optimise_), tr("Optimise"));
     new_->setText(tr("&New"));
     new_->setToolTip(tr("Start from the default scenario (typical values)"));
     open_->setText(tr("&Open…"));
@@ -1236,7 +1245,8 @@ void MainWindow::update_warning_counts() {
     warnings_title_->setText(parts.isEmpty() ? tr("Warnings")
                                              : parts.join(QStringLiteral("  \u00b7  ")));
     const int problems = errors + warnings;
-    tabs_->setTabText(0, problems > 0 ? tr("Cycle (%1)").arg(problems) : tr("Cycle"));
+    tabs_->setTabText(tabs_->indexOf(main_splitter_),
+                      problems > 0 ? tr("Cycle (%1)").arg(problems) : tr("Cycle"));
     tabs_->setTabIcon(0, errors > 0     ? style()->standardIcon(QStyle::SP_MessageBoxCritical)
                          : warnings > 0 ? style()->standardIcon(QStyle::SP_MessageBoxWarning)
                                         : QIcon());
@@ -1304,6 +1314,21 @@ QStringList MainWindow::series_ids() const {
 }
 QWidget* MainWindow::charts_widget() const {
     return charts_;
+}
+
+QStringList MainWindow::tab_keys() const {
+    QStringList keys;
+    for (int i = 0; i < tabs_->count(); ++i) {
+        keys.append(tabs_->widget(i)->property(kTabKeyProperty).toString());
+    }
+    return keys;
+}
+
+bool MainWindow::select_tab(const QString& key) {
+    const int index = static_cast<int>(tab_keys().indexOf(key));
+    if (index < 0) return false;
+    tabs_->setCurrentIndex(index);
+    return true;
 }
 
 }  // namespace probecycle::ui

@@ -96,6 +96,11 @@ class MainWindow : public QMainWindow {
     // Edits not in the current file: the scenario's, and for a project the
     // lab's and the comparison's too.
     bool has_unsaved_changes() const;
+    // The tabs' keys in their order: cycle, calibration, latency,
+    // comparison, optimise (the window's `--tab` words).
+    QStringList tab_keys() const;
+    // Shows the tab of `key`; false for a key that names none.
+    bool select_tab(const QString& key);
     // The current tab's CSV report: the cycle's, or the Calibration, Latency
     // or Comparison tab's own.
     bool export_csv_report(const QString& path);
