@@ -1,5 +1,5 @@
 // Probing plan file (docs/programs.md): parse, write back, read the written file
-// again. Any input either is refused with a ScenarioError (whose messages are
+// again. Any input either is refused with a PlanError (whose messages are
 // built, as the CLI prints them) or is a plan with a recorded probe that
 // writes a file reading back to the same text and the same plan id.
 #include <cstddef>
@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     ProbingPlan plan;
     try {
         plan = parse_probing_plan(text);
-    } catch (const ScenarioError& e) {
+    } catch (const PlanError& e) {
         for (const FieldError& error : e.errors()) (void)error.message();
         return 0;
     }

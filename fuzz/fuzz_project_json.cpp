@@ -1,5 +1,5 @@
 // The window's project file: parse and write back. Any input either is
-// refused with a ScenarioError (whose messages are built, as the window shows
+// refused with a ProjectError (whose messages are built, as the window shows
 // them) or writes a file that reads back to the same text.
 #include <cstddef>
 #include <cstdint>
@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     Project project;
     try {
         project = parse_project(text);
-    } catch (const ScenarioError& e) {
+    } catch (const ProjectError& e) {
         for (const FieldError& error : e.errors()) (void)error.message();
         return 0;
     }

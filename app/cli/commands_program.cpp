@@ -245,7 +245,7 @@ void add_import(CLI::App& app) {
         ProbingPlan plan;
         try {
             plan = parse_probing_plan(read_text_file(args->plan));
-        } catch (const ScenarioError& e) {
+        } catch (const PlanError& e) {
             throw std::runtime_error(args->plan + ": not a probing plan:\n" + e.what());
         }
         const DialectId id = *dialect_from_string(args->dialect);

@@ -1,5 +1,7 @@
 #include "core/common/field_error.h"
 
+#include <utility>
+
 namespace probecycle {
 
 Message FieldError::to_message() const {
@@ -45,5 +47,31 @@ Message range_allowed(double min, double max, const char* unit) {
               text_arg("unit", unit)};
     return m;
 }
+
+const char* to_string(FileKind kind) {
+    switch (kind) {
+        case FileKind::scenario:
+            return "scenario";
+        case FileKind::plan:
+            return "plan";
+        case FileKind::project:
+            return "project";
+    }
+    return "?";
+}
+
+namespace {
+std::string join_messages(const std::vector<FieldError>& errors) {
+    std::string text;
+    for (const FieldError& e : errors) {
+        if (!text.empty()) text += '\n';
+        text += e.message();
+    }
+    return text;
+}
+}  // namespace
+
+FileContentError::FileContentError(FileKind kind, std::vector<FieldError> errors)
+    : std::runtime_error(join_messages(errors)), kind_(kind), errors_(std::move(errors)) {}
 
 }  // namespace probecycle

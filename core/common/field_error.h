@@ -5,7 +5,9 @@
 // part is a message of its own, so the window can translate it.
 
 #include <cstddef>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/common/message.h"
 
@@ -24,6 +26,25 @@ struct FieldError {
     // "%1: got %2; allowed: %3", or "%1: %3" without a value; a long value is cut.
     Message to_message() const;
     std::string message() const;  // in English
+};
+
+// The kinds of file whose problems are listed field by field.
+enum class FileKind { scenario, plan, project };
+const char* to_string(FileKind kind);  // "scenario", "plan", "project"
+
+// Every problem found in one file, each keyed by its dotted path there, and
+// which kind of file it is: ScenarioError (scenario.h), PlanError (plan.h) and
+// ProjectError (project_file.h) are these, so a caller can catch one kind or
+// all. what() lists the problems in English, one a line.
+class FileContentError : public std::runtime_error {
+  public:
+    FileContentError(FileKind kind, std::vector<FieldError> errors);
+    FileKind kind() const { return kind_; }
+    const std::vector<FieldError>& errors() const { return errors_; }
+
+  private:
+    FileKind kind_;
+    std::vector<FieldError> errors_;
 };
 
 // An "allowed" message with no arguments (its text marked for translation).

@@ -611,20 +611,6 @@ AxisDynamics Scenario::axis_dynamics() const {
             machine.servo_time_constant_s, machine.in_position_mm};
 }
 
-namespace {
-std::string join_messages(const std::vector<FieldError>& errors) {
-    std::string text;
-    for (const FieldError& e : errors) {
-        if (!text.empty()) text += '\n';
-        text += e.message();
-    }
-    return text;
-}
-}  // namespace
-
-ScenarioError::ScenarioError(std::vector<FieldError> errors)
-    : std::runtime_error(join_messages(errors)), errors_(std::move(errors)) {}
-
 const std::vector<KeyInfo>& scenario_keys() {
     static const std::vector<KeyInfo> keys = [] {
         std::vector<KeyInfo> out;

@@ -153,13 +153,11 @@ struct Scenario {
     bool operator==(const Scenario&) const = default;
 };
 
-class ScenarioError : public std::runtime_error {
+// A scenario file's (or a --set's) problems.
+class ScenarioError : public FileContentError {
   public:
-    explicit ScenarioError(std::vector<FieldError> errors);
-    const std::vector<FieldError>& errors() const { return errors_; }
-
-  private:
-    std::vector<FieldError> errors_;
+    explicit ScenarioError(std::vector<FieldError> errors)
+        : FileContentError(FileKind::scenario, std::move(errors)) {}
 };
 
 // Range checks and cross-field checks; empty when the scenario is valid.

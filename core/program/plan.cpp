@@ -875,10 +875,10 @@ std::string probing_plan_json(const ProbingPlan& plan) {
 ProbingPlan parse_probing_plan(std::string_view text) {
     Json root;
     if (std::optional<FieldError> error = parse_checked_json(text, kMaxDepth, root)) {
-        throw ScenarioError({std::move(*error)});
+        throw PlanError({std::move(*error)});
     }
     if (!root.is_object() || !root.contains("format") || root["format"] != kFormat) {
-        throw ScenarioError(
+        throw PlanError(
             {{"format", root.is_object() && root.contains("format") ? root["format"].dump() : "",
               allowed_text("plan_file_format",
                            QT_TRANSLATE_NOOP("FieldError",
@@ -886,7 +886,7 @@ ProbingPlan parse_probing_plan(std::string_view text) {
                                              "probecycle-cli program wrote)"))}});
     }
     if (!root.contains("version") || root["version"] != kVersion) {
-        throw ScenarioError(
+        throw PlanError(
             {{"version", root.contains("version") ? root["version"].dump() : "",
               allowed_text(
                   "plan_file_version",
@@ -936,7 +936,7 @@ ProbingPlan parse_probing_plan(std::string_view text) {
                                  QT_TRANSLATE_NOOP("FieldError",
                                                    "no recorded probe; a plan needs one or more")));
     }
-    if (!reader.errors.empty()) throw ScenarioError(std::move(reader.errors));
+    if (!reader.errors.empty()) throw PlanError(std::move(reader.errors));
     return plan;
 }
 

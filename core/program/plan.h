@@ -163,7 +163,14 @@ ProbingPlan make_cycle_plan(const Scenario& scenario, const CyclePlanOptions& op
 //              {"step": "guard", "axis": "X", "direction": 1, "distance_mm": 20,
 //               "feed_mm_min": 3000, "text": ""}, ...]}
 std::string probing_plan_json(const ProbingPlan& plan);
-// Throws ScenarioError listing every problem, keyed by its dotted path
+// A plan file's problems.
+class PlanError : public FileContentError {
+  public:
+    explicit PlanError(std::vector<FieldError> errors)
+        : FileContentError(FileKind::plan, std::move(errors)) {}
+};
+
+// Throws PlanError listing every problem, keyed by its dotted path
 // ("steps.3.feed_mm_min").
 ProbingPlan parse_probing_plan(std::string_view text);
 // 16 hex digits naming the plan (a hash of probing_plan_json): the program and the

@@ -253,10 +253,10 @@ std::string project_json(const Project& project) {
 Project parse_project(std::string_view text) {
     Json root;
     if (std::optional<FieldError> error = parse_checked_json(text, kMaxDepth, root)) {
-        throw ScenarioError({std::move(*error)});
+        throw ProjectError({std::move(*error)});
     }
     if (!root.is_object() || !root.contains("format") || root["format"] != kFormat) {
-        throw ScenarioError(
+        throw ProjectError(
             {{"format", root.is_object() && root.contains("format") ? root["format"].dump() : "",
               allowed_text("project_file_format",
                            QT_TRANSLATE_NOOP("FieldError",
@@ -268,7 +268,7 @@ Project parse_project(std::string_view text) {
         // is a damaged one.
         const bool newer = root.contains("version") && root["version"].is_number_integer() &&
                            root["version"].get<long long>() > kVersion;
-        throw ScenarioError(
+        throw ProjectError(
             {{"version", root.contains("version") ? root["version"].dump() : "",
               newer ? allowed_text(
                           "project_file_version",
@@ -323,7 +323,7 @@ Project parse_project(std::string_view text) {
     }
     check_csv(project.ring.fitted_csv, "ring.fitted_csv", parse_ring_csv, errors);
     check_csv(project.delay.fitted_csv, "delay.fitted_csv", parse_delay_csv, errors);
-    if (!errors.empty()) throw ScenarioError(std::move(errors));
+    if (!errors.empty()) throw ProjectError(std::move(errors));
     return project;
 }
 

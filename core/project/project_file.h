@@ -97,7 +97,14 @@ constexpr int kMaxLagCycles = static_cast<int>(IncrementRing::kCapacity) - 1;
 
 // The file's text (2-space JSON, "\n" at the end).
 std::string project_json(const Project& project);
-// Throws ScenarioError listing every problem, each keyed by its dotted path in
+// A project file's problems.
+class ProjectError : public FileContentError {
+  public:
+    explicit ProjectError(std::vector<FieldError> errors)
+        : FileContentError(FileKind::project, std::move(errors)) {}
+};
+
+// Throws ProjectError listing every problem, each keyed by its dotted path in
 // the file ("scenario.machine.scan_period_s", "delay.fitted_csv: line 3 ...").
 Project parse_project(std::string_view text);
 // True when the text names the project format ("probecycle-project"): a plain

@@ -38,9 +38,9 @@ QString error_text(const std::exception& error) {
     if (const auto* file = dynamic_cast<const FileError*>(&error)) {
         return translate(file->to_message());
     }
-    if (const auto* scenario = dynamic_cast<const ScenarioError*>(&error)) {
+    if (const auto* content = dynamic_cast<const FileContentError*>(&error)) {
         QStringList lines;
-        for (const FieldError& e : scenario->errors()) lines << translate(e.to_message());
+        for (const FieldError& e : content->errors()) lines << translate(e.to_message());
         return lines.join(QLatin1Char('\n'));
     }
     //: an exception the window does not expect (out of memory...); %1 its English text

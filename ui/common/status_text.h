@@ -19,8 +19,8 @@ using LiveText = std::function<QString()>;
 // A message in the error colour.
 void show_error(QLabel* label, const QString& text);
 // What the core threw, in the interface language: CsvError, InputError,
-// ScenarioError and FileError carry messages (translate()); anything else is
-// unexpected and shown as such.
+// FileContentError (a scenario, plan or project file's) and FileError carry messages (translate());
+// anything else is unexpected and shown as such.
 QString error_text(const std::exception& error);
 // error_text of the exception being handled, built anew at each call.
 LiveText current_error_text();

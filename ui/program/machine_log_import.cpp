@@ -59,7 +59,7 @@ std::optional<QString> machine_log_csv(const MachineLogChoice& choice, ProgramKi
     ProbingPlan plan;
     try {
         plan = parse_probing_plan(read_file(choice.plan_path));
-    } catch (const ScenarioError&) {
+    } catch (const PlanError&) {
         error = [plan_name, text = current_error_text()] {
             //: %1 the plan file, %2 what is wrong in it (one problem a line)
             return tr_log(QT_TRANSLATE_NOOP("probecycle::ui::MachineLogDialog",

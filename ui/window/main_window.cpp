@@ -77,7 +77,7 @@ QString key_label(const QString& key) {
 }
 
 // Every problem of a refused scenario, one a line, in the interface language.
-QString error_list(const ScenarioError& error) {
+QString error_list(const FileContentError& error) {
     QStringList lines;
     for (const FieldError& e : error.errors()) lines << translate(e.to_message());
     return lines.join(QLatin1Char('\n'));
@@ -791,7 +791,7 @@ bool MainWindow::open_scenario(const QString& path) {
         } else {
             loaded.scenario = scenario_from_json(text);
         }
-    } catch (const ScenarioError& e) {
+    } catch (const FileContentError& e) {
         // Each line names the key, the value and what is allowed, translated.
         report_error(
             project ? QT_TR_NOOP("Could not open the project")

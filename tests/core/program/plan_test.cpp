@@ -37,10 +37,27 @@ TEST(ProbingPlan, FileReadsBackAsWritten) {
 std::string first_error(const std::string& text) {
     try {
         parse_probing_plan(text);
-    } catch (const ScenarioError& e) {
+    } catch (const PlanError& e) {
         return e.errors().front().message();
     }
     return "no error";
+}
+
+// A bad plan file is a plan's error, not a scenario's: a caller tells the
+// kinds of file apart by type (FileContentError for all three).
+TEST(ProbingPlan, ABadFileIsAPlanError) {
+    try {
+        (void)parse_probing_plan(R"({"format": "probecycle-scenario"})");
+        ADD_FAILURE() << "accepted";
+    } catch (const ScenarioError&) {
+        ADD_FAILURE() << "a plan's problem thrown as a scenario's";
+    } catch (const FileContentError& e) {
+        EXPECT_NE(dynamic_cast<const PlanError*>(&e), nullptr);
+        EXPECT_EQ(e.kind(), FileKind::plan);
+        EXPECT_STREQ(to_string(e.kind()), "plan");
+        ASSERT_FALSE(e.errors().empty());
+        EXPECT_EQ(e.errors().front().key, "format");
+    }
 }
 
 TEST(ProbingPlan, BadFilesNameTheKey) {

@@ -63,7 +63,7 @@ Project sample_project() {
 std::string problems(std::string_view text) {
     try {
         (void)parse_project(text);
-    } catch (const ScenarioError& e) {
+    } catch (const ProjectError& e) {
         std::string out;
         for (const FieldError& error : e.errors()) out += error.message() + "\n";
         return out;
@@ -75,6 +75,23 @@ std::string with(std::string_view section_and_body) {
     std::string text = R"({"format": "probecycle-project", "version": 1, "scenario": {})";
     if (!section_and_body.empty()) text += std::string(", ") + std::string(section_and_body);
     return text + "}";
+}
+
+// A bad project file is a project's error, not a scenario's, even where the
+// problem is in its scenario section.
+TEST(ProjectFile, ABadFileIsAProjectError) {
+    try {
+        (void)parse_project(
+            R"({"format": "probecycle-project", "version": 1, "scenario": {"machine": 3}})");
+        ADD_FAILURE() << "accepted";
+    } catch (const ScenarioError&) {
+        ADD_FAILURE() << "a project's problem thrown as a scenario's";
+    } catch (const FileContentError& e) {
+        EXPECT_NE(dynamic_cast<const ProjectError*>(&e), nullptr);
+        EXPECT_EQ(e.kind(), FileKind::project);
+        ASSERT_FALSE(e.errors().empty());
+        EXPECT_EQ(e.errors().front().key.rfind("scenario", 0), 0u) << e.errors().front().key;
+    }
 }
 
 TEST(ProjectFile, RoundTripKeepsEveryValue) {
