@@ -1,9 +1,7 @@
 // probecycle-cli's generated --help, and the CLI reference in docs/cli.md, name
 // the same options; integers are integers and numbers decimal.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -11,26 +9,17 @@
 #include <string>
 #include <vector>
 
+#include "tests/cli/cli_run.h"
+
 namespace {
 
-struct CliRun {
-    int exit_code{-1};
-    std::string out;
-};
+using probecycle::cli_test::CliRun;
 
-// Runs the CLI with `arguments` (shell words), stdout captured, stderr
-// appended to it when `with_stderr`.
+// Runs the CLI with `arguments` (shell words); with `with_stderr`, stderr
+// follows stdout in `out`.
 CliRun run_cli(const std::string& arguments, bool with_stderr = false) {
-    const std::string command = std::string("'") + PROBECYCLE_CLI_PATH + "' " + arguments +
-                                (with_stderr ? " 2>&1" : " 2>/dev/null") + " </dev/null";
-    CliRun run;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (pipe == nullptr) return run;
-    char buffer[4096];
-    std::size_t n = 0;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
-    const int status = pclose(pipe);
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    CliRun run = probecycle::cli_test::run(arguments + " </dev/null");
+    if (with_stderr) run.out += run.err;
     return run;
 }
 

@@ -1,11 +1,8 @@
 // probecycle-cli run as a subprocess, as a user runs it (docs/cli.md).
 
-#include <fcntl.h>
 #include <gtest/gtest.h>
 
-#include <spawn.h>
 #include <sys/wait.h>
-#include <unistd.h>
 #include <algorithm>
 
 #include <cmath>
@@ -21,8 +18,7 @@
 #include "core/cycle/cycle_report.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
-
-extern char** environ;
+#include "tests/cli/cli_run.h"
 
 namespace probecycle {
 namespace {
@@ -30,26 +26,13 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string kCli = PROBECYCLE_CLI_PATH;
 const std::string kData = PROBECYCLE_TEST_DATA_DIR;
 
 std::string data_file(const std::string& name) {
     return kData + "/" + name;
 }
 
-struct CliRun {
-    bool exited{false};
-    int exit_code{-1};
-    int signal{0};
-    std::string out;
-    std::string err;
-};
-
-std::ostream& operator<<(std::ostream& os, const CliRun& run) {
-    return os << "exit " << run.exit_code << " signal " << run.signal << "\n--- stdout\n"
-              << run.out << "--- stderr\n"
-              << run.err;
-}
+using cli_test::CliRun;
 
 std::string slurp(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -94,43 +77,7 @@ class CycleCli : public testing::Test {
     void TearDown() override { fs::remove_all(dir_); }
 
     // Runs the CLI with stdin from /dev/null and stdout, stderr captured apart.
-    CliRun run(const std::vector<std::string>& args) {
-        const std::string out_path = (dir_ / "stdout.txt").string();
-        const std::string err_path = (dir_ / "stderr.txt").string();
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-        posix_spawn_file_actions_addopen(&actions, 1, out_path.c_str(),
-                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(),
-                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        std::vector<std::string> argv_storage = {kCli};
-        argv_storage.insert(argv_storage.end(), args.begin(), args.end());
-        std::vector<char*> argv;
-        for (std::string& arg : argv_storage) argv.push_back(arg.data());
-        argv.push_back(nullptr);
-        pid_t pid = 0;
-        const int spawned =
-            posix_spawn(&pid, kCli.c_str(), &actions, nullptr, argv.data(), environ);
-        posix_spawn_file_actions_destroy(&actions);
-        CliRun result;
-        if (spawned != 0) {
-            ADD_FAILURE() << "cannot start " << kCli;
-            return result;
-        }
-        int status = 0;
-        while (waitpid(pid, &status, 0) < 0) {
-        }
-        if (WIFEXITED(status)) {
-            result.exited = true;
-            result.exit_code = WEXITSTATUS(status);
-        } else if (WIFSIGNALED(status)) {
-            result.signal = WTERMSIG(status);
-        }
-        result.out = slurp(out_path);
-        result.err = slurp(err_path);
-        return result;
-    }
+    static CliRun run(const std::vector<std::string>& args) { return cli_test::run(args); }
 
     // A successful run whose stdout is one JSON document.
     json run_json(const std::vector<std::string>& args) {

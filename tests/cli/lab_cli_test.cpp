@@ -19,86 +19,18 @@
 #include "core/common/file_io.h"
 #include "core/cycle/cycle_report.h"
 #include "core/lab/calibration_report.h"
+#include "tests/cli/cli_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+namespace cli_test = probecycle::cli_test;
 using Json = nlohmann::json;
 
-struct LabRun {
-    int exit_code{-1};
-    std::string out;
-    std::string err;
-};
+using cli_test::CliRun;
+using cli_test::TempDir;
 
-std::string lab_quote(const std::string& text) {
-    std::string quoted = "'";
-    for (const char c : text) {
-        if (c == '\'') {
-            quoted += "'\\''";
-        } else {
-            quoted += c;
-        }
-    }
-    return quoted + "'";
-}
-
-std::string lab_data(const std::string& name) {
-    return std::string(PROBECYCLE_TEST_DATA_DIR) + "/" + name;
-}
-
-std::string lab_read(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void lab_write(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-}
-
-// A directory of its own per test: ctest may run tests in parallel.
-class LabTempDir {
-  public:
-    LabTempDir() {
-        std::random_device seed;
-        std::string name = testing::UnitTest::GetInstance()->current_test_info()->name();
-        std::replace(name.begin(), name.end(), '/', '_');  // parameterized names
-        path_ =
-            fs::temp_directory_path() / ("probecycle_lab_" + name + "_" + std::to_string(seed()));
-        fs::create_directories(path_);
-    }
-    ~LabTempDir() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    LabTempDir(const LabTempDir&) = delete;
-    LabTempDir& operator=(const LabTempDir&) = delete;
-    const fs::path& path() const { return path_; }
-    fs::path operator/(const std::string& name) const { return path_ / name; }
-
-  private:
-    fs::path path_;
-};
-
-// Runs probecycle-cli with `arguments` (already quoted where needed).
-LabRun run_lab_cli(const std::string& arguments) {
-    const LabTempDir capture;
-    const fs::path out = capture / "stdout";
-    const fs::path err = capture / "stderr";
-    const std::string command = lab_quote(PROBECYCLE_CLI_PATH) + " " + arguments + " >" +
-                                lab_quote(out.string()) + " 2>" + lab_quote(err.string());
-    const int status = std::system(command.c_str());
-    LabRun run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = lab_read(out);
-    run.err = lab_read(err);
-    return run;
-}
-
-Json lab_json(const LabRun& run) {
+Json lab_json(const CliRun& run) {
     return Json::parse(run.out);
 }
 
@@ -125,8 +57,9 @@ constexpr double kFileRounding = 1e-8;  // the data files hold 9 decimals
 TEST(LabCalibrateRing, ExactFileGivesTheKnownAnswers) {
     // lab_ring.csv: gauge 50 mm centred at X100 Y-200, ball 2.995 mm, runout
     // (0.003, -0.002), four points at each orientation.
-    const auto run = run_lab_cli("calibrate ring " + lab_quote(lab_data("lab_ring.csv")) +
-                                 " --gauge-diameter 50");
+    const auto run =
+        cli_test::run("calibrate ring " + cli_test::quote(cli_test::data("lab_ring.csv")) +
+                      " --gauge-diameter 50");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_EQ(run.err, "");
     const Json out = lab_json(run);
@@ -148,19 +81,20 @@ TEST(LabCalibrateRing, ExactFileGivesTheKnownAnswers) {
 // and returns the report ("" when the command failed).
 std::string report_on_golden_day(const std::string& arguments, const fs::path& report) {
     ::setenv("SOURCE_DATE_EPOCH", "1764115200", 1);
-    const LabRun run = run_lab_cli(arguments + " --report " + lab_quote(report.string()));
+    const CliRun run = cli_test::run(arguments + " --report " + cli_test::quote(report.string()));
     ::unsetenv("SOURCE_DATE_EPOCH");
     EXPECT_EQ(run.exit_code, 0) << run.err;
-    return run.exit_code == 0 ? lab_read(report) : std::string();
+    return run.exit_code == 0 ? cli_test::read(report) : std::string();
 }
 
 // --report writes the Calibration tab's CSV report: the core's text for the same fit.
 TEST(LabCalibrateRing, ReportFileIsTheCalibrationReport) {
-    const LabTempDir dir;
-    const std::string text = report_on_golden_day(
-        "calibrate ring " + lab_quote(lab_data("lab_ring.csv")) + " --gauge-diameter 50",
-        dir / "ring_report.csv");
-    EXPECT_EQ(text, lab_read(lab_data("golden/calibrate_ring_report.csv")));
+    const TempDir dir;
+    const std::string text =
+        report_on_golden_day("calibrate ring " + cli_test::quote(cli_test::data("lab_ring.csv")) +
+                                 " --gauge-diameter 50",
+                             dir / "ring_report.csv");
+    EXPECT_EQ(text, cli_test::read(cli_test::data("golden/calibrate_ring_report.csv")));
     EXPECT_EQ(text.rfind("# ProbeCycle calibration report\n# date,2025-11-26\n", 0), 0u) << text;
     EXPECT_NE(text.find("\n# points,lab_ring.csv\n\n# ring\n"), std::string::npos) << text;
 }
@@ -168,26 +102,27 @@ TEST(LabCalibrateRing, ReportFileIsTheCalibrationReport) {
 // `latency fit --report` writes the Latency tab's report, the
 // golden file of its example (golden_test.cpp) with its header.
 TEST(LabLatencyFit, ReportFileIsTheDelayFitReport) {
-    const LabTempDir dir;
-    const std::string text =
-        report_on_golden_day("latency fit " + lab_quote(lab_data("lab_delay_report.csv")) +
-                                 " --interpolation-period-s 0.001",
-                             dir / "delay_report.csv");
-    EXPECT_EQ(text, lab_read(lab_data("golden/latency_fit_scatter_report.csv")));
+    const TempDir dir;
+    const std::string text = report_on_golden_day(
+        "latency fit " + cli_test::quote(cli_test::data("lab_delay_report.csv")) +
+            " --interpolation-period-s 0.001",
+        dir / "delay_report.csv");
+    EXPECT_EQ(text, cli_test::read(cli_test::data("golden/latency_fit_scatter_report.csv")));
     EXPECT_EQ(text.rfind("# ProbeCycle delay fit report\n# date,2025-11-26\n", 0), 0u) << text;
     EXPECT_NE(text.find("\n# touches,lab_delay_report.csv\n\n# fit\n"), std::string::npos) << text;
     // A bad file writes no report.
     const fs::path none = dir / "none.csv";
-    const auto bad = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay_one_feed.csv")) +
-                                 " --report " + lab_quote(none.string()));
+    const auto bad =
+        cli_test::run("latency fit " + cli_test::quote(cli_test::data("lab_delay_one_feed.csv")) +
+                      " --report " + cli_test::quote(none.string()));
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_FALSE(fs::exists(none));
 }
 
 TEST(LabCalibrateRing, OneOrientationSaysThereIsNoRunout) {
-    const auto run =
-        run_lab_cli("calibrate ring " + lab_quote(lab_data("lab_ring_one_orientation.csv")) +
-                    " --gauge-diameter=50");
+    const auto run = cli_test::run("calibrate ring " +
+                                   cli_test::quote(cli_test::data("lab_ring_one_orientation.csv")) +
+                                   " --gauge-diameter=50");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const Json out = lab_json(run);
     EXPECT_TRUE(out.at("runout_x_mm").is_null());
@@ -200,8 +135,9 @@ TEST(LabCalibrateRing, OneOrientationSaysThereIsNoRunout) {
 }
 
 TEST(LabCalibrateRing, WarningLimitsAreOptions) {
-    const auto run = run_lab_cli("calibrate ring " + lab_quote(lab_data("lab_ring.csv")) +
-                                 " --gauge-diameter 50 --runout-limit 0.001");
+    const auto run =
+        cli_test::run("calibrate ring " + cli_test::quote(cli_test::data("lab_ring.csv")) +
+                      " --gauge-diameter 50 --runout-limit 0.001");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_TRUE(lab_has_warning(lab_json(run), "large_runout"));
 }
@@ -210,7 +146,7 @@ TEST(LabCalibrateRing, WarningLimitsAreOptions) {
 // calibrate length
 
 TEST(LabCalibrateLength, LengthAndWear) {
-    const auto run = run_lab_cli(
+    const auto run = cli_test::run(
         "calibrate length --surface-z 25 --trigger-z 25.029 --trigger-z 25.031 "
         "--active-length 150 --nominal-length 150");
     ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -222,7 +158,7 @@ TEST(LabCalibrateLength, LengthAndWear) {
 }
 
 TEST(LabCalibrateLength, NoNominalNoWear) {
-    const auto run = run_lab_cli("calibrate length --surface-z -400 --trigger-z -249.75");
+    const auto run = cli_test::run("calibrate length --surface-z -400 --trigger-z -249.75");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const Json out = lab_json(run);
     EXPECT_NEAR(out.at("effective_length_mm").get<double>(), 150.25, 1e-9);
@@ -234,8 +170,9 @@ TEST(LabCalibrateLength, NoNominalNoWear) {
 
 TEST(LabLatencyFit, ExactFileGivesTheDelays) {
     // lab_delay.csv: X+ 8.5 ms from 10.000 over 5 feeds, Z- 9 ms from -50.000 over 3.
-    const auto run = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay.csv")) +
-                                 " --interpolation-period-s 0.001");
+    const auto run =
+        cli_test::run("latency fit " + cli_test::quote(cli_test::data("lab_delay.csv")) +
+                      " --interpolation-period-s 0.001");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const Json out = lab_json(run);
     ASSERT_EQ(out.at("groups").size(), 2u);
@@ -259,16 +196,18 @@ TEST(LabLatencyFit, ExactFileGivesTheDelays) {
 }
 
 TEST(LabLatencyFit, NoLagCyclesWithoutThePeriod) {
-    const auto run = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay.csv")));
+    const auto run =
+        cli_test::run("latency fit " + cli_test::quote(cli_test::data("lab_delay.csv")));
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_FALSE(lab_json(run).at("groups")[0].contains("lag_cycles"));
 }
 
 TEST(LabLatencyFit, FewFeedsWarnWithTheGroup) {
-    const LabTempDir dir;
-    lab_write(dir / "two_feeds.csv",
-              "axis,direction,feed_mm_min,measured_mm\nY,-1,100,-1.0\nY,-1,2000,-1.3\n");
-    const auto run = run_lab_cli("latency fit " + lab_quote((dir / "two_feeds.csv").string()));
+    const TempDir dir;
+    cli_test::write(dir / "two_feeds.csv",
+                    "axis,direction,feed_mm_min,measured_mm\nY,-1,100,-1.0\nY,-1,2000,-1.3\n");
+    const auto run =
+        cli_test::run("latency fit " + cli_test::quote((dir / "two_feeds.csv").string()));
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const Json out = lab_json(run);
     ASSERT_TRUE(lab_has_warning(out, "few_feeds"));
@@ -282,63 +221,66 @@ TEST(LabLatencyFit, FewFeedsWarnWithTheGroup) {
 
 // Writes the default scenario, with `interface_delay_s`, into `path`.
 void lab_write_scenario(const fs::path& path, double interface_delay_s) {
-    const auto defaults = run_lab_cli("defaults");
+    const auto defaults = cli_test::run("defaults");
     ASSERT_EQ(defaults.exit_code, 0) << defaults.err;
     Json scenario = Json::parse(defaults.out);
     scenario["probe"]["interface_delay_s"] = interface_delay_s;
-    lab_write(path, scenario.dump(2));
+    cli_test::write(path, scenario.dump(2));
 }
 
 TEST(LabLatencyFit, ApplyToWritesTheControllerLatency) {
-    const LabTempDir dir;
+    const TempDir dir;
     const fs::path scenario = dir / "scenario.json";
     lab_write_scenario(scenario, 0.002);
     // Default scenario: scanned input, 4 ms scan. X+ measured 8.5 ms in all:
     // 2 ms interface + 2 ms half scan + 4.5 ms controller.
-    const auto run = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay.csv")) +
-                                 " --apply-to " + lab_quote(scenario.string()) + " --group x+");
+    const auto run =
+        cli_test::run("latency fit " + cli_test::quote(cli_test::data("lab_delay.csv")) +
+                      " --apply-to " + cli_test::quote(scenario.string()) + " --group x+");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const Json applied = lab_json(run).at("applied");
     EXPECT_EQ(applied.at("group"), "X+");
     EXPECT_EQ(applied.at("key"), "machine.controller_latency_s");
     EXPECT_NEAR(applied.at("value_s").get<double>(), 0.0045, 1e-8);
     EXPECT_NEAR(applied.at("total_delay_s").get<double>(), 0.0085, 1e-8);
-    const Json written = Json::parse(lab_read(scenario));
+    const Json written = Json::parse(cli_test::read(scenario));
     EXPECT_NEAR(written.at("machine").at("controller_latency_s").get<double>(), 0.0045, 1e-8);
     // The file is still a scenario the CLI accepts.
-    EXPECT_EQ(run_lab_cli("evaluate " + lab_quote(scenario.string())).exit_code, 0);
+    EXPECT_EQ(cli_test::run("evaluate " + cli_test::quote(scenario.string())).exit_code, 0);
 }
 
 // With a latched input the fit is the interface delay: the position is
 // captured when the signal reaches the control.
 TEST(LabLatencyFit, ApplyToALatchedScenarioWritesTheInterfaceDelayAndSaysSo) {
-    const LabTempDir dir;
+    const TempDir dir;
     const fs::path scenario = dir / "scenario.json";
-    const auto defaults = run_lab_cli("defaults");
+    const auto defaults = cli_test::run("defaults");
     ASSERT_EQ(defaults.exit_code, 0) << defaults.err;
     Json json = Json::parse(defaults.out);
     json["machine"]["latched_input"] = true;
-    lab_write(scenario, json.dump(2));
-    const auto run = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay.csv")) +
-                                 " --apply-to " + lab_quote(scenario.string()) + " --group x+");
+    cli_test::write(scenario, json.dump(2));
+    const auto run =
+        cli_test::run("latency fit " + cli_test::quote(cli_test::data("lab_delay.csv")) +
+                      " --apply-to " + cli_test::quote(scenario.string()) + " --group x+");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const Json applied = lab_json(run).at("applied");
     EXPECT_EQ(applied.at("key"), "probe.interface_delay_s");
     EXPECT_NEAR(applied.at("value_s").get<double>(), 0.0085, 1e-8);
     EXPECT_NE(applied.at("note").get<std::string>().find("controller_latency_s is left"),
               std::string::npos);
-    const Json written = Json::parse(lab_read(scenario));
+    const Json written = Json::parse(cli_test::read(scenario));
     EXPECT_NEAR(written.at("probe").at("interface_delay_s").get<double>(), 0.0085, 1e-8);
     EXPECT_EQ(written.at("machine").at("controller_latency_s"),
               json.at("machine").at("controller_latency_s"));
 }
 
 TEST(LabLatencyFit, SeveralGroupsApplyTheLongestDelayAndSaySo) {
-    const LabTempDir dir;
+    const TempDir dir;
     const fs::path scenario = dir / "scenario.json";
     lab_write_scenario(scenario, 0.002);
-    const auto run = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay.csv")) +
-                                 " --apply-to " + lab_quote(scenario.string()));
+    const auto run =
+        cli_test::run("latency fit " + cli_test::quote(cli_test::data("lab_delay.csv")) +
+                      " --apply-to " + cli_test::quote(scenario.string()));
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const Json applied = lab_json(run).at("applied");
     EXPECT_EQ(applied.at("group"), "Z-");
@@ -363,34 +305,36 @@ class LabApplyErrors : public testing::TestWithParam<LabApplyErrorCase> {};
 
 TEST_P(LabApplyErrors, WriteNothing) {
     const auto& c = GetParam();
-    const LabTempDir dir;
+    const TempDir dir;
     const fs::path scenario = dir / "scenario.json";
     lab_write_scenario(scenario, c.interface_delay_s);
-    const std::string before = lab_read(scenario);
+    const std::string before = cli_test::read(scenario);
     // With --report too: a refusal writes no report either.
-    const auto run = run_lab_cli("latency fit " + lab_quote(lab_data(c.csv)) + " --apply-to " +
-                                 lab_quote(scenario.string()) + " --report " +
-                                 lab_quote((dir / "report.csv").string()) + " " + c.extra);
+    const auto run =
+        cli_test::run("latency fit " + cli_test::quote(cli_test::data(c.csv)) + " --apply-to " +
+                      cli_test::quote(scenario.string()) + " --report " +
+                      cli_test::quote((dir / "report.csv").string()) + " " + c.extra);
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.out, "");
     EXPECT_NE(run.err.find(c.says), std::string::npos) << run.err;
-    EXPECT_EQ(lab_read(scenario), before);
+    EXPECT_EQ(cli_test::read(scenario), before);
     // No report and no temporary left behind either.
     EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 1);
 }
 
 TEST(LabLatencyFit, TheReportAndTheScenarioInOneFileAreRefused) {
     // Before, the scenario was replaced by the CSV report, then exit 2.
-    const LabTempDir dir;
+    const TempDir dir;
     const fs::path scenario = dir / "scenario.json";
     lab_write_scenario(scenario, 0.002);
-    const std::string before = lab_read(scenario);
-    const auto run = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay.csv")) +
-                                 " --group Z- --apply-to " + lab_quote(scenario.string()) +
-                                 " --report " + lab_quote(scenario.string()));
+    const std::string before = cli_test::read(scenario);
+    const auto run =
+        cli_test::run("latency fit " + cli_test::quote(cli_test::data("lab_delay.csv")) +
+                      " --group Z- --apply-to " + cli_test::quote(scenario.string()) +
+                      " --report " + cli_test::quote(scenario.string()));
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_NE(run.err.find("give each output a file of its own"), std::string::npos) << run.err;
-    EXPECT_EQ(lab_read(scenario), before);
+    EXPECT_EQ(cli_test::read(scenario), before);
 }
 
 // clang-format off
@@ -404,15 +348,16 @@ INSTANTIATE_TEST_SUITE_P(Lab, LabApplyErrors,
 // clang-format on
 
 TEST(LabLatencyFit, ApplyToABadScenarioNamesIt) {
-    const LabTempDir dir;
+    const TempDir dir;
     const fs::path scenario = dir / "broken.json";
-    lab_write(scenario, "{\"machine\": {\"scan_period_s\": \"fast\"}}");
-    const auto run = run_lab_cli("latency fit " + lab_quote(lab_data("lab_delay.csv")) +
-                                 " --apply-to " + lab_quote(scenario.string()));
+    cli_test::write(scenario, "{\"machine\": {\"scan_period_s\": \"fast\"}}");
+    const auto run =
+        cli_test::run("latency fit " + cli_test::quote(cli_test::data("lab_delay.csv")) +
+                      " --apply-to " + cli_test::quote(scenario.string()));
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_NE(run.err.find("broken.json"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("scan_period_s"), std::string::npos) << run.err;
-    EXPECT_EQ(lab_read(scenario), "{\"machine\": {\"scan_period_s\": \"fast\"}}");
+    EXPECT_EQ(cli_test::read(scenario), "{\"machine\": {\"scan_period_s\": \"fast\"}}");
 }
 
 // ---------------------------------------------------------------------------
@@ -427,7 +372,7 @@ double lab_method_error(const Json& out, const std::string& method) {
 }
 
 TEST(LabLatencyCompensate, ConstantSpeedDefaults) {
-    const auto run = run_lab_cli("latency compensate --trace");
+    const auto run = cli_test::run("latency compensate --trace");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const Json out = lab_json(run);
     EXPECT_EQ(out.at("setup").at("touch"), "constant_speed");
@@ -444,7 +389,7 @@ TEST(LabLatencyCompensate, ConstantSpeedDefaults) {
 // fewer cycles than the machine lags.
 TEST(LabLatencyCompensate, CompensatedLagApartFromTheTrueLag) {
     const auto run =
-        run_lab_cli("latency compensate --lag-cycles 10 --compensated-lag-cycles 8 --lag-sweep");
+        cli_test::run("latency compensate --lag-cycles 10 --compensated-lag-cycles 8 --lag-sweep");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const Json out = lab_json(run);
     EXPECT_EQ(out.at("setup").at("lag_cycles"), 10);
@@ -458,13 +403,13 @@ TEST(LabLatencyCompensate, CompensatedLagApartFromTheTrueLag) {
     EXPECT_NEAR(sweep.at(8).at("cycle_lag_error_mm").get<double>(), v * 0.0026, 1e-4);
     EXPECT_NEAR(sweep.at(10).at("cycle_lag_error_mm").get<double>(), v * 0.0006, 1e-4);
 
-    const auto bad = run_lab_cli("latency compensate --compensated-lag-cycles 50");
+    const auto bad = cli_test::run("latency compensate --compensated-lag-cycles 50");
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_NE(bad.err.find("--compensated-lag-cycles"), std::string::npos) << bad.err;
 }
 
 TEST(LabLatencyCompensate, BrakingOnlyRealIncrementsAreRight) {
-    const auto run = run_lab_cli(
+    const auto run = cli_test::run(
         "latency compensate --touch braking --speed-fraction 0.3 --lag-cycles 9 "
         "--set cycle.probe_feed_mm_min=3000 --sweep 4");
     ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -481,8 +426,9 @@ TEST(LabLatencyCompensate, SixteenBitCounterWrapsDuringTheLag) {
     // At 10000 counts/mm the counter reads 53536 + 12000 = 65536 = 0 at 1.2 mm,
     // between the trigger (1.03 mm) and the recording (1.32 mm).
     const auto wrapped =
-        run_lab_cli("latency compensate --counter-bits 16 --counter-at-zero 53536");
-    const auto plain = run_lab_cli("latency compensate --counter-bits 16 --counter-at-zero 30000");
+        cli_test::run("latency compensate --counter-bits 16 --counter-at-zero 53536");
+    const auto plain =
+        cli_test::run("latency compensate --counter-bits 16 --counter-at-zero 30000");
     ASSERT_EQ(wrapped.exit_code, 0) << wrapped.err;
     ASSERT_EQ(plain.exit_code, 0) << plain.err;
     EXPECT_EQ(lab_json(wrapped).at("recorded").at("counter_wraps"), 1);
@@ -507,17 +453,17 @@ class LabCliErrors : public testing::TestWithParam<InputErrorCase> {};
 
 TEST_P(LabCliErrors, ExitTwoAndNameTheProblem) {
     const auto& c = GetParam();
-    const auto run = run_lab_cli(c.arguments);
+    const auto run = cli_test::run(c.arguments);
     EXPECT_EQ(run.exit_code, 2) << run.out;
     EXPECT_EQ(run.out, "");
     EXPECT_NE(run.err.find(c.says), std::string::npos) << run.err;
 }
 
 std::string lab_ring(const char* file) {
-    return "calibrate ring " + lab_quote(lab_data(file)) + " --gauge-diameter 50";
+    return "calibrate ring " + cli_test::quote(cli_test::data(file)) + " --gauge-diameter 50";
 }
 std::string lab_fit(const char* file) {
-    return "latency fit " + lab_quote(lab_data(file));
+    return "latency fit " + cli_test::quote(cli_test::data(file));
 }
 
 // clang-format off
@@ -529,9 +475,9 @@ INSTANTIATE_TEST_SUITE_P(
         InputErrorCase{"RingOnePoint",         lab_ring("lab_ring_one_point.csv"),                                               "line 2: orientation 0 deg has only 1 point"},
         InputErrorCase{"RingEmpty",            lab_ring("lab_ring_empty.csv"),                                                   "the file is empty"},
         InputErrorCase{"RingNoFile",           lab_ring("lab_no_such_file.csv"),                                                 "lab_no_such_file.csv"},
-        InputErrorCase{"RingNoGauge",          "calibrate ring " + lab_quote(lab_data("lab_ring.csv")),                          "missing required option --gauge-diameter"},
+        InputErrorCase{"RingNoGauge",          "calibrate ring " + cli_test::quote(cli_test::data("lab_ring.csv")),                          "missing required option --gauge-diameter"},
         InputErrorCase{"RingGaugeText",        lab_ring("lab_ring.csv") + " --gauge-diameter abc",                               "--gauge-diameter: got 'abc'"},
-        InputErrorCase{"RingGaugeTooSmall",    "calibrate ring " + lab_quote(lab_data("lab_ring.csv")) + " --gauge-diameter 25", "check the gauge diameter"},
+        InputErrorCase{"RingGaugeTooSmall",    "calibrate ring " + cli_test::quote(cli_test::data("lab_ring.csv")) + " --gauge-diameter 25", "check the gauge diameter"},
         InputErrorCase{"RingNoInput",          "calibrate ring --gauge-diameter 50",                                             "missing the input file"},
         InputErrorCase{"CalibrateWhat",        "calibrate sphere",                                                               "allowed: ring, length"},
         InputErrorCase{"LengthBelowSurface",   "calibrate length --surface-z 25 --trigger-z 20",                                 "not positive"},
@@ -556,7 +502,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(LabCliHelp, SubcommandHelpExitsZero) {
     for (const char* command : {"calibrate --help", "latency help"}) {
-        const auto run = run_lab_cli(command);
+        const auto run = cli_test::run(command);
         EXPECT_EQ(run.exit_code, 0) << command;
         EXPECT_NE(run.out.find("usage:"), std::string::npos) << command;
     }
