@@ -2823,6 +2823,13 @@
     </message>
 </context>
 <context>
+    <name>probecycle::ui::Document</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Без имени</translation>
+    </message>
+</context>
+<context>
     <name>probecycle::ui::FitInput</name>
     <message>
         <source>Import CSV…</source>
@@ -3276,10 +3283,6 @@
     <message>
         <source>(none)</source>
         <translation>(нет)</translation>
-    </message>
-    <message>
-        <source>Untitled</source>
-        <translation>Без имени</translation>
     </message>
     <message>
         <source>Export CSV report</source>

@@ -2823,6 +2823,13 @@
     </message>
 </context>
 <context>
+    <name>probecycle::ui::Document</name>
+    <message>
+        <source>Untitled</source>
+        <translation>未命名</translation>
+    </message>
+</context>
+<context>
     <name>probecycle::ui::FitInput</name>
     <message>
         <source>Import CSV…</source>
@@ -3276,10 +3283,6 @@
     <message>
         <source>(none)</source>
         <translation>（无）</translation>
-    </message>
-    <message>
-        <source>Untitled</source>
-        <translation>未命名</translation>
     </message>
     <message>
         <source>Export CSV report</source>

@@ -186,7 +186,7 @@ class PointTableModel final : public QAbstractTableModel {
 };
 
 ComparisonTab::ComparisonTab(QWidget* parent)
-    : QWidget(parent), file_cache_(std::make_unique<FileCache>()) {
+    : Page(parent), file_cache_(std::make_unique<FileCache>()) {
     setObjectName(QStringLiteral("comparison"));
     auto* input_widget = new QWidget(this);
     auto* input_column = new QVBoxLayout(input_widget);
@@ -214,6 +214,7 @@ ComparisonTab::ComparisonTab(QWidget* parent)
     }
     connect(tolerance_, &QDoubleSpinBox::valueChanged, this, &ComparisonTab::rerun_if_shown);
     retranslate();
+    watch_inputs();
 }
 
 ComparisonTab::~ComparisonTab() = default;
@@ -632,19 +633,24 @@ bool ComparisonTab::simulate_example(const QString& folder) {
     return run();
 }
 
-bool ComparisonTab::export_report(const QString& path, ReportRows rows) {
+std::optional<std::string> ComparisonTab::report_csv(ReportRows rows) {
     if (!result_) {
         show_live_error(export_status_, [this] {
             return last_error_ = tr("Nothing to export: run the comparison first.");
         });
-        return false;
+        return std::nullopt;
     }
     ReportHeader header;
     header.date = report_date();
     header.subject = QFileInfo(file(InputFile::test_omm)).fileName().toStdString();
+    return comparison_report_csv(input_, *result_, header, rows);
+}
+
+bool ComparisonTab::export_report(const QString& path, ReportRows rows) {
+    const std::optional<std::string> csv = report_csv(rows);
+    if (!csv) return false;
     try {
-        write_file_atomically(QFile::encodeName(path).toStdString(),
-                              comparison_report_csv(input_, *result_, header, rows));
+        write_file_atomically(QFile::encodeName(path).toStdString(), *csv);
     } catch (const std::exception&) {
         show_live_error(export_status_,
                         [this, error = current_error_text()] { return last_error_ = error(); });

@@ -16,15 +16,17 @@
 
 #include <QString>
 #include <QStringList>
-#include <QWidget>
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "core/common/report_summary.h"
 #include "core/comparison/comparison.h"
 #include "core/comparison/comparison_files.h"
 #include "core/comparison/comparison_project.h"
+#include "ui/common/page.h"
 
 class QGroupBox;
 class QLabel;
@@ -41,7 +43,7 @@ class PlotView;
 class UnitSpinBox;
 class WarningList;
 
-class ComparisonTab : public QWidget {
+class ComparisonTab : public Page {
     Q_OBJECT
 
   public:
@@ -69,9 +71,12 @@ class ComparisonTab : public QWidget {
     // The CSV report, the same bytes as `probecycle-cli compare run --report`;
     // a summary (report_summary.h) is the PDF report's.
     bool export_report(const QString& path, ReportRows rows = ReportRows::all);
+    std::optional<std::string> report_csv(ReportRows rows) override;
+    // The compared points.
+    std::size_t report_points() const override { return result_ ? result_->points.size() : 0; }
     // The report's save dialog, then export_report() (the tab's button and
     // the window's "Export CSV Report" on this tab).
-    void export_dialog();
+    void export_dialog() override;
     // The project file: the paths (relative to its folder) and settings.
     bool save_project(const QString& path);
     // Loads a project; on a bad file false with last_error(), and the inputs
@@ -84,9 +89,15 @@ class ComparisonTab : public QWidget {
     // Takes them back (paths relative to `base_folder`, or absolute); runs
     // when the four point files are given, else clears the result shown.
     bool restore(const ComparisonProject& project, const QString& base_folder);
+    void save_session(Project& project, const QString& base_folder) const override {
+        project.comparison = settings(base_folder);
+    }
+    bool restore_session(const Project& project, const QString& base_folder) override {
+        return restore(project.comparison, base_folder);
+    }
 
     const std::optional<ComparisonResult>& result() const { return result_; }
-    QString last_error() const { return last_error_; }
+    QString last_error() const override { return last_error_; }
     QStringList warning_codes() const;
     // The summary table as shown, one "row: min, max, RMS, out" per line.
     QStringList summary_text() const;

@@ -80,7 +80,7 @@ std::optional<double> parse_number(const QString& text) {
 
 }  // namespace
 
-CalibrationTab::CalibrationTab(QWidget* parent) : QWidget(parent) {
+CalibrationTab::CalibrationTab(QWidget* parent) : Page(parent) {
     setObjectName(QStringLiteral("lab-calibration"));
     auto* input_column = new QVBoxLayout;
     input_column->setContentsMargins(0, 0, 0, 0);
@@ -96,6 +96,7 @@ CalibrationTab::CalibrationTab(QWidget* parent) : QWidget(parent) {
     root->addWidget(build_result_group());
     connect_inputs();
     retranslate();  // also shows the (empty) result and the length
+    watch_inputs();
 }
 
 // The paste box of ring-gauge touches, the gauge and the warning limits.
@@ -417,6 +418,7 @@ bool CalibrationTab::fit_text(const QString& text, const QString& source) {
     fitted_text_ = text;
     set_error({});
     show_result();
+    emit changed();  // the project keeps the CSV behind the fit
     return true;
 }
 
@@ -692,6 +694,15 @@ bool CalibrationTab::restore(const RingSession& ring, const LengthSession& lengt
     return fitted;
 }
 
+void CalibrationTab::save_session(Project& project, const QString& /*base_folder*/) const {
+    project.ring = ring_session();
+    project.length = length_session();
+}
+
+bool CalibrationTab::restore_session(const Project& project, const QString& /*base_folder*/) {
+    return restore(project.ring, project.length);
+}
+
 // --- Length ---
 
 void CalibrationTab::set_length_inputs(const LengthInputs& inputs) {
@@ -760,13 +771,13 @@ void CalibrationTab::compute_length() {
 
 // --- Files ---
 
-bool CalibrationTab::export_report(const QString& path, ReportRows rows) {
+std::optional<std::string> CalibrationTab::report_csv(ReportRows rows) {
     if (!result_ && !length_result_) {
         show_live_error(export_status_, [this] {
             return last_error_ =
                        tr("Nothing to export: fit the ring points or enter a length first.");
         });
-        return false;
+        return std::nullopt;
     }
     std::optional<RingReportInput> ring;
     if (result_) ring = RingReportInput{points_, options_, *result_};
@@ -776,8 +787,12 @@ bool CalibrationTab::export_report(const QString& path, ReportRows rows) {
     ReportHeader header;
     header.date = report_date();
     header.subject = result_ ? points_from_ : "none";
-    return write_report(path, calibration_report_csv(ring, length, header, rows), export_status_,
-                        last_error_);
+    return calibration_report_csv(ring, length, header, rows);
+}
+
+bool CalibrationTab::export_report(const QString& path, ReportRows rows) {
+    const std::optional<std::string> csv = report_csv(rows);
+    return csv && write_report(path, *csv, export_status_, last_error_);
 }
 
 void CalibrationTab::import_dialog() {

@@ -16,7 +16,6 @@
 #include <QRectF>
 #include <QString>
 #include <QStringList>
-#include <QWidget>
 #include <functional>
 #include <optional>
 #include <string>
@@ -26,6 +25,7 @@
 #include "core/cycle/scenario.h"
 #include "core/lab/calibration.h"
 #include "core/project/project_file.h"
+#include "ui/common/page.h"
 #include "ui/lab/lab_widgets.h"
 #include "ui/program/machine_log_import.h"
 
@@ -46,7 +46,7 @@ class ProgramDialog;
 class UnitSpinBox;
 class WarningList;
 
-class CalibrationTab : public QWidget {
+class CalibrationTab : public Page {
     Q_OBJECT
 
   public:
@@ -83,12 +83,15 @@ class CalibrationTab : public QWidget {
     bool export_report(const QString& path, ReportRows rows = ReportRows::all);
     // The report's save dialog, then export_report() (the tab's button and
     // the window's "Export CSV Report" on this tab).
-    void export_dialog();
+    void export_dialog() override;
+    std::optional<std::string> report_csv(ReportRows rows) override;
+    // The fitted ring points.
+    std::size_t report_points() const override { return result_ ? points_.size() : 0; }
 
     const std::optional<RingCalibration>& result() const { return result_; }
     // The points behind result().
     const std::vector<RingPoint>& fitted_points() const { return points_; }
-    QString last_error() const { return last_error_; }
+    QString last_error() const override { return last_error_; }
     // Ring and length warnings shown, by core code ("large_runout", ...).
     QStringList warning_codes() const;
     // The same warnings as shown, "title: message", in the interface language.
@@ -125,6 +128,8 @@ class CalibrationTab : public QWidget {
     // Takes them back and fits the stored CSV; false (with last_error())
     // when that no longer fits.
     bool restore(const RingSession& ring, const LengthSession& length);
+    void save_session(Project& project, const QString& base_folder) const override;
+    bool restore_session(const Project& project, const QString& base_folder) override;
     const std::optional<LengthCalibration>& length_result() const { return length_result_; }
     QString length_error() const { return length_error_; }
 

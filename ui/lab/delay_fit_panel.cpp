@@ -284,18 +284,22 @@ bool DelayFitPanel::import_file(const QString& path) {
     return input_->import_file(path);
 }
 
-bool DelayFitPanel::export_report(const QString& path, ReportRows rows) {
+std::optional<std::string> DelayFitPanel::report_csv(ReportRows rows) {
     if (!fit_) {
         show_live_error(export_status_, [this] {
             return last_error_ = tr("Nothing to export: fit the touches first.");
         });
-        return false;
+        return std::nullopt;
     }
     ReportHeader header;
     header.date = report_date();
     header.subject = touches_from_;
-    return write_report(path, delay_fit_report_csv(touches_, fit_options_, *fit_, header, rows),
-                        export_status_, last_error_);
+    return delay_fit_report_csv(touches_, fit_options_, *fit_, header, rows);
+}
+
+bool DelayFitPanel::export_report(const QString& path, ReportRows rows) {
+    const std::optional<std::string> csv = report_csv(rows);
+    return csv && write_report(path, *csv, export_status_, last_error_);
 }
 
 void DelayFitPanel::export_dialog() {

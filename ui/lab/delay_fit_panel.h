@@ -77,6 +77,8 @@ class DelayFitPanel : public QGroupBox {
     // The report's save dialog, then export_report() (the tab's button and
     // the window's "Export CSV Report" on this tab).
     void export_dialog();
+    // The report's text; nullopt with last_error() without a fit.
+    std::optional<std::string> report_csv(ReportRows rows);
 
     const std::optional<DelayFit>& delay_fit() const { return fit_; }
     // The touches behind delay_fit().

@@ -5,7 +5,7 @@
 
 namespace probecycle::ui {
 
-LatencyTab::LatencyTab(QWidget* parent) : QWidget(parent) {
+LatencyTab::LatencyTab(QWidget* parent) : Page(parent) {
     setObjectName(QStringLiteral("lab-latency"));
     delay_ = new DelayFitPanel(this);
     compensation_ = new CompensationPanel(this);
@@ -24,9 +24,11 @@ LatencyTab::LatencyTab(QWidget* parent) : QWidget(parent) {
     connect(delay_, &DelayFitPanel::delay_applied, this, &LatencyTab::delay_applied);
     connect(delay_, &DelayFitPanel::fit_changed, this, [this] {
         compensation_->set_lag_from_fit_available(delay_->lag_from_fit().has_value());
+        emit changed();  // the project keeps the CSV behind the fit
     });
     connect(compensation_, &CompensationPanel::lag_from_fit_requested, this,
             &LatencyTab::take_lag_from_fit);
+    watch_inputs();
 }
 
 LatencyTab::~LatencyTab() = default;
@@ -34,6 +36,17 @@ LatencyTab::~LatencyTab() = default;
 void LatencyTab::set_scenario(const probecycle::Scenario& scenario) {
     delay_->set_scenario(scenario);
     compensation_->set_scenario(scenario);
+}
+
+void LatencyTab::save_session(Project& project, const QString& /*base_folder*/) const {
+    project.delay = delay_->session();
+    project.compensation = compensation_->inputs();
+}
+
+bool LatencyTab::restore_session(const Project& project, const QString& /*base_folder*/) {
+    const bool restored = delay_->restore(project.delay);
+    compensation_->set_inputs(project.compensation);
+    return restored;
 }
 
 void LatencyTab::take_lag_from_fit() {

@@ -13,12 +13,13 @@
 #include <QPointF>
 #include <QString>
 #include <QStringList>
-#include <QWidget>
+#include <cstddef>
 #include <optional>
 
 #include "core/cycle/scenario.h"
 #include "core/lab/compensation.h"
 #include "core/lab/delay_fit.h"
+#include "ui/common/page.h"
 #include "ui/lab/compensation_panel.h"
 #include "ui/lab/delay_fit_panel.h"
 
@@ -28,7 +29,7 @@ namespace probecycle::ui {
 
 class PlotView;
 
-class LatencyTab : public QWidget {
+class LatencyTab : public Page {
     Q_OBJECT
 
   public:
@@ -58,10 +59,15 @@ class LatencyTab : public QWidget {
     bool export_report(const QString& path, ReportRows rows = ReportRows::all) {
         return delay_->export_report(path, rows);
     }
-    void export_dialog() { delay_->export_dialog(); }
+    void export_dialog() override { delay_->export_dialog(); }
+    std::optional<std::string> report_csv(ReportRows rows) override {
+        return delay_->report_csv(rows);
+    }
+    // The fitted touches.
+    std::size_t report_points() const override { return delay_->fitted_touches().size(); }
     const std::optional<DelayFit>& delay_fit() const { return delay_->delay_fit(); }
     const std::vector<DelayTouch>& fitted_touches() const { return delay_->fitted_touches(); }
-    QString last_error() const { return delay_->last_error(); }
+    QString last_error() const override { return delay_->last_error(); }
     QStringList warning_codes() const { return delay_->warning_codes(); }
     QStringList warning_texts() const { return delay_->warning_texts(); }
     QStringList results_text() const { return delay_->results_text(); }
@@ -92,6 +98,10 @@ class LatencyTab : public QWidget {
     }
     QString comparison_error() const { return compensation_->comparison_error(); }
     PlotView* comparison_plot() const { return compensation_->comparison_plot(); }
+
+    // --- Project: the delay fit's session and the comparison's inputs ---
+    void save_session(Project& project, const QString& base_folder) const override;
+    bool restore_session(const Project& project, const QString& base_folder) override;
 
   signals:
     // "Apply to scenario": the key (machine.controller_latency_s, or

@@ -40,6 +40,7 @@
 #include "ui/common/app_icon.h"
 #include "ui/common/file_write.h"
 #include "ui/common/language.h"
+#include "ui/common/page.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/text_format.h"
 #include "ui/comparison/comparison_tab.h"
@@ -49,6 +50,7 @@
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
 #include "ui/program/program_dialog.h"
+#include "ui/window/document.h"
 #include "ui/window/help_guide.h"
 #include "ui/window/preset_list.h"
 #include "ui/window/scenario_command.h"
@@ -126,33 +128,34 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
     : QMainWindow(parent), options_(options), computation_(options.points_per_curve) {
     setObjectName(QStringLiteral("MainWindow"));
     setWindowIcon(app_icon());
-    undo_ = new QUndoStack(this);
+    document_ = new Document(this);
+    undo_ = document_->undo_stack();
     recompute_timer_.setSingleShot(true);
     recompute_timer_.setInterval(0);  // one recompute per pass of the event loop
     connect(&recompute_timer_, &QTimer::timeout, this, &MainWindow::recompute);
-    connect(undo_, &QUndoStack::cleanChanged, this, &MainWindow::update_title);
 
     build_ui();
     build_actions();
     build_menus();
     retranslate();
-    empty_lab_ = lab_snapshot();
-    saved_lab_ = empty_lab_;
+    for (Page* page : {static_cast<Page*>(calibration_tab_), static_cast<Page*>(latency_tab_),
+                       static_cast<Page*>(comparison_tab_)}) {
+        document_->add_page(page);
+    }
+    connect(document_, &Document::scenario_changed, this, &MainWindow::show_scenario);
+    connect(document_, &Document::modified_changed, this, &MainWindow::update_title);
     if (options_.persistent) restore_settings();
-    panel_->set_scenario(scenario_);
-    latency_tab_->set_scenario(scenario_);
-    calibration_tab_->set_scenario(scenario_);
+    show_scenario();
     update_title();
-    schedule_recompute();
 }
 
 MainWindow::~MainWindow() {
-    // The undo stack is a child, destroyed after this window's members: its
-    // last cleanChanged() must not reach update_title() (which reads them and
-    // the tabs). Found by valgrind as a use after free, intermittent in ctest.
+    // The document is a child, destroyed after this window's members: its
+    // last signals must not reach update_title() (which reads them and the
+    // tabs). Found by valgrind as a use after free, intermittent in ctest.
+    document_->disconnect(this);
     undo_->disconnect(this);
     tabs_->disconnect(this);
-    latency_tab_->delay_fit_panel()->disconnect(this);
 }
 
 // --- construction ---------------------------------------------------------
@@ -224,7 +227,7 @@ void MainWindow::build_ui() {
     latency_tab_ = new LatencyTab;
     connect(latency_tab_, &LatencyTab::delay_applied, this,
             [this](const QString& key, double value_s) {
-                Scenario s = scenario_;
+                Scenario s = scenario();
                 if (!set_number(s, key.toStdString(), value_s)) return;
                 edit_scenario(s, [] { return tr("apply the measured delay"); });
             });
@@ -247,7 +250,7 @@ void MainWindow::build_ui() {
     }
     connect(optimise_, &OptimisePanel::requirement_edited, this,
             [this](const QString& key, double value) {
-                Scenario s = scenario_;
+                Scenario s = scenario();
                 if (!set_number(s, key.toStdString(), value)) return;
                 on_panel_edit(s, key);
             });
@@ -261,12 +264,6 @@ void MainWindow::build_ui() {
         if (optimise_stale_) refresh_optimise();
     });
     setCentralWidget(tabs_);
-    // The title's "*" counts the lab in a project: looked at when the user
-    // moves between tabs and when a fit changes (the question on leaving
-    // compares the whole state in any case).
-    connect(tabs_, &QTabWidget::currentChanged, this, &MainWindow::update_title);
-    connect(latency_tab_->delay_fit_panel(), &DelayFitPanel::fit_changed, this,
-            &MainWindow::update_title);
 
     statusBar();  // file and preset messages
     resize(1280, 800);
@@ -287,8 +284,7 @@ void MainWindow::build_actions() {
     connect(save_, &QAction::triggered, this, &MainWindow::save_action);
     save_as_ = new QAction(this);
     save_as_->setShortcut(QKeySequence::SaveAs);
-    connect(save_as_, &QAction::triggered, this,
-            [this] { save_as_dialog(document_is_project_ || lab_has_data()); });
+    connect(save_as_, &QAction::triggered, this, [this] { save_as_dialog(project_expected()); });
     export_csv_ = new QAction(icon(QStyle::SP_FileDialogDetailedView), {}, this);
     export_csv_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     connect(export_csv_, &QAction::triggered, this, &MainWindow::export_csv_dialog);
@@ -367,7 +363,7 @@ void MainWindow::build_actions() {
 }
 
 ProgramDialog* MainWindow::open_cycle_program_dialog() {
-    auto* dialog = new ProgramDialog(ProgramKind::cycle, scenario_, this);
+    auto* dialog = new ProgramDialog(ProgramKind::cycle, scenario(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->open();
     return dialog;
@@ -546,41 +542,49 @@ void MainWindow::restore_settings() {
     const QString json = settings.value(QStringLiteral("scenario/last")).toString();
     const QString file = settings.value(QStringLiteral("scenario/file")).toString();
     const QString lab = settings.value(QStringLiteral("lab/last")).toString();
+    Scenario scenario;
+    QString current_file;
+    bool is_project = false;
     try {
         if (!json.isEmpty()) {
-            scenario_ = scenario_from_json(json.toStdString());
-            current_file_ = file;
+            scenario = scenario_from_json(json.toStdString());
+            current_file = file;
         } else if (!file.isEmpty()) {
             // Edits were discarded at the last quit: the file as saved.
             const std::string text = read_text_file(QFile::encodeName(file).toStdString());
             if (is_project_text(text)) {
                 const Project project = parse_project(text);
-                scenario_ = project.scenario;
+                scenario = project.scenario;
                 restore_session(project, QFileInfo(file).absolutePath());
-                document_is_project_ = true;
+                is_project = true;
             } else {
-                scenario_ = scenario_from_json(text);
+                scenario = scenario_from_json(text);
             }
-            current_file_ = file;
+            current_file = file;
         }
     } catch (const std::exception&) {
         // A stale or foreign entry, or a file gone: start from the defaults.
-        scenario_ = Scenario{};
-        current_file_.clear();
-        document_is_project_ = false;
+        scenario = Scenario{};
+        current_file.clear();
+        is_project = false;
     }
-    if (!json.isEmpty() || !document_is_project_) {
+    if (!json.isEmpty() || !is_project) {
         // The lab as it was at the last quit (kept with the paths absolute).
         try {
             if (!lab.isEmpty()) restore_session(parse_project(lab.toStdString()), QString());
         } catch (const std::exception&) {
             // A stale entry: the lab starts empty.
         }
-        document_is_project_ = !current_file_.isEmpty() &&
-                               settings.value(QStringLiteral("scenario/file_is_project")).toBool();
+        is_project = !current_file.isEmpty() &&
+                     settings.value(QStringLiteral("scenario/file_is_project")).toBool();
     }
+    document_->reset(scenario, current_file, is_project);
     // A file name is only restored with its own content, so the lab shown is the file's.
-    saved_lab_ = document_is_project_ ? lab_snapshot() : empty_lab_;
+    if (is_project) {
+        document_->mark_session_saved();
+    } else {
+        document_->mark_session_unsaved();
+    }
 }
 
 void MainWindow::save_settings(bool with_scenario) const {
@@ -592,46 +596,62 @@ void MainWindow::save_settings(bool with_scenario) const {
     settings.setValue(QStringLiteral("files/recent"), recent_files_);
     settings.setValue(QStringLiteral("files/last_dir"), remembered_folder());
     settings.setValue(QStringLiteral("view/language"), language_choice_);
-    settings.setValue(QStringLiteral("scenario/file_is_project"), document_is_project_);
+    settings.setValue(QStringLiteral("scenario/file_is_project"), document_->is_project());
     if (!with_scenario) {
         // Discarded edits: the file is opened again from disk at the next
         // start. Outside a project the lab's data is not the file's, and stays.
         settings.remove(QStringLiteral("scenario/last"));
-        settings.setValue(QStringLiteral("scenario/file"), current_file_);
-        if (document_is_project_) {
+        settings.setValue(QStringLiteral("scenario/file"), current_file());
+        if (document_->is_project()) {
             settings.remove(QStringLiteral("lab/last"));
         } else {
             settings.setValue(QStringLiteral("lab/last"),
-                              QString::fromStdString(project_json(project_state(QString()))));
+                              QString::fromStdString(project_json(document_->project(QString()))));
         }
         return;
     }
     settings.setValue(QStringLiteral("scenario/last"),
-                      QString::fromStdString(scenario_to_json(scenario_)));
+                      QString::fromStdString(scenario_to_json(scenario())));
     settings.setValue(QStringLiteral("lab/last"),
-                      QString::fromStdString(project_json(project_state(QString()))));
+                      QString::fromStdString(project_json(document_->project(QString()))));
     // A file name is restored only with the file's own content.
     settings.setValue(QStringLiteral("scenario/file"),
-                      has_unsaved_changes() ? QString() : current_file_);
+                      has_unsaved_changes() ? QString() : current_file());
+}
+
+const Scenario& MainWindow::scenario() const {
+    return document_->scenario();
+}
+
+QString MainWindow::current_file() const {
+    return document_->file();
+}
+
+bool MainWindow::current_is_project() const {
+    return document_->is_project();
 }
 
 bool MainWindow::has_unsaved_changes() const {
-    return !undo_->isClean() || (document_is_project_ && lab_unsaved());
+    return document_->has_unsaved_changes();
+}
+
+bool MainWindow::project_expected() const {
+    return document_->is_project() || document_->session_has_data();
 }
 
 bool MainWindow::settle_unsaved_changes(bool replaces_lab) {
     // Outside a project the lab's data is the session's: it outlives New, a
     // scenario's Open and Quit, and only opening a project replaces it.
-    const bool lab_at_stake = (document_is_project_ || replaces_lab) && lab_unsaved();
+    const bool is_project = document_->is_project();
+    const bool lab_at_stake = (is_project || replaces_lab) && document_->session_unsaved();
     if (undo_->isClean() && !lab_at_stake) return true;
     // The lab's data only fits in a project file.
-    const bool as_project = document_is_project_ || lab_at_stake;
+    const bool as_project = is_project || lab_at_stake;
     UnsavedAnswer answer = options_.unsaved_answer;
     if (options_.show_dialogs) {
-        const QString name =
-            current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();
+        const QString name = document_->display_name();
         const QString question =
-            !document_is_project_ && lab_at_stake
+            !is_project && lab_at_stake
                 ? tr("The project you open replaces the lab's data (touches, fits, comparison "
                      "settings), which is in no project file yet. Save everything as a project "
                      "first?")
@@ -645,12 +665,12 @@ bool MainWindow::settle_unsaved_changes(bool replaces_lab) {
     }
     switch (answer) {
         case UnsavedAnswer::save:
-            if (as_project && !document_is_project_) {
+            if (as_project && !is_project) {
                 // A scenario file cannot hold the lab: a new project file.
                 return options_.show_dialogs && save_as_dialog(/*as_project=*/true);
             }
             // Without dialogs there is no file dialog to name an untitled one.
-            return (options_.show_dialogs || !current_file_.isEmpty()) && save_action();
+            return (options_.show_dialogs || !current_file().isEmpty()) && save_action();
         case UnsavedAnswer::discard:
             return true;
         case UnsavedAnswer::cancel:
@@ -679,18 +699,18 @@ void MainWindow::set_language(const QString& code) {
 
 // --- editing --------------------------------------------------------------
 
-void MainWindow::apply_scenario(const Scenario& scenario) {
-    scenario_ = scenario;
-    panel_->set_scenario(scenario_);
-    latency_tab_->set_scenario(scenario_);
-    calibration_tab_->set_scenario(scenario_);
+void MainWindow::show_scenario() {
+    const Scenario& s = scenario();
+    panel_->set_scenario(s);
+    latency_tab_->set_scenario(s);
+    calibration_tab_->set_scenario(s);
     schedule_recompute();
 }
 
 void MainWindow::on_panel_edit(const Scenario& scenario, const QString& key) {
-    undo_->push(new ScenarioCommand([this](const Scenario& s) { apply_scenario(s); }, scenario_,
-                                    scenario, [key] { return tr("change %1").arg(key_label(key)); },
-                                    ScenarioCommand::merge_id_for(key)));
+    document_->edit(
+        scenario, [key] { return tr("change %1").arg(key_label(key)); },
+        ScenarioCommand::merge_id_for(key));
 }
 
 void MainWindow::edit_scenario(const Scenario& scenario, const QString& description) {
@@ -698,16 +718,15 @@ void MainWindow::edit_scenario(const Scenario& scenario, const QString& descript
 }
 
 void MainWindow::edit_scenario(const Scenario& scenario, std::function<QString()> describe) {
-    undo_->push(new ScenarioCommand([this](const Scenario& s) { apply_scenario(s); }, scenario_,
-                                    scenario, std::move(describe)));
+    document_->edit(scenario, std::move(describe));
 }
 
 void MainWindow::refresh_optimise() {
     optimise_stale_ = false;
     // The optimiser assumes a scenario that validates; the warnings panel
     // says what is wrong with one that does not.
-    if (!validate(scenario_).empty()) return;
-    optimise_->show_scenario(scenario_);
+    if (!validate(scenario()).empty()) return;
+    optimise_->show_scenario(scenario());
 }
 
 OptimisePanel* MainWindow::optimise_panel() {
@@ -728,7 +747,7 @@ void MainWindow::recompute_now() {
 }
 
 void MainWindow::recompute() {
-    const Computed& c = computation_.run(scenario_);
+    const Computed& c = computation_.run(scenario());
     const Computed* baseline = baseline_ ? &*baseline_ : nullptr;
     charts_->show_result(c);
     readouts_->show_result(c, baseline);
@@ -750,18 +769,10 @@ void MainWindow::report_error(const char* title, const QString& text) {
     box->open();
 }
 
-void MainWindow::reset_document(const Scenario& scenario, const QString& file) {
-    undo_->clear();
-    current_file_ = file;
-    apply_scenario(scenario);
-    undo_->setClean();
-    update_title();
-}
-
 bool MainWindow::new_scenario() {
     if (!settle_unsaved_changes()) return false;
-    document_is_project_ = false;  // the lab's data stays, outside any file
-    reset_document(Scenario{}, QString());
+    // The lab's data stays, outside any file.
+    document_->reset(Scenario{}, QString(), /*is_project=*/false);
     show_status(
         [] { return tr("Default scenario: typical values, to be replaced with measured ones"); },
         6000);
@@ -803,10 +814,9 @@ bool MainWindow::open_scenario(const QString& path) {
     // Nothing has changed yet: the file is whole and valid.
     const QString absolute = QFileInfo(path).absoluteFilePath();
     if (project) restore_session(loaded, QFileInfo(absolute).absolutePath());
-    document_is_project_ = project;
-    reset_document(loaded.scenario, absolute);
-    if (project) saved_lab_ = lab_snapshot();
-    remember_recent(current_file_);
+    document_->reset(loaded.scenario, absolute, project);
+    if (project) document_->mark_session_saved();
+    remember_recent(absolute);
     remember_folder_of(path);
     show_status([path] { return tr("Opened %1").arg(QDir::toNativeSeparators(path)); }, 4000);
     return true;
@@ -825,17 +835,14 @@ bool MainWindow::open_asking(const QString& path) {
 
 bool MainWindow::save_scenario(const QString& path) {
     QString error;
-    if (!write_file(path, QByteArray::fromStdString(scenario_to_json(scenario_)), error)) {
+    if (!write_file(path, QByteArray::fromStdString(scenario_to_json(scenario())), error)) {
         report_error(QT_TR_NOOP("Could not save the scenario"),
                      tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
-    current_file_ = QFileInfo(path).absoluteFilePath();
-    document_is_project_ = false;
-    undo_->setClean();
-    remember_recent(current_file_);
+    document_->mark_saved(QFileInfo(path).absoluteFilePath(), /*is_project=*/false);
+    remember_recent(current_file());
     remember_folder_of(path);
-    update_title();
     show_status([path] { return tr("Saved %1").arg(QDir::toNativeSeparators(path)); }, 4000);
     return true;
 }
@@ -843,74 +850,41 @@ bool MainWindow::save_scenario(const QString& path) {
 bool MainWindow::save_project(const QString& path) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
     QString error;
-    const std::string text = project_json(project_state(QFileInfo(absolute).absolutePath()));
+    const std::string text = project_json(document_->project(QFileInfo(absolute).absolutePath()));
     if (!write_file(path, QByteArray::fromStdString(text), error)) {
         report_error(QT_TR_NOOP("Could not save the project"),
                      tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;
     }
-    current_file_ = absolute;
-    document_is_project_ = true;
-    saved_lab_ = lab_snapshot();
-    undo_->setClean();
-    remember_recent(current_file_);
+    document_->mark_saved(absolute, /*is_project=*/true);
+    document_->mark_session_saved();
+    remember_recent(absolute);
     remember_folder_of(path);
-    update_title();
     show_status([path] { return tr("Saved %1").arg(QDir::toNativeSeparators(path)); }, 4000);
     return true;
 }
 
-Project MainWindow::project_state(const QString& base_folder) const {
-    Project project;
-    project.scenario = scenario_;
-    if (baseline_) project.baseline = baseline_->scenario;
-    project.ring = calibration_tab_->ring_session();
-    project.length = calibration_tab_->length_session();
-    project.delay = latency_tab_->delay_fit_panel()->session();
-    project.compensation = latency_tab_->compensation_inputs();
-    project.comparison = comparison_tab_->settings(base_folder);
-    return project;
-}
-
 void MainWindow::restore_session(const Project& project, const QString& base_folder) {
-    // A fit that no longer fits (the program's checks changed) shows its
-    // message in its tab; everything else is taken as stored.
-    calibration_tab_->restore(project.ring, project.length);
-    latency_tab_->delay_fit_panel()->restore(project.delay);
-    latency_tab_->set_compensation_inputs(project.compensation);
-    comparison_tab_->restore(project.comparison, base_folder);
+    document_->restore_pages(project, base_folder);
     if (!project.baseline || !pin_baseline_of(*project.baseline)) clear_baseline();
 }
 
-std::string MainWindow::lab_snapshot() const {
-    Project state = project_state(QString());
-    state.scenario = Scenario{};
-    // The lab's data can be megabytes, and the title's check runs at every
-    // change of tab: each text stands in as its length and hash, which tell
-    // texts apart as surely, without writing them into JSON.
-    for (std::string* text : {&state.ring.points_csv, &state.ring.fitted_csv,
-                              &state.delay.touches_csv, &state.delay.fitted_csv}) {
-        *text =
-            std::to_string(text->size()) + ':' + std::to_string(std::hash<std::string>{}(*text));
-    }
-    return project_json(state);
-}
-
 bool MainWindow::export_csv_report(const QString& path) {
-    // The current tab's report. A lab or comparison tab writes its
-    // own (and says so beside its button too).
-    QWidget* tab = tabs_->currentWidget();
-    if (tab == calibration_tab_ || tab == latency_tab_ || tab == comparison_tab_) {
-        const bool written = tab == calibration_tab_ ? calibration_tab_->export_report(path)
-                             : tab == latency_tab_   ? latency_tab_->export_report(path)
-                                                     : comparison_tab_->export_report(path);
-        if (!written) {
-            report_error(QT_TR_NOOP("Could not export the report"),
-                         tab == calibration_tab_ ? calibration_tab_->last_error()
-                         : tab == latency_tab_   ? latency_tab_->last_error()
-                                                 : comparison_tab_->last_error());
+    // The current tab's report: a page's own, or the cycle's.
+    if (auto* page = qobject_cast<Page*>(tabs_->currentWidget())) {
+        const std::optional<std::string> csv = page->report_csv(ReportRows::all);
+        QString error;
+        if (!csv) {
+            report_error(QT_TR_NOOP("Could not export the report"), page->last_error());
             return false;
         }
+        if (!write_file(path, QByteArray::fromStdString(*csv), error)) {
+            report_error(
+                QT_TR_NOOP("Could not export the report"),
+                tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
+            return false;
+        }
+        remember_folder_of(path);
         show_status(
             [path] { return tr("Report written to %1").arg(QDir::toNativeSeparators(path)); },
             4000);
@@ -942,8 +916,8 @@ bool MainWindow::export_csv_report(const QString& path) {
 ReportHeader MainWindow::report_header() const {
     ReportHeader header;
     header.date = report_date();
-    if (!current_file_.isEmpty()) {
-        header.subject = QFileInfo(current_file_).fileName().toStdString();
+    if (!current_file().isEmpty()) {
+        header.subject = QFileInfo(current_file()).fileName().toStdString();
     }
     return header;
 }
@@ -974,8 +948,7 @@ QImage MainWindow::export_image(int width, bool titled) {
     if (!titled) return content.toImage();
     const double scale = content.devicePixelRatio();
 
-    const QString name =
-        current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();
+    const QString name = document_->display_name();
     const QString title =
         tr("%1 - %2 - %3 - ProbeCycle %4")
             .arg(name, tabs_->tabText(tabs_->currentIndex()),
@@ -1027,7 +1000,7 @@ bool MainWindow::apply_preset(const QString& resource_path) {
     // Only the keys the preset names change; everything else stays as the user set it.
     Scenario next;
     try {
-        next = merge_json(scenario_, parse_preset(text.toStdString()).scenario_json);
+        next = merge_json(scenario(), parse_preset(text.toStdString()).scenario_json);
     } catch (const PresetError& e) {
         report_error(QT_TR_NOOP("Could not apply the preset"), QString::fromStdString(e.what()));
         return false;
@@ -1035,12 +1008,12 @@ bool MainWindow::apply_preset(const QString& resource_path) {
         report_error(QT_TR_NOOP("Could not apply the preset"), error_list(e));
         return false;
     }
-    last_preset_changes_ = changed_keys(scenario_, next);
+    last_preset_changes_ = changed_keys(scenario(), next);
     edit_scenario(next,
                   [resource_path] { return tr("preset %1").arg(preset_name(resource_path)); });
     // Say what it overwrote (a measured latency, say): Undo brings it back.
     show_status(
-        [resource_path, before = scenario_, next] {
+        [resource_path, before = scenario(), next] {
             const QString name = preset_name(resource_path);
             const QStringList changes = changed_keys(before, next);
             return changes.isEmpty()
@@ -1056,7 +1029,7 @@ bool MainWindow::import_linuxcnc_machine(const QString& path) {
     const std::optional<std::string> text =
         read_or_report(path, QT_TR_NOOP("Could not import the machine"));
     if (!text) return false;
-    Scenario next = scenario_;
+    Scenario next = scenario();
     try {
         next.machine = machine_from_linuxcnc_ini(*text);
     } catch (const LinuxCncIniError& e) {
@@ -1068,7 +1041,7 @@ bool MainWindow::import_linuxcnc_machine(const QString& path) {
         return false;
     }
     const QString name = QFileInfo(path).fileName();
-    const Scenario before = scenario_;
+    const Scenario before = scenario();
     edit_scenario(next, [name] { return tr("import the machine from %1").arg(name); });
     remember_folder_of(path);
     // Say what it overwrote, as a preset does: Undo brings it back.
@@ -1127,8 +1100,7 @@ void MainWindow::update_undo_texts() {
 }
 
 void MainWindow::update_title() {
-    const QString name =
-        current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();
+    const QString name = document_->display_name();
     setWindowTitle(QStringLiteral("%1[*] - ProbeCycle").arg(name));
     setWindowModified(has_unsaved_changes());
 }
@@ -1143,8 +1115,8 @@ void MainWindow::open_dialog() {
 }
 
 bool MainWindow::save_action() {
-    if (current_file_.isEmpty()) return save_as_dialog(document_is_project_ || lab_has_data());
-    return document_is_project_ ? save_project(current_file_) : save_scenario(current_file_);
+    if (current_file().isEmpty()) return save_as_dialog(project_expected());
+    return document_->is_project() ? save_project(current_file()) : save_scenario(current_file());
 }
 
 bool MainWindow::save_as_dialog(bool as_project) {
@@ -1152,10 +1124,11 @@ bool MainWindow::save_as_dialog(bool as_project) {
         tr("ProbeCycle project: scenario, lab and comparison (*.probecycle)");
     const QString scenario_filter = tr("Scenario only (*.json)");
     QString chosen = as_project ? project_filter : scenario_filter;
-    QString start = current_file_;
-    if (start.isEmpty() || document_is_project_ != as_project) {
-        const QString stem = current_file_.isEmpty() ? QStringLiteral("scenario")
-                                                     : QFileInfo(current_file_).completeBaseName();
+    QString start = current_file();
+    if (start.isEmpty() || document_->is_project() != as_project) {
+        const QString stem = current_file().isEmpty()
+                                 ? QStringLiteral("scenario")
+                                 : QFileInfo(current_file()).completeBaseName();
         start = dialog_start(
             stem + (as_project ? QStringLiteral(".probecycle") : QStringLiteral(".json")));
     }
@@ -1171,10 +1144,7 @@ bool MainWindow::save_as_dialog(bool as_project) {
 }
 
 void MainWindow::export_csv_dialog() {
-    QWidget* tab = tabs_->currentWidget();
-    if (tab == calibration_tab_) return calibration_tab_->export_dialog();
-    if (tab == latency_tab_) return latency_tab_->export_dialog();
-    if (tab == comparison_tab_) return comparison_tab_->export_dialog();
+    if (auto* page = qobject_cast<Page*>(tabs_->currentWidget())) return page->export_dialog();
     QString path = QFileDialog::getSaveFileName(
         this, tr("Export CSV report"), dialog_start(QStringLiteral("probecycle-report.csv")),
         tr("CSV (*.csv)"));
@@ -1206,27 +1176,30 @@ void MainWindow::export_png_dialog() {
 void MainWindow::pin_baseline() {
     recompute_now();
     if (!computation_.result().valid()) return;
-    baseline_ = computation_.result();
-    charts_->set_baseline(&*baseline_);
-    unpin_->setEnabled(true);
+    show_baseline(computation_.result());
     show_status([] { return tr("Baseline pinned: change parameters to compare against it"); },
                 6000);
-    schedule_recompute();
 }
 
 bool MainWindow::pin_baseline_of(const Scenario& scenario) {
     Computation computation(options_.points_per_curve);
     const Computed& computed = computation.run(scenario);
     if (!computed.valid()) return false;
+    show_baseline(computed);
+    return true;
+}
+
+void MainWindow::show_baseline(const Computed& computed) {
     baseline_ = computed;
+    document_->set_baseline(computed.scenario);
     charts_->set_baseline(&*baseline_);
     unpin_->setEnabled(true);
     schedule_recompute();
-    return true;
 }
 
 void MainWindow::clear_baseline() {
     baseline_.reset();
+    document_->set_baseline(std::nullopt);
     charts_->set_baseline(nullptr);
     unpin_->setEnabled(false);
     schedule_recompute();

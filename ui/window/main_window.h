@@ -1,9 +1,12 @@
 #pragma once
 
 // The ProbeCycle window: parameter panel, readouts, live charts, warnings,
-// files, presets, compare, undo and languages. It edits a Scenario and draws
-// what the core computes from it; edits are coalesced into one recompute per
-// pass of the event loop.
+// files, presets, compare and languages. What is open (the scenario, its
+// undo, the file, unsaved work) is its Document (document.h); the tabs with
+// data of their own are Pages (ui/common/page.h), which exports, the PDF
+// report and project files loop over. It edits the document's scenario and
+// draws what the core computes from it; edits are coalesced into one
+// recompute per pass of the event loop.
 //
 // The public functions below the constructor are the window's behaviour as
 // tests, the benchmark and `--screenshot` drive it.
@@ -42,6 +45,7 @@ namespace probecycle::ui {
 class CalibrationTab;
 class HelpGuide;
 class CycleCharts;
+class Document;
 class OptimisePanel;
 class LatencyTab;
 class ComparisonTab;
@@ -68,7 +72,7 @@ class MainWindow : public QMainWindow {
     explicit MainWindow(const MainWindowOptions& options = {}, QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    const Scenario& scenario() const { return scenario_; }
+    const Scenario& scenario() const;
     const Computed& computed() const { return computation_.result(); }
     // An undoable change of the whole scenario; `describe` builds its text in
     // the language in effect (the undo step's text follows a language switch).
@@ -92,7 +96,7 @@ class MainWindow : public QMainWindow {
     bool save_scenario(const QString& path);
     // The whole session: scenario, baseline, lab, comparison (atomic).
     bool save_project(const QString& path);
-    bool current_is_project() const { return document_is_project_; }
+    bool current_is_project() const;
     // Edits not in the current file: the scenario's, and for a project the
     // lab's and the comparison's too.
     bool has_unsaved_changes() const;
@@ -130,7 +134,7 @@ class MainWindow : public QMainWindow {
     // as one undoable edit. A file that cannot be read or is refused changes
     // nothing and is reported through last_error(), every problem named.
     bool import_linuxcnc_machine(const QString& path);
-    QString current_file() const { return current_file_; }
+    QString current_file() const;
     QString last_error() const { return last_error_; }
 
     // Compare.
@@ -161,6 +165,7 @@ class MainWindow : public QMainWindow {
     QWidget* charts_widget() const;
 
     QUndoStack* undo_stack() const { return undo_; }
+    Document* document() const { return document_; }
     // Runs a pending recompute now (normally the event loop does).
     void recompute_now();
     int recompute_count() const { return recompute_count_; }
@@ -184,11 +189,11 @@ class MainWindow : public QMainWindow {
     // with_scenario false: the edits were discarded; only the file name is kept.
     void save_settings(bool with_scenario = true) const;
 
-    void apply_scenario(const Scenario& scenario);
+    // The document's scenario into the editors and tabs, and a recompute.
+    void show_scenario();
     void on_panel_edit(const Scenario& scenario, const QString& key);
     void schedule_recompute();
     void recompute();
-    void reset_document(const Scenario& scenario, const QString& file);
     // `title` untranslated (QT_TR_NOOP): the status bar shows it in the
     // language in effect, also after a switch.
     void report_error(const char* title, const QString& text);
@@ -212,15 +217,12 @@ class MainWindow : public QMainWindow {
     // `replaces_lab`: the action also replaces the lab's data (opening a
     // project), so unsaved lab data counts even outside a project.
     bool settle_unsaved_changes(bool replaces_lab = false);
-    // Everything a project file holds; comparison paths relative to
-    // `base_folder`, or absolute when empty.
-    Project project_state(const QString& base_folder) const;
     // Takes a project's lab, comparison and baseline (not its scenario).
     void restore_session(const Project& project, const QString& base_folder);
-    // The lab's, the comparison's and the baseline's state, to tell changes.
-    std::string lab_snapshot() const;
-    bool lab_unsaved() const { return lab_snapshot() != saved_lab_; }
-    bool lab_has_data() const { return lab_snapshot() != empty_lab_; }
+    // Save As offers a project first: the document is one, or the lab holds data.
+    bool project_expected() const;
+    // `computed` as the pinned baseline, in the document and on the charts.
+    void show_baseline(const Computed& computed);
     bool save_action();
     // A file dialog offering both kinds, `as_project` chosen first.
     bool save_as_dialog(bool as_project);
@@ -233,15 +235,11 @@ class MainWindow : public QMainWindow {
 
     MainWindowOptions options_;
     QStringList last_preset_changes_;
-    Scenario scenario_;
+    Document* document_{nullptr};
     Computation computation_;
     std::optional<Computed> baseline_;
     QTimer recompute_timer_;
     int recompute_count_{0};
-    QString current_file_;
-    bool document_is_project_{false};
-    std::string saved_lab_;  // lab_snapshot() as in the current file
-    std::string empty_lab_;  // lab_snapshot() of a new window
     QString last_error_;
     QStringList recent_files_;
     struct Status {

@@ -3,23 +3,21 @@
 
 #include <QCoreApplication>
 #include <QDir>
-#include <QFile>
-#include <QFileInfo>
 #include <QLocale>
 #include <QRegularExpression>
 #include <QTabWidget>
-#include <QTemporaryDir>
+#include <optional>
+#include <string>
 
 #include "core/common/report_summary.h"
 #include "ui/common/file_write.h"
+#include "ui/common/page.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/pdf_report.h"
 #include "ui/common/text_format.h"
-#include "ui/comparison/comparison_tab.h"
 #include "ui/cycle/optimise_panel.h"
 #include "ui/cycle/uncertainty_table.h"
-#include "ui/lab/calibration_tab.h"
-#include "ui/lab/latency_tab.h"
+#include "ui/window/document.h"
 #include "ui/window/main_window.h"
 
 namespace probecycle::ui {
@@ -113,8 +111,7 @@ QString shown_value(const Scenario& scenario, const KeyInfo& key) {
 
 QByteArray MainWindow::pdf_report_bytes() {
     recompute_now();
-    const QString name =
-        current_file_.isEmpty() ? tr("Untitled") : QFileInfo(current_file_).fileName();
+    const QString name = document_->display_name();
     QWidget* tab = tabs_->currentWidget();
     // The tab's name without the count of problems the tab bar adds.
     const QString tab_name = tabs_->tabText(tabs_->currentIndex())
@@ -130,39 +127,26 @@ QByteArray MainWindow::pdf_report_bytes() {
                              .arg(tab_name, QString::fromStdString(report_date()),
                                   QCoreApplication::applicationVersion()));
 
-    if (tab == calibration_tab_ || tab == latency_tab_ || tab == comparison_tab_) {
-        // The tab as the user sees it, then its CSV report's figures.
+    if (auto* page = qobject_cast<Page*>(tab)) {
+        // The tab as the user sees it, then its report's figures: large data
+        // summarised (report_summary.h), the whole is in the CSV export.
         report.add_image(export_image(kChartsWidth, false));
-        QTemporaryDir dir;
-        const QString path = dir.path() + QStringLiteral("/report.csv");
-        // Large data summarised (report_summary.h): the whole is in the CSV export.
         const ReportRows rows = ReportRows::summary;
-        const bool written = tab == calibration_tab_ ? calibration_tab_->export_report(path, rows)
-                             : tab == latency_tab_   ? latency_tab_->export_report(path, rows)
-                                                     : comparison_tab_->export_report(path, rows);
-        const std::size_t points =
-            tab == calibration_tab_
-                ? (calibration_tab_->result() ? calibration_tab_->fitted_points().size() : 0)
-            : tab == latency_tab_       ? latency_tab_->fitted_touches().size()
-            : comparison_tab_->result() ? comparison_tab_->result()->points.size()
-                                        : 0;
-        QFile file(path);
-        if (written && file.open(QIODevice::ReadOnly)) {
-            report.add_page_break();
-            if (summarised(rows, points)) {
-                report.add_paragraph(
-                    tr("%1 points: the tables give their statistics and the %2 that deviate "
-                       "most. The CSV report (Export report…) has every point.")
-                        .arg(QLocale().toString(static_cast<qulonglong>(points)))
-                        .arg(kReportLargestRows));
-            }
-            add_csv(report, QString::fromUtf8(file.readAll()));
-        } else {
-            report.add_paragraph(tr("No results yet: %1")
-                                     .arg(tab == calibration_tab_ ? calibration_tab_->last_error()
-                                          : tab == latency_tab_   ? latency_tab_->last_error()
-                                                                  : comparison_tab_->last_error()));
+        const std::optional<std::string> csv = page->report_csv(rows);
+        if (!csv) {
+            report.add_paragraph(tr("No results yet: %1").arg(page->last_error()));
+            return report.render();
         }
+        report.add_page_break();
+        const std::size_t points = page->report_points();
+        if (summarised(rows, points)) {
+            report.add_paragraph(
+                tr("%1 points: the tables give their statistics and the %2 that deviate "
+                   "most. The CSV report (Export report…) has every point.")
+                    .arg(QLocale().toString(static_cast<qulonglong>(points)))
+                    .arg(kReportLargestRows));
+        }
+        add_csv(report, QString::fromStdString(*csv));
         return report.render();
     }
 
@@ -177,7 +161,7 @@ QByteArray MainWindow::pdf_report_bytes() {
     report.add_table(results);
     // What the uncertainty holds, term by term.
     report.add_heading(tr("Uncertainty budget"));
-    report.add_table(uncertainty_budget_rows(scenario_, computed().cycle()));
+    report.add_table(uncertainty_budget_rows(scenario(), computed().cycle()));
     report.add_image(charts_image(kChartsWidth));
 
     report.add_heading(tr("Warnings and what to change"));
@@ -222,7 +206,7 @@ QByteArray MainWindow::pdf_report_bytes() {
         for (const KeyInfo& key : scenario_keys()) {
             if (section_of(key.key) != section_name) continue;
             rows.append({QCoreApplication::translate("Parameter", key.label),
-                         shown_value(scenario_, key), QString::fromUtf8(key.key)});
+                         shown_value(scenario(), key), QString::fromUtf8(key.key)});
         }
         report.add_table(rows);
     }

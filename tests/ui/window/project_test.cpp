@@ -210,6 +210,28 @@ TEST(ProjectFileWindow, LabEditsInAProjectAreUnsavedChanges) {
     EXPECT_TRUE(latency(*window)->delay_fit().has_value());
 }
 
+TEST(ProjectFileWindow, TheTitleMarksLabEditsAsTheyHappen) {
+    QTemporaryDir dir;
+    auto window = make_window();
+    fill_session(*window, dir.filePath(QStringLiteral("data")));
+    ASSERT_TRUE(window->save_project(dir.filePath(QStringLiteral("cell.probecycle"))));
+    ASSERT_FALSE(window->isWindowModified());
+    const double saved_period = latency(*window)->compensation_inputs().interpolation_period_s;
+
+    // No change of tab: the edit itself marks the title.
+    LatencyTab::CompensationInputs inputs = latency(*window)->compensation_inputs();
+    inputs.interpolation_period_s = saved_period * 2.0;
+    latency(*window)->set_compensation_inputs(inputs);
+    QCoreApplication::processEvents();
+    EXPECT_TRUE(window->isWindowModified());
+
+    // The value the file holds again: nothing to save.
+    inputs.interpolation_period_s = saved_period;
+    latency(*window)->set_compensation_inputs(inputs);
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(window->isWindowModified());
+}
+
 TEST(ProjectFileWindow, OpeningAProjectAsksWhenItWouldReplaceUnsavedLabData) {
     QTemporaryDir dir;
     auto source = make_window();
