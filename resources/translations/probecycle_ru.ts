@@ -3613,6 +3613,10 @@
         <source>%1 points: the tables give their statistics and the %2 that deviate most. The CSV report (Export report…) has every point.</source>
         <translation>Точек: %1. Таблицы дают их статистику и %2 точек с наибольшим отклонением. В отчёте CSV (Экспорт отчёта…) есть все точки.</translation>
     </message>
+    <message>
+        <source>There is no preset %1.</source>
+        <translation>Предустановки %1 нет.</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>

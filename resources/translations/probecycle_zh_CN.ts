@@ -3613,6 +3613,10 @@
         <source>%1 points: the tables give their statistics and the %2 that deviate most. The CSV report (Export report…) has every point.</source>
         <translation>%1 个点：表格给出其统计值及偏差最大的 %2 个点。CSV 报告（导出报告…）包含全部点。</translation>
     </message>
+    <message>
+        <source>There is no preset %1.</source>
+        <translation>没有预设 %1。</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::OptimisePanel</name>

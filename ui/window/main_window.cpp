@@ -63,15 +63,6 @@ constexpr int kMaxRecentFiles = 8;
 // The property that holds a tab's key ("cycle", "calibration", ...).
 constexpr const char* kTabKeyProperty = "probecycle_tab_key";
 
-QString read_file(const QString& path, QString& error) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        error = file.errorString();
-        return {};
-    }
-    return QString::fromUtf8(file.readAll());
-}
-
 // A scenario key's label in the interface language.
 QString key_label(const QString& key) {
     const KeyInfo* info = find_any_key(key.toStdString());
@@ -991,29 +982,28 @@ bool MainWindow::export_charts_png(const QString& path, int width) {
 }
 
 bool MainWindow::apply_preset(const QString& resource_path) {
-    QString error;
-    const QString text = read_file(resource_path, error);
-    if (!error.isEmpty()) {
-        report_error(QT_TR_NOOP("Could not apply the preset"), error);
+    // The presets were read and checked once, at start (preset_list.h).
+    const PresetEntry* entry = find_preset(resource_path);
+    if (entry == nullptr) {
+        report_error(QT_TR_NOOP("Could not apply the preset"),
+                     tr("There is no preset %1.").arg(resource_path));
         return false;
     }
     // Only the keys the preset names change; everything else stays as the user set it.
+    const Scenario before = scenario();
     Scenario next;
     try {
-        next = merge_json(scenario(), parse_preset(text.toStdString()).scenario_json);
-    } catch (const PresetError& e) {
-        report_error(QT_TR_NOOP("Could not apply the preset"), QString::fromStdString(e.what()));
-        return false;
+        next = merge_json(before, entry->preset.scenario_json);
     } catch (const ScenarioError& e) {
         report_error(QT_TR_NOOP("Could not apply the preset"), error_list(e));
         return false;
     }
-    last_preset_changes_ = changed_keys(scenario(), next);
+    last_preset_changes_ = changed_keys(before, next);
     edit_scenario(next,
                   [resource_path] { return tr("preset %1").arg(preset_name(resource_path)); });
     // Say what it overwrote (a measured latency, say): Undo brings it back.
     show_status(
-        [resource_path, before = scenario(), next] {
+        [resource_path, before, next] {
             const QString name = preset_name(resource_path);
             const QStringList changes = changed_keys(before, next);
             return changes.isEmpty()

@@ -64,7 +64,8 @@ TEST(Document, EditsOfOneKeyInARowAreOneStep) {
     Scenario s = document.scenario();
     for (const double feed : {100.0, 200.0, 300.0}) {
         s.cycle.probe_feed_mm_min = feed;
-        document.edit(s, [] { return QStringLiteral("feed"); }, 7);
+        document.edit(
+            s, [] { return QStringLiteral("feed"); }, 7);
     }
     EXPECT_EQ(document.undo_stack()->count(), 1);
     document.undo_stack()->undo();

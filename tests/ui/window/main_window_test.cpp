@@ -19,6 +19,7 @@
 #include <QSettings>
 #include <QSlider>
 #include <QSplitter>
+#include <QStatusBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -889,6 +890,10 @@ TEST_F(MainWindowTest, APresetSaysWhatItOverwrote) {
     EXPECT_TRUE(changes.front().contains(QStringLiteral("2.000 ms")))
         << changes.front().toStdString();
     EXPECT_DOUBLE_EQ(window_->scenario().machine.controller_latency_s, 0.002);
+    // The status bar says the same (it once compared the scenario with itself).
+    const QString status = window_->statusBar()->currentMessage();
+    EXPECT_TRUE(status.contains(QStringLiteral("12.300 ms"))) << status.toStdString();
+    EXPECT_FALSE(status.contains(QStringLiteral("nothing to change"))) << status.toStdString();
     window_->undo_stack()->undo();
     settle();
     EXPECT_DOUBLE_EQ(window_->scenario().machine.controller_latency_s, 0.0123);
