@@ -65,12 +65,17 @@ QSlider* slider_for(MainWindow& window, std::int64_t which) {
     return window.findChild<QSlider*>(QLatin1String(kSliders[which]));
 }
 
-// A drag back and forth over 40 % of the slider, 3 of its 1000 steps per
-// event (a mouse drag delivers a few steps per event), so every step really
-// changes the scenario.
-int next_position(std::int64_t i) {
-    const std::int64_t phase = (3 * i) % 800;
-    return static_cast<int>(300 + (phase < 400 ? phase : 800 - phase));
+// A drag back and forth over the middle 40 % of the slider, one stop per
+// event, so every step really changes the scenario. The slider's positions
+// are its round-number stops (quantity_edit.h), a few dozen to a few hundred
+// of them, read from the slider itself: a fixed 300-700 of an assumed 1000
+// once parked the slider at its end, and no chart changed again.
+int next_position(const QSlider& slider, std::int64_t i) {
+    const int span = slider.maximum() - slider.minimum();
+    const int low = slider.minimum() + (3 * span) / 10;
+    const int width = std::max(1, (4 * span) / 10);
+    const auto phase = static_cast<int>(i % (2 * width));
+    return low + (phase < width ? phase : 2 * width - phase);
 }
 
 // Counts paint events of the charts' viewports.
@@ -120,7 +125,7 @@ void run_slider(benchmark::State& state) {
     for (auto _ : state) {
         counter.reset();
         const int done = window->recompute_count() + 1;
-        slider->setValue(next_position(i++));
+        slider->setValue(next_position(*slider, i++));
         // The event loop runs the coalesced recompute, then lays out and paints.
         for (int pass = 0; pass < 20; ++pass) {
             QCoreApplication::processEvents();
@@ -230,7 +235,7 @@ void BM_LargeProject_SliderToCharts(benchmark::State& state) {
     QSlider* slider = slider_for(*window, 0);
     std::int64_t i = 0;
     for (auto _ : state) {
-        slider->setValue(next_position(i++));
+        slider->setValue(next_position(*slider, i++));
         QCoreApplication::processEvents();
         window->recompute_now();
         window->charts_widget()->repaint();
