@@ -765,7 +765,7 @@
     </message>
     <message>
         <source>the skip input&apos;s scan period %1 limits the measuring feed; a latched input would save %2 a cycle</source>
-        <translation>период опроса входа пропуска %1 ограничивает измерительную подачу; вход с аппаратной фиксацией сэкономил бы %2 за цикл</translation>
+        <translation>период опроса входа пропуска %1 ограничивает измерительную подачу; вход с защёлкой сэкономил бы %2 за цикл</translation>
     </message>
     <message>
         <source>the probe&apos;s maximum feed %1 limits the cycle; a probe rated for faster feeds would save %2 a cycle</source>
@@ -1024,11 +1024,11 @@
     </message>
     <message>
         <source>The knee is the lowest probing feed whose cycle time is within this fraction of the fastest cycle, among the feeds whose overtravel stays within the probe&apos;s limit. Faster than the knee buys little time for more overtravel and uncertainty.</source>
-        <translation>Точка перегиба — наименьшая подача поиска, при которой время цикла отличается от самого быстрого цикла не больше чем на эту долю; учитываются только подачи, при которых перебег не выходит за предел щупа. Подача выше перегиба почти не экономит время, но увеличивает перебег и неопределённость.</translation>
+        <translation>Точка излома — наименьшая подача поиска, при которой время цикла отличается от самого быстрого цикла не больше чем на эту долю; учитываются только подачи, при которых перебег не выходит за предел щупа. Подача выше излома почти не экономит время, но увеличивает перебег и неопределённость.</translation>
     </message>
     <message>
         <source>Knee tolerance</source>
-        <translation>Допуск точки перегиба</translation>
+        <translation>Допуск точки излома</translation>
     </message>
     <message>
         <source>%</source>
@@ -1631,7 +1631,7 @@
     </message>
     <message>
         <source>Feedrate beyond the knee</source>
-        <translation>Подача за точкой перегиба</translation>
+        <translation>Подача за точкой излома</translation>
     </message>
     <message>
         <source>Uncertainty over the target</source>
@@ -1663,7 +1663,7 @@
     </message>
     <message>
         <source>Probing feed %1 is beyond the knee at %2 and no faster: the cycle takes %3 longer, with more overtravel and uncertainty</source>
-        <translation>Подача поиска %1 выше точки перегиба %2 и не быстрее: цикл длится на %3 дольше, с большим перебегом и неопределённостью</translation>
+        <translation>Подача поиска %1 выше точки излома %2 и не быстрее: цикл длится на %3 дольше, с большим перебегом и неопределённостью</translation>
     </message>
     <message>
         <source>Uncertainty %1 exceeds the target %2</source>
@@ -1675,15 +1675,15 @@
     </message>
     <message>
         <source>Probing feed %1 is beyond the knee at %2: the extra feed saves only %3 (under %4) while overtravel and uncertainty grow</source>
-        <translation>Подача поиска %1 выше точки перегиба %2: прибавка подачи экономит лишь %3 (менее %4), а перебег и неопределённость растут</translation>
+        <translation>Подача поиска %1 выше точки излома %2: прибавка подачи экономит лишь %3 (менее %4), а перебег и неопределённость растут</translation>
     </message>
     <message>
         <source>The fastest cycle lies at the highest feed searched, %1: the knee at %2 depends on that range; search faster feeds too</source>
-        <translation>Самый быстрый цикл — на наибольшей из просмотренных подач, %1: точка перегиба %2 зависит от этого диапазона; проверьте и более высокие подачи</translation>
+        <translation>Самый быстрый цикл — на наибольшей из просмотренных подач, %1: точка излома %2 зависит от этого диапазона; проверьте и более высокие подачи</translation>
     </message>
     <message>
         <source>The fastest cycle lies at the lowest feed searched, %1: the knee at %2 depends on that range; search slower feeds too</source>
-        <translation>Самый быстрый цикл — на наименьшей из просмотренных подач, %1: точка перегиба %2 зависит от этого диапазона; проверьте и более низкие подачи</translation>
+        <translation>Самый быстрый цикл — на наименьшей из просмотренных подач, %1: точка излома %2 зависит от этого диапазона; проверьте и более низкие подачи</translation>
     </message>
     <message>
         <source>Fastest cycle at the end of the range</source>
@@ -1699,7 +1699,7 @@
     </message>
     <message>
         <source>No probing feed from %1 to %2 gives a valid cycle: the overtravel reaches the probe&apos;s limit even at %1, so there is no knee; shorten the delays or use a probe with more overtravel</source>
-        <translation>Ни одна подача поиска от %1 до %2 не даёт допустимого цикла: перебег достигает предела щупа уже при %1, поэтому перегиба нет; сократите задержки или возьмите щуп с бо́льшим допустимым перебегом</translation>
+        <translation>Ни одна подача поиска от %1 до %2 не даёт допустимого цикла: перебег достигает предела щупа уже при %1, поэтому излома нет; сократите задержки или возьмите щуп с бо́льшим допустимым перебегом</translation>
     </message>
     <message>
         <source>No valid feed</source>
@@ -1771,7 +1771,7 @@
     </message>
     <message>
         <source>No probing feed from %1 to %2 is reached: the first touch meets the surface before it reaches even %1, so there is no knee; start the touch farther out</source>
-        <translation>Ни одна подача поиска от %1 до %2 не достигается: первое касание встречает поверхность, не достигнув даже %1, поэтому точки перегиба нет; начинайте касание дальше от поверхности</translation>
+        <translation>Ни одна подача поиска от %1 до %2 не достигается: первое касание встречает поверхность, не достигнув даже %1, поэтому точки излома нет; начинайте касание дальше от поверхности</translation>
     </message>
 </context>
 <context>
@@ -1831,10 +1831,6 @@
     <message>
         <source>The Z the control recorded at the touch; several touches separated by spaces or semicolons.</source>
         <translation>Z, записанная ЧПУ при касании; несколько касаний через пробел или точку с запятой.</translation>
-    </message>
-    <message>
-        <source>e.g. 12.3456; 12.3459</source>
-        <translation>напр. 12.3456; 12.3459</translation>
     </message>
     <message>
         <source>Active length</source>
@@ -2013,6 +2009,10 @@
         <source>What the control recorded while it ran the program, read with the program&apos;s plan into the points and fitted.</source>
         <translation>То, что ЧПУ записала при выполнении программы: читается вместе с планом программы в точки и подбирается.</translation>
     </message>
+    <message>
+        <source>e.g. %1; %2</source>
+        <translation>напр. %1; %2</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ComparisonTab</name>
@@ -2185,10 +2185,6 @@
         <translation>Неопределённость</translation>
     </message>
     <message>
-        <source>Direct OMM against the comparison</source>
-        <translation>Прямое измерение на станке в сопоставлении со сравнением</translation>
-    </message>
-    <message>
         <source>Min</source>
         <translation>Мин.</translation>
     </message>
@@ -2238,7 +2234,7 @@
     </message>
     <message>
         <source>System error</source>
-        <translation>Систематическая погрешность</translation>
+        <translation>Систем. погрешность</translation>
     </message>
     <message>
         <source>Export report…</source>
@@ -2331,6 +2327,10 @@
     <message>
         <source>Choose a file for “%1”.</source>
         <translation>Выберите файл для «%1».</translation>
+    </message>
+    <message>
+        <source>Direct OMM against the comparison [%1]</source>
+        <translation>Прямое измерение на станке в сопоставлении со сравнением [%1]</translation>
     </message>
 </context>
 <context>
@@ -2521,7 +2521,7 @@
     </message>
     <message>
         <source>Knee</source>
-        <translation>Перегиб</translation>
+        <translation>Излом</translation>
     </message>
     <message>
         <source>Time [%1]</source>
@@ -2662,7 +2662,7 @@
     </message>
     <message>
         <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). Dotted: feeds the first touch never reaches from its start, so the cycle is not at the feed it says (its time falls only because of that); the knee is not among them. A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
-        <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка перегиба: наименьшая допустимая подача, время цикла на которой хуже лучшего не более чем на допуск точки перегиба. Серый пунктир: подачи, при которых цикл недопустим (перебег сверх предела, слишком малый отвод). Точечная линия: подачи, которых первое касание не достигает от своего начала, так что цикл идёт не на заявленной подаче (его время падает только поэтому); точка перегиба среди них не ищется. Красная пунктирная линия: этот цикл недопустим и времени цикла не имеет (см. предупреждения).</translation>
+        <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка излома: наименьшая допустимая подача, время цикла на которой хуже лучшего не более чем на допуск точки излома. Серый пунктир: подачи, при которых цикл недопустим (перебег сверх предела, слишком малый отвод). Точечная линия: подачи, которых первое касание не достигает от своего начала, так что цикл идёт не на заявленной подаче (его время падает только поэтому); точка излома среди них не ищется. Красная пунктирная линия: этот цикл недопустим и времени цикла не имеет (см. предупреждения).</translation>
     </message>
 </context>
 <context>
@@ -2876,7 +2876,7 @@
     </message>
     <message>
         <source>&lt;b&gt;Cycle time against the probing feed&lt;/b&gt;: single-touch and two-touch (with the recommended backoff at each feed), the knee (the lowest feed whose cycle time is within the knee tolerance, 1 % by default, of the fastest valid cycle) and this cycle. Feeds whose cycle cannot run (overtravel over the limit, backoff too small) are invalid and never count as fast. &lt;b&gt;Overtravel and uncertainty&lt;/b&gt; against the feed, with the probe&apos;s limit and your target. &lt;b&gt;Phases&lt;/b&gt;: where the time goes. &lt;b&gt;Position and speed&lt;/b&gt; through the whole cycle.</source>
-        <translation>&lt;b&gt;Время цикла в зависимости от подачи поиска&lt;/b&gt;: однократное и двукратное касание (с рекомендуемым отводом при каждой подаче), точка перегиба (наименьшая подача, время цикла при которой отличается от самого быстрого допустимого цикла не более чем на допуск перегиба, по умолчанию 1 %) и этот цикл. Подачи, при которых цикл невыполним (перебег сверх предела, слишком малый отвод), недопустимы и никогда не считаются быстрыми. &lt;b&gt;Перебег и неопределённость&lt;/b&gt; в зависимости от подачи, с пределом датчика и вашей целью. &lt;b&gt;Фазы&lt;/b&gt;: на что уходит время. &lt;b&gt;Положение и скорость&lt;/b&gt; на протяжении всего цикла.</translation>
+        <translation>&lt;b&gt;Время цикла в зависимости от подачи поиска&lt;/b&gt;: однократное и двукратное касание (с рекомендуемым отводом при каждой подаче), точка излома (наименьшая подача, время цикла при которой отличается от самого быстрого допустимого цикла не более чем на допуск излома, по умолчанию 1 %) и этот цикл. Подачи, при которых цикл невыполним (перебег сверх предела, слишком малый отвод), недопустимы и никогда не считаются быстрыми. &lt;b&gt;Перебег и неопределённость&lt;/b&gt; в зависимости от подачи, с пределом датчика и вашей целью. &lt;b&gt;Фазы&lt;/b&gt;: на что уходит время. &lt;b&gt;Положение и скорость&lt;/b&gt; на протяжении всего цикла.</translation>
     </message>
     <message>
         <source>Warnings</source>
@@ -3310,7 +3310,7 @@
     </message>
     <message>
         <source>drop feed to the knee</source>
-        <translation>подача до точки перегиба</translation>
+        <translation>подача до точки излома</translation>
     </message>
     <message>
         <source>start far enough out to reach the feed</source>
@@ -3996,7 +3996,7 @@
     </message>
     <message>
         <source>Knee of the curve</source>
-        <translation>Точка перегиба</translation>
+        <translation>Точка излома</translation>
     </message>
     <message>
         <source>Worst distance beyond the surface where the axis stops: pretravel + trigger speed × (interface + controller + full scan period) + braking distance.</source>
@@ -4009,10 +4009,6 @@
     <message>
         <source>invalid scenario</source>
         <translation>сценарий недопустим</translation>
-    </message>
-    <message>
-        <source>programmed %1</source>
-        <translation>по программе %1</translation>
     </message>
     <message>
         <source>target %1</source>
@@ -4052,7 +4048,7 @@
     </message>
     <message>
         <source>The lowest probing feed whose cycle time is within the knee tolerance (1 % by default) of the best, among the valid cycles (overtravel under the probe&apos;s limit): faster buys almost no time.</source>
-        <translation>Наименьшая подача поиска, время цикла на которой хуже лучшего не более чем на допуск точки перегиба (по умолчанию 1 %), среди допустимых циклов (перебег ниже предела датчика): быстрее почти не выигрывает времени.</translation>
+        <translation>Наименьшая подача поиска, время цикла на которой хуже лучшего не более чем на допуск точки излома (по умолчанию 1 %), среди допустимых циклов (перебег ниже предела датчика): быстрее почти не выигрывает времени.</translation>
     </message>
     <message>
         <source>Invalid</source>
@@ -4086,6 +4082,10 @@
         <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Бюджет неопределённости измерения: стандартная неопределённость каждого члена, сложенная как корень из суммы квадратов и расширенная с k = 2. Члены задаются в разделах «Станок» и «Датчик».&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>%1 % of programmed</source>
+        <translation>%1 % от заданной</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::StatusText</name>
@@ -4115,7 +4115,7 @@
     </message>
     <message>
         <source>Drop feed to the knee, %1</source>
-        <translation>Подачу до перегиба, %1</translation>
+        <translation>Подачу до излома, %1</translation>
     </message>
     <message>
         <source>Start %1 out</source>

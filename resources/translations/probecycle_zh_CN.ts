@@ -880,7 +880,7 @@
     </message>
     <message>
         <source>Distance the probe needs to reseat after a trigger. The two-touch backoff must clear the first touch&apos;s overtravel plus this.</source>
-        <translation>触发后测头复位所需的距离。二次触发的回退距离必须大于第一次触发的过行程加上该距离。</translation>
+        <translation>触发后测头复位所需的距离。两次触测的回退距离必须大于第一次触测的过行程加上该距离。</translation>
     </message>
     <message>
         <source>Calibration feed</source>
@@ -912,7 +912,7 @@
     </message>
     <message>
         <source>Feed of the (first) touch; single-touch measures at it. A higher feed shortens the approach but lengthens the braking, the overtravel and the return, and raises the single-touch uncertainty.</source>
-        <translation>（第一次）触测的进给率；一次触发在此进给率下测量。进给率越高，接近越短，但制动、过行程和返回越长，一次触发的不确定度也越大。</translation>
+        <translation>（第一次）触测的进给率；单次触测在此进给率下测量。进给率越高，接近越短，但制动、过行程和返回越长，单次触测的不确定度也越大。</translation>
     </message>
     <message>
         <source>Measuring feedrate</source>
@@ -940,11 +940,11 @@
     </message>
     <message>
         <source>Single-touch</source>
-        <translation>一次触发</translation>
+        <translation>单次触测</translation>
     </message>
     <message>
         <source>Two-touch</source>
-        <translation>二次触发</translation>
+        <translation>两次触测</translation>
     </message>
     <message>
         <source>Surface (1 touch)</source>
@@ -1012,7 +1012,7 @@
     </message>
     <message>
         <source>Single-touch measures at the probing feed. Two-touch finds the surface fast, backs off, and measures with a slow second touch.</source>
-        <translation>一次触发以探测进给率测量。二次触发先快速找到表面，回退，再以慢速的第二次触测进行测量。</translation>
+        <translation>单次触测以探测进给率测量。两次触测先快速找到表面，回退，再以慢速的第二次触测进行测量。</translation>
     </message>
     <message>
         <source>Strategy</source>
@@ -1036,11 +1036,11 @@
     </message>
     <message>
         <source>Two-touch: distance the probe backs off after the first touch, from where it stopped or from the recorded trigger position (Backoff from). It must leave the second touch room to reseat the probe and to reach the measuring feed; any more is approached again at the slow measuring feed and wasted.</source>
-        <translation>二次触发：第一次触测后测头的回退距离，从停止处或从记录的触发位置算起（“回退起点”）。它必须给第二次触测留出测头复位和加速到测量进给率的距离；多出的部分要以慢速测量进给率重新接近，白白浪费时间。</translation>
+        <translation>两次触测：第一次触测后测头的回退距离，从停止处或从记录的触发位置算起（“回退起点”）。它必须给第二次触测留出测头复位和加速到测量进给率的距离；多出的部分要以慢速测量进给率重新接近，白白浪费时间。</translation>
     </message>
     <message>
         <source>Two-touch: where the backoff is measured from. stop: from where the probe stopped after the first touch (Renishaw&apos;s cycles). trigger: from the trigger position the control recorded (the skip position a macro reads); the axis then moves back its overtravel beyond that position as well.</source>
-        <translation>二次触发：回退距离的起点。stop：从第一次触测后测头停止处算起（雷尼绍循环）。trigger：从数控系统记录的触发位置算起（宏程序读取的跳转位置）；此时轴还要额外退回越过该位置的过行程。</translation>
+        <translation>两次触测：回退距离的起点。stop：从第一次触测后测头停止处算起（雷尼绍循环）。trigger：从数控系统记录的触发位置算起（宏程序读取的跳转位置）；此时轴还要额外退回越过该位置的过行程。</translation>
     </message>
     <message>
         <source>Backoff from</source>
@@ -1236,7 +1236,7 @@
     </message>
     <message>
         <source>Period at which the control scans the skip input (about 4 ms on a standard input, 4 µs on a high-speed input). The wait for the next scan, from nothing to a full period, is the single-touch uncertainty (trigger speed × scan period); the overtravel takes the worst case, a full period of travel, and the cycle time the mean wait, half a period.</source>
-        <translation>数控系统扫描跳跃输入的周期（标准输入约 4 ms，高速输入约 4 µs）。等待下一次扫描的时间在零到一个完整周期之间，它决定一次触发的不确定度（触发速度 × 扫描周期）；过行程按最坏情况计入一个完整周期的行程，循环时间按平均等待计入半个周期。</translation>
+        <translation>数控系统扫描跳跃输入的周期（标准输入约 4 ms，高速输入约 4 µs）。等待下一次扫描的时间在零到一个完整周期之间，它决定单次触测的不确定度（触发速度 × 扫描周期）；过行程按最坏情况计入一个完整周期的行程，循环时间按平均等待计入半个周期。</translation>
     </message>
     <message>
         <source>A surface needs one touch, a web or pocket two opposite touches, a bore or boss four; the probe moves out from the feature&apos;s centre to each touch and back at the positioning feed.</source>
@@ -1248,7 +1248,7 @@
     </message>
     <message>
         <source>Feed of the second, measuring touch of two-touch (typically 30 mm/min). Sets the two-touch uncertainty; the second approach, the backoff less where the first touch stopped (on average), is travelled at it.</source>
-        <translation>二次触发中第二次（测量）触测的进给率（通常 30 mm/min）。决定二次触发的不确定度；第二次接近（回退距离减去第一次触测的平均过行程）以此进给率完成。</translation>
+        <translation>两次触测中第二次（测量）触测的进给率（通常 30 mm/min）。决定两次触测的不确定度；第二次接近（回退距离减去第一次触测的平均过行程）以此进给率完成。</translation>
     </message>
     <message>
         <source>Web, pocket, bore, boss: feed of the protected positioning moves (probe armed, so a collision stops the axis) from the feature&apos;s centre out to each touch and back to the centre.</source>
@@ -1833,10 +1833,6 @@
         <translation>数控系统在触测时记录的 Z；多次触测用空格或分号分隔。</translation>
     </message>
     <message>
-        <source>e.g. 12.3456; 12.3459</source>
-        <translation>例如 12.3456; 12.3459</translation>
-    </message>
-    <message>
         <source>Active length</source>
         <translation>当前长度补偿</translation>
     </message>
@@ -2013,6 +2009,10 @@
         <source>What the control recorded while it ran the program, read with the program&apos;s plan into the points and fitted.</source>
         <translation>数控系统运行程序时记录的内容，按程序的计划读入测点并拟合。</translation>
     </message>
+    <message>
+        <source>e.g. %1; %2</source>
+        <translation>例如 %1; %2</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::ComparisonTab</name>
@@ -2185,10 +2185,6 @@
         <translation>不确定度</translation>
     </message>
     <message>
-        <source>Direct OMM against the comparison</source>
-        <translation>直接在机测量与比较测量对比</translation>
-    </message>
-    <message>
         <source>Min</source>
         <translation>最小</translation>
     </message>
@@ -2331,6 +2327,10 @@
     <message>
         <source>Choose a file for “%1”.</source>
         <translation>请为“%1”选择文件。</translation>
+    </message>
+    <message>
+        <source>Direct OMM against the comparison [%1]</source>
+        <translation>直接在机测量与比较测量对比 [%1]</translation>
     </message>
 </context>
 <context>
@@ -2517,7 +2517,7 @@
     </message>
     <message>
         <source>Single-touch</source>
-        <translation>一次触发</translation>
+        <translation>单次触测</translation>
     </message>
     <message>
         <source>Knee</source>
@@ -2597,7 +2597,7 @@
     </message>
     <message>
         <source>Two-touch, best backoff</source>
-        <translation>二次触发，最佳回退距离</translation>
+        <translation>两次触测，最佳回退距离</translation>
     </message>
     <message>
         <source>This cycle</source>
@@ -2654,15 +2654,15 @@
     </message>
     <message>
         <source>Single-touch, feed not reached</source>
-        <translation>一次触发，未达进给率</translation>
+        <translation>单次触测，未达进给率</translation>
     </message>
     <message>
         <source>Two-touch, feed not reached</source>
-        <translation>二次触发，未达进给率</translation>
+        <translation>两次触测，未达进给率</translation>
     </message>
     <message>
         <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). Dotted: feeds the first touch never reaches from its start, so the cycle is not at the feed it says (its time falls only because of that); the knee is not among them. A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
-        <translation>整个循环的时间与探测进给率的关系，分一次触发和二次触发，其余参数按当前设置。竖线：当前进给率。圆点：拐点，即循环时间与最佳时间相差不超过拐点容差的最低有效进给率。灰色虚线：循环无效的进给率（过行程超过极限、回退距离过小）。点线：第一次触测从起点出发始终达不到的进给率，此时循环并非以所标进给率运行（循环时间下降仅因如此）；拐点不在其中。红色虚线：当前循环无效，没有循环时间（见警告）。</translation>
+        <translation>整个循环的时间与探测进给率的关系，分单次触测和两次触测，其余参数按当前设置。竖线：当前进给率。圆点：拐点，即循环时间与最佳时间相差不超过拐点容差的最低有效进给率。灰色虚线：循环无效的进给率（过行程超过极限、回退距离过小）。点线：第一次触测从起点出发始终达不到的进给率，此时循环并非以所标进给率运行（循环时间下降仅因如此）；拐点不在其中。红色虚线：当前循环无效，没有循环时间（见警告）。</translation>
     </message>
 </context>
 <context>
@@ -2876,7 +2876,7 @@
     </message>
     <message>
         <source>&lt;b&gt;Cycle time against the probing feed&lt;/b&gt;: single-touch and two-touch (with the recommended backoff at each feed), the knee (the lowest feed whose cycle time is within the knee tolerance, 1 % by default, of the fastest valid cycle) and this cycle. Feeds whose cycle cannot run (overtravel over the limit, backoff too small) are invalid and never count as fast. &lt;b&gt;Overtravel and uncertainty&lt;/b&gt; against the feed, with the probe&apos;s limit and your target. &lt;b&gt;Phases&lt;/b&gt;: where the time goes. &lt;b&gt;Position and speed&lt;/b&gt; through the whole cycle.</source>
-        <translation>&lt;b&gt;循环时间与探测进给率的关系&lt;/b&gt;：一次触发和二次触发（每个进给率都用推荐回退距离）、拐点（循环时间与最快有效循环相差不超过拐点容差（默认 1 %）的最低进给率）以及当前循环。循环无法执行的进给率（过行程超过极限、回退距离过小）无效，绝不会被当作更快。&lt;b&gt;过行程和不确定度&lt;/b&gt;与进给率的关系，以及测头极限和您的目标。&lt;b&gt;阶段&lt;/b&gt;：时间花在哪里。&lt;b&gt;位置和速度&lt;/b&gt;：整个循环的过程。</translation>
+        <translation>&lt;b&gt;循环时间与探测进给率的关系&lt;/b&gt;：单次触测和两次触测（每个进给率都用推荐回退距离）、拐点（循环时间与最快有效循环相差不超过拐点容差（默认 1 %）的最低进给率）以及当前循环。循环无法执行的进给率（过行程超过极限、回退距离过小）无效，绝不会被当作更快。&lt;b&gt;过行程和不确定度&lt;/b&gt;与进给率的关系，以及测头极限和您的目标。&lt;b&gt;阶段&lt;/b&gt;：时间花在哪里。&lt;b&gt;位置和速度&lt;/b&gt;：整个循环的过程。</translation>
     </message>
     <message>
         <source>Warnings</source>
@@ -2908,11 +2908,11 @@
     </message>
     <message>
         <source>&lt;b&gt;Approach&lt;/b&gt;: from the start position to the surface at the probing feed. &lt;b&gt;Pretravel&lt;/b&gt;: the stylus deflects until the probe triggers. &lt;b&gt;Interface delay&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;: the probe&apos;s interface passes the signal on. &lt;b&gt;Controller delay&lt;/b&gt;: the control&apos;s latency t&lt;sub&gt;c&lt;/sub&gt; plus the wait until it scans the input, anything from nothing to a whole scan period t&lt;sub&gt;s&lt;/sub&gt;: the cycle time takes the mean wait, t&lt;sub&gt;s&lt;/sub&gt;/2, the overtravel the worst case, t&lt;sub&gt;s&lt;/sub&gt;. &lt;b&gt;Deceleration&lt;/b&gt;: the axis brakes to rest. Two-touch then &lt;b&gt;backs off&lt;/b&gt;, touches again slowly (the &lt;b&gt;2nd&lt;/b&gt; phases) and &lt;b&gt;returns&lt;/b&gt; to the start; a web, pocket, bore or boss adds the &lt;b&gt;positioning&lt;/b&gt; moves out from its centre to each touch and back. With a block change time, every move adds it (&lt;b&gt;block change&lt;/b&gt;).</source>
-        <translation>&lt;b&gt;接近&lt;/b&gt;：以探测进给率从起始位置到表面。&lt;b&gt;预行程&lt;/b&gt;：测针偏转直到测头触发。&lt;b&gt;接口延迟&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;：测头接口传出信号。&lt;b&gt;控制器延迟&lt;/b&gt;：数控系统的延迟 t&lt;sub&gt;c&lt;/sub&gt;，加上等待系统扫描输入的时间，从零到一个完整的扫描周期 t&lt;sub&gt;s&lt;/sub&gt; 不等：循环时间取平均等待 t&lt;sub&gt;s&lt;/sub&gt;/2，过行程取最坏情况 t&lt;sub&gt;s&lt;/sub&gt;。&lt;b&gt;减速&lt;/b&gt;：轴制动到停止。二次触发随后&lt;b&gt;回退&lt;/b&gt;，再慢速触测一次（&lt;b&gt;第二次&lt;/b&gt;各阶段），然后&lt;b&gt;返回&lt;/b&gt;起始位置；凸台、槽、孔或圆柱还有从中心到每次触测处并返回的&lt;b&gt;定位&lt;/b&gt;移动。设置了程序段切换时间时，每次移动都加上这一时间（&lt;b&gt;程序段切换&lt;/b&gt;）。</translation>
+        <translation>&lt;b&gt;接近&lt;/b&gt;：以探测进给率从起始位置到表面。&lt;b&gt;预行程&lt;/b&gt;：测针偏转直到测头触发。&lt;b&gt;接口延迟&lt;/b&gt; t&lt;sub&gt;i&lt;/sub&gt;：测头接口传出信号。&lt;b&gt;控制器延迟&lt;/b&gt;：数控系统的延迟 t&lt;sub&gt;c&lt;/sub&gt;，加上等待系统扫描输入的时间，从零到一个完整的扫描周期 t&lt;sub&gt;s&lt;/sub&gt; 不等：循环时间取平均等待 t&lt;sub&gt;s&lt;/sub&gt;/2，过行程取最坏情况 t&lt;sub&gt;s&lt;/sub&gt;。&lt;b&gt;减速&lt;/b&gt;：轴制动到停止。两次触测随后&lt;b&gt;回退&lt;/b&gt;，再慢速触测一次（&lt;b&gt;第二次&lt;/b&gt;各阶段），然后&lt;b&gt;返回&lt;/b&gt;起始位置；凸台、槽、孔或圆柱还有从中心到每次触测处并返回的&lt;b&gt;定位&lt;/b&gt;移动。设置了程序段切换时间时，每次移动都加上这一时间（&lt;b&gt;程序段切换&lt;/b&gt;）。</translation>
     </message>
     <message>
         <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T), the worst case; on average the axis stops v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 short of it, and a two-touch cycle&apos;s second approach is the backoff less that mean stop. Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). The trigger&apos;s uncertainty (k = 2) U&lt;sub&gt;t&lt;/sub&gt; = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;), over &amp;radic;N for N repeats; the uncertainty (k = 2) is its budget with the terms no feed changes, U = &amp;radic;(U&lt;sub&gt;t&lt;/sub&gt;&amp;sup2; + 4 (lobing&amp;sup2;/3 + artefact&amp;sup2;/4 + machine repeatability&amp;sup2;/4 + thermal drift&amp;sup2;/3)). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
-        <translation>过行程 = 预行程 + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + 制动距离（时间常数为 T 时为 v&amp;middot;T/2），这是最坏情况；平均而言，轴比它少走 v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 就停止，二次触发的第二次接近等于回退距离减去这一平均停止距离。扫描范围 R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;（锁存输入时为 0）。触发不确定度（k = 2）U&lt;sub&gt;t&lt;/sub&gt; = &amp;radic;(R&amp;sup2;/3 + 重复性&amp;sup2;)，N 次重复时除以 &amp;radic;N；不确定度（k = 2）是它与不随进给率变化的各项组成的预算：U = &amp;radic;(U&lt;sub&gt;t&lt;/sub&gt;&amp;sup2; + 4 (各向异性&amp;sup2;/3 + 标准器&amp;sup2;/4 + 机床重复性&amp;sup2;/4 + 热漂移&amp;sup2;/3))。推荐回退距离 = 第一次触测的过行程 + 测头复位距离与第二次触测加速到其进给率所需距离中的较大者，向上取整到微米。每个参数的提示说明它在模型中的作用。</translation>
+        <translation>过行程 = 预行程 + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + 制动距离（时间常数为 T 时为 v&amp;middot;T/2），这是最坏情况；平均而言，轴比它少走 v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 就停止，两次触测的第二次接近等于回退距离减去这一平均停止距离。扫描范围 R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;（锁存输入时为 0）。触发不确定度（k = 2）U&lt;sub&gt;t&lt;/sub&gt; = &amp;radic;(R&amp;sup2;/3 + 重复性&amp;sup2;)，N 次重复时除以 &amp;radic;N；不确定度（k = 2）是它与不随进给率变化的各项组成的预算：U = &amp;radic;(U&lt;sub&gt;t&lt;/sub&gt;&amp;sup2; + 4 (各向异性&amp;sup2;/3 + 标准器&amp;sup2;/4 + 机床重复性&amp;sup2;/4 + 热漂移&amp;sup2;/3))。推荐回退距离 = 第一次触测的过行程 + 测头复位距离与第二次触测加速到其进给率所需距离中的较大者，向上取整到微米。每个参数的提示说明它在模型中的作用。</translation>
     </message>
 </context>
 <context>
@@ -4011,10 +4011,6 @@
         <translation>场景无效</translation>
     </message>
     <message>
-        <source>programmed %1</source>
-        <translation>编程值 %1</translation>
-    </message>
-    <message>
         <source>target %1</source>
         <translation>目标 %1</translation>
     </message>
@@ -4024,7 +4020,7 @@
     </message>
     <message>
         <source>for two-touch</source>
-        <translation>用于二次触发</translation>
+        <translation>用于两次触测</translation>
     </message>
     <message>
         <source>cycle %1</source>
@@ -4060,7 +4056,7 @@
     </message>
     <message>
         <source>Two-touch: from the backoff&apos;s reference (where the probe stopped, or the recorded trigger position) the larger of the reseat distance and the distance to reach the measuring feed. Less risks a probe that has not reseated; more is approached again at the slow measuring feed.</source>
-        <translation>二次触发：从回退起点（停止处或记录的触发位置）算起，取复位距离与加速到测量进给率所需距离中的较大者。小于此值测头可能未复位；大于此值的部分要以慢速测量进给率重新接近。</translation>
+        <translation>两次触测：从回退起点（停止处或记录的触发位置）算起，取复位距离与加速到测量进给率所需距离中的较大者。小于此值测头可能未复位；大于此值的部分要以慢速测量进给率重新接近。</translation>
     </message>
     <message>
         <source>At %1 % feed override the probe stops %2 past the surface: %3 % of the probe&apos;s %4 limit. Every overtravel check holds at that override (Highest feed override).</source>
@@ -4085,6 +4081,10 @@
     <message>
         <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
         <translation>&lt;p&gt;测量的不确定度预算：各项的标准不确定度按平方和的平方根合成，并以 k = 2 扩展。各项在“机床”和“测头”中设置。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>%1 % of programmed</source>
+        <translation>编程值的 %1 %</translation>
     </message>
 </context>
 <context>

@@ -319,6 +319,8 @@ struct PlotView::Impl {
     QFont category_font;  // the category axis's full-size label font
     QFont title_font;     // the axes' full-size title font
     bool fitting_categories{false};
+    QRectF equal_bounds;  // set_equal_scales(): empty when off
+    bool fitting_scales{false};
     QAbstractAxis* x_axis{nullptr};
     QAbstractAxis* y_left{nullptr};
     QAbstractAxis* y_right{nullptr};
@@ -459,6 +461,38 @@ struct PlotView::Impl {
         fitting_categories = true;
         axis->setLabelsFont(font);
         fitting_categories = false;
+    }
+
+    // Ranges at equal scales on x and the left y axis that hold
+    // equal_bounds with a margin, for the plot area as it is now. New ranges
+    // can change the tick labels' widths and so the plot area: the change it
+    // signals brings the next pass, until the scales agree within 1 %.
+    void fit_equal_scales() {
+        if (equal_bounds.isEmpty() || fitting_scales || x_axis == nullptr || y_left == nullptr) {
+            return;
+        }
+        const QRectF plot = chart->plotArea();
+        if (!(plot.width() > 1.0 && plot.height() > 1.0)) return;
+        const QPointF centre = equal_bounds.center();
+        const double half_x = std::max(equal_bounds.width(), 1e-3) * 0.55;
+        const double half_y = std::max(equal_bounds.height(), 1e-3) * 0.55;
+        const double mm_per_pixel = std::max(half_x / plot.width(), half_y / plot.height());
+        const double want_x = mm_per_pixel * plot.width();
+        const double want_y = mm_per_pixel * plot.height();
+        const auto* x = qobject_cast<const QValueAxis*>(x_axis);
+        const auto* y = qobject_cast<const QValueAxis*>(y_left);
+        if (x != nullptr && y != nullptr &&
+            std::abs((x->max() - x->min()) / 2.0 - want_x) <= 0.01 * want_x &&
+            std::abs((y->max() - y->min()) / 2.0 - want_y) <= 0.01 * want_y &&
+            std::abs((x->max() + x->min()) / 2.0 - centre.x()) <= 0.01 * want_x &&
+            std::abs((y->max() + y->min()) / 2.0 - centre.y()) <= 0.01 * want_y) {
+            return;
+        }
+        fitting_scales = true;
+        set_range(x_axis, centre.x() - want_x, centre.x() + want_x);
+        set_range(y_left, centre.y() - want_y, centre.y() + want_y);
+        redraw_rules(Side::left);
+        fitting_scales = false;
     }
 
     // An axis title longer than its axis takes a smaller font (down to 7
@@ -653,6 +687,7 @@ PlotView::PlotView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<Im
     connect(impl_->chart, &QChart::plotAreaChanged, this, [this] {
         impl_->fit_categories();
         impl_->fit_titles();
+        impl_->fit_equal_scales();
     });
 }
 
@@ -724,6 +759,11 @@ void PlotView::set_x_range(double lo, double hi) {
 void PlotView::set_y_range(Side side, double lo, double hi) {
     Impl::set_range(impl_->y_axis(side), lo, hi);
     impl_->redraw_rules(side);
+}
+
+void PlotView::set_equal_scales(const QRectF& bounds) {
+    impl_->equal_bounds = bounds;
+    impl_->fit_equal_scales();
 }
 
 void PlotView::set_y_categories(const QStringList& labels) {
@@ -892,6 +932,19 @@ QStringList PlotView::texts() const {
     out << legend_texts() << impl_->categories;
     out.removeAll(QString());
     return out;
+}
+
+int PlotView::smallest_axis_title_px() const {
+    int smallest = 0;
+    for (const QAbstractAxis* axis : {impl_->x_axis, impl_->y_left, impl_->y_right}) {
+        if (axis == nullptr || !axis->isVisible() || !axis->isTitleVisible() ||
+            axis->titleText().isEmpty()) {
+            continue;
+        }
+        const int px = QFontInfo(axis->titleFont()).pixelSize();
+        smallest = smallest == 0 ? px : std::min(smallest, px);
+    }
+    return smallest;
 }
 
 QStringList PlotView::cut_texts() const {

@@ -8,6 +8,7 @@
 #include <QColor>
 #include <QList>
 #include <QPointF>
+#include <QRectF>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
@@ -65,6 +66,11 @@ class PlotView : public QWidget {
     void set_y_axis(Side side, const AxisSpec& spec);
     void set_x_range(double lo, double hi);
     void set_y_range(Side side, double lo, double hi);
+    // A drawing in millimetres on x and the left y axis, at equal scales (a
+    // circle looks round, an 80 x 60 mm part wider than tall): the ranges
+    // hold `bounds` with a margin and follow the plot area as it resizes.
+    // An empty rectangle ends it; the ranges stay as they are.
+    void set_equal_scales(const QRectF& bounds);
     // Labels of a category y axis, bottom to top, placed at 0, 1, 2, ...
     // Their font shrinks (to a readable floor) so that every row keeps its label.
     void set_y_categories(const QStringList& labels);
@@ -111,6 +117,9 @@ class PlotView : public QWidget {
     // layout: the title, axis titles and legend entries cut short, category
     // labels dropped, tick labels elided. Empty when everything is whole.
     QStringList cut_texts() const;
+    // The smallest pixel size among the axis titles' fonts as drawn after the
+    // last layout (0 without an axis title).
+    int smallest_axis_title_px() const;
     // Every text the plot has to show: its title, the axis titles, the legend
     // entries and the category labels (for checks of the language in use).
     QStringList texts() const;

@@ -28,7 +28,10 @@ QString signed_prefix(double value) {
 
 QString format_number(double value, int decimals) {
     const double shown = std::abs(value) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : value;
-    return QLocale().toString(shown, 'f', decimals);
+    // Without group separators, as the editors show numbers: "3987", not "3,987".
+    QLocale locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    return locale.toString(shown, 'f', decimals);
 }
 
 QString with_unit(const QString& value, const QString& unit) {
@@ -93,7 +96,10 @@ QString format_length(double mm) {
 }
 
 QString format_feed(double mm_min) {
-    return with_unit(format_number(mm_min, std::abs(mm_min) >= 100.0 ? 0 : 1), unit_mm_min());
+    // Whole mm/min as the editors set them ("30 mm/min" beside "127 mm/min");
+    // a tenth only below 100 mm/min where it is not a whole number.
+    const bool whole = std::abs(mm_min) >= 100.0 || std::abs(mm_min - std::round(mm_min)) < 0.05;
+    return with_unit(format_number(mm_min, whole ? 0 : 1), unit_mm_min());
 }
 
 QString format_signed_seconds(double seconds) {

@@ -22,7 +22,7 @@ QStringList format_seconds_column(const std::vector<double>& seconds);
 QString format_mm(double mm);                   // "1.274 mm"
 QString format_um(double mm);                   // "3.2 µm"
 QString format_length(double mm);               // mm, or µm below 0.1 mm
-QString format_feed(double mm_min);             // "1 850 mm/min"
+QString format_feed(double mm_min);             // "1850 mm/min", "30 mm/min", "2.5 mm/min"
 QString format_signed_seconds(double seconds);  // "+0.42 s" / "−0.42 s"
 QString format_signed_length(double mm);
 

@@ -212,7 +212,13 @@ ComparisonTab::ComparisonTab(QWidget* parent)
     for (UnitSpinBox* box : {axis_x_, axis_y_, angle_}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, &ComparisonTab::rerun_if_shown);
     }
-    connect(tolerance_, &QDoubleSpinBox::valueChanged, this, &ComparisonTab::rerun_if_shown);
+    connect(tolerance_, &QDoubleSpinBox::valueChanged, this, [this] {
+        if (!result_) {
+            draw_map();
+            draw_histogram();
+        }
+        rerun_if_shown();
+    });
     retranslate();
     watch_inputs();
 }
@@ -335,6 +341,7 @@ QWidget* ComparisonTab::build_result_column() {
     const auto title = [this, &bold] {
         auto* label = new QLabel(result_group_);
         label->setFont(bold);
+        label->setWordWrap(true);  // a long title (Russian) takes two lines, not the charts' width
         return label;
     };
     const auto table = [this](int rows, int columns, const char* name) {
@@ -396,7 +403,7 @@ QWidget* ComparisonTab::build_result_column() {
     column->addWidget(point_table_, 1);
     column->addWidget(export_status_);
     column->addLayout(export_row);
-    result_group_->setMinimumWidth(370);
+    result_group_->setMinimumWidth(400);
     result_group_->setMaximumWidth(500);
     return result_group_;
 }
@@ -467,7 +474,9 @@ void ComparisonTab::retranslate() {
     result_group_->setTitle(tr("Result"));
     c_axis_title_->setText(tr("C-axis errors"));
     c_axis_table_->setHorizontalHeaderLabels({tr("Error"), tr("Value"), tr("Uncertainty")});
-    summary_title_->setText(tr("Direct OMM against the comparison"));
+    // The unit in the title, the cells' numbers alone: every column shows in
+    // the result column's width, the count out of tolerance included.
+    summary_title_->setText(tr("Direct OMM against the comparison [%1]").arg(unit_um()));
     summary_table_->setHorizontalHeaderLabels(
         {QString(), tr("Min"), tr("Max"), tr("RMS"), tr("Out of tol.")});
     warnings_title_->setText(tr("Warnings"));
@@ -849,9 +858,9 @@ void ComparisonTab::fill_tables() {
         const DeviationSummary& s = r == 0   ? result_->direct
                                     : r == 1 ? result_->deviation
                                              : result_->system_error;
-        set(summary_table_, r, 1, um(s.min_mm));
-        set(summary_table_, r, 2, um(s.max_mm));
-        set(summary_table_, r, 3, um(s.rms_mm));
+        set(summary_table_, r, 1, format_number(s.min_mm * 1000.0, 1));
+        set(summary_table_, r, 2, format_number(s.max_mm * 1000.0, 1));
+        set(summary_table_, r, 3, format_number(s.rms_mm * 1000.0, 1));
         const std::optional<std::size_t>& out =
             r == 0 ? result_->direct_out_of_tolerance : result_->out_of_tolerance;
         set(summary_table_, r, 4,
@@ -884,7 +893,8 @@ void ComparisonTab::fill_tables() {
 
 void ComparisonTab::draw_map() {
     std::array<QList<QPointF>, 7> classes;
-    double tolerance = input_.tolerance_mm.value_or(0.0);
+    // Before a run the legend shows the classes of the tolerance set.
+    double tolerance = result_ ? input_.tolerance_mm.value_or(0.0) : tolerance_mm();
     if (result_) {
         // Without a tolerance the classes span the largest deviation.
         if (!(tolerance > 0.0)) {
@@ -924,18 +934,25 @@ void ComparisonTab::draw_map() {
             y0 = std::min(y0, p.nominal.y());
             y1 = std::max(y1, p.nominal.y());
         }
-        const double pad = 0.05 * std::max({x1 - x0, y1 - y0, 1.0});
-        map_->set_x_range(x0 - pad, x1 + pad);
-        map_->set_y_range(PlotView::Side::left, y0 - pad, y1 + pad);
+        // The part as it is: equal scales on X and Y.
+        map_->set_equal_scales(
+            QRectF(QPointF(x0, y0), QPointF(x1, y1)).adjusted(-0.5, -0.5, 0.5, 0.5));
+    } else {
+        map_->set_equal_scales({});
     }
 }
 
 void ComparisonTab::draw_histogram() {
     if (!result_ || result_->points.empty()) {
+        // Before a run: the tolerance band set, on axes that read as counts.
         histogram_->set_area(direct_area_, {}, {});
         histogram_->set_area(deviation_area_, {}, {});
-        histogram_->set_points(band_low_, {});
-        histogram_->set_points(band_high_, {});
+        const double band_um = tolerance_mm() * 1000.0;
+        const double top = 10.0;
+        histogram_->set_points(band_low_, {{-band_um, 0.0}, {-band_um, top}});
+        histogram_->set_points(band_high_, {{band_um, 0.0}, {band_um, top}});
+        histogram_->set_x_range(-1.5 * band_um, 1.5 * band_um);
+        histogram_->set_y_range(PlotView::Side::left, 0.0, top);
         return;
     }
     // In µm, one range for both so that the two shapes compare.

@@ -30,8 +30,9 @@ QComboBox* make_combo(const QString& name, QWidget* parent) {
 QHBoxLayout* labelled_row(QLabel* label, QWidget* editor) {
     auto* row = new QHBoxLayout;
     row->setContentsMargins(0, 0, 0, 0);
+    // The box gets the larger share: its word is cut, a label wraps.
     row->addWidget(label, 1);
-    row->addWidget(editor, 1);
+    row->addWidget(editor, 2);
     label->setWordWrap(true);
     label->setBuddy(editor);
     return row;

@@ -6,6 +6,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "core/common/units.h"
@@ -225,14 +226,16 @@ void Readouts::show_result(const Computed& c, const Computed* baseline) {
     const TouchResult& measuring = r.measuring_touch();
     now[2] = mm_s_to_mm_min(r.trigger_speed_mm_s());
     cards_[2].value->setText(format_feed(now[2]));
-    detail[2] =
-        measuring.trigger_speed_mm_s < measuring.programmed_feed_mm_s * (1.0 - 1e-9)
-            ? tr("programmed %1").arg(format_feed(mm_s_to_mm_min(measuring.programmed_feed_mm_s)))
-            : tr("as programmed");
-    set_alert(cards_[2],
-              measuring.trigger_speed_mm_s < measuring.programmed_feed_mm_s * (1.0 - 1e-9)
-                  ? Alert::caution
-                  : Alert::none);
+    // Lower than programmed: by how much, as a share (the two feeds can
+    // round to one number, and the programmed one is in the editor).
+    const bool slower =
+        measuring.trigger_speed_mm_s < measuring.programmed_feed_mm_s * (1.0 - 1e-9);
+    const double trigger_share = std::min(
+        std::floor(1000.0 * measuring.trigger_speed_mm_s / measuring.programmed_feed_mm_s) / 10.0,
+        99.9);
+    detail[2] = slower ? tr("%1 % of programmed").arg(format_number(trigger_share, 1))
+                       : tr("as programmed");
+    set_alert(cards_[2], slower ? Alert::caution : Alert::none);
 
     // Uncertainty against the target
     const double target = s.cycle.target_uncertainty_mm;

@@ -26,6 +26,7 @@
 #include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
+#include "ui/common/text_format.h"
 #include "ui/common/unit_spin_box.h"
 #include "ui/lab/fit_input.h"
 #include "ui/lab/lab_widgets.h"
@@ -180,6 +181,7 @@ QLayout* CalibrationTab::build_plot_column() {
     magnification_label_ = new QLabel(this);
     magnification_ = new QComboBox(this);
     magnification_->setObjectName(QStringLiteral("magnification"));
+    magnification_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     for (std::size_t i = 0; i < std::size(kMagnifications); ++i) magnification_->addItem(QString());
     magnification_label_->setBuddy(magnification_);
     plot_ = new PlotView(this);
@@ -197,7 +199,6 @@ QLayout* CalibrationTab::build_plot_column() {
     centre_curve_[0] = plot_->add_markers({{}, kColour0}, 7.0);
     centre_curve_[1] = plot_->add_markers({{}, kColour180}, 7.0);
     gauge_centre_curve_ = plot_->add_markers({legend, kGaugeColour}, 8.0);
-    plot_->installEventFilter(this);
     auto* magnification_row = new QHBoxLayout;
     magnification_row->addStretch(1);
     magnification_row->addWidget(magnification_label_);
@@ -306,7 +307,9 @@ void CalibrationTab::retranslate() {
     set_label(trigger_z_, tr("Trigger Z"),
               tr("The Z the control recorded at the touch; several touches separated by spaces "
                  "or semicolons."));
-    trigger_z_->setPlaceholderText(tr("e.g. 12.3456; 12.3459"));
+    // In the interface's number format, which the box reads.
+    trigger_z_->setPlaceholderText(
+        tr("e.g. %1; %2").arg(format_number(12.3456, 4), format_number(12.3459, 4)));
     set_label(active_length_, tr("Active length"),
               tr("The tool length offset active while probing (0 when none)."));
     set_label(nominal_length_, tr("Nominal length"),
@@ -355,11 +358,6 @@ void CalibrationTab::retranslate() {
 void CalibrationTab::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) retranslate();
     QWidget::changeEvent(event);
-}
-
-bool CalibrationTab::eventFilter(QObject* watched, QEvent* event) {
-    if (watched == plot_ && event->type() == QEvent::Resize) update_plot_ranges();
-    return QWidget::eventFilter(watched, event);
 }
 
 void CalibrationTab::set_scenario(const probecycle::Scenario& scenario) {
@@ -617,22 +615,13 @@ void CalibrationTab::draw() {
 
 void CalibrationTab::update_plot_ranges() {
     if (!result_ || !(data_bounds_.width() > 0.0 || data_bounds_.height() > 0.0)) {
+        plot_->set_equal_scales({});
         plot_->set_x_range(-1.0, 1.0);
         plot_->set_y_range(PlotView::Side::left, -1.0, 1.0);
         return;
     }
-    // Equal scales on both axes, so the circles look round: the plot area is
-    // the widget less the axes, title and legend (estimated).
-    const double width = std::max(plot_->width() - 80, 50);
-    const double height = std::max(plot_->height() - 110, 50);
-    const QPointF centre = data_bounds_.center();
-    double half_x = std::max(data_bounds_.width(), 1e-3) * 0.55;
-    double half_y = std::max(data_bounds_.height(), 1e-3) * 0.55;
-    const double mm_per_pixel = std::max(half_x / width, half_y / height);
-    half_x = mm_per_pixel * width;
-    half_y = mm_per_pixel * height;
-    plot_->set_x_range(centre.x() - half_x, centre.x() + half_x);
-    plot_->set_y_range(PlotView::Side::left, centre.y() - half_y, centre.y() + half_y);
+    // Equal scales on both axes, so the circles look round.
+    plot_->set_equal_scales(data_bounds_.adjusted(-1e-4, -1e-4, 1e-4, 1e-4));
 }
 
 QList<QPointF> CalibrationTab::plotted_points(int orientation) const {

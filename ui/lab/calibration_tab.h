@@ -135,7 +135,6 @@ class CalibrationTab : public Page {
 
   protected:
     void changeEvent(QEvent* event) override;
-    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     QGroupBox* build_ring_group();

@@ -131,7 +131,7 @@ TEST(PdfReport, TheCycleReportHasTheResultsTheWarningsTheirFixesAndEveryInput) {
     has(window->optimise_panel()->saved_text());
     // Every input, by its key.
     for (const KeyInfo& key : scenario_keys()) has(QString::fromUtf8(key.key));
-    has(QStringLiteral("3,000 mm/min"));  // the probe's rating, as the editor shows it
+    has(QStringLiteral("3000 mm/min"));  // the probe's rating, as the editor shows it
     // What the figures are, on every page.
     EXPECT_EQ(with_footers.count(squeezed(QStringLiteral("not a calibration certificate"))), pages);
     EXPECT_TRUE(with_footers.contains(squeezed(QStringLiteral("Page %1 of %1").arg(pages))));
