@@ -2859,6 +2859,14 @@
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>Example data</source>
+        <translation>Пример данных</translation>
+    </message>
+    <message>
+        <source>Touches simulated for the probe and machine of the scenario, with a known answer: to try the fit before measuring your own.</source>
+        <translation>Касания, смоделированные для датчика и станка из сценария, с известным ответом: чтобы опробовать подбор до собственных измерений.</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::HelpGuide</name>

@@ -2859,6 +2859,14 @@
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
+    <message>
+        <source>Example data</source>
+        <translation>示例数据</translation>
+    </message>
+    <message>
+        <source>Touches simulated for the probe and machine of the scenario, with a known answer: to try the fit before measuring your own.</source>
+        <translation>按场景中的测头和机床模拟的触测，答案已知：在测量您自己的数据之前先试用拟合。</translation>
+    </message>
 </context>
 <context>
     <name>probecycle::ui::HelpGuide</name>

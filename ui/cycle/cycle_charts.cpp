@@ -108,6 +108,10 @@ bool StableRange::update(double want_lo, double want_hi) {
     return true;
 }
 
+void CycleCharts::refit_ranges() {
+    for (StableRange* range : {&phases_x_, &motion_x_, &motion_y_}) range->set = false;
+}
+
 namespace {
 
 struct Span {

@@ -36,6 +36,10 @@ class CycleCharts : public QWidget {
     void show_result(const Computed& computed);
     // Pins the given result as the dashed baseline; nullptr removes it.
     void set_baseline(const Computed* baseline);
+    // The next show_result() fits the time and position axes to its data
+    // anew: after a jump (a preset, a fix, undo, another file), where the
+    // ranges kept still under a slider would leave a 7 s cycle on a 13 s axis.
+    void refit_ranges();
 
     // What a chart draws, by a stable id ("cycle_time.two_touch", ...): for
     // tests, and for anyone checking what the user sees.

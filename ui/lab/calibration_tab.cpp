@@ -23,6 +23,7 @@
 #include "core/common/file_io.h"
 #include "core/cycle/cycle_report.h"
 #include "core/lab/calibration_report.h"
+#include "core/lab/lab_examples.h"
 #include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
@@ -110,6 +111,9 @@ QGroupBox* CalibrationTab::build_ring_group() {
                           last_error_, [this] { return result_.has_value(); });
     input_->set_fit_text(
         [this](const QString& text, const QString& source) { return fit_text(text, source); });
+    input_->set_example_text([this] {
+        return QString::fromStdString(example_ring_csv(scenario_, diameter_->internal_value()));
+    });
     points_edit_ = input_->make_editor(ring_group_);
     diameter_ = new UnitSpinBox(0.1, 2000.0, 4, 50.0, ring_group_);
     diameter_->setObjectName(QStringLiteral("gauge-diameter"));
@@ -388,6 +392,10 @@ RingCalibrationOptions CalibrationTab::options() const {
     options.runout_limit_mm = runout_limit_->internal_value();
     options.residual_limit_mm = residual_limit_->internal_value();
     return options;
+}
+
+bool CalibrationTab::load_example() {
+    return input_->load_example();
 }
 
 bool CalibrationTab::fit() {

@@ -67,6 +67,9 @@ class CalibrationTab : public Page {
     // Fits the pasted points. On bad input: false, last_error() names the line,
     // and the previous result stays on screen.
     bool fit();
+    // "Example data": touches simulated for the scenario's probe in a gauge of
+    // the diameter set (core/lab/lab_examples.h), pasted and fitted.
+    bool load_example();
     // Reads a CSV file into the paste box and fits it; false as fit(), or when
     // the file cannot be read.
     bool import_file(const QString& path);

@@ -20,6 +20,7 @@
 
 #include "core/lab/compensation.h"  // lag_cycles_for_delay
 #include "core/lab/delay_fit_report.h"
+#include "core/lab/lab_examples.h"
 #include "ui/common/file_write.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/plot_view.h"
@@ -75,6 +76,9 @@ QWidget* DelayFitPanel::build_input_column() {
                           this, last_error_, [this] { return fit_.has_value(); });
     input_->set_fit_text(
         [this](const QString& text, const QString& source) { return fit_text(text, source); });
+    input_->set_example_text([this] {
+        return QString::fromStdString(example_delay_csv(scenario_.value_or(Scenario{})));
+    });
     touches_edit_ = input_->make_editor(this);
     period_ = new UnitSpinBox(0.0, 0.1, 3, 0.0, this, 1000.0);
     period_->setObjectName(QStringLiteral("fit-interpolation-period"));
@@ -274,6 +278,10 @@ void DelayFitPanel::apply_period() {
         return;
     }
     show_fit();
+}
+
+bool DelayFitPanel::load_example() {
+    return input_->load_example();
 }
 
 bool DelayFitPanel::fit() {

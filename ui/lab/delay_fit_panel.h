@@ -60,6 +60,9 @@ class DelayFitPanel : public QGroupBox {
     // Fits the pasted touches. On bad input: false, last_error() names the
     // line, and the previous fit stays on screen.
     bool fit();
+    // "Example data": the delay test simulated for the scenario's machine and
+    // probe (core/lab/lab_examples.h), pasted and fitted.
+    bool load_example();
     // Reads a CSV file into the paste box and fits it.
     bool import_file(const QString& path);
     // "Program…": the delay-stability test's program for the scenario set

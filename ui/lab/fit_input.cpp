@@ -32,6 +32,7 @@ QPlainTextEdit* FitInput::make_editor(QWidget* parent) {
 void FitInput::make_buttons(QWidget* parent) {
     import_button_ = new QPushButton(parent);
     fit_button_ = new QPushButton(parent);
+    example_button_ = new QPushButton(parent);
     program_button_ = new QPushButton(parent);
     program_button_->setObjectName(QString::fromLatin1(names_.program));
     log_button_ = new QPushButton(parent);
@@ -42,12 +43,14 @@ void FitInput::make_buttons(QWidget* parent) {
     error_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     error_label_->hide();
     connect(fit_button_, &QPushButton::clicked, this, [this] { fit(); });
+    connect(example_button_, &QPushButton::clicked, this, [this] { load_example(); });
     connect(log_button_, &QPushButton::clicked, this, &FitInput::import_machine_log_dialog);
 }
 
 void FitInput::add_buttons_to(QVBoxLayout* column) {
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(import_button_);
+    buttons->addWidget(example_button_);
     buttons->addStretch(1);
     buttons->addWidget(fit_button_);
     auto* machine_buttons = new QHBoxLayout;
@@ -62,12 +65,24 @@ void FitInput::add_buttons_to(QVBoxLayout* column) {
 void FitInput::retranslate() {
     import_button_->setText(tr("Import CSV…"));
     fit_button_->setText(tr("Fit"));
+    example_button_->setText(tr("Example data"));
+    example_button_->setToolTip(
+        tr("Touches simulated for the probe and machine of the scenario, with a known answer: "
+           "to try the fit before measuring your own."));
     program_button_->setText(tr("Program…"));
     log_button_->setText(tr("Import machine log…"));
 }
 
 bool FitInput::fit() {
     return fit_text_(editor_->toPlainText(), QString());
+}
+
+bool FitInput::load_example() {
+    if (!example_text_) return false;
+    const QString text = example_text_();
+    editor_->setPlainText(text);
+    imported_ = ImportedText{QStringLiteral("example"), text};
+    return fit_text_(text, QString());
 }
 
 bool FitInput::import_file(const QString& path) {

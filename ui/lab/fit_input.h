@@ -58,15 +58,22 @@ class FitInput : public QObject {
     // Adds Import … Fit, Program and Import machine log, and the error, under `column`.
     void add_buttons_to(QVBoxLayout* column);
     void set_fit_text(FitText fit_text) { fit_text_ = std::move(fit_text); }
+    // "Simulate example data": `make` gives the example's CSV for the
+    // scenario and settings now (core/lab/lab_examples.h).
+    void set_example_text(std::function<QString()> make) { example_text_ = std::move(make); }
 
     QPlainTextEdit* editor() const { return editor_; }
     QPushButton* fit_button() const { return fit_button_; }
     QPushButton* import_button() const { return import_button_; }
     QPushButton* program_button() const { return program_button_; }
     QPushButton* log_button() const { return log_button_; }
+    QPushButton* example_button() const { return example_button_; }
 
     // Fits the paste box's text.
     bool fit();
+    // Puts the example data into the paste box and fits them; its report
+    // names them "example".
+    bool load_example();
     // Reads a CSV file into the paste box and fits it; false as fit(), or
     // when the file cannot be read.
     bool import_file(const QString& path);
@@ -96,10 +103,12 @@ class FitInput : public QObject {
     QString& last_error_;
     std::function<bool()> has_result_;
     FitText fit_text_;
+    std::function<QString()> example_text_;
 
     QPlainTextEdit* editor_{nullptr};
     QPushButton* import_button_{nullptr};
     QPushButton* fit_button_{nullptr};
+    QPushButton* example_button_{nullptr};
     QPushButton* program_button_{nullptr};
     QPushButton* log_button_{nullptr};
     QLabel* error_label_{nullptr};

@@ -51,6 +51,7 @@ class LatencyTab : public Page {
         delay_->set_interpolation_period_s(period_s);
     }
     bool fit() { return delay_->fit(); }
+    bool load_example() { return delay_->load_example(); }
     bool import_file(const QString& path) { return delay_->import_file(path); }
     ProgramDialog* open_program_dialog() { return delay_->open_program_dialog(); }
     bool import_machine_log(const MachineLogChoice& choice) {

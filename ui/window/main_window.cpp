@@ -299,11 +299,14 @@ void MainWindow::build_actions() {
     undo_action_ = new QAction(icon(QStyle::SP_ArrowBack), {}, this);
     undo_action_->setShortcut(QKeySequence::Undo);
     undo_action_->setEnabled(false);
+    // Undo and redo jump (a slider's drag is one step): the charts fit anew.
+    connect(undo_action_, &QAction::triggered, charts_, &CycleCharts::refit_ranges);
     connect(undo_action_, &QAction::triggered, undo_, &QUndoStack::undo);
     connect(undo_, &QUndoStack::canUndoChanged, undo_action_, &QAction::setEnabled);
     redo_action_ = new QAction(icon(QStyle::SP_ArrowForward), {}, this);
     redo_action_->setShortcut(QKeySequence::Redo);
     redo_action_->setEnabled(false);
+    connect(redo_action_, &QAction::triggered, charts_, &CycleCharts::refit_ranges);
     connect(redo_action_, &QAction::triggered, undo_, &QUndoStack::redo);
     connect(undo_, &QUndoStack::canRedoChanged, redo_action_, &QAction::setEnabled);
     connect(undo_, &QUndoStack::indexChanged, this, &MainWindow::update_undo_texts);
@@ -709,6 +712,7 @@ void MainWindow::edit_scenario(const Scenario& scenario, const QString& descript
 }
 
 void MainWindow::edit_scenario(const Scenario& scenario, std::function<QString()> describe) {
+    charts_->refit_ranges();  // a preset, a fix, an import: a jump, not a drag
     document_->edit(scenario, std::move(describe));
 }
 
@@ -763,6 +767,7 @@ void MainWindow::report_error(const char* title, const QString& text) {
 bool MainWindow::new_scenario() {
     if (!settle_unsaved_changes()) return false;
     // The lab's data stays, outside any file.
+    charts_->refit_ranges();
     document_->reset(Scenario{}, QString(), /*is_project=*/false);
     show_status(
         [] { return tr("Default scenario: typical values, to be replaced with measured ones"); },
@@ -805,6 +810,7 @@ bool MainWindow::open_scenario(const QString& path) {
     // Nothing has changed yet: the file is whole and valid.
     const QString absolute = QFileInfo(path).absoluteFilePath();
     if (project) restore_session(loaded, QFileInfo(absolute).absolutePath());
+    charts_->refit_ranges();
     document_->reset(loaded.scenario, absolute, project);
     if (project) document_->mark_session_saved();
     remember_recent(absolute);

@@ -330,5 +330,21 @@ TEST_F(LabCalibrationTab, RendersAt1280x800) {
     }
 }
 
+// "Example data": the scenario's probe in the gauge set, fitted at once;
+// the fit finds the runout and radius the example was drawn with.
+TEST_F(LabCalibrationTab, ExampleDataFitsToTheRunoutAndRadiusDrawn) {
+    Scenario s;
+    s.probe.pretravel_mm = 0.008;
+    tab_.set_scenario(s);
+    tab_.set_gauge_diameter_mm(30.0);
+    ASSERT_TRUE(tab_.load_example()) << tab_.last_error().toStdString();
+    ASSERT_TRUE(tab_.result().has_value());
+    EXPECT_NEAR(tab_.result()->effective_radius_mm, 1.5 - 0.008, 0.001);
+    ASSERT_TRUE(tab_.result()->runout_x_mm.has_value());
+    EXPECT_NEAR(*tab_.result()->runout_x_mm, 0.003, 0.001);
+    EXPECT_TRUE(tab_.points_text().startsWith(QStringLiteral("# example")));
+    EXPECT_EQ(tab_.fitted_points().size(), 16u);
+}
+
 }  // namespace
 }  // namespace probecycle::ui

@@ -382,5 +382,22 @@ TEST_F(LabLatencyTab, RendersAt1280x800) {
     }
 }
 
+// "Example data": the delay test for the scenario's machine and probe, fitted
+// at once; "Apply" would give the scenario's own latency back.
+TEST_F(LabLatencyTab, ExampleDataFitsToTheScenariosDelay) {
+    Scenario s;
+    s.machine.controller_latency_s = 0.005;
+    tab_.set_scenario(s);
+    ASSERT_TRUE(tab_.load_example()) << tab_.last_error().toStdString();
+    ASSERT_TRUE(tab_.delay_fit().has_value());
+    ASSERT_EQ(tab_.delay_fit()->groups.size(), 1u);
+    const double drawn =
+        s.probe.interface_delay_s + s.machine.controller_latency_s + s.machine.scan_period_s / 2;
+    EXPECT_NEAR(tab_.delay_fit()->groups[0].delay_s, drawn, 0.001);
+    const std::optional<AppliedDelay> applied = tab_.pending_application();
+    ASSERT_TRUE(applied.has_value());
+    EXPECT_NEAR(applied->value_s, 0.005, 0.001);
+}
+
 }  // namespace
 }  // namespace probecycle::ui

@@ -402,6 +402,32 @@ void lay_out(PlotView& plot) {
 
 // PlotView: a curve named after it was added joins the legend while shown;
 // unnamed again, it leaves.
+// Under a slider the time axis keeps still; after a jump (refit_ranges())
+// it fits the new cycle, not the longest one seen before.
+TEST_F(ChartsTest, TheTimeAxisFitsTheCycleAfterAJump) {
+    Scenario slow = fast_surface();
+    slow.cycle.probe_feed_mm_min = 200.0;
+    draw(slow);
+    const double long_axis = motion_->x_range().hi;
+    // A quicker cycle that still fills more than half of that axis.
+    Scenario quick = fast_surface();
+    double quick_total = 0.0;
+    for (double feed = 250.0; feed <= 3000.0; feed += 50.0) {
+        quick.cycle.probe_feed_mm_min = feed;
+        quick_total = computation_.run(quick).cycle().total();
+        if (quick_total < 0.85 * long_axis) break;
+    }
+    ASSERT_GT(quick_total, 0.55 * long_axis);
+    // As a slider leaves it: still.
+    draw(quick);
+    EXPECT_EQ(motion_->x_range().hi, long_axis);
+    // After a jump: fitted to the cycle.
+    charts_.refit_ranges();
+    draw(quick);
+    EXPECT_GE(motion_->x_range().hi, quick_total);
+    EXPECT_LT(motion_->x_range().hi, long_axis);
+}
+
 TEST(PlotViewTest, ACurveNamedLaterJoinsTheLegendWhileVisible) {
     PlotView plot;
     plot.set_x_axis({});
