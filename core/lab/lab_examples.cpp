@@ -32,8 +32,8 @@ std::string example_ring_csv(const Scenario& scenario, double gauge_diameter_mm,
     const double ball_radius_mm = kExampleBallDiameter_mm / 2.0;
     const double reach_mm = gauge_diameter_mm / 2.0 - ball_radius_mm;
     std::string csv = "# example: ring gauge " + fixed(gauge_diameter_mm, 3) + " mm at X" +
-                      fixed(kGaugeCentreX_mm, 0) + " Y" + fixed(kGaugeCentreY_mm, 0) +
-                      "; ball " + fixed(kExampleBallDiameter_mm, 3) + " mm; runout (" +
+                      fixed(kGaugeCentreX_mm, 0) + " Y" + fixed(kGaugeCentreY_mm, 0) + "; ball " +
+                      fixed(kExampleBallDiameter_mm, 3) + " mm; runout (" +
                       fixed(kExampleRunoutX_mm, 3) + ", " + fixed(kExampleRunoutY_mm, 3) +
                       ") mm\norientation_deg,x_mm,y_mm\n";
     for (const double orientation : {0.0, 180.0}) {

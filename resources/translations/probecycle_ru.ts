@@ -2592,10 +2592,6 @@
         <translation>Неопределённость</translation>
     </message>
     <message>
-        <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle.</source>
-        <translation>Положение вдоль направления измерения для каждого касания (поверхность — штрих) и скорость по траектории в течение всего цикла.</translation>
-    </message>
-    <message>
         <source>Two-touch, best backoff</source>
         <translation>Двукратное, лучший отвод</translation>
     </message>
@@ -2663,6 +2659,10 @@
     <message>
         <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). Dotted: feeds the first touch never reaches from its start, so the cycle is not at the feed it says (its time falls only because of that); the knee is not among them. A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
         <translation>Время всего цикла в зависимости от подачи поиска для однократного и двукратного касания при прочих заданных параметрах. Вертикальная линия — текущая подача. Точка — точка излома: наименьшая допустимая подача, время цикла на которой хуже лучшего не более чем на допуск точки излома. Серый пунктир: подачи, при которых цикл недопустим (перебег сверх предела, слишком малый отвод). Точечная линия: подачи, которых первое касание не достигает от своего начала, так что цикл идёт не на заявленной подаче (его время падает только поэтому); точка излома среди них не ищется. Красная пунктирная линия: этот цикл недопустим и времени цикла не имеет (см. предупреждения).</translation>
+    </message>
+    <message>
+        <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle. The position line breaks during the moves between touches, which run across that direction; the speed shows them.</source>
+        <translation>Положение вдоль направления измерения для каждого касания (поверхность — штрих) и скорость по траектории в течение всего цикла. Во время перемещений между касаниями, идущих поперёк этого направления, линия положения прерывается; их показывает скорость.</translation>
     </message>
 </context>
 <context>

@@ -2592,10 +2592,6 @@
         <translation>不确定度</translation>
     </message>
     <message>
-        <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle.</source>
-        <translation>每次触测沿测量方向的位置（虚线为表面）以及整个循环中的轨迹速度。</translation>
-    </message>
-    <message>
         <source>Two-touch, best backoff</source>
         <translation>两次触测，最佳回退距离</translation>
     </message>
@@ -2663,6 +2659,10 @@
     <message>
         <source>Cycle time of the whole cycle against the probing feed, for single-touch and two-touch with everything else as set. Vertical line: the current feed. Dot: the knee, the lowest valid feed within the knee tolerance of the best time. Grey, dashed: feeds whose cycle is invalid (overtravel over the limit, backoff too small). Dotted: feeds the first touch never reaches from its start, so the cycle is not at the feed it says (its time falls only because of that); the knee is not among them. A red dashed line: this cycle is invalid and has no cycle time (see the warnings).</source>
         <translation>整个循环的时间与探测进给率的关系，分单次触测和两次触测，其余参数按当前设置。竖线：当前进给率。圆点：拐点，即循环时间与最佳时间相差不超过拐点容差的最低有效进给率。灰色虚线：循环无效的进给率（过行程超过极限、回退距离过小）。点线：第一次触测从起点出发始终达不到的进给率，此时循环并非以所标进给率运行（循环时间下降仅因如此）；拐点不在其中。红色虚线：当前循环无效，没有循环时间（见警告）。</translation>
+    </message>
+    <message>
+        <source>Position along the probing direction of each touch (the surface is dashed) and path speed through the whole cycle. The position line breaks during the moves between touches, which run across that direction; the speed shows them.</source>
+        <translation>每次触测沿测量方向的位置（虚线为表面）以及整个循环中的轨迹速度。触测之间的移动与该方向垂直，位置曲线在这些移动期间断开；速度曲线显示这些移动。</translation>
     </message>
 </context>
 <context>

@@ -208,10 +208,21 @@ void fill_motion(std::vector<double>& times, QList<QPointF>& position, QList<QPo
     times.erase(std::unique(times.begin(), times.end()), times.end());
     position.resize(static_cast<qsizetype>(times.size()));
     speed.resize(static_cast<qsizetype>(times.size()));
+    const std::vector<PhaseRecord>& phases = cycle.phases();
     for (std::size_t i = 0; i < times.size(); ++i) {
         const double t = std::clamp(times[i], 0.0, total);
         const CycleState state = cycle.state_at(t);
-        position[static_cast<qsizetype>(i)] = {t, state.position_mm};
+        // A move between touches runs across the probing direction: the
+        // position along it means nothing there, so the line breaks (it
+        // stood at 0 as if the axis did not move) while the speed goes on.
+        const PhaseRecord* phase =
+            state.phase_index < phases.size() ? &phases[state.phase_index] : nullptr;
+        const bool across = phase != nullptr && t > phase->start_s &&
+                            t < phase->start_s + phase->time_s &&
+                            (phase->phase == Phase::position || phase->phase == Phase::lift ||
+                             phase->phase == Phase::lower);
+        position[static_cast<qsizetype>(i)] = {
+            t, across ? std::numeric_limits<double>::quiet_NaN() : state.position_mm};
         speed[static_cast<qsizetype>(i)] = {t, mm_s_to_mm_min(state.path_speed_mm_s)};
     }
 }
@@ -435,8 +446,9 @@ void CycleCharts::retranslate() {
            "Vertical lines: the probing feed and, for two-touch, the measuring feed (blue, "
            "dotted)."));
     motion_->setToolTip(
-        tr("Position along the probing direction of each touch (the surface is "
-           "dashed) and path speed through the whole cycle."));
+        tr("Position along the probing direction of each touch (the surface is dashed) and path "
+           "speed through the whole cycle. The position line breaks during the moves between "
+           "touches, which run across that direction; the speed shows them."));
 
     const QString baseline = tr("Baseline (dashed)");
     cycle_time_->set_name(ct_base_two_.curve, baseline);

@@ -28,6 +28,7 @@
 #include <QToolBar>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <exception>
 #include <functional>
 #include <iterator>
@@ -168,7 +169,8 @@ void MainWindow::build_ui() {
     connect(warnings_, &WarningsPanel::fix_requested, this,
             [this](const QString& code) { apply_fix_for(code); });
     connect(warnings_, &WarningsPanel::counts_changed, this, &MainWindow::update_warning_counts);
-    auto* warnings_scroll = new QScrollArea;
+    warnings_scroll_ = new QScrollArea;
+    auto* warnings_scroll = warnings_scroll_;
     warnings_scroll->setWidget(warnings_);
     warnings_scroll->setWidgetResizable(true);
     warnings_scroll->setFrameShape(QFrame::NoFrame);
@@ -191,6 +193,12 @@ void MainWindow::build_ui() {
     right_splitter_->addWidget(warnings_box);
     right_splitter_->setStretchFactor(0, 3);
     right_splitter_->setStretchFactor(1, 1);
+    // Once the user drags the divider, the panel keeps the height they chose.
+    connect(right_splitter_, &QSplitter::splitterMoved, this,
+            [this] { warnings_sized_by_user_ = true; });
+    // After the layout has placed the new rows: their height is known then.
+    connect(warnings_, &WarningsPanel::counts_changed, this,
+            [this] { QTimer::singleShot(0, this, &MainWindow::fit_warnings_pane); });
     // Room for about three problems, and charts that stay readable
     // however far the user drags the panel up.
     const int line = fontMetrics().height();
@@ -525,7 +533,7 @@ void MainWindow::restore_settings() {
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     main_splitter_->restoreState(settings.value(QStringLiteral("window/splitter")).toByteArray());
-    right_splitter_->restoreState(
+    warnings_sized_by_user_ = right_splitter_->restoreState(
         settings.value(QStringLiteral("window/right_splitter")).toByteArray());
     recent_files_ = settings.value(QStringLiteral("files/recent")).toStringList();
     set_remembered_folder(settings.value(QStringLiteral("files/last_dir")).toString());
@@ -1199,6 +1207,33 @@ void MainWindow::clear_baseline() {
     charts_->set_baseline(nullptr);
     unpin_->setEnabled(false);
     schedule_recompute();
+}
+
+// Room for every problem shown, as far as the charts can spare it, whenever
+// their number changes, until the user drags the divider; back to the usual
+// height when fewer are left.
+void MainWindow::fit_warnings_pane() {
+    const int rows = warnings_->count(Severity::error) + warnings_->count(Severity::warning) +
+                     warnings_->count(Severity::info);
+    if (warnings_sized_by_user_ || rows == warnings_rows_fitted_) return;
+    const QList<int> sizes = right_splitter_->sizes();
+    const int total = sizes.value(0) + sizes.value(1);
+    const int viewport = warnings_scroll_->viewport()->height();
+    if (!right_splitter_->isVisible() || total <= 0 || viewport <= 0) return;
+    warnings_rows_fitted_ = rows;
+    // The panel's height as the layout first gave it: it never gets smaller.
+    if (warnings_usual_height_ < 0) warnings_usual_height_ = sizes.value(1);
+    const int width = warnings_scroll_->viewport()->width();
+    const int content = warnings_->hasHeightForWidth() ? warnings_->heightForWidth(width)
+                                                       : warnings_->sizeHint().height();
+    const int chrome = sizes.value(1) - viewport;  // the title and margins
+    // The charts keep 60 % and at least 30 lines, so that their axis titles
+    // stay full size; a smaller window keeps the panel's usual height and
+    // scrolls it.
+    const int charts_keep = std::max(total * 3 / 5, 30 * fontMetrics().height());
+    const int most = std::max(warnings_usual_height_, total - charts_keep);
+    const int wanted = std::clamp(content + chrome, warnings_usual_height_, most);
+    if (wanted != sizes.value(1)) right_splitter_->setSizes({total - wanted, wanted});
 }
 
 // The panel's title and the Cycle tab count the problems shown, so an error

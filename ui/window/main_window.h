@@ -206,6 +206,7 @@ class MainWindow : public QMainWindow {
     void remember_recent(const QString& path);
     void update_title();
     void update_warning_counts();
+    void fit_warnings_pane();
     // Optimises the current scenario into the Optimise tab (when it is valid).
     void refresh_optimise();
     void update_undo_texts();
@@ -255,6 +256,10 @@ class MainWindow : public QMainWindow {
     CycleCharts* charts_{nullptr};
     WarningsPanel* warnings_{nullptr};
     QLabel* warnings_title_{nullptr};
+    QScrollArea* warnings_scroll_{nullptr};
+    bool warnings_sized_by_user_{false};
+    int warnings_rows_fitted_{-1};
+    int warnings_usual_height_{-1};
     QSplitter* main_splitter_{nullptr};
     QTabWidget* tabs_{nullptr};
     CalibrationTab* calibration_tab_{nullptr};

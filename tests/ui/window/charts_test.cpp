@@ -404,6 +404,33 @@ void lay_out(PlotView& plot) {
 // unnamed again, it leaves.
 // Under a slider the time axis keeps still; after a jump (refit_ranges())
 // it fits the new cycle, not the longest one seen before.
+// A bore's moves between touches run across the probing direction: the
+// position line breaks there (it stood at 0), while the speed shows the move.
+TEST_F(ChartsTest, ThePositionBreaksDuringMovesBetweenTouches) {
+    Scenario bore;
+    bore.cycle.feature = Feature::bore;
+    bore.cycle.feature_size_mm = 40.0;
+    draw(bore);
+    const QList<QPointF> position = points("motion.position");
+    const QList<QPointF> speed = points("motion.speed");
+    ASSERT_EQ(position.size(), speed.size());
+    int gaps = 0;
+    bool in_gap = false;
+    double fastest_in_gaps = 0.0;
+    for (qsizetype i = 0; i < position.size(); ++i) {
+        const bool gap = !has_y(position[i]);
+        if (gap) fastest_in_gaps = std::max(fastest_in_gaps, speed[i].y());
+        if (gap && !in_gap) ++gaps;
+        in_gap = gap;
+    }
+    EXPECT_GT(fastest_in_gaps, bore.cycle.probe_feed_mm_min);  // the positioning feed
+    // From the centre to the first side, between the four sides, and back.
+    EXPECT_GE(gaps, 3);
+    // Single-touch on a surface has no such move: no break.
+    draw(fast_surface());
+    for (const QPointF& p : points("motion.position")) EXPECT_TRUE(has_y(p));
+}
+
 TEST_F(ChartsTest, TheTimeAxisFitsTheCycleAfterAJump) {
     Scenario slow = fast_surface();
     slow.cycle.probe_feed_mm_min = 200.0;
