@@ -2907,10 +2907,6 @@
         <translation>更多</translation>
     </message>
     <message>
-        <source>The README explains the model in full: sections &quot;The model&quot;, &quot;One touch&quot;, &quot;Cycle time against feed&quot;, &quot;The calibration and latency lab&quot; and &quot;Limits of the model&quot;. &lt;a href=&quot;%1&quot;&gt;Open the README&lt;/a&gt;.</source>
-        <translation>README 完整介绍了模型：见“The model”、“One touch”、“Cycle time against feed”、“The calibration and latency lab”和“Limits of the model”各节。&lt;a href=&quot;%1&quot;&gt;打开 README&lt;/a&gt;。</translation>
-    </message>
-    <message>
         <source>ProbeCycle guide</source>
         <translation>ProbeCycle 指南</translation>
     </message>
@@ -2921,6 +2917,18 @@
     <message>
         <source>Overtravel = pretravel + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + the braking distance (v&amp;middot;T/2 with a time constant T), the worst case; on average the axis stops v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 short of it, and a two-touch cycle&apos;s second approach is the backoff less that mean stop. Scan range R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt; (0 with a latched input). The trigger&apos;s uncertainty (k = 2) U&lt;sub&gt;t&lt;/sub&gt; = &amp;radic;(R&amp;sup2;/3 + repeatability&amp;sup2;), over &amp;radic;N for N repeats; the uncertainty (k = 2) is its budget with the terms no feed changes, U = &amp;radic;(U&lt;sub&gt;t&lt;/sub&gt;&amp;sup2; + 4 (lobing&amp;sup2;/3 + artefact&amp;sup2;/4 + machine repeatability&amp;sup2;/4 + thermal drift&amp;sup2;/3)). Recommended backoff = the first touch&apos;s overtravel + the larger of the reseat distance and the distance the second touch needs to reach its feed, rounded up to the micrometre. The tooltip of every parameter says where it enters.</source>
         <translation>过行程 = 预行程 + v &amp;middot; (t&lt;sub&gt;i&lt;/sub&gt; + t&lt;sub&gt;c&lt;/sub&gt; + t&lt;sub&gt;s&lt;/sub&gt;) + 制动距离（时间常数为 T 时为 v&amp;middot;T/2），这是最坏情况；平均而言，轴比它少走 v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;/2 就停止，两次触测的第二次接近等于回退距离减去这一平均停止距离。扫描范围 R = v &amp;middot; t&lt;sub&gt;s&lt;/sub&gt;（锁存输入时为 0）。触发不确定度（k = 2）U&lt;sub&gt;t&lt;/sub&gt; = &amp;radic;(R&amp;sup2;/3 + 重复性&amp;sup2;)，N 次重复时除以 &amp;radic;N；不确定度（k = 2）是它与不随进给率变化的各项组成的预算：U = &amp;radic;(U&lt;sub&gt;t&lt;/sub&gt;&amp;sup2; + 4 (各向异性&amp;sup2;/3 + 标准器&amp;sup2;/4 + 机床重复性&amp;sup2;/4 + 热漂移&amp;sup2;/3))。推荐回退距离 = 第一次触测的过行程 + 测头复位距离与第二次触测加速到其进给率所需距离中的较大者，向上取整到微米。每个参数的提示说明它在模型中的作用。</translation>
+    </message>
+    <message>
+        <source>Getting started</source>
+        <translation>入门</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;1. Start near your machine.&lt;/b&gt; Choose the preset closest to your control and probe (Presets), or read a LinuxCNC machine from its INI file (File &amp;gt; Import Machine). Every value is typical until you replace it with yours. &lt;b&gt;2. Enter what you know.&lt;/b&gt; From the probe&apos;s data sheet: its pretravel, repeatability and overtravel limit; from the control: its scan period; from your cycle: the feature, the feeds and the backoff. What you do not know, the delays, you measure in the Latency tab (its Example data shows how). &lt;b&gt;3. Read the six numbers at the top.&lt;/b&gt; Cycle time: the whole cycle as set. Overtravel: how far the axis runs past the trigger, against the probe&apos;s limit, at the highest feed override. Trigger speed: the feed when the measuring touch triggers. Uncertainty (k = 2): the measurement&apos;s budget; its tooltip lists the terms. Recommended backoff: the least that lets the second touch reseat and reach its feed. Knee: the feed beyond which a faster search saves almost no time. &lt;b&gt;4. Follow the warnings&lt;/b&gt;, errors first; each button sets the value that clears its warning, and the Optimise tab finds the fastest settings that meet your limits. &lt;b&gt;Where the numbers come from&lt;/b&gt;: a model of the axis&apos;s motion (acceleration, filters, servo lag), the probe and the control&apos;s delays, with the formulas below; nothing is measured unless you measure it.</source>
+        <translation>&lt;b&gt;1. 从接近您机床的设置开始。&lt;/b&gt;选择与您的数控系统和测头最接近的预设（预设菜单），或从 LinuxCNC 机床的 INI 文件读取机床（文件 &amp;gt; 导入机床）。在您替换为自己的值之前，所有数值都是典型值。&lt;b&gt;2. 输入您已知的数据。&lt;/b&gt;来自测头数据表：预行程、重复性和过行程极限；来自数控系统：扫描周期；来自您的循环：特征、进给率和回退距离。您不知道的延迟，可在“延迟”选项卡中测量（其“示例数据”演示了方法）。&lt;b&gt;3. 读懂顶部的六个数字。&lt;/b&gt;循环时间：按设置的整个循环。过行程：轴越过触发点的距离，与测头极限比较，按最高进给倍率计算。触发速度：测量触测触发时的进给率。不确定度（k = 2）：测量的不确定度预算，其提示列出各项。推荐回退距离：使第二次触测能够复位并达到其进给率的最小值。曲线拐点：超过该进给率后，更快的搜索几乎不再节省时间。&lt;b&gt;4. 按提示处理&lt;/b&gt;，先处理错误；每个按钮设置可消除该提示的值，“优化”选项卡可找到满足您限值的最快设置。&lt;b&gt;数字从何而来&lt;/b&gt;：来自轴运动（加速度、滤波器、伺服滞后）、测头和数控系统延迟的模型，公式见下文；除非您亲自测量，否则没有任何值是测量所得。</translation>
+    </message>
+    <message>
+        <source>The README and the docs folder beside it explain the model in full, with its limits, the files, the command line and the lab. &lt;a href=&quot;%1&quot;&gt;Open the README&lt;/a&gt;.</source>
+        <translation>README 及其旁边的 docs 文件夹完整说明了模型及其局限、文件、命令行和实验室功能。&lt;a href=&quot;%1&quot;&gt;打开 README&lt;/a&gt;。</translation>
     </message>
 </context>
 <context>

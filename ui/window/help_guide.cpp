@@ -27,6 +27,27 @@ QString section(const QString& title, const QString& body) {
 QString help_guide_html(const QString& readme_path) {
     QString html;
     html += section(
+        HelpGuide::tr("Getting started"),
+        HelpGuide::tr(
+            "<b>1. Start near your machine.</b> Choose the preset closest to your control and "
+            "probe (Presets), or read a LinuxCNC machine from its INI file (File &gt; Import "
+            "Machine). Every value is typical until you replace it with yours. "
+            "<b>2. Enter what you know.</b> From the probe's data sheet: its pretravel, "
+            "repeatability and overtravel limit; from the control: its scan period; from your "
+            "cycle: the feature, the feeds and the backoff. What you do not know, the delays, "
+            "you measure in the Latency tab (its Example data shows how). "
+            "<b>3. Read the six numbers at the top.</b> Cycle time: the whole cycle as set. "
+            "Overtravel: how far the axis runs past the trigger, against the probe's limit, at "
+            "the highest feed override. Trigger speed: the feed when the measuring touch "
+            "triggers. Uncertainty (k = 2): the measurement's budget; its tooltip lists the "
+            "terms. Recommended backoff: the least that lets the second touch reseat and reach "
+            "its feed. Knee: the feed beyond which a faster search saves almost no time. "
+            "<b>4. Follow the warnings</b>, errors first; each button sets the value that "
+            "clears its warning, and the Optimise tab finds the fastest settings that meet your "
+            "limits. <b>Where the numbers come from</b>: a model of the axis's motion "
+            "(acceleration, filters, servo lag), the probe and the control's delays, with the "
+            "formulas below; nothing is measured unless you measure it."));
+    html += section(
         HelpGuide::tr("One touch, phase by phase"),
         HelpGuide::tr(
             "<b>Approach</b>: from the start position to the surface at the probing feed. "
@@ -83,13 +104,10 @@ QString help_guide_html(const QString& readme_path) {
             "into the scenario. The Calibration tab fits the stylus's runout and effective "
             "radius from a ring gauge touched at spindle 0&deg; and 180&deg;."));
     if (!readme_path.isEmpty()) {
-        // The sections named here are in docs/ now, and the README's links name
-        // them; the text is translated, so it stays as it is.
         html += section(HelpGuide::tr("More"),
-                        HelpGuide::tr("The README explains the model in full: sections "
-                                      "\"The model\", \"One touch\", \"Cycle time against "
-                                      "feed\", \"The calibration and latency lab\" and "
-                                      "\"Limits of the model\". <a href=\"%1\">Open the "
+                        HelpGuide::tr("The README and the docs folder beside it explain the "
+                                      "model in full, with its limits, the files, the "
+                                      "command line and the lab. <a href=\"%1\">Open the "
                                       "README</a>.")
                             .arg(QUrl::fromLocalFile(readme_path).toString()));
     }

@@ -1,7 +1,8 @@
 #pragma once
 
-// The in-window guide (Help > Guide, F1): what each phase means,
-// how to read the charts, how to measure the delay, with the formulas the
+// The in-window guide (Help > Guide, F1): getting started (what to enter
+// first, what the readouts mean, where the numbers come from), what each
+// phase means, how to read the charts, how to measure the delay, with the formulas the
 // tooltips show, in the interface language, and where the README says more.
 
 #include <QDialog>

@@ -136,7 +136,15 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
     }
     connect(document_, &Document::scenario_changed, this, &MainWindow::show_scenario);
     connect(document_, &Document::modified_changed, this, &MainWindow::update_title);
-    if (options_.persistent) restore_settings();
+    if (options_.persistent) {
+        restore_settings();
+        // The first start opens the guide on "Getting started", once.
+        QSettings settings;
+        if (!settings.value(QStringLiteral("view/guide_shown")).toBool()) {
+            settings.setValue(QStringLiteral("view/guide_shown"), true);
+            QTimer::singleShot(0, this, &MainWindow::show_guide);
+        }
+    }
     show_scenario();
     update_title();
 }

@@ -1077,6 +1077,11 @@ TEST_F(MainWindowTest, HelpHasAGuideInTheInterfaceLanguage) {
                               "Measuring the delay", "Open the README"}) {
         EXPECT_TRUE(english.contains(QLatin1String(words))) << words;
     }
+    // It opens on getting started: what to enter first, what the readouts mean.
+    const qsizetype start = english.indexOf(QLatin1String("Getting started"));
+    EXPECT_GE(start, 0);
+    EXPECT_LT(start, english.indexOf(QLatin1String("One touch, phase by phase")));
+    EXPECT_TRUE(english.contains(QLatin1String("Start near your machine")));
     window_->set_language(QStringLiteral("ru"));
     settle();
     const QString russian = guide->html();
