@@ -3523,10 +3523,6 @@
         <translation>Отчёт PDF записан в %1</translation>
     </message>
     <message>
-        <source>One-click fix: %1</source>
-        <translation>Исправление одним щелчком: %1</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <extracomment>%1 the severity (Error, Warning, Note), %2 the warning&apos;s title</extracomment>
         <translation>%1: %2</translation>
@@ -3616,6 +3612,22 @@
     <message>
         <source>There is no preset %1.</source>
         <translation>Предустановки %1 нет.</translation>
+    </message>
+    <message>
+        <source>Report De&amp;tails…</source>
+        <translation>&amp;Данные отчёта…</translation>
+    </message>
+    <message>
+        <source>Customer, machine, part, author and notes for the top of the PDF report</source>
+        <translation>Заказчик, станок, деталь, автор и примечания для заголовка отчёта PDF</translation>
+    </message>
+    <message>
+        <source>Charts</source>
+        <translation>Графики</translation>
+    </message>
+    <message>
+        <source>Suggested change: %1</source>
+        <translation>Рекомендуемое изменение: %1</translation>
     </message>
 </context>
 <context>
@@ -4085,6 +4097,37 @@
     <message>
         <source>&lt;p&gt;The measurement&apos;s uncertainty budget: each term&apos;s standard uncertainty, combined as the root sum of squares and expanded with k = 2. Set the terms under Machine and Probe.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Бюджет неопределённости измерения: стандартная неопределённость каждого члена, сложенная как корень из суммы квадратов и расширенная с k = 2. Члены задаются в разделах «Станок» и «Датчик».&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::ReportDetailsDialog</name>
+    <message>
+        <source>Customer</source>
+        <translation>Заказчик</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Деталь</translation>
+    </message>
+    <message>
+        <source>Author</source>
+        <translation>Автор</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Примечания</translation>
+    </message>
+    <message>
+        <source>Report Details</source>
+        <translation>Данные отчёта</translation>
+    </message>
+    <message>
+        <source>Shown at the top of the PDF report&apos;s first page, with the date and the program&apos;s version. Saved in the project file.</source>
+        <translation>Выводятся в начале первой страницы отчёта PDF вместе с датой и версией программы. Сохраняются в файле проекта.</translation>
     </message>
 </context>
 <context>
