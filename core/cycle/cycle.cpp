@@ -144,20 +144,6 @@ double speed_error_mm(const Machine& machine, const Probe& probe, double speed_m
     return (speed_mm_s - calibrated_speed_mm_s) * measurement_delay_s(machine, probe);
 }
 
-int touch_count(Feature feature) {
-    switch (feature) {
-        case Feature::surface:
-            return 1;
-        case Feature::web:
-        case Feature::pocket:
-            return 2;
-        case Feature::bore:
-        case Feature::boss:
-            return 4;
-    }
-    return 1;
-}
-
 // The moves of a feature as real cycles make them (cycle.h; docs/model.md,
 // "Strategies and features").
 double start_radius_mm(const Cycle& cycle) {

@@ -330,9 +330,6 @@ void evaluate_into(const Scenario& scenario, CycleResult& result);
 void evaluate_into(const Scenario& scenario, CycleResult& result, MotionCache& cache,
                    Detail detail = Detail::full);
 
-// Number of touches of a feature (surface 1, web/pocket 2, bore/boss 4).
-int touch_count(Feature feature);
-
 // The moves of a feature as real cycles and our programs make them. A pocket
 // or bore starts and ends at the feature centre; each touch starts `approach`
 // inside the wall, reached from the centre and left back to it. A boss or web

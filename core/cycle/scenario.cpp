@@ -611,6 +611,55 @@ AxisDynamics Scenario::axis_dynamics() const {
             machine.servo_time_constant_s, machine.in_position_mm};
 }
 
+int touch_count(Feature feature) {
+    switch (feature) {
+        case Feature::surface:
+            return 1;
+        case Feature::web:
+        case Feature::pocket:
+            return 2;
+        case Feature::bore:
+        case Feature::boss:
+            return 4;
+    }
+    return 1;
+}
+
+bool key_applies(const Scenario& scenario, std::string_view dotted_key) {
+    const Machine& m = scenario.machine;
+    const Cycle& c = scenario.cycle;
+    const bool two_touch = c.strategy == Strategy::two_touch;
+    const bool several_touches = touch_count(c.feature) > 1;
+    // A boss or web is touched from outside: the probe lifts over it at the rapid feed.
+    const bool lifts = c.feature == Feature::boss || c.feature == Feature::web;
+    struct Rule {
+        std::string_view key;
+        bool applies;
+    };
+    const Rule rules[] = {
+        {"machine.time_constant_s", m.accel_model == AccelModel::time_constant},
+        {"machine.max_accel_mm_s2",
+         m.accel_model == AccelModel::constant_accel || m.accel_model == AccelModel::jerk_limited},
+        {"machine.max_jerk_mm_s3", m.accel_model == AccelModel::jerk_limited},
+        {"machine.filter_time_s", m.filter != FilterKind::none},
+        {"machine.filter2_time_s", m.filter == FilterKind::bell},
+        {"machine.in_position_mm", scenario.axis_dynamics().active()},
+        {"machine.rapid_feed_mm_min", lifts},
+        {"cycle.position_feed_mm_min", several_touches},
+        {"cycle.clearance_mm", lifts},
+        {"cycle.feature_size_mm", several_touches},
+        {"cycle.size_tolerance_mm", several_touches},
+        {"cycle.tolerance_action", several_touches && c.size_tolerance_mm > 0.0},
+        {"cycle.measure_feed_mm_min", two_touch},
+        {"cycle.backoff_mm", two_touch},
+        {"cycle.backoff_from", two_touch},
+    };
+    for (const Rule& rule : rules) {
+        if (rule.key == dotted_key) return rule.applies;
+    }
+    return true;
+}
+
 const std::vector<KeyInfo>& scenario_keys() {
     static const std::vector<KeyInfo> keys = [] {
         std::vector<KeyInfo> out;

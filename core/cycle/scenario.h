@@ -22,6 +22,8 @@ enum class Feature { surface, web, pocket, bore, boss };
 constexpr bool is_internal(Feature feature) {
     return feature == Feature::pocket || feature == Feature::bore;
 }
+// Number of touches of a feature (surface 1, web/pocket 2, bore/boss 4).
+int touch_count(Feature feature);
 // How many times a measuring touch may be repeated and averaged
 // (cycle.repeats): the key's range and the optimiser's search.
 constexpr int kMaxRepeats = 20;
@@ -194,6 +196,11 @@ std::vector<std::string> section_key_names(std::string_view section);
 std::vector<std::string> allowed_words(const KeyInfo& key);
 // A key's value in a scenario as the file writes it ("0.004", "two_touch", "true").
 std::string value_text(const Scenario& scenario, const KeyInfo& key);
+// Whether the scenario's acceleration model, filter, strategy and feature use
+// the key (the jerk only under the jerk-limited model, the backoff only with two
+// touches...): the window hides the editors of the others and the PDF report
+// leaves them out. Unknown keys and keys every scenario uses give true.
+bool key_applies(const Scenario& scenario, std::string_view dotted_key);
 
 // Read/write a numeric key by dotted name (the UI's editors and --set use these).
 std::optional<double> get_number(const Scenario& scenario, std::string_view dotted_key);

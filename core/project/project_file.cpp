@@ -87,10 +87,18 @@ const TextKey kTexts[] = {
     {"delay", "touches_csv", [](Project& p) -> std::string& { return p.delay.touches_csv; }},
     {"delay", "fitted_csv", [](Project& p) -> std::string& { return p.delay.fitted_csv; }},
     {"delay", "applied_group", [](Project& p) -> std::string& { return p.delay.applied_group; }},
+    {"report", "customer", [](Project& p) -> std::string& { return p.report.customer; }},
+    {"report", "machine", [](Project& p) -> std::string& { return p.report.machine; }},
+    {"report", "part", [](Project& p) -> std::string& { return p.report.part; }},
+    {"report", "author", [](Project& p) -> std::string& { return p.report.author; }},
+    {"report", "notes", [](Project& p) -> std::string& { return p.report.notes; }},
 };
 // clang-format on
 
+// The sections the tables above describe: the lab's, written before
+// "comparison", and the PDF report's title block, written after it.
 constexpr const char* kLabSections[] = {"ring", "length", "delay", "compensation"};
+constexpr const char* kReportSection = "report";
 constexpr const char* kTouchKey = "touch";  // in compensation: a word
 constexpr TouchMotion kTouchMotions[] = {TouchMotion::constant_speed, TouchMotion::braking};
 
@@ -125,6 +133,7 @@ Message unknown_key_in(const std::string& where, const std::vector<std::string>&
 std::vector<std::string> top_keys() {
     std::vector<std::string> keys = {"format", "version", "scenario", "baseline", "comparison"};
     keys.insert(keys.end(), std::begin(kLabSections), std::end(kLabSections));
+    keys.emplace_back(kReportSection);
     return keys;
 }
 
@@ -154,8 +163,8 @@ void check_csv(const std::string& text, const std::string& key, Parse parse,
     }
 }
 
-void read_lab_section(const std::string& section, const Json& body, Project& project,
-                      std::vector<FieldError>& errors) {
+void read_section(const std::string& section, const Json& body, Project& project,
+                  std::vector<FieldError>& errors) {
     if (!body.is_object()) {
         errors.push_back(
             {section, body.dump(),
@@ -231,7 +240,7 @@ std::string project_json(const Project& project) {
     root["scenario"] = Json::parse(scenario_to_json(project.scenario));
     root["baseline"] =
         project.baseline ? Json::parse(scenario_to_json(*project.baseline)) : Json(nullptr);
-    for (const char* section : kLabSections) {
+    const auto write_section = [&](const char* section) {
         Json& body = root[section] = Json::object();
         for (const TextKey& k : kTexts) {
             if (std::string_view(section) == k.section) body[k.name] = k.ref(p);
@@ -245,8 +254,10 @@ std::string project_json(const Project& project) {
         if (std::string_view(section) == "compensation") {
             body[kTouchKey] = to_string(project.compensation.touch);
         }
-    }
+    };
+    for (const char* section : kLabSections) write_section(section);
     root["comparison"] = comparison_settings_json(project.comparison);
+    write_section(kReportSection);
     return root.dump(2) + "\n";
 }
 
@@ -300,9 +311,10 @@ Project parse_project(std::string_view text) {
                      allowed_text("not_an_object",
                                   QT_TRANSLATE_NOOP("FieldError", "an object of keys"))});
             }
-        } else if (std::find(std::begin(kLabSections), std::end(kLabSections), key) !=
-                   std::end(kLabSections)) {
-            read_lab_section(key, value, project, errors);
+        } else if (key == kReportSection ||
+                   std::find(std::begin(kLabSections), std::end(kLabSections), key) !=
+                       std::end(kLabSections)) {
+            read_section(key, value, project, errors);
         } else {
             errors.push_back({key, "", unknown_key_in("the project", top_keys())});
         }

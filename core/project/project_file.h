@@ -9,7 +9,8 @@
 //    "baseline": {...} or null,
 //    "ring": {"points_csv": "...", "fitted_csv": "...", ...},
 //    "length": {...}, "delay": {...}, "compensation": {...},
-//    "comparison": {...the comparison project's keys...}}
+//    "comparison": {...the comparison project's keys...},
+//    "report": {"customer": "...", "machine": "...", ...}}
 // A fit is stored as the CSV text it was computed from (in the lab's CSV
 // formats), not as its result: opening fits it again and shows what was on
 // screen. The paste boxes are stored as typed, which may differ from what
@@ -71,6 +72,16 @@ struct CompensationSession {
     int compensated_lag_cycles{-1};
 };
 
+// The PDF report's title block: who it is for and who made it, as typed.
+struct ReportDetails {
+    std::string customer;
+    std::string machine;
+    std::string part;
+    std::string author;
+    std::string notes;  // may hold line breaks
+    bool operator==(const ReportDetails&) const = default;
+};
+
 struct Project {
     Scenario scenario;
     std::optional<Scenario> baseline;  // the pinned baseline's scenario
@@ -81,6 +92,7 @@ struct Project {
     // Paths as stored: relative to the project file's folder (the window
     // resolves them), empty when not given.
     ComparisonProject comparison;
+    ReportDetails report;
 };
 
 // The ranges the window's editors allow and a project file must keep to.

@@ -3539,10 +3539,6 @@
         <translation>Отчёт PDF записан в %1</translation>
     </message>
     <message>
-        <source>One-click fix: %1</source>
-        <translation>Исправление одним щелчком: %1</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <extracomment>%1 the severity (Error, Warning, Note), %2 the warning&apos;s title</extracomment>
         <translation>%1: %2</translation>
@@ -3632,6 +3628,22 @@
     <message>
         <source>There is no preset %1.</source>
         <translation>Предустановки %1 нет.</translation>
+    </message>
+    <message>
+        <source>Report De&amp;tails…</source>
+        <translation>&amp;Данные отчёта…</translation>
+    </message>
+    <message>
+        <source>Customer, machine, part, author and notes for the top of the PDF report</source>
+        <translation>Заказчик, станок, деталь, автор и примечания для заголовка отчёта PDF</translation>
+    </message>
+    <message>
+        <source>Charts</source>
+        <translation>Графики</translation>
+    </message>
+    <message>
+        <source>Suggested change: %1</source>
+        <translation>Рекомендуемое изменение: %1</translation>
     </message>
 </context>
 <context>
@@ -4101,6 +4113,37 @@
     <message>
         <source>%1 % of programmed</source>
         <translation>%1 % от заданной</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::ReportDetailsDialog</name>
+    <message>
+        <source>Customer</source>
+        <translation>Заказчик</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Деталь</translation>
+    </message>
+    <message>
+        <source>Author</source>
+        <translation>Автор</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Примечания</translation>
+    </message>
+    <message>
+        <source>Report Details</source>
+        <translation>Данные отчёта</translation>
+    </message>
+    <message>
+        <source>Shown at the top of the PDF report&apos;s first page, with the date and the program&apos;s version. Saved in the project file.</source>
+        <translation>Выводятся в начале первой страницы отчёта PDF вместе с датой и версией программы. Сохраняются в файле проекта.</translation>
     </message>
 </context>
 <context>

@@ -3539,10 +3539,6 @@
         <translation>PDF 报告已写入 %1</translation>
     </message>
     <message>
-        <source>One-click fix: %1</source>
-        <translation>一键修正：%1</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <extracomment>%1 the severity (Error, Warning, Note), %2 the warning&apos;s title</extracomment>
         <translation>%1：%2</translation>
@@ -3632,6 +3628,22 @@
     <message>
         <source>There is no preset %1.</source>
         <translation>没有预设 %1。</translation>
+    </message>
+    <message>
+        <source>Report De&amp;tails…</source>
+        <translation>报告信息(&amp;T)…</translation>
+    </message>
+    <message>
+        <source>Customer, machine, part, author and notes for the top of the PDF report</source>
+        <translation>PDF 报告开头的客户、机床、零件、作者和备注</translation>
+    </message>
+    <message>
+        <source>Charts</source>
+        <translation>图表</translation>
+    </message>
+    <message>
+        <source>Suggested change: %1</source>
+        <translation>建议的更改：%1</translation>
     </message>
 </context>
 <context>
@@ -4101,6 +4113,37 @@
     <message>
         <source>%1 % of programmed</source>
         <translation>编程值的 %1 %</translation>
+    </message>
+</context>
+<context>
+    <name>probecycle::ui::ReportDetailsDialog</name>
+    <message>
+        <source>Customer</source>
+        <translation>客户</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>机床</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>零件</translation>
+    </message>
+    <message>
+        <source>Author</source>
+        <translation>作者</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>Report Details</source>
+        <translation>报告信息</translation>
+    </message>
+    <message>
+        <source>Shown at the top of the PDF report&apos;s first page, with the date and the program&apos;s version. Saved in the project file.</source>
+        <translation>显示在 PDF 报告第一页的开头，并附日期和程序版本。保存在项目文件中。</translation>
     </message>
 </context>
 <context>

@@ -20,14 +20,20 @@ class PdfReport {
     explicit PdfReport(QString title);
 
     void add_heading(const QString& text);
+    // A smaller heading within a section (the scenario's machine, probe, cycle).
+    void add_subheading(const QString& text);
     // Plain text (escaped); line breaks kept.
     void add_paragraph(const QString& text);
     // A bold first line and plain text under it (a warning and its fix): a
     // paragraph, which the layout never splits across pages mid-line as it
     // can a table's cell.
     void add_item(const QString& title, const QString& text);
-    // The first row is the header; cells are plain text. For rows of one line.
+    // The first row is the header, again at the top of each page the table
+    // goes on to; cells are plain text. For rows of one line.
     void add_table(const QList<QStringList>& rows);
+    // Label and value pairs without rules (the title block): bold labels
+    // left, values beside them; line breaks kept.
+    void add_fields(const QList<QStringList>& pairs);
     // A picture the page's width (at most its own size's aspect).
     void add_image(const QImage& image);
     // The next block starts a new page.
@@ -35,11 +41,14 @@ class PdfReport {
     // The footer's text on every page, beside "page n of m".
     void set_footer(const QString& text) { footer_ = text; }
 
-    // The PDF, A4 portrait, 15 mm margins.
+    // The PDF, A4 portrait, 15 mm margins. Where the text would split badly
+    // it goes on on the next page: a heading is never left at a page's foot
+    // without the start of what it heads, a short table is never split, and
+    // a long one splits after a few rows at least.
     QByteArray render() const;
 
   private:
-    enum class Kind { heading, paragraph, item, table, image, page_break };
+    enum class Kind { heading, subheading, paragraph, item, table, fields, image, page_break };
     struct Block {
         Kind kind{Kind::paragraph};
         QString text;

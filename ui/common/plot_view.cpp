@@ -201,11 +201,13 @@ class Legend : public QWidget {
         return out;
     }
 
-  protected:
-    void paintEvent(QPaintEvent* /*event*/) override {
-        QPainter painter(this);
+    bool beside() const { return beside_; }
+
+    // The entries laid out at `width`, from the painter's origin.
+    void paint(QPainter& painter, int width) const {
         painter.setRenderHint(QPainter::Antialiasing, true);
-        const std::vector<QRect> at = place(width());
+        painter.setFont(font());
+        const std::vector<QRect> at = place(width);
         for (std::size_t i = 0; i < entries_.size(); ++i) {
             const Entry& e = entries_[i];
             const QRect r = at[i];
@@ -235,6 +237,12 @@ class Legend : public QWidget {
             painter.drawText(r.adjusted(kSwatch + kSwatchGap, 0, 0, 0),
                              Qt::AlignLeft | Qt::AlignVCenter, e.name);
         }
+    }
+
+  protected:
+    void paintEvent(QPaintEvent* /*event*/) override {
+        QPainter painter(this);
+        paint(painter, width());
     }
 
   private:
@@ -689,6 +697,47 @@ PlotView::PlotView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<Im
         impl_->fit_titles();
         impl_->fit_equal_scales();
     });
+}
+
+QImage PlotView::picture(QSize size, double scale) {
+    QImage image(size * scale, QImage::Format_RGB32);
+    image.setDevicePixelRatio(scale);
+    image.fill(Qt::white);
+    // Below the chart, as tall as its rows at this width; or beside it, as wide
+    // as its widest entry.
+    const Legend& legend = *impl_->legend;
+    QRect legend_rect;
+    if (!legend.isHidden() && legend.beside()) {
+        const int width = legend.sizeHint().width();
+        legend_rect = QRect(size.width() - width, 0, width, size.height());
+    } else if (!legend.isHidden()) {
+        const int height = legend.heightForWidth(size.width());
+        legend_rect = QRect(0, size.height() - height, size.width(), height);
+    }
+    const QSizeF chart_size(legend.beside() ? size.width() - legend_rect.width() : size.width(),
+                            legend.beside() ? size.height() : size.height() - legend_rect.height());
+
+    // The chart laid out at the picture's size now (its layout otherwise waits
+    // for the event loop), drawn, then given its own size back.
+    QChart& chart = *impl_->chart;
+    const QSizeF own = chart.size();
+    const auto lay_out = [&chart](const QSizeF& at) {
+        chart.resize(at);
+        chart.layout()->invalidate();
+        chart.layout()->activate();
+    };
+    lay_out(chart_size);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    chart.scene()->render(&painter, QRectF(QPointF(0.0, 0.0), chart_size),
+                          QRectF(chart.pos(), chart_size));
+    if (!legend_rect.isEmpty()) {
+        painter.translate(legend_rect.topLeft());
+        legend.paint(painter, legend_rect.width());
+    }
+    painter.end();
+    lay_out(own);
+    return image;
 }
 
 void PlotView::changeEvent(QEvent* event) {

@@ -6,9 +6,11 @@
 // plot_view.cpp only. No Qt Charts header is included here on purpose.
 
 #include <QColor>
+#include <QImage>
 #include <QList>
 #include <QPointF>
 #include <QRectF>
+#include <QSize>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
@@ -123,6 +125,11 @@ class PlotView : public QWidget {
     // Every text the plot has to show: its title, the axis titles, the legend
     // entries and the category labels (for checks of the language in use).
     QStringList texts() const;
+
+    // The chart and its legend drawn at `size` logical pixels, `scale` device
+    // pixels each, on white: laid out for the picture whatever the widget's
+    // size and whether it is shown (the PDF report draws charts for its page).
+    QImage picture(QSize size, double scale);
 
   protected:
     // Axis labels follow the interface language's number format.

@@ -48,6 +48,8 @@ class CycleCharts : public QWidget {
     bool series_visible(const QString& id) const;
     // An area's fill, a line's colour (grey where a cycle is invalid).
     QColor series_color(const QString& id) const;
+    // The four charts in reading order (across, then down), for the PDF report.
+    QList<PlotView*> plots() const { return {cycle_time_, overtravel_, phases_, motion_}; }
 
   protected:
     void changeEvent(QEvent* event) override;

@@ -59,6 +59,8 @@ class OptimisePanel : public QWidget {
     // Pareto chart: its x in µm, none before a result.
     QList<QPointF> bound_points() const;
     QPair<double, double> pareto_x_range() const;
+    // The Pareto chart, for the PDF report.
+    PlotView* pareto() const { return pareto_; }
 
   signals:
     // A requirement that is a scenario key was edited (internal units).

@@ -275,41 +275,14 @@ void ParameterPanel::set_scenario(const Scenario& scenario) {
     update_enabled();
 }
 
-QuantityEdit* ParameterPanel::edit_for(const char* key) const {
-    for (QuantityEdit* edit : edits_) {
-        if (edit->key() == QLatin1String(key)) return edit;
-    }
-    return nullptr;
-}
-
 void ParameterPanel::update_enabled() {
     // Keys the current model, strategy or feature does not use are hidden, so the
     // panel fits a 1280x800 screen; they come back with the model that uses them.
-    const AccelModel model = scenario_.machine.accel_model;
-    const bool two_touch = scenario_.cycle.strategy == Strategy::two_touch;
-    const bool several_touches = touch_count(scenario_.cycle.feature) > 1;
-    const auto enable = [this](const char* key, bool on) {
-        if (QuantityEdit* edit = edit_for(key)) edit->setVisible(on);
-    };
-    enable("machine.time_constant_s", model == AccelModel::time_constant);
-    enable("machine.max_accel_mm_s2",
-           model == AccelModel::constant_accel || model == AccelModel::jerk_limited);
-    enable("machine.max_jerk_mm_s3", model == AccelModel::jerk_limited);
-    const FilterKind filter = scenario_.machine.filter;
-    enable("machine.filter_time_s", filter != FilterKind::none);
-    enable("machine.filter2_time_s", filter == FilterKind::bell);
-    enable("machine.in_position_mm", scenario_.axis_dynamics().active());
-    const bool lifts =
-        scenario_.cycle.feature == Feature::boss || scenario_.cycle.feature == Feature::web;
-    enable("machine.rapid_feed_mm_min", lifts);
-    enable("cycle.position_feed_mm_min", several_touches);
-    enable("cycle.clearance_mm", lifts);
-    enable("cycle.feature_size_mm", several_touches);
-    enable("cycle.size_tolerance_mm", several_touches);
-    tolerance_action_row_->setVisible(several_touches && scenario_.cycle.size_tolerance_mm > 0.0);
-    enable("cycle.measure_feed_mm_min", two_touch);
-    enable("cycle.backoff_mm", two_touch);
-    backoff_from_row_->setVisible(two_touch);
+    for (QuantityEdit* edit : edits_) {
+        edit->setVisible(key_applies(scenario_, edit->key().toStdString()));
+    }
+    tolerance_action_row_->setVisible(key_applies(scenario_, "cycle.tolerance_action"));
+    backoff_from_row_->setVisible(key_applies(scenario_, "cycle.backoff_from"));
 }
 
 void ParameterPanel::emit_edit(const QString& key) {

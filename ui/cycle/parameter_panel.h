@@ -38,7 +38,6 @@ class ParameterPanel : public QWidget {
     void retranslate();
     void update_enabled();
     void emit_edit(const QString& key);
-    QuantityEdit* edit_for(const char* key) const;
 
     Scenario scenario_;
     QLabel* note_{nullptr};

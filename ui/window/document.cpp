@@ -74,10 +74,16 @@ void Document::set_baseline(const std::optional<Scenario>& baseline) {
     session_check_.start();
 }
 
+void Document::set_report_details(const ReportDetails& details) {
+    report_details_ = details;
+    if (has_unsaved_changes() != last_modified_) emit modified_changed();
+}
+
 Project Document::project(const QString& base_folder) const {
     Project project;
     project.scenario = scenario_;
     project.baseline = baseline_;
+    project.report = report_details_;
     for (const Page* page : pages_) page->save_session(project, base_folder);
     return project;
 }
@@ -86,6 +92,7 @@ void Document::restore_pages(const Project& project, const QString& base_folder)
     // A part that no longer loads (the program's checks changed) shows its
     // message in its tab; every other part is taken as stored.
     for (Page* page : pages_) page->restore_session(project, base_folder);
+    set_report_details(project.report);
 }
 
 std::string Document::session_snapshot() const {

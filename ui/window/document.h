@@ -2,11 +2,10 @@
 
 // What the window has open: the scenario with its undo history, the file it
 // came from (a scenario file or a project file), the pinned baseline's
-// scenario, and the pages that keep data of their own (the lab's and the
-// comparison's, ui/common/page.h). It tells unsaved work: edits of the
-// scenario since the file was saved, and for a project the pages' and the
-// baseline's too, compared with what the file holds when a page says it
-// changed.
+// scenario, the pages that keep data of their own (the lab's and the
+// comparison's, ui/common/page.h) and the PDF report's title block. It tells unsaved work: edits of
+// the scenario since the file was saved, and for a project the pages' and the baseline's too,
+// compared with what the file holds when a page says it changed.
 //
 // It knows nothing of widgets beyond the pages' interface: the window shows
 // the scenario when scenario_changed() says so, and its title when
@@ -66,10 +65,17 @@ class Document : public QObject {
     const QList<Page*>& pages() const { return pages_; }
     const std::optional<Scenario>& baseline() const { return baseline_; }
     void set_baseline(const std::optional<Scenario>& baseline);
-    // Everything a project file holds: the scenario, the baseline and each
-    // page's part, with paths relative to `base_folder` (absolute when empty).
+    // The PDF report's title block: session data, as the pages' (a project
+    // keeps it; outside one it outlives New and a scenario's Open).
+    const ReportDetails& report_details() const { return report_details_; }
+    // Changed details are unsaved work of a project (the title's "*").
+    void set_report_details(const ReportDetails& details);
+    // Everything a project file holds: the scenario, the baseline, each
+    // page's part, with paths relative to `base_folder` (absolute when
+    // empty), and the report's details.
     Project project(const QString& base_folder) const;
-    // Each page takes its part of `project` (not the scenario or baseline).
+    // Each page takes its part of `project`, and the document the report's
+    // details (not the scenario or baseline).
     void restore_pages(const Project& project, const QString& base_folder);
 
     // --- Unsaved work ---
@@ -99,6 +105,7 @@ class Document : public QObject {
     bool is_project_{false};
     QList<Page*> pages_;
     std::optional<Scenario> baseline_;
+    ReportDetails report_details_;
     std::string saved_session_;
     std::string empty_session_;
     // A page's changed() is looked at once per pass of the event loop.

@@ -54,6 +54,7 @@
 #include "ui/window/document.h"
 #include "ui/window/help_guide.h"
 #include "ui/window/preset_list.h"
+#include "ui/window/report_details_dialog.h"
 #include "ui/window/scenario_command.h"
 
 namespace probecycle::ui {
@@ -301,6 +302,8 @@ void MainWindow::build_actions() {
     export_pdf_ = new QAction(icon(QStyle::SP_FileIcon), {}, this);
     export_pdf_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
     connect(export_pdf_, &QAction::triggered, this, &MainWindow::export_pdf_dialog);
+    report_details_ = new QAction(this);
+    connect(report_details_, &QAction::triggered, this, [this] { open_report_details_dialog(); });
     export_program_ = new QAction(this);
     connect(export_program_, &QAction::triggered, this, [this] { open_cycle_program_dialog(); });
     import_linuxcnc_ = new QAction(this);
@@ -372,6 +375,15 @@ void MainWindow::build_actions() {
     }
 }
 
+ReportDetailsDialog* MainWindow::open_report_details_dialog() {
+    auto* dialog = new ReportDetailsDialog(document_->report_details(), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this,
+            [this, dialog] { document_->set_report_details(dialog->details()); });
+    dialog->open();
+    return dialog;
+}
+
 ProgramDialog* MainWindow::open_cycle_program_dialog() {
     auto* dialog = new ProgramDialog(ProgramKind::cycle, scenario(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
@@ -395,6 +407,7 @@ void MainWindow::build_menus() {
     file_menu_->addAction(export_csv_);
     file_menu_->addAction(export_png_);
     file_menu_->addAction(export_pdf_);
+    file_menu_->addAction(report_details_);
     file_menu_->addAction(export_program_);
     file_menu_->addSeparator();
     file_menu_->addAction(quit_);
@@ -471,6 +484,9 @@ void MainWindow::retranslate() {
     export_pdf_->setToolTip(
         tr("A4 pages to hand over: the current tab's results, charts, warnings with their fixes "
            "and the inputs, in the interface's language"));
+    report_details_->setText(tr("Report De&tails…"));
+    report_details_->setToolTip(
+        tr("Customer, machine, part, author and notes for the top of the PDF report"));
     export_program_->setText(tr("Program for the &Control…"));
     export_program_->setToolTip(
         tr("The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), "

@@ -51,6 +51,7 @@ class LatencyTab;
 class ComparisonTab;
 class ParameterPanel;
 class ProgramDialog;
+class ReportDetailsDialog;
 
 // What to do with unsaved edits before they would be lost.
 enum class UnsavedAnswer { save, discard, cancel };
@@ -122,6 +123,9 @@ class MainWindow : public QMainWindow {
     // File > "Program for the Control…" (docs/programs.md): the tuned cycle, the
     // scenario's cycle as plain probing moves, in the control's dialect.
     ProgramDialog* open_cycle_program_dialog();
+    // File > "Report Details…": the PDF report's title block; OK stores it
+    // in the document.
+    ReportDetailsDialog* open_report_details_dialog();
     // The Cycle tab's four charts at `width` pixels, whichever tab is shown.
     QImage charts_image(int width);
     // A preset from resources/ (":/presets/..."): its machine or probe section
@@ -290,6 +294,7 @@ class MainWindow : public QMainWindow {
     QAction* export_csv_{nullptr};
     QAction* export_png_{nullptr};
     QAction* export_pdf_{nullptr};
+    QAction* report_details_{nullptr};
     QAction* export_program_{nullptr};
     QAction* import_linuxcnc_{nullptr};
     QAction* quit_{nullptr};

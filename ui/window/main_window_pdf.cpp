@@ -14,18 +14,21 @@
 #include "ui/common/page.h"
 #include "ui/common/parameter_info.h"
 #include "ui/common/pdf_report.h"
+#include "ui/common/plot_view.h"
 #include "ui/common/text_format.h"
+#include "ui/comparison/comparison_tab.h"
+#include "ui/cycle/cycle_charts.h"
 #include "ui/cycle/optimise_panel.h"
 #include "ui/cycle/uncertainty_table.h"
+#include "ui/lab/calibration_tab.h"
+#include "ui/lab/latency_tab.h"
 #include "ui/window/document.h"
 #include "ui/window/main_window.h"
+#include "ui/window/report_details_dialog.h"
 
 namespace probecycle::ui {
 
 namespace {
-
-// Width of the charts' picture in the PDF, in pixels.
-constexpr int kChartsWidth = 1600;
 
 // One CSV line's fields (RFC 4180 quoting, as the reports write them).
 QStringList csv_fields(const QString& line) {
@@ -107,6 +110,21 @@ QString shown_value(const Scenario& scenario, const KeyInfo& key) {
     return QString::fromStdString(word);
 }
 
+// The size a chart is drawn at for the page, in logical pixels, whatever the
+// window's size: at the page's text width (180 mm) its 12-pixel texts print
+// at about 8 points, and two charts fit on a page with a heading.
+constexpr QSize kChartSize{760, 380};
+// Device pixels per logical pixel: about 210 dpi on paper.
+constexpr double kChartScale = 2.0;
+
+// Each chart alone, drawn for the page: not the tab with its inputs and
+// buttons, nor the chart at the window's size.
+void add_charts(PdfReport& report, const QList<PlotView*>& plots) {
+    for (PlotView* plot : plots) {
+        if (plot != nullptr) report.add_image(plot->picture(kChartSize, kChartScale));
+    }
+}
+
 }  // namespace
 
 QByteArray MainWindow::pdf_report_bytes() {
@@ -123,21 +141,29 @@ QByteArray MainWindow::pdf_report_bytes() {
            "the inputs listed in this report. They are estimates for setting up the cycle, not "
            "a calibration certificate.")
             .arg(QCoreApplication::applicationVersion()));
+    // The title block: whom the report is for and who made it, then what it
+    // shows, when and by which version.
+    report.add_fields(report_detail_rows(document_->report_details()));
     report.add_paragraph(tr("%1 · %2 · ProbeCycle %3")
                              .arg(tab_name, QString::fromStdString(report_date()),
                                   QCoreApplication::applicationVersion()));
 
     if (auto* page = qobject_cast<Page*>(tab)) {
-        // The tab as the user sees it, then its report's figures: large data
-        // summarised (report_summary.h), the whole is in the CSV export.
-        report.add_image(export_image(kChartsWidth, false));
+        // The tab's charts, then its report's figures: large data summarised
+        // (report_summary.h), the whole is in the CSV export.
         const ReportRows rows = ReportRows::summary;
         const std::optional<std::string> csv = page->report_csv(rows);
         if (!csv) {
             report.add_paragraph(tr("No results yet: %1").arg(page->last_error()));
             return report.render();
         }
-        report.add_page_break();
+        if (tab == calibration_tab_) {
+            add_charts(report, {calibration_tab_->plot()});
+        } else if (tab == latency_tab_) {
+            add_charts(report, {latency_tab_->delay_plot(), latency_tab_->comparison_plot()});
+        } else if (tab == comparison_tab_) {
+            add_charts(report, {comparison_tab_->map(), comparison_tab_->histogram()});
+        }
         const std::size_t points = page->report_points();
         if (summarised(rows, points)) {
             report.add_paragraph(
@@ -162,7 +188,8 @@ QByteArray MainWindow::pdf_report_bytes() {
     // What the uncertainty holds, term by term.
     report.add_heading(tr("Uncertainty budget"));
     report.add_table(uncertainty_budget_rows(scenario(), computed().cycle()));
-    report.add_image(charts_image(kChartsWidth));
+    report.add_heading(tr("Charts"));
+    add_charts(report, charts_->plots());
 
     report.add_heading(tr("Warnings and what to change"));
     const QList<QStringList> warnings = warnings_->rows_text();
@@ -170,7 +197,7 @@ QByteArray MainWindow::pdf_report_bytes() {
     for (const QStringList& row : warnings) {
         // "Error: Backoff too small", the message, and the window's fix.
         QString text = row[2];
-        if (!row[3].isEmpty()) text += QLatin1Char('\n') + tr("One-click fix: %1").arg(row[3]);
+        if (!row[3].isEmpty()) text += QLatin1Char('\n') + tr("Suggested change: %1").arg(row[3]);
         //: %1 the severity (Error, Warning, Note), %2 the warning's title
         report.add_item(tr("%1: %2").arg(row[0], row[1]), text);
     }
@@ -189,22 +216,23 @@ QByteArray MainWindow::pdf_report_bytes() {
             report.add_paragraph(OptimisePanel::tr("What else would save time:") +
                                  QStringLiteral("\n• ") + advice.join(QStringLiteral("\n• ")));
         }
-        // From the Optimise tab: the tab as shown, with its Pareto front.
-        if (tab == optimise_) report.add_image(export_image(kChartsWidth, false));
+        // From the Optimise tab: its Pareto front.
+        if (tab == optimise_) add_charts(report, {optimiser->pareto()});
     } else {
         report.add_paragraph(optimiser->problem().isEmpty()
                                  ? tr("The scenario is not valid; see the warnings.")
                                  : optimiser->problem());
     }
 
-    report.add_page_break();
+    // The inputs the model uses: a key the scenario's model, filter,
+    // strategy or feature leaves unused is hidden in the window and left out.
     report.add_heading(tr("The scenario"));
     for (const std::string& section : scenario_sections()) {
         const QString section_name = QString::fromStdString(section);
-        report.add_paragraph(section_label(section_name));
+        report.add_subheading(section_label(section_name));
         QList<QStringList> rows = {{tr("Parameter"), tr("Value"), tr("Key")}};
         for (const KeyInfo& key : scenario_keys()) {
-            if (section_of(key.key) != section_name) continue;
+            if (section_of(key.key) != section_name || !key_applies(scenario(), key.key)) continue;
             rows.append({QCoreApplication::translate("Parameter", key.label),
                          shown_value(scenario(), key), QString::fromUtf8(key.key)});
         }

@@ -869,5 +869,40 @@ TEST(KeyTable, TheDocsListEveryKeyWithItsDefault) {
     }
 }
 
+// The keys a scenario's model, filter, strategy and feature leave unused: the
+// window hides their editors and the PDF report leaves them out.
+TEST(KeyTable, AKeyAppliesOnlyWhereTheScenarioUsesIt) {
+    Scenario s;
+    s.machine.accel_model = AccelModel::time_constant;
+    s.machine.filter = FilterKind::none;
+    s.cycle.strategy = Strategy::single_touch;
+    s.cycle.feature = Feature::surface;
+    EXPECT_TRUE(key_applies(s, "machine.time_constant_s"));
+    for (const char* key :
+         {"machine.max_accel_mm_s2", "machine.max_jerk_mm_s3", "machine.filter_time_s",
+          "machine.filter2_time_s", "cycle.backoff_mm", "cycle.backoff_from",
+          "cycle.feature_size_mm", "cycle.tolerance_action", "cycle.clearance_mm"}) {
+        EXPECT_FALSE(key_applies(s, key)) << key;
+    }
+    EXPECT_TRUE(key_applies(s, "probe.max_feed_mm_min"));
+    EXPECT_TRUE(key_applies(s, "no.such_key"));
+
+    s.machine.accel_model = AccelModel::jerk_limited;
+    s.machine.filter = FilterKind::linear;
+    s.cycle.strategy = Strategy::two_touch;
+    s.cycle.feature = Feature::boss;
+    s.cycle.size_tolerance_mm = 0.05;
+    EXPECT_FALSE(key_applies(s, "machine.time_constant_s"));
+    for (const char* key :
+         {"machine.max_accel_mm_s2", "machine.max_jerk_mm_s3", "machine.filter_time_s",
+          "cycle.backoff_mm", "cycle.backoff_from", "cycle.feature_size_mm",
+          "cycle.tolerance_action", "cycle.clearance_mm", "machine.rapid_feed_mm_min"}) {
+        EXPECT_TRUE(key_applies(s, key)) << key;
+    }
+    EXPECT_FALSE(key_applies(s, "machine.filter2_time_s"));  // a bell filter's second stage
+    s.machine.filter = FilterKind::bell;
+    EXPECT_TRUE(key_applies(s, "machine.filter2_time_s"));
+}
+
 }  // namespace
 }  // namespace probecycle

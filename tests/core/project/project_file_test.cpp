@@ -56,6 +56,7 @@ Project sample_project() {
     p.comparison.reference_cmm = "data/cmm.csv";
     p.comparison.c_axis_x_mm = 200.0;
     p.comparison.tolerance_mm = 0.02;
+    p.report = {"Acme", "VMC 2", "Housing 4711", "J. Engineer", "Probe OMP40.\nAt 21 °C."};
     return p;
 }
 
@@ -111,6 +112,24 @@ TEST(ProjectFile, RoundTripKeepsEveryValue) {
     EXPECT_EQ(back.compensation.compensated_lag_cycles, 9);
     EXPECT_EQ(back.comparison.reference_cmm, "data/cmm.csv");
     EXPECT_EQ(back.comparison.tolerance_mm, 0.02);
+    EXPECT_EQ(back.report, p.report);
+}
+
+// The report's title block is optional: files from before it open with
+// every field empty; a field that is not text is refused by its key.
+TEST(ProjectFile, TheReportDetailsAreOptionalTextKeyedUnderReport) {
+    EXPECT_EQ(parse_project(with("")).report, ReportDetails{});
+    EXPECT_EQ(parse_project(with(R"("report": {"customer": "Acme"})")).report.customer, "Acme");
+    const std::string got =
+        problems(with(R"("report": {"customer": 3, "notes": ["a"], "colour": "red"})"));
+    EXPECT_NE(got.find("report.customer: got 3; allowed: text"), std::string::npos) << got;
+    EXPECT_NE(got.find("report.notes: got [\"a\"]; allowed: text"), std::string::npos) << got;
+    EXPECT_NE(got.find("report.colour: unknown key; allowed in report: customer, machine, part, "
+                       "author, notes"),
+              std::string::npos)
+        << got;
+    EXPECT_EQ(problems(with(R"("report": "Acme")")),
+              "report: got \"Acme\"; allowed: an object of keys\n");
 }
 
 TEST(ProjectFile, DefaultsRoundTripAndOnlyTheScenarioIsRequired) {

@@ -153,5 +153,28 @@ TEST(Document, ABaselinePinnedInAProjectIsUnsaved) {
     EXPECT_FALSE(document.has_unsaved_changes());
 }
 
+// The report's title block is the session's, as the pages' data: in the
+// project, restored from it, and unsaved work of a project when changed.
+TEST(Document, ReportDetailsAreProjectDataAndMarkAProjectModified) {
+    Document document;
+    document.reset(Scenario{}, QStringLiteral("/tmp/a.probecycle"), true);
+    document.mark_session_saved();
+    ASSERT_FALSE(document.has_unsaved_changes());
+    QSignalSpy modified(&document, &Document::modified_changed);
+    ReportDetails details;
+    details.customer = "Acme";
+    document.set_report_details(details);
+    EXPECT_TRUE(document.has_unsaved_changes());
+    EXPECT_GE(modified.count(), 1);
+    EXPECT_EQ(document.project(QString()).report.customer, "Acme");
+    document.mark_session_saved();
+    EXPECT_FALSE(document.has_unsaved_changes());
+
+    Project other;
+    other.report.author = "J. Engineer";
+    document.restore_pages(other, QString());
+    EXPECT_EQ(document.report_details(), other.report);
+}
+
 }  // namespace
 }  // namespace probecycle::ui

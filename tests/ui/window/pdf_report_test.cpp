@@ -25,7 +25,9 @@
 #include "ui/cycle/uncertainty_table.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
+#include "ui/window/document.h"
 #include "ui/window/main_window.h"
+#include "ui/window/report_details_dialog.h"
 
 namespace probecycle::ui {
 namespace {
@@ -59,6 +61,31 @@ QString run(const QString& program, const QStringList& arguments) {
 QString pdf_text(const QString& path) {
     // -raw: the text in the order it was drawn, so a table's cells stay whole.
     return run(QStringLiteral("pdftotext"), {QStringLiteral("-raw"), path, QStringLiteral("-")});
+}
+
+QString first_page_text(const QString& path) {
+    return run(QStringLiteral("pdftotext"),
+               {QStringLiteral("-raw"), QStringLiteral("-f"), QStringLiteral("1"),
+                QStringLiteral("-l"), QStringLiteral("1"), path, QStringLiteral("-")});
+}
+
+// The pictures in the PDF, "width x height" in pixels each (pdfimages
+// -list). A picture is listed once per page that draws any of it (a page
+// clips the one before its top): each is counted once, by its object.
+QStringList pdf_image_sizes(const QString& path) {
+    QStringList sizes;
+    QStringList objects;
+    const QStringList lines =
+        run(QStringLiteral("pdfimages"), {QStringLiteral("-list"), path}).split(QLatin1Char('\n'));
+    for (const QString& line : lines.mid(2)) {
+        const QStringList fields = line.simplified().split(QLatin1Char(' '));
+        if (fields.size() > 10 && fields[2] == QLatin1String("image") &&
+            !objects.contains(fields[10])) {
+            objects << fields[10];
+            sizes << fields[3] + QLatin1Char('x') + fields[4];
+        }
+    }
+    return sizes;
 }
 
 int pdf_pages(const QString& path) {
@@ -123,14 +150,22 @@ TEST(PdfReport, TheCycleReportHasTheResultsTheWarningsTheirFixesAndEveryInput) {
     EXPECT_LT(
         text.indexOf(squeezed(QStringLiteral("Feed over the probe's rating"))),
         text.indexOf(squeezed(QStringLiteral("Start within the part's position uncertainty"))));
-    has(QStringLiteral("One-click fix: Set backoff to"));
+    // What a customer reads: a suggested change, not the window's button.
+    has(QStringLiteral("Suggested change: Set backoff to"));
+    EXPECT_FALSE(with_footers.contains(squeezed(QStringLiteral("One-click fix"))));
     has(QStringLiteral("Error: Backoff too small"));
     has(QStringLiteral("Start 6.250 mm out"));
     // The optimiser's recommendation, as its tab says it.
     has(QStringLiteral("The optimiser's recommendation"));
     has(window->optimise_panel()->saved_text());
-    // Every input, by its key.
-    for (const KeyInfo& key : scenario_keys()) has(QString::fromUtf8(key.key));
+    // Every input the model uses, by its key; the others are left out.
+    for (const KeyInfo& key : scenario_keys()) {
+        if (key_applies(s, key.key)) {
+            has(QString::fromUtf8(key.key));
+        } else {
+            EXPECT_FALSE(text.contains(QString::fromUtf8(key.key))) << key.key;
+        }
+    }
     has(QStringLiteral("3000 mm/min"));  // the probe's rating, as the editor shows it
     // What the figures are, on every page.
     EXPECT_EQ(with_footers.count(squeezed(QStringLiteral("not a calibration certificate"))), pages);
@@ -260,6 +295,145 @@ TEST(PdfReport, UnderSourceDateEpochTheSameReportIsTheSameBytes) {
     const QByteArray bytes = a.readAll();
     EXPECT_EQ(bytes, b.readAll());
     EXPECT_TRUE(bytes.contains("/CreationDate (D:20231114221320Z)"));
+}
+
+// The scenario table lists what the model uses: the jerk only under the
+// jerk-limited model, the filter times only with a filter.
+TEST(PdfReport, TheScenarioTableLeavesOutInputsThatDoNotApply) {
+    QTemporaryDir dir;
+    auto window = make_window();
+    Scenario s;
+    s.machine.accel_model = AccelModel::time_constant;
+    s.machine.filter = FilterKind::none;
+    window->edit_scenario(s, QStringLiteral("edit"));
+    const QString plain = dir.filePath(QStringLiteral("plain.pdf"));
+    ASSERT_TRUE(window->export_pdf_report(plain)) << window->last_error().toStdString();
+    const QString text = squeezed(pdf_text(plain));
+    EXPECT_TRUE(text.contains(QStringLiteral("machine.time_constant_s")));
+    for (const char* key : {"machine.max_jerk_mm_s3", "machine.max_accel_mm_s2",
+                            "machine.filter_time_s", "machine.filter2_time_s"}) {
+        EXPECT_FALSE(text.contains(QLatin1String(key))) << key;
+    }
+
+    s.machine.accel_model = AccelModel::jerk_limited;
+    s.machine.filter = FilterKind::bell;
+    window->edit_scenario(s, QStringLiteral("edit"));
+    const QString jerk = dir.filePath(QStringLiteral("jerk.pdf"));
+    ASSERT_TRUE(window->export_pdf_report(jerk)) << window->last_error().toStdString();
+    const QString jerk_text = squeezed(pdf_text(jerk));
+    EXPECT_FALSE(jerk_text.contains(QStringLiteral("machine.time_constant_s")));
+    for (const char* key : {"machine.max_jerk_mm_s3", "machine.max_accel_mm_s2",
+                            "machine.filter_time_s", "machine.filter2_time_s"}) {
+        EXPECT_TRUE(jerk_text.contains(QLatin1String(key))) << key;
+    }
+}
+
+// The title block: the report's details as the project keeps them, with the
+// date and the program's version, at the top of the first page.
+TEST(PdfReport, TheFirstPageStartsWithTheTitleBlock) {
+    QTemporaryDir dir;
+    auto window = make_window();
+    // File > Report Details…, filled in and accepted.
+    ReportDetailsDialog* dialog = window->open_report_details_dialog();
+    dialog->set_details(
+        {"Acme Präzision GmbH", "DMU 50", "Housing 4711-B", "J. Engineer", "Probe OMP40-2."});
+    dialog->accept();
+    EXPECT_EQ(window->document()->report_details().part, "Housing 4711-B");
+    qputenv("SOURCE_DATE_EPOCH", "1700000000");
+    const QString path = dir.filePath(QStringLiteral("titled.pdf"));
+    const bool written = window->export_pdf_report(path);
+    qunsetenv("SOURCE_DATE_EPOCH");
+    ASSERT_TRUE(written) << window->last_error().toStdString();
+    const QString first = squeezed(first_page_text(path));
+    for (const char* wanted : {"CustomerAcme Präzision GmbH", "MachineDMU 50", "PartHousing 4711-B",
+                               "AuthorJ. Engineer", "NotesProbe OMP40-2.", "2023-11-14"}) {
+        EXPECT_TRUE(first.contains(squeezed(QString::fromUtf8(wanted))))
+            << wanted << "\n"
+            << first.left(600).toStdString();
+    }
+    EXPECT_TRUE(first.contains(
+        squeezed(QStringLiteral("ProbeCycle ") + QCoreApplication::applicationVersion())));
+    // Before the results.
+    EXPECT_LT(first.indexOf(QStringLiteral("Customer")), first.indexOf(QStringLiteral("Results")));
+
+    // Fields left empty are left out.
+    window->document()->set_report_details({"Acme", "", "", "", ""});
+    ASSERT_TRUE(window->export_pdf_report(path));
+    const QString only = squeezed(first_page_text(path));
+    EXPECT_TRUE(only.contains(QStringLiteral("CustomerAcme")));
+    EXPECT_FALSE(only.contains(QStringLiteral("Author")));
+}
+
+// The charts are drawn for the page, each alone at one size whatever the
+// window's (no picture of the tab with its inputs and buttons), also from a
+// tab whose charts were never shown, and in every language.
+TEST(PdfReport, EachChartIsDrawnForThePageWhateverTheWindowsSize) {
+    QTemporaryDir dir;
+    auto window = make_window();
+    const QString chart = QStringLiteral("1520x760");
+    struct Case {
+        const char* tab;
+        QSize window;
+        const char* language;
+        int charts;
+    } cases[] = {{"cycle", {1280, 800}, "en", 4},
+                 {"cycle", {1920, 1080}, "ru", 4},
+                 {"optimise", {1280, 800}, "zh_CN", 5}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::string(c.tab) + " " + c.language);
+        window->resize(c.window);
+        window->set_language(QLatin1String(c.language));
+        ASSERT_TRUE(window->select_tab(QLatin1String(c.tab)));
+        QCoreApplication::processEvents();
+        const QString path =
+            dir.filePath(QLatin1String(c.tab) + QLatin1String(c.language) + QStringLiteral(".pdf"));
+        ASSERT_TRUE(window->export_pdf_report(path)) << window->last_error().toStdString();
+        const QStringList sizes = pdf_image_sizes(path);
+        EXPECT_EQ(sizes.size(), c.charts) << sizes.join(QLatin1Char(' ')).toStdString();
+        EXPECT_EQ(sizes.count(chart), sizes.size()) << sizes.join(QLatin1Char(' ')).toStdString();
+    }
+    window->set_language(QStringLiteral("en"));
+    apply_language(QStringLiteral("en"));
+
+    // A lab tab: its charts, not the tab.
+    auto* lab = window->findChild<LatencyTab*>();
+    ASSERT_NE(lab, nullptr);
+    ASSERT_TRUE(window->select_tab(QStringLiteral("latency")));
+    ASSERT_TRUE(lab->import_file(kLabData + QStringLiteral("/lab_delay.csv")))
+        << lab->last_error().toStdString();
+    QCoreApplication::processEvents();
+    const QString latency = dir.filePath(QStringLiteral("latency.pdf"));
+    ASSERT_TRUE(window->export_pdf_report(latency)) << window->last_error().toStdString();
+    EXPECT_EQ(pdf_image_sizes(latency), QStringList({chart, chart}));
+}
+
+// A section's heading never ends a page without what it heads.
+TEST(PdfReport, NoHeadingIsLeftAtTheFootOfAPage) {
+    QTemporaryDir dir;
+    auto window = make_window();
+    window->edit_scenario(troubled_bore(), QStringLiteral("edit"));
+    ASSERT_TRUE(window->select_tab(QStringLiteral("optimise")));
+    const QString path = dir.filePath(QStringLiteral("report.pdf"));
+    ASSERT_TRUE(window->export_pdf_report(path)) << window->last_error().toStdString();
+    const int pages = pdf_pages(path);
+    for (int page = 1; page <= pages; ++page) {
+        const QStringList lines =
+            run(QStringLiteral("pdftotext"),
+                {QStringLiteral("-raw"), QStringLiteral("-f"), QString::number(page),
+                 QStringLiteral("-l"), QString::number(page), path, QStringLiteral("-")})
+                .split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        // The last line of text before the footer (pictures have none: the
+        // charts' heading is left out, and a page of charts only is passed).
+        const qsizetype footer = lines.indexOf(QRegularExpression(QStringLiteral("^Figures.*")));
+        ASSERT_GE(footer, 0) << page;
+        if (footer == 0) continue;
+        const QString last = lines[footer - 1].trimmed();
+        for (const char* heading :
+             {"Results", "Uncertainty budget", "Warnings and what to change",
+              "The optimiser's recommendation", "The scenario", "Machine", "Probe", "Cycle"}) {
+            EXPECT_NE(last, QLatin1String(heading)) << "page " << page;
+        }
+    }
 }
 
 }  // namespace
