@@ -693,7 +693,17 @@ void CycleCharts::draw_overtravel(const Computed& c) {
     }
     const double top = nice_ceiling(left.hi * 1.05);
     overtravel_->set_y_range(Side::left, 0.0, top);
-    const auto [ulo, uhi] = decade_range(right, kUncertaintyFloor_um);
+    auto [ulo, uhi] = decade_range(right, kUncertaintyFloor_um);
+    // The limit (left axis) and the target (right axis) are two lines across
+    // the whole chart: when they would fall within 6 % of the height of each
+    // other (5 mm on 0-20 mm and 5 um on 1-1000 um), a decade more below the
+    // uncertainty lifts the target clear of the limit.
+    if (target_um > 0.0) {
+        const auto height = [&](double lo, double hi) {
+            return (std::log10(target_um) - std::log10(lo)) / (std::log10(hi) - std::log10(lo));
+        };
+        if (std::abs(height(ulo, uhi) - limit / top) < 0.06) ulo /= 10.0;
+    }
     overtravel_->set_y_range(Side::right, ulo, uhi);
     set_if_changed(ot_overtravel_, overtravel_pts_);
     set_if_changed(ot_overtravel2_, overtravel2_pts_);

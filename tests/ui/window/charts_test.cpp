@@ -14,6 +14,8 @@
 #include <string>
 #include <utility>
 
+#include "core/common/file_io.h"
+#include "core/cycle/preset.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
 #include "ui/common/plot_view.h"
@@ -429,6 +431,28 @@ TEST_F(ChartsTest, ThePositionBreaksDuringMovesBetweenTouches) {
     // Single-touch on a surface has no such move: no break.
     draw(fast_surface());
     for (const QPointF& p : points("motion.position")) EXPECT_TRUE(has_y(p));
+}
+
+// The overtravel limit (left axis) and the uncertainty target (right, log)
+// never draw as one line: on the Fanuc-type preset's bore, 5 mm on 0-20 mm
+// and 5 um on 1-1000 um fell together.
+TEST_F(ChartsTest, TheLimitAndTheTargetLinesStandApart) {
+    Scenario s = scenario_from_json(
+        read_text_file(PROBECYCLE_SOURCE_DIR "/resources/examples/bore_two_touch.json"));
+    s = merge_json(s, parse_preset(read_text_file(PROBECYCLE_SOURCE_DIR
+                                                  "/resources/presets/"
+                                                  "machine_fanuc_exponential_servo.json"))
+                          .scenario_json);
+    const Computed& c = computation_.run(s);
+    charts_.show_result(c);
+    QCoreApplication::processEvents();
+    const PlotView::Range left = overtravel_->y_range(PlotView::Side::left);
+    const PlotView::Range right = overtravel_->y_range(PlotView::Side::right);
+    const double limit = s.probe.overtravel_limit_mm / (left.hi - left.lo);
+    const double target =
+        (std::log10(s.cycle.target_uncertainty_mm * 1000.0) - std::log10(right.lo)) /
+        (std::log10(right.hi) - std::log10(right.lo));
+    EXPECT_GE(std::abs(limit - target), 0.06) << limit << " " << target;
 }
 
 TEST_F(ChartsTest, TheTimeAxisFitsTheCycleAfterAJump) {
