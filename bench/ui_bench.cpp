@@ -9,6 +9,8 @@
 // curve of every chart changes). BM_Recompute is the core's share alone;
 // BM_Recompute_Fanuc the same on the Fanuc-type preset's machine (dynamics
 // after interpolation), read from resources/presets.
+// BM_OptimiseTabEdit: the Optimise tab's requirement edit to its charts
+// painted (the optimiser runs again).
 // BM_LaunchToFirstPaint runs `probecycle --time-startup` and times the
 // process from spawn to exit (it exits right after its first paint); the
 // counter first_paint_ms is the program's own figure from main() to paint.
@@ -21,6 +23,7 @@
 
 #include <QAbstractScrollArea>
 #include <QApplication>
+#include <QDoubleSpinBox>
 #include <QProcess>
 #include <QSlider>
 #include <QTabWidget>
@@ -34,7 +37,9 @@
 
 #include "core/common/file_io.h"
 #include "core/cycle/preset.h"
+#include "ui/common/plot_view.h"
 #include "ui/cycle/computation.h"
+#include "ui/cycle/optimise_panel.h"
 #include "ui/window/main_window.h"
 
 namespace {
@@ -78,13 +83,17 @@ int next_position(const QSlider& slider, std::int64_t i) {
     return low + (phase < width ? phase : 2 * width - phase);
 }
 
-// Counts paint events of the charts' viewports.
+// Counts paint events of the viewports of the charts shown under `parent`.
 class PaintCounter : public QObject {
   public:
-    explicit PaintCounter(QWidget* charts) {
-        for (QAbstractScrollArea* view : charts->findChildren<QAbstractScrollArea*>()) {
-            view->viewport()->installEventFilter(this);
-            painted_.emplace_back(view->viewport(), false);
+    explicit PaintCounter(QWidget* parent) {
+        for (const probecycle::ui::PlotView* plot :
+             parent->findChildren<probecycle::ui::PlotView*>()) {
+            if (!plot->isVisible()) continue;
+            for (QAbstractScrollArea* view : plot->findChildren<QAbstractScrollArea*>()) {
+                view->viewport()->installEventFilter(this);
+                painted_.emplace_back(view->viewport(), false);
+            }
         }
     }
     void reset() {
@@ -145,6 +154,39 @@ void run_slider(benchmark::State& state) {
 
 void BM_SliderToCharts(benchmark::State& state) {
     run_slider(state);
+}
+
+// The Optimise tab shown: one step of a requirement's spin box (the target
+// uncertainty, as an arrow key or a held arrow gives it) to the optimiser
+// run again and its charts painted. Its editors have no slider; each step
+// re-runs the whole optimiser (best, binding, advice, Pareto front).
+void BM_OptimiseTabEdit(benchmark::State& state) {
+    auto window = make_window(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+    window->select_tab(QStringLiteral("optimise"));
+    probecycle::ui::OptimisePanel* panel = window->optimise_panel();
+    QCoreApplication::processEvents();
+    auto* spin = window->findChild<QDoubleSpinBox*>(
+        QStringLiteral("optimise-spin:cycle.target_uncertainty_mm"));
+    if (spin == nullptr) {
+        state.SkipWithError("no target-uncertainty editor on the Optimise tab");
+        return;
+    }
+    PaintCounter counter(panel);
+    std::int64_t i = 0;
+    for (auto _ : state) {
+        counter.reset();
+        const int done = panel->optimise_count() + 1;
+        spin->stepBy((i++ % 2 == 0) ? 1 : -1);
+        for (int pass = 0; pass < 20; ++pass) {
+            QCoreApplication::processEvents();
+            if (panel->optimise_count() >= done && counter.all_painted()) break;
+        }
+        if (panel->optimise_count() < done || !counter.all_painted()) {
+            state.SkipWithError("the optimiser did not run, or a chart was not repainted");
+            return;
+        }
+    }
+    QCoreApplication::processEvents();
 }
 
 void run_recompute(benchmark::State& state, probecycle::Scenario scenario) {
@@ -256,6 +298,11 @@ BENCHMARK(BM_SliderToCharts)
     ->Args({1280, 800, 1})
     ->Args({1920, 1080, 0})
     ->Args({1920, 1080, 1})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OptimiseTabEdit)
+    ->ArgNames({"w", "h"})
+    ->Args({1280, 800})
+    ->Args({1920, 1080})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Recompute)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Recompute_Fanuc)->Unit(benchmark::kMillisecond);
