@@ -3,9 +3,10 @@
 // What the window has open: the scenario with its undo history, the file it
 // came from (a scenario file or a project file), the pinned baseline's
 // scenario, the pages that keep data of their own (the lab's and the
-// comparison's, ui/common/page.h) and the PDF report's title block. It tells unsaved work: edits of
-// the scenario since the file was saved, and for a project the pages' and the baseline's too,
-// compared with what the file holds when a page says it changed.
+// comparison's, ui/common/page.h) and the PDF report's title block. It tells
+// unsaved work: edits of the scenario since the file was saved, and for a
+// project the pages' and the baseline's too, compared with what the file
+// holds when a page says it changed.
 //
 // It knows nothing of widgets beyond the pages' interface: the window shows
 // the scenario when scenario_changed() says so, and its title when
