@@ -11,6 +11,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -33,6 +34,9 @@
 namespace probecycle::ui {
 
 namespace {
+
+// The results column's usual width (the tree of groups, the warnings).
+constexpr int kResultsWidth = 480;
 
 // One colour per (axis, direction) group, in the order of the file.
 const QColor kGroupColours[] = {{0x1f, 0x77, 0xb4}, {0xd6, 0x27, 0x28}, {0x2c, 0xa0, 0x2c},
@@ -150,7 +154,8 @@ QWidget* DelayFitPanel::build_results_column() {
     results_column->addWidget(warnings_scroll, 2);
     results_column->addWidget(export_status_);
     results_column->addLayout(export_row);
-    results->setFixedWidth(480);
+    results_ = results;
+    results->setFixedWidth(kResultsWidth);
     return results;
 }
 
@@ -413,6 +418,11 @@ void DelayFitPanel::show_fit() {
         }
         tree_->expandAll();
     }
+    // Every column in view: the column widens when the fit's numbers and the
+    // language's headers need more than its usual width (Russian), never less.
+    int needed = 2 * tree_->frameWidth() + tree_->verticalScrollBar()->sizeHint().width();
+    for (int c = 0; c < col_count; ++c) needed += tree_->header()->sectionSize(c);
+    results_->setFixedWidth(std::max(kResultsWidth, needed));
     warnings_->show_items(items);
     export_button_->setEnabled(fit_.has_value());
     export_status_->hide();

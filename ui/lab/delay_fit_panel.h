@@ -168,6 +168,7 @@ class DelayFitPanel : public QGroupBox {
     };
     std::vector<GroupCurves> group_curves_;
     QTreeWidget* tree_{nullptr};
+    QWidget* results_{nullptr};  // the column of the tree and the warnings
     QLabel* warnings_title_{nullptr};
     WarningList* warnings_{nullptr};
     QLabel* apply_label_{nullptr};

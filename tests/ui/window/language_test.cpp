@@ -28,6 +28,7 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTreeWidget>
 #include <QUndoStack>
 #include <memory>
 
@@ -116,8 +117,10 @@ QStringList cut_in(const QWidget* w) {
                 cut << QStringLiteral("tab %1: %2").arg(where, text);
             }
         }
-    } else if (const auto* table = qobject_cast<const QTableWidget*>(w)) {
+    } else if (qobject_cast<const QTableWidget*>(w) != nullptr ||
+               qobject_cast<const QTreeWidget*>(w) != nullptr) {
         // A small table of results shows every column without scrolling.
+        const auto* table = static_cast<const QAbstractScrollArea*>(w);
         if (table->horizontalScrollBar()->maximum() > 0) {
             cut << QStringLiteral("table %1 scrolls sideways").arg(where);
         }
