@@ -898,38 +898,31 @@ void MainWindow::restore_session(const Project& project, const QString& base_fol
     if (!project.baseline || !pin_baseline_of(*project.baseline)) clear_baseline();
 }
 
-bool MainWindow::export_csv_report(const QString& path) {
-    // The current tab's report: a page's own, or the cycle's.
+std::optional<std::string> MainWindow::current_report_csv(QString& why_none) {
+    // A page's own report, or the cycle's.
     if (auto* page = qobject_cast<Page*>(tabs_->currentWidget())) {
-        const std::optional<std::string> csv = page->report_csv(ReportRows::all);
-        QString error;
-        if (!csv) {
-            report_error(QT_TR_NOOP("Could not export the report"), page->last_error());
-            return false;
-        }
-        if (!write_file(path, QByteArray::fromStdString(*csv), error)) {
-            report_error(
-                QT_TR_NOOP("Could not export the report"),
-                tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
-            return false;
-        }
-        remember_folder_of(path);
-        show_status(
-            [path] { return tr("Report written to %1").arg(QDir::toNativeSeparators(path)); },
-            4000);
-        return true;
+        std::optional<std::string> csv = page->report_csv(ReportRows::all);
+        if (!csv) why_none = page->last_error();
+        return csv;
     }
     recompute_now();
     const Computed& c = computation_.result();
     if (!c.valid()) {
-        report_error(QT_TR_NOOP("Could not export the report"),
-                     tr("The scenario is not valid; see the warnings panel."));
-        return false;
+        why_none = tr("The scenario is not valid; see the warnings panel.");
+        return std::nullopt;
     }
     const std::vector<double> feeds = report_feeds(c.scenario, c.analysis);
-    const std::string csv = csv_report(c.scenario, c.analysis, feeds, report_header());
+    return csv_report(c.scenario, c.analysis, feeds, report_header());
+}
+
+bool MainWindow::export_csv_report(const QString& path) {
     QString error;
-    if (!write_file(path, QByteArray::fromStdString(csv), error)) {
+    const std::optional<std::string> csv = current_report_csv(error);
+    if (!csv) {
+        report_error(QT_TR_NOOP("Could not export the report"), error);
+        return false;
+    }
+    if (!write_file(path, QByteArray::fromStdString(*csv), error)) {
         report_error(QT_TR_NOOP("Could not export the report"),
                      tr("%1 could not be written: %2").arg(QDir::toNativeSeparators(path), error));
         return false;

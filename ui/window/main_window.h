@@ -231,6 +231,9 @@ class MainWindow : public QMainWindow {
     bool save_action();
     // A file dialog offering both kinds, `as_project` chosen first.
     bool save_as_dialog(bool as_project);
+    // The current tab's CSV report, or nullopt with `why_none` in the
+    // interface language.
+    std::optional<std::string> current_report_csv(QString& why_none);
     void export_csv_dialog();
     void export_png_dialog();
     void export_pdf_dialog();
