@@ -67,6 +67,9 @@ bool finite_point(const QPointF& p) {
 // hundred thousand take minutes and gigabytes to lay out. Beyond this many, a
 // curve shows one marker per cell of a grid over its points' extent.
 constexpr qsizetype kMaxMarkers = 4000;
+// A category axis's width beside its widest label: the label padding and the
+// axis line (Qt Charts' ChartCategoryAxisY::sizeHint adds both).
+constexpr double kCategoryPadding = 8.0;
 
 // The finite points, thinned to the first in each cell of the finest grid
 // (1024 cells a side, then halved) that leaves at most kMaxMarkers. Markers
@@ -440,9 +443,9 @@ struct PlotView::Impl {
         legend->setVisible(legend_visible && !legend->entries().empty());
     }
 
-    // Every row of a category axis keeps its label: Qt Charts hides a label
-    // that would overlap the one below, so the font shrinks to the row
-    // height, not under 6 pixels.
+    // Every row of a category axis keeps its label whole: Qt Charts hides a
+    // label that would overlap the one below and cuts one too wide, so the
+    // font shrinks to the row height and the axis's width, not under 6 pixels.
     void fit_categories() {
         auto* axis = qobject_cast<QCategoryAxis*>(y_left);
         if (axis == nullptr || categories.isEmpty() || fitting_categories) return;
@@ -461,8 +464,22 @@ struct PlotView::Impl {
             }
             return tallest + 2.0;  // Qt Charts' own margins
         };
+        // Qt Charts gives the vertical axes at most 40 % of the chart's width
+        // (maxAxisPortion in its CartesianChartLayout) and squeezes a wider
+        // axis, cutting its labels' starts off at the chart's edge.
+        const QRectF inner = chart->geometry().marginsRemoved(chart->margins().toMarginsF());
+        const double widest_allowed = 0.4 * inner.width() - kCategoryPadding;
+        const auto width = [&](const QFont& f) {
+            const QFontMetricsF metrics(f);
+            double widest = 0.0;
+            for (const QString& label : categories) {
+                widest = std::max(widest, metrics.boundingRect(label).width());
+            }
+            return widest;
+        };
         QFont font = category_font;
-        for (int px = QFontInfo(category_font).pixelSize(); px > 6 && height(font) > row; --px) {
+        for (int px = QFontInfo(category_font).pixelSize();
+             px > 6 && (height(font) > row || width(font) > widest_allowed); --px) {
             font.setPixelSize(px - 1);
         }
         if (font == axis->labelsFont()) return;
@@ -528,6 +545,25 @@ struct PlotView::Impl {
             const auto* text = dynamic_cast<const QGraphicsTextItem*>(item);
             if (text == nullptr || !text->isVisible() || !chart->isAncestorOf(text)) continue;
             out << plain(text->toPlainText());
+        }
+        return out;
+    }
+
+    // The drawn texts that reach past the chart's left or right edge, where
+    // the view cuts them off (an axis squeezed narrower than its labels).
+    QStringList texts_past_edges() const {
+        QStringList out;
+        const QGraphicsScene* scene = chart->scene();
+        if (scene == nullptr) return out;
+        const QRectF bounds = chart->geometry();
+        for (QGraphicsItem* item : scene->items()) {
+            const auto* text = dynamic_cast<const QGraphicsTextItem*>(item);
+            if (text == nullptr || !text->isVisible() || !chart->isAncestorOf(text)) continue;
+            const double margin = text->document()->documentMargin();
+            const QRectF drawn = text->sceneBoundingRect().adjusted(margin, 0.0, -margin, 0.0);
+            if (drawn.left() < bounds.left() - 0.5 || drawn.right() > bounds.right() + 0.5) {
+                out << plain(text->toPlainText());
+            }
         }
         return out;
     }
@@ -996,6 +1032,11 @@ int PlotView::smallest_axis_title_px() const {
     return smallest;
 }
 
+int PlotView::category_label_px() const {
+    const auto* axis = qobject_cast<const QCategoryAxis*>(impl_->y_left);
+    return axis == nullptr ? 0 : QFontInfo(axis->labelsFont()).pixelSize();
+}
+
 QStringList PlotView::cut_texts() const {
     const QStringList drawn = impl_->drawn_texts();
     QStringList cut;
@@ -1016,6 +1057,7 @@ QStringList PlotView::cut_texts() const {
     for (const QString& text : drawn) {
         if (elided(text)) cut << text;
     }
+    cut << impl_->texts_past_edges();
     if (impl_->legend->isVisible()) cut << impl_->legend->cut();
     return cut;
 }

@@ -122,6 +122,9 @@ class PlotView : public QWidget {
     // The smallest pixel size among the axis titles' fonts as drawn after the
     // last layout (0 without an axis title).
     int smallest_axis_title_px() const;
+    // The pixel size of the category labels' font after the last layout (0
+    // without a category axis).
+    int category_label_px() const;
     // Every text the plot has to show: its title, the axis titles, the legend
     // entries and the category labels (for checks of the language in use).
     QStringList texts() const;

@@ -38,34 +38,28 @@ QString with_unit(const QString& value, const QString& unit) {
     return value + QChar(0x00A0) + unit;  // no break between number and unit
 }
 
-QStringList format_seconds_column(const std::vector<double>& seconds) {
+SecondsColumn format_seconds_column(const std::vector<double>& seconds) {
     double largest = 0.0;
-    double smallest = 0.0;
-    for (const double s : seconds) {
-        const double a = std::abs(s);
-        largest = std::max(largest, a);
-        if (a > 0.0 && (smallest == 0.0 || a < smallest)) smallest = a;
-    }
-    // The unit and decimals format_seconds gives the largest...
-    const bool in_ms = largest < 0.1 && largest >= 0.0001;
+    for (const double s : seconds) largest = std::max(largest, std::abs(s));
+    // One unit: ms below 10 s, so a cycle's phases read as whole numbers
+    // ("180", "1620") beside the short ones ("2.0", "0.10"); s above.
     const bool in_us = largest < 0.0001 && largest > 0.0;
+    const bool in_ms = !in_us && largest < 10.0 && largest > 0.0;
     const double factor = in_us ? 1e6 : in_ms ? 1e3 : 1.0;
-    const QString unit = in_us ? unit_us() : in_ms ? unit_ms() : unit_s();
-    const double top = largest * factor;
-    int decimals = in_us   ? (top >= 10.0 ? 0 : 1)
-                   : in_ms ? (top >= 10.0 ? 1 : 2)
-                           : (top >= 10.0                ? 1
-                              : top >= 1.0 || top == 0.0 ? 2
-                                                         : 3);
-    // ... and more for the smallest, to two significant digits.
-    if (smallest > 0.0) {
-        const int needed = static_cast<int>(std::ceil(-std::log10(smallest * factor))) + 1;
-        decimals = std::clamp(needed, decimals, 4);
+    SecondsColumn column;
+    column.unit = in_us ? unit_us() : in_ms ? unit_ms() : unit_s();
+    column.numbers.reserve(static_cast<qsizetype>(seconds.size()));
+    for (const double s : seconds) {
+        // Each to two significant digits at least, whole from 10 up (s: one
+        // decimal), at most 4 decimals.
+        const double v = std::abs(s * factor);
+        const int decimals = v >= 10.0 ? (in_ms || in_us ? 0 : 1)
+                             : v >= 1.0 || v == 0.0
+                                 ? 1
+                                 : std::min(4, static_cast<int>(std::ceil(-std::log10(v))) + 1);
+        column.numbers << format_number(s * factor, decimals);
     }
-    QStringList out;
-    out.reserve(static_cast<qsizetype>(seconds.size()));
-    for (const double s : seconds) out << with_unit(format_number(s * factor, decimals), unit);
-    return out;
+    return column;
 }
 
 QString format_seconds(double seconds) {

@@ -16,9 +16,14 @@ namespace probecycle::ui {
 QString format_number(double value, int decimals);             // "-0.0" shown as "0.0"
 QString with_unit(const QString& value, const QString& unit);  // no break between them
 QString format_seconds(double seconds);                        // "4.93 s", "12.0 ms", "40 µs"
-// Times that stand in one column: all in the unit format_seconds gives the
-// largest, with the decimals the smallest non-zero one needs (at most 4).
-QStringList format_seconds_column(const std::vector<double>& seconds);
+// Times that stand in one column: their numbers in one unit, given apart
+// (ms for times under 10 s, µs under 0.1 ms, else s), each to two
+// significant digits at least.
+struct SecondsColumn {
+    QStringList numbers;
+    QString unit;
+};
+SecondsColumn format_seconds_column(const std::vector<double>& seconds);
 QString format_mm(double mm);                   // "1.274 mm"
 QString format_um(double mm);                   // "3.2 µm"
 QString format_length(double mm);               // mm, or µm below 0.1 mm

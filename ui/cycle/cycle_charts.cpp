@@ -79,6 +79,24 @@ QColor phase_colour(Phase phase) {
     return Qt::gray;
 }
 
+// The row a phase is drawn on: a second touch's phase on its first touch's.
+Phase row_phase(Phase phase) {
+    switch (phase) {
+        case Phase::second_approach:
+            return Phase::approach;
+        case Phase::second_pretravel:
+            return Phase::pretravel;
+        case Phase::second_interface_delay:
+            return Phase::interface_delay;
+        case Phase::second_controller_delay:
+            return Phase::controller_delay;
+        case Phase::second_deceleration:
+            return Phase::deceleration;
+        default:
+            return phase;
+    }
+}
+
 // Smallest 1, 2 or 5 times a power of ten at or above v.
 double nice_ceiling(double v) {
     if (!(v > 0.0)) return 1.0;
@@ -566,30 +584,46 @@ void CycleCharts::draw_phases(const Computed& c) {
     }
     set_phases_title();
 
-    // Rows in the order the phases first happen, the first at the top.
+    // Rows in the order the phases first happen, the first at the top. A
+    // second touch's phase shares its first touch's row in a lighter shade:
+    // fewer, taller rows keep the labels readable (a Chinese label is tall).
     std::array<int, kPhaseCount> order{};
     order.fill(-1);
+    phase_present_.fill(false);
     int rows = 0;
     for (const PhaseRecord& record : cycle.phases()) {
-        int& row = order[static_cast<std::size_t>(record.phase)];
+        phase_present_[static_cast<std::size_t>(record.phase)] = true;
+        int& row = order[static_cast<std::size_t>(row_phase(record.phase))];
         if (row < 0) row = rows++;
+    }
+    for (Phase phase : all_phases()) {
+        order[static_cast<std::size_t>(phase)] = order[static_cast<std::size_t>(row_phase(phase))];
+    }
+    // One unit down the column of times, not s and ms mixed; a shared row
+    // gives both touches' times, first + second.
+    std::vector<double> times;
+    std::vector<Phase> timed;
+    for (Phase phase : all_phases()) {
+        if (!phase_present_[static_cast<std::size_t>(phase)]) continue;
+        times.push_back(cycle.phase_time(phase));
+        timed.push_back(phase);
+    }
+    const SecondsColumn shown = format_seconds_column(times);
+    QStringList row_times;
+    row_times.resize(rows);
+    for (std::size_t i = 0; i < timed.size(); ++i) {
+        QString& text = row_times[order[static_cast<std::size_t>(timed[i])]];
+        text += (text.isEmpty() ? QString() : QStringLiteral(" + ")) +
+                shown.numbers.at(static_cast<qsizetype>(i));
     }
     QStringList labels;
     labels.resize(rows);
-    // One unit down the column of times, not s and ms mixed.
-    std::vector<double> times(static_cast<std::size_t>(rows));
-    for (Phase phase : all_phases()) {
-        const int row = order[static_cast<std::size_t>(phase)];
-        if (row >= 0) times[static_cast<std::size_t>(row)] = cycle.phase_time(phase);
-    }
-    const QStringList shown_times = format_seconds_column(times);
     for (Phase phase : all_phases()) {
         const std::size_t k = static_cast<std::size_t>(phase);
         const int row = order[k];
-        phase_present_[k] = row >= 0;
-        if (row >= 0) {
-            labels[rows - 1 - row] =
-                phase_label(phase) + QStringLiteral(" \u00b7 ") + shown_times.at(row);
+        if (row >= 0 && row_phase(phase) == phase) {
+            labels[rows - 1 - row] = phase_label(phase) + QStringLiteral(" \u00b7 ") +
+                                     with_unit(row_times.at(row), shown.unit);
         }
         phase_upper_[k].clear();
         phase_lower_[k].clear();

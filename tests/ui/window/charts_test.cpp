@@ -185,6 +185,39 @@ TEST_F(ChartsTest, AnInvalidCyclesPhasesAreGreyAndTitledWithTheReason) {
         << phases->title().toStdString();
 }
 
+// A second touch's phases share their first touch's rows, in a lighter
+// shade: a two-touch cycle has 7 rows, not 12, each labelled with both
+// touches' times in one unit.
+TEST_F(ChartsTest, ASecondTouchsPhasesShareTheirFirstTouchsRows) {
+    Scenario s = all_valid();
+    s.cycle.strategy = Strategy::two_touch;
+    const Computed& c = draw(s);
+    ASSERT_TRUE(c.cycle().valid());
+    auto* phases = charts_.findChild<PlotView*>(QStringLiteral("chart:phases"));
+    ASSERT_NE(phases, nullptr);
+    const QStringList texts = phases->texts();
+    QStringList rows;
+    for (const QString& text : texts) {
+        if (text.contains(QStringLiteral(" \u00b7 "))) rows << text;
+    }
+    ASSERT_EQ(rows.size(), 7) << joined(rows);
+    // Top to bottom as they happen: the top row (last category) is the approach.
+    const SecondsColumn times = format_seconds_column(
+        {c.cycle().phase_time(Phase::approach), c.cycle().phase_time(Phase::second_approach)});
+    EXPECT_EQ(rows.last(), QStringLiteral("Approach \u00b7 ") + times.numbers.at(0) +
+                               QStringLiteral(" + ") + with_unit(times.numbers.at(1), times.unit))
+        << joined(rows);
+    const auto row_of = [&](const char* id) {
+        const QList<QPointF> points = charts_.series_points(QString::fromLatin1(id));
+        return points.isEmpty() ? -1.0 : std::round(points.first().y());
+    };
+    EXPECT_EQ(row_of("phases.second_approach"), row_of("phases.approach"));
+    EXPECT_EQ(row_of("phases.second_deceleration"), row_of("phases.deceleration"));
+    EXPECT_NE(row_of("phases.backoff"), row_of("phases.approach"));
+    EXPECT_NE(charts_.series_color(QStringLiteral("phases.second_approach")),
+              charts_.series_color(QStringLiteral("phases.approach")));
+}
+
 // Item 2: each curve is drawn exactly where its cycles are valid, and grey at
 // the feeds where they are not (reaching to the valid neighbour so the line
 // stays whole, nowhere else), with one legend entry for the grey.

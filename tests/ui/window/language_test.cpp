@@ -311,6 +311,13 @@ TEST(WindowFirstShow, EveryTabDrawsReadableAxisTitlesInEveryLanguageAndSize) {
                     EXPECT_TRUE(px == 0 || px >= 9)
                         << code << ' ' << size.width() << "x" << size.height() << ", tab " << t
                         << ", " << plot->objectName().toStdString() << ": " << px << " px";
+                    // The phases chart's rows (a second touch's phases on
+                    // the first's rows) leave its labels readable.
+                    const int category_px = plot->category_label_px();
+                    EXPECT_TRUE(category_px == 0 || category_px >= 9)
+                        << code << ' ' << size.width() << "x" << size.height() << ", tab " << t
+                        << ", " << plot->objectName().toStdString() << " rows: " << category_px
+                        << " px";
                 }
             }
         }
