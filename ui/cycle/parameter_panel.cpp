@@ -7,6 +7,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QResizeEvent>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 #include <string_view>
@@ -119,10 +120,20 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     latched_->setObjectName(QStringLiteral("check:machine.latched_input"));
     machine->addWidget(latched_);
 
-    layout->addWidget(machine_box_);
-    layout->addWidget(probe_box_);
-    layout->addWidget(cycle_box_);
-    layout->addStretch(1);
+    columns_ = new QHBoxLayout;
+    columns_->setSpacing(0);
+    first_column_ = new QVBoxLayout;
+    second_column_ = new QVBoxLayout;
+    for (QBoxLayout* column : {first_column_, second_column_}) {
+        column->setSpacing(4);
+        columns_->addLayout(column, column == first_column_ ? 1 : 0);
+    }
+    first_column_->addWidget(machine_box_);
+    first_column_->addWidget(probe_box_);
+    first_column_->addWidget(cycle_box_);
+    first_column_->addStretch(1);
+    second_column_->addStretch(1);
+    layout->addLayout(columns_, 1);
 
     connect(accel_model_, &QComboBox::activated, this, [this](int index) {
         scenario_.machine.accel_model =
@@ -246,6 +257,32 @@ void ParameterPanel::retranslate() {
 void ParameterPanel::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) retranslate();
     QWidget::changeEvent(event);
+}
+
+void ParameterPanel::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    set_two_columns(width() >= two_column_width());
+}
+
+void ParameterPanel::set_two_columns(bool two) {
+    if (two == two_columns_) return;
+    two_columns_ = two;
+    if (two) {
+        second_column_->insertWidget(0, cycle_box_);
+    } else {
+        first_column_->insertWidget(2, cycle_box_);
+    }
+    columns_->setStretch(1, two ? 1 : 0);
+    columns_->setSpacing(two ? 6 : 0);
+}
+
+int ParameterPanel::one_column_height() const {
+    const QMargins margins = layout()->contentsMargins();
+    int height = margins.top() + margins.bottom() + note_->sizeHint().height();
+    for (const QGroupBox* box : {machine_box_, probe_box_, cycle_box_}) {
+        height += layout()->spacing() + box->sizeHint().height();
+    }
+    return height;
 }
 
 void ParameterPanel::set_scenario(const Scenario& scenario) {

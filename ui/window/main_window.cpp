@@ -20,6 +20,7 @@
 #include <QPainter>
 #include <QPixmap>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -228,7 +229,11 @@ void MainWindow::build_ui() {
     main_splitter_->setStretchFactor(0, 0);
     main_splitter_->setStretchFactor(1, 1);
     main_splitter_->setChildrenCollapsible(false);
-    main_splitter_->setSizes({320, 960});
+    main_splitter_->setSizes({ParameterPanel::one_column_width(), 960});
+    // The panel's width follows the window's until the user drags the divider.
+    main_splitter_->installEventFilter(this);
+    connect(main_splitter_, &QSplitter::splitterMoved, this,
+            [this] { panel_sized_by_user_ = true; });
 
     // The lab: calibration and latency from the user's own touches.
     calibration_tab_ = new CalibrationTab;
@@ -556,7 +561,8 @@ void MainWindow::restore_settings() {
     QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
-    main_splitter_->restoreState(settings.value(QStringLiteral("window/splitter")).toByteArray());
+    panel_sized_by_user_ = main_splitter_->restoreState(
+        settings.value(QStringLiteral("window/splitter")).toByteArray());
     warnings_sized_by_user_ = right_splitter_->restoreState(
         settings.value(QStringLiteral("window/right_splitter")).toByteArray());
     recent_files_ = settings.value(QStringLiteral("files/recent")).toStringList();
@@ -1251,6 +1257,28 @@ void MainWindow::fit_warnings_pane() {
     const int most = std::max(warnings_usual_height_, total - charts_keep);
     const int wanted = std::clamp(content + chrome, warnings_usual_height_, most);
     if (wanted != sizes.value(1)) right_splitter_->setSizes({total - wanted, wanted});
+}
+
+// The parameter panel in two columns when one would scroll and the window
+// is wide enough to spare the charts the room (1920x1080: every editor in
+// sight); one column otherwise.
+void MainWindow::fit_panel_width() {
+    // Called before the splitter lays its widgets out anew: its width is
+    // new, their sizes are not yet.
+    const int total = main_splitter_->width() - main_splitter_->handleWidth();
+    if (panel_sized_by_user_ || total <= 0) return;
+    const bool two = total >= 1500 && panel_->one_column_height() > main_splitter_->height();
+    // Room for the scroll bar, which shows until the panel has its two columns.
+    const int wanted = two ? ParameterPanel::two_column_width() +
+                                 panel_scroll_->verticalScrollBar()->sizeHint().width()
+                           : ParameterPanel::one_column_width();
+    if (wanted != main_splitter_->sizes().value(0))
+        main_splitter_->setSizes({wanted, total - wanted});
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == main_splitter_ && event->type() == QEvent::Resize) fit_panel_width();
+    return QMainWindow::eventFilter(watched, event);
 }
 
 // The panel's title and the Cycle tab count the problems shown, so an error

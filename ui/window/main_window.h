@@ -183,6 +183,7 @@ class MainWindow : public QMainWindow {
   protected:
     void closeEvent(QCloseEvent* event) override;
     void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void build_ui();
@@ -211,6 +212,7 @@ class MainWindow : public QMainWindow {
     void update_title();
     void update_warning_counts();
     void fit_warnings_pane();
+    void fit_panel_width();
     // Optimises the current scenario into the Optimise tab (when it is valid).
     void refresh_optimise();
     void update_undo_texts();
@@ -268,6 +270,7 @@ class MainWindow : public QMainWindow {
     int warnings_rows_fitted_{-1};
     int warnings_usual_height_{-1};
     QSplitter* main_splitter_{nullptr};
+    bool panel_sized_by_user_{false};
     QTabWidget* tabs_{nullptr};
     CalibrationTab* calibration_tab_{nullptr};
     LatencyTab* latency_tab_{nullptr};

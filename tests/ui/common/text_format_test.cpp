@@ -17,10 +17,10 @@ TEST(SecondsColumn, ACyclesPhasesReadInMillisecondsWholeFromTenUp) {
     const SecondsColumn column =
         format_seconds_column({0.18, 1.62, 0.00015, 0.010, 0.002, 0.004, 0.0537, 0.085});
     EXPECT_EQ(column.unit, unit_ms());
-    EXPECT_EQ(column.numbers, (QStringList{QStringLiteral("180"), QStringLiteral("1620"),
-                                           QStringLiteral("0.15"), QStringLiteral("10"),
-                                           QStringLiteral("2.0"), QStringLiteral("4.0"),
-                                           QStringLiteral("54"), QStringLiteral("85")}));
+    EXPECT_EQ(column.numbers,
+              (QStringList{QStringLiteral("180"), QStringLiteral("1620"), QStringLiteral("0.15"),
+                           QStringLiteral("10"), QStringLiteral("2.0"), QStringLiteral("4.0"),
+                           QStringLiteral("54"), QStringLiteral("85")}));
 }
 
 TEST(SecondsColumn, LongPhasesReadInSecondsAndTinyOnesToFourDecimalsAtMost) {

@@ -19,6 +19,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QSpinBox>
 #include <QStatusBar>
@@ -36,6 +37,7 @@
 #include "ui/common/language.h"
 #include "ui/common/plot_view.h"
 #include "ui/comparison/comparison_tab.h"
+#include "ui/cycle/parameter_panel.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
 #include "ui/window/main_window.h"
@@ -320,6 +322,34 @@ TEST(WindowFirstShow, EveryTabDrawsReadableAxisTitlesInEveryLanguageAndSize) {
                         << " px";
                 }
             }
+        }
+    }
+    apply_language(QStringLiteral("en"));
+}
+
+// At 1920x1080 the parameter panel stands in two columns and shows every
+// editor without scrolling, in every language; at 1280x800 it keeps one
+// column (the charts need the width) and scrolls.
+TEST(WindowFirstShow, TheParameterPanelShowsEveryEditorAt1920x1080InEveryLanguage) {
+    for (const char* code : {"en", "zh_CN", "ru"}) {
+        for (const QSize size : {QSize(1280, 800), QSize(1920, 1080)}) {
+            apply_language(QLatin1String(code));
+            MainWindowOptions options;
+            options.persistent = false;
+            options.show_dialogs = false;
+            MainWindow window(options);
+            window.resize(size);
+            window.show();
+            for (int i = 0; i < 4; ++i) QApplication::processEvents();
+            auto* panel = window.findChild<QWidget*>(QStringLiteral("parameters"));
+            ASSERT_NE(panel, nullptr);
+            auto* scroll = qobject_cast<QScrollArea*>(panel->parentWidget()->parentWidget());
+            ASSERT_NE(scroll, nullptr);
+            const bool scrolls = scroll->verticalScrollBar()->isVisible();
+            const bool large = size.width() == 1920;
+            EXPECT_EQ(scrolls, !large) << code << ' ' << size.width() << "x" << size.height();
+            EXPECT_EQ(panel->width() >= ParameterPanel::two_column_width(), large)
+                << code << ' ' << size.width() << ": " << panel->width() << " px";
         }
     }
     apply_language(QStringLiteral("en"));
