@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/common/input_error.h"
+#include "core/common/task_group.h"
 #include "core/common/units.h"
 #include "core/cycle/motion_cache.h"
 #include "core/cycle/uncertainty.h"
@@ -806,72 +807,124 @@ constexpr double kMeaningfulSaving = 1e-3;
 // uncertainty behind the start rule) is checked by optimising again with it
 // relaxed by 10 %. The rapid (which also times the lifts) and the repeat
 // limit (the key's range) are named by where the best setting lies.
-std::vector<Requirement> binding_requirements(Optimiser& optimiser, const Scenario& scenario,
-                                              const CycleModel& model, const Candidate& best,
-                                              double bound_mm, double fraction) {
-    std::vector<Requirement> binding;
-    const double faster_than = best.cycle_time_s * (1.0 - kMeaningfulSaving);
-    const auto faster = [&](Optimiser& other, const Scenario& changed, double bound,
-                            double relaxed_fraction) {
+//
+// The searches of a scenario of their own are independent: start() hands
+// them to a TaskGroup, while the caller goes on with the optimiser it has
+// (the uncertainty bound's check, the Pareto front); finish() waits and reads
+// their results in a fixed order, so the result does not depend on which
+// thread ran what.
+class BindingChecks {
+  public:
+    BindingChecks(const Scenario& scenario, const CycleModel& model, const Candidate& best,
+                  double bound_mm, double fraction)
+        : scenario_(scenario),
+          model_(model),
+          best_(best),
+          bound_mm_(bound_mm),
+          fraction_(fraction),
+          faster_than_(best.cycle_time_s * (1.0 - kMeaningfulSaving)) {}
+
+    void start(Optimiser& optimiser) {
+        const Scenario& scenario = scenario_;
+        if (fraction_ < kMaxOvertravelFraction) {
+            later(overtravel_, scenario, std::min(kMaxOvertravelFraction, fraction_ * kRelax));
+        }
+        if (scenario.probe.max_feed_mm_min > 0.0) {
+            Scenario changed = scenario;
+            changed.probe.max_feed_mm_min *= kRelax;
+            later(probe_max_feed_, changed, fraction_);
+        }
+        // The start rule: the part position uncertainty lengthens the start,
+        // or a bore's size caps the feed (not relaxed: the feature is the
+        // part's); then the shortest start, relaxed as the part's
+        // uncertainty is, when the part's does not bind.
+        tasks_.run([this] { start_ = start_binds(); });
+        // The slowest feed: lower, a tight target might need fewer repeats.
+        const Search& s = optimiser.search();
+        const Settings& b = best_.settings;
+        const double slowest = b.strategy == Strategy::two_touch
+                                   ? std::min(b.probe_feed_mm_min, b.measure_feed_mm_min)
+                                   : b.probe_feed_mm_min;
+        if (slowest <= s.min_feed() * (1.0 + 1e-9) && s.min_feed() > kMinFeed_mm_min) {
+            Scenario changed = scenario;
+            changed.cycle.min_feed_mm_min = std::max(kMinFeed_mm_min, s.min_feed() / kRelax);
+            later(min_feed_, changed, fraction_);
+        }
+    }
+
+    std::vector<Requirement> finish(Optimiser& optimiser) {
+        const Scenario& scenario = scenario_;
+        std::vector<Requirement> binding;
+        const bool uncertainty =
+            std::isfinite(bound_mm_) && faster(optimiser, scenario, bound_mm_ * kRelax, fraction_);
+        tasks_.wait();
+        if (uncertainty) binding.push_back(uncertainty_requirement(scenario));
+        if (overtravel_) binding.push_back(Requirement::overtravel_fraction);
+        if (probe_max_feed_) binding.push_back(Requirement::probe_max_feed);
+        Search& s = optimiser.search();
+        const Settings& b = best_.settings;
+        const bool two = b.strategy == Strategy::two_touch;
+        const double top =
+            two ? std::max(b.probe_feed_mm_min, b.measure_feed_mm_min) : b.probe_feed_mm_min;
+        const bool probe_cap = scenario.probe.max_feed_mm_min > 0.0 &&
+                               scenario.probe.max_feed_mm_min <= scenario.machine.rapid_feed_mm_min;
+        if (on_bound(top, s.cap_mm_min()) && !probe_cap)
+            binding.push_back(Requirement::machine_rapid);
+        if (min_feed_) binding.push_back(Requirement::min_feed);
+        if (start_ || (on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()) &&
+                       s.start_feed_mm_min() < s.cap_mm_min()))
+            binding.push_back(Requirement::start_distance);
+        if (b.repeats == kMaxRepeats && std::isfinite(bound_mm_))
+            binding.push_back(Requirement::repeats_limit);
+        return binding;
+    }
+
+  private:
+    bool faster(Optimiser& other, const Scenario& changed, double bound, double relaxed_fraction) {
         try {
             return fastest_rounded(other, changed, bound, relaxed_fraction).best.cycle_time_s <
-                   faster_than;
+                   faster_than_;
         } catch (const InputError&) {
             return false;
         }
-    };
-    const auto faster_with = [&](const Scenario& changed, double relaxed_fraction) {
-        Optimiser other(changed, model, relaxed_fraction);
-        return faster(other, changed, bound_mm, relaxed_fraction);
-    };
-    if (std::isfinite(bound_mm) && faster(optimiser, scenario, bound_mm * kRelax, fraction))
-        binding.push_back(uncertainty_requirement(scenario));
-    if (fraction < kMaxOvertravelFraction &&
-        faster_with(scenario, std::min(kMaxOvertravelFraction, fraction * kRelax)))
-        binding.push_back(Requirement::overtravel_fraction);
-    if (scenario.probe.max_feed_mm_min > 0.0) {
-        Scenario changed = scenario;
-        changed.probe.max_feed_mm_min *= kRelax;
-        if (faster_with(changed, fraction)) binding.push_back(Requirement::probe_max_feed);
     }
-    Search& s = optimiser.search();
-    const Settings& b = best.settings;
-    const bool two = b.strategy == Strategy::two_touch;
-    const double top =
-        two ? std::max(b.probe_feed_mm_min, b.measure_feed_mm_min) : b.probe_feed_mm_min;
-    const bool probe_cap = scenario.probe.max_feed_mm_min > 0.0 &&
-                           scenario.probe.max_feed_mm_min <= scenario.machine.rapid_feed_mm_min;
-    if (on_bound(top, s.cap_mm_min()) && !probe_cap) binding.push_back(Requirement::machine_rapid);
-    // The start rule: the part position uncertainty lengthens the start, or
-    // a bore's size caps the feed (not relaxed: the feature is the part's).
-    bool start_binds = false;
-    if (scenario.cycle.part_position_uncertainty_mm > 0.0) {
-        Scenario changed = scenario;
-        changed.cycle.part_position_uncertainty_mm /= kRelax;
-        start_binds = faster_with(changed, fraction);
+    bool faster_with(const Scenario& changed, double relaxed_fraction) {
+        Optimiser other(changed, model_, relaxed_fraction);
+        return faster(other, changed, bound_mm_, relaxed_fraction);
     }
-    // The shortest start, relaxed as the part's uncertainty is.
-    if (!start_binds && scenario.cycle.min_start_mm > 0.0 &&
-        b.approach_mm <= approach_up(scenario.cycle.min_start_mm) + 1e-9) {
-        Scenario changed = scenario;
-        changed.cycle.min_start_mm /= kRelax;
-        start_binds = faster_with(changed, fraction);
+    void later(bool& result, const Scenario& changed, double relaxed_fraction) {
+        tasks_.run([this, &result, changed, relaxed_fraction] {
+            result = faster_with(changed, relaxed_fraction);
+        });
     }
-    // The slowest feed: lower, a tight target might need fewer repeats.
-    const double slowest =
-        two ? std::min(b.probe_feed_mm_min, b.measure_feed_mm_min) : b.probe_feed_mm_min;
-    if (slowest <= s.min_feed() * (1.0 + 1e-9) && s.min_feed() > kMinFeed_mm_min) {
-        Scenario changed = scenario;
-        changed.cycle.min_feed_mm_min = std::max(kMinFeed_mm_min, s.min_feed() / kRelax);
-        if (faster_with(changed, fraction)) binding.push_back(Requirement::min_feed);
+    bool start_binds() {
+        const Scenario& scenario = scenario_;
+        if (scenario.cycle.part_position_uncertainty_mm > 0.0) {
+            Scenario changed = scenario;
+            changed.cycle.part_position_uncertainty_mm /= kRelax;
+            if (faster_with(changed, fraction_)) return true;
+        }
+        if (scenario.cycle.min_start_mm > 0.0 &&
+            best_.settings.approach_mm <= approach_up(scenario.cycle.min_start_mm) + 1e-9) {
+            Scenario changed = scenario;
+            changed.cycle.min_start_mm /= kRelax;
+            return faster_with(changed, fraction_);
+        }
+        return false;
     }
-    if (start_binds || (on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()) &&
-                        s.start_feed_mm_min() < s.cap_mm_min()))
-        binding.push_back(Requirement::start_distance);
-    if (b.repeats == kMaxRepeats && std::isfinite(bound_mm))
-        binding.push_back(Requirement::repeats_limit);
-    return binding;
-}
+
+    const Scenario& scenario_;
+    const CycleModel& model_;
+    const Candidate& best_;
+    double bound_mm_;
+    double fraction_;
+    double faster_than_;
+    bool overtravel_{false};
+    bool probe_max_feed_{false};
+    bool start_{false};
+    bool min_feed_{false};
+    TaskGroup tasks_;  // last: destroyed (its tasks waited for) first
+};
 
 }  // namespace
 
@@ -920,7 +973,8 @@ OptimiseResult optimise(const Scenario& given, const OptimiseRequirements& requi
     result.best = core.best;
     result.best.settings.position_feed_mm_min = scenario.cycle.position_feed_mm_min;
     result.saved_s = result.current.cycle_time_s - result.best.cycle_time_s;
-    result.binding = binding_requirements(optimiser, scenario, model, result.best, bound, fraction);
+    BindingChecks checks(scenario, model, result.best, bound, fraction);
+    checks.start(optimiser);
 
     const Cycle& c = scenario.cycle;
     if (c.parts_per_year > 0.0) {
@@ -970,6 +1024,8 @@ OptimiseResult optimise(const Scenario& given, const OptimiseRequirements& requi
             point.settings.position_feed_mm_min = scenario.cycle.position_feed_mm_min;
         }
     }
+
+    result.binding = checks.finish(optimiser);
 
     if (requirements.advice) {
         const bool uncertainty_binds =

@@ -149,6 +149,8 @@ struct ModelPoint {
 // The cycle model the optimiser searches: evaluate() by default. Tests pass
 // a stand-in for a revision of the model (e.g. repeats that change the time
 // and the uncertainty) to check the search against a brute force on it.
+// The optimiser calls it from several threads at once (its independent
+// searches run side by side): it must keep no shared state unguarded.
 using CycleModel = std::function<void(const Scenario&, ModelPoint&)>;
 void evaluate_point(const Scenario& scenario, ModelPoint& point);
 

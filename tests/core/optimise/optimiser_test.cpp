@@ -26,6 +26,7 @@
 #include "core/common/units.h"
 #include "core/cycle/cycle.h"
 #include "core/cycle/scenario.h"
+#include "core/optimise/optimise_json.h"
 
 namespace probecycle {
 namespace {
@@ -698,6 +699,30 @@ TEST(OptimiserBounds, EveryBestOnEveryPresetIsWithinTheBoundsAndValid) {
         }
     }
     EXPECT_GE(checked, 12);
+}
+
+// The binding requirements' searches run side by side on other threads:
+// the result is the same however the threads are scheduled, run after run,
+// and the same as a binding check run alone would give (the relaxed
+// overtravel fraction, re-optimised here on this thread).
+TEST(Optimiser, TheResultDoesNotDependOnWhichThreadRanWhat) {
+    const std::filesystem::path resources = PROBECYCLE_RESOURCES_DIR;
+    Scenario s =
+        scenario_from_json(read_text_file((resources / "examples/bore_two_touch.json").string()));
+    s.cycle.target_uncertainty_mm = 0.005;
+    s.probe.max_feed_mm_min = 800.0;
+    const std::string first = optimise_to_json(optimise(s));
+    for (int run = 0; run < 6; ++run) EXPECT_EQ(optimise_to_json(optimise(s)), first);
+
+    const OptimiseResult r = optimise(s);
+    OptimiseRequirements relaxed;
+    relaxed.max_overtravel_fraction = 0.8 * 1.1;  // the default, relaxed by 10 %
+    relaxed.pareto_points = 0;
+    relaxed.advice = false;
+    const bool faster = optimise(s, relaxed).best.cycle_time_s < r.best.cycle_time_s * (1.0 - 1e-3);
+    const bool named = std::find(r.binding.begin(), r.binding.end(),
+                                 Requirement::overtravel_fraction) != r.binding.end();
+    EXPECT_EQ(named, faster);
 }
 
 // The example bore with the 5 um target: before, a single touch at 6.6
