@@ -112,8 +112,8 @@ QString shown_value(const Scenario& scenario, const KeyInfo& key) {
 
 // The size a chart is drawn at for the page, in logical pixels, whatever the
 // window's size: at the page's text width (180 mm) its 12-pixel texts print
-// at about 8 points, and two charts fit on a page with a heading.
-constexpr QSize kChartSize{760, 380};
+// at about 8 points, and three charts fit on a page.
+constexpr QSize kChartSize{760, 330};
 // Device pixels per logical pixel: about 210 dpi on paper.
 constexpr double kChartScale = 2.0;
 
