@@ -1540,6 +1540,344 @@
     </message>
 </context>
 <context>
+    <name>ReportWord</name>
+    <message>
+        <source>Ring gauge</source>
+        <translation>Кольцо</translation>
+    </message>
+    <message>
+        <source>Circle fits by spindle orientation</source>
+        <translation>Окружности по ориентациям шпинделя</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Точки</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Длина</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Подбор</translation>
+    </message>
+    <message>
+        <source>Groups</source>
+        <translation>Группы</translation>
+    </message>
+    <message>
+        <source>Feeds</source>
+        <translation>Подачи</translation>
+    </message>
+    <message>
+        <source>Touches</source>
+        <translation>Касания</translation>
+    </message>
+    <message>
+        <source>C axis</source>
+        <translation>Ось C</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Итог</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>Величина</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Значение</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Ед.</translation>
+    </message>
+    <message>
+        <source>Uncertainty</source>
+        <translation>Неопределённость</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Число</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Мин.</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Макс.</translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation>Среднее</translation>
+    </message>
+    <message>
+        <source>RMS</source>
+        <translation>СКЗ</translation>
+    </message>
+    <message>
+        <source>Std. deviation</source>
+        <translation>СКО</translation>
+    </message>
+    <message>
+        <source>Gauge diameter</source>
+        <translation>Диаметр кольца</translation>
+    </message>
+    <message>
+        <source>Centre X</source>
+        <translation>Центр X</translation>
+    </message>
+    <message>
+        <source>Centre Y</source>
+        <translation>Центр Y</translation>
+    </message>
+    <message>
+        <source>Runout X</source>
+        <translation>Биение X</translation>
+    </message>
+    <message>
+        <source>Runout Y</source>
+        <translation>Биение Y</translation>
+    </message>
+    <message>
+        <source>Runout</source>
+        <translation>Биение</translation>
+    </message>
+    <message>
+        <source>Effective radius</source>
+        <translation>Эффективный радиус</translation>
+    </message>
+    <message>
+        <source>Radius X+</source>
+        <translation>Радиус X+</translation>
+    </message>
+    <message>
+        <source>Radius X-</source>
+        <translation>Радиус X-</translation>
+    </message>
+    <message>
+        <source>Radius Y+</source>
+        <translation>Радиус Y+</translation>
+    </message>
+    <message>
+        <source>Radius Y-</source>
+        <translation>Радиус Y-</translation>
+    </message>
+    <message>
+        <source>Largest residual</source>
+        <translation>Наибольший остаток</translation>
+    </message>
+    <message>
+        <source>Runout limit</source>
+        <translation>Предел биения</translation>
+    </message>
+    <message>
+        <source>Residual limit</source>
+        <translation>Предел остатка</translation>
+    </message>
+    <message>
+        <source>Spindle orientation</source>
+        <translation>Ориентация шпинделя</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Радиус</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Строка</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Направление</translation>
+    </message>
+    <message>
+        <source>Residual</source>
+        <translation>Остаток</translation>
+    </message>
+    <message>
+        <source>Surface Z</source>
+        <translation>Z поверхности</translation>
+    </message>
+    <message>
+        <source>Active length</source>
+        <translation>Активная длина</translation>
+    </message>
+    <message>
+        <source>Nominal length</source>
+        <translation>Номинальная длина</translation>
+    </message>
+    <message>
+        <source>Mean trigger Z</source>
+        <translation>Среднее Z срабатывания</translation>
+    </message>
+    <message>
+        <source>Range of trigger Z</source>
+        <translation>Размах Z срабатывания</translation>
+    </message>
+    <message>
+        <source>Effective length</source>
+        <translation>Эффективная длина</translation>
+    </message>
+    <message>
+        <source>Wear</source>
+        <translation>Износ</translation>
+    </message>
+    <message>
+        <source>Interpolation period</source>
+        <translation>Период интерполяции</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Группа</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Ось</translation>
+    </message>
+    <message>
+        <source>Delay</source>
+        <translation>Время задержки</translation>
+    </message>
+    <message>
+        <source>Position at zero feed</source>
+        <translation>Положение при нулевой подаче</translation>
+    </message>
+    <message>
+        <source>Lag [cycles]</source>
+        <translation>Запаздывание [циклов]</translation>
+    </message>
+    <message>
+        <source>Compensation lag [cycles]</source>
+        <translation>Запаздывание для компенсации [циклов]</translation>
+    </message>
+    <message>
+        <source>Residual (2σ)</source>
+        <translation>Остаток (2σ)</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Подача</translation>
+    </message>
+    <message>
+        <source>Mean deviation</source>
+        <translation>Среднее отклонение</translation>
+    </message>
+    <message>
+        <source>Fitted deviation</source>
+        <translation>Подобранное отклонение</translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation>Размах</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Измерено</translation>
+    </message>
+    <message>
+        <source>Axis X</source>
+        <translation>Ось, X</translation>
+    </message>
+    <message>
+        <source>Axis Y</source>
+        <translation>Ось, Y</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Угол</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Точка</translation>
+    </message>
+    <message>
+        <source>Deviation</source>
+        <translation>Отклонение</translation>
+    </message>
+    <message>
+        <source>Direct deviation</source>
+        <translation>Прямое отклонение</translation>
+    </message>
+    <message>
+        <source>System error</source>
+        <translation>Систем. погрешность</translation>
+    </message>
+    <message>
+        <source>C-axis uncertainty</source>
+        <translation>Неопределённость оси C</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Допуск</translation>
+    </message>
+    <message>
+        <source>Test part (on the machine)</source>
+        <translation>Проверяемая деталь (на станке)</translation>
+    </message>
+    <message>
+        <source>pasted</source>
+        <translation>вставлены</translation>
+    </message>
+    <message>
+        <source>deg</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>rad</source>
+        <translation>рад</translation>
+    </message>
+    <message>
+        <source>%1: statistics</source>
+        <extracomment>%1 a section of the report, e.g. Points</extracomment>
+        <translation>%1: статистика</translation>
+    </message>
+    <message>
+        <source>%1: the %2 largest of %4 by |%3|</source>
+        <extracomment>%1 a section (Points), %2 how many rows, %3 the column, %4 how many in all</extracomment>
+        <translation>%1: %2 наибольших из %4 по |%3|</translation>
+    </message>
+    <message>
+        <source>No warnings.</source>
+        <translation>Предупреждений нет.</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Ошибка</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Предупреждение</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Примечание</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the severity (Error, Warning, Note), %2 the warning&apos;s title</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Предупреждения</translation>
+    </message>
+    <message>
+        <source>Out of tol.</source>
+        <translation>Вне допуска</translation>
+    </message>
+    <message>
+        <source>identified</source>
+        <translation>определена</translation>
+    </message>
+    <message>
+        <source>not identified</source>
+        <translation>не определена</translation>
+    </message>
+</context>
+<context>
     <name>UncertaintyBudget</name>
     <message>
         <source>Scan wait of the skip input</source>

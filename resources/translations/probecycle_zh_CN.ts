@@ -1540,6 +1540,344 @@
     </message>
 </context>
 <context>
+    <name>ReportWord</name>
+    <message>
+        <source>Ring gauge</source>
+        <translation>环规</translation>
+    </message>
+    <message>
+        <source>Circle fits by spindle orientation</source>
+        <translation>按主轴方位拟合的圆</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>各点</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>长度</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <source>Groups</source>
+        <translation>分组</translation>
+    </message>
+    <message>
+        <source>Feeds</source>
+        <translation>各进给率</translation>
+    </message>
+    <message>
+        <source>Touches</source>
+        <translation>触测</translation>
+    </message>
+    <message>
+        <source>C axis</source>
+        <translation>C 轴</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>汇总</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Uncertainty</source>
+        <translation>不确定度</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>数量</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>最小</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>最大</translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation>平均</translation>
+    </message>
+    <message>
+        <source>RMS</source>
+        <translation>均方根</translation>
+    </message>
+    <message>
+        <source>Std. deviation</source>
+        <translation>标准差</translation>
+    </message>
+    <message>
+        <source>Gauge diameter</source>
+        <translation>环规直径</translation>
+    </message>
+    <message>
+        <source>Centre X</source>
+        <translation>中心 X</translation>
+    </message>
+    <message>
+        <source>Centre Y</source>
+        <translation>中心 Y</translation>
+    </message>
+    <message>
+        <source>Runout X</source>
+        <translation>跳动 X</translation>
+    </message>
+    <message>
+        <source>Runout Y</source>
+        <translation>跳动 Y</translation>
+    </message>
+    <message>
+        <source>Runout</source>
+        <translation>跳动</translation>
+    </message>
+    <message>
+        <source>Effective radius</source>
+        <translation>有效半径</translation>
+    </message>
+    <message>
+        <source>Radius X+</source>
+        <translation>半径 X+</translation>
+    </message>
+    <message>
+        <source>Radius X-</source>
+        <translation>半径 X-</translation>
+    </message>
+    <message>
+        <source>Radius Y+</source>
+        <translation>半径 Y+</translation>
+    </message>
+    <message>
+        <source>Radius Y-</source>
+        <translation>半径 Y-</translation>
+    </message>
+    <message>
+        <source>Largest residual</source>
+        <translation>最大残差</translation>
+    </message>
+    <message>
+        <source>Runout limit</source>
+        <translation>跳动极限</translation>
+    </message>
+    <message>
+        <source>Residual limit</source>
+        <translation>残差极限</translation>
+    </message>
+    <message>
+        <source>Spindle orientation</source>
+        <translation>主轴方位</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>半径</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>行</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <source>Residual</source>
+        <translation>残差</translation>
+    </message>
+    <message>
+        <source>Surface Z</source>
+        <translation>表面 Z</translation>
+    </message>
+    <message>
+        <source>Active length</source>
+        <translation>有效长度（对刀）</translation>
+    </message>
+    <message>
+        <source>Nominal length</source>
+        <translation>名义长度</translation>
+    </message>
+    <message>
+        <source>Mean trigger Z</source>
+        <translation>平均触发 Z</translation>
+    </message>
+    <message>
+        <source>Range of trigger Z</source>
+        <translation>触发 Z 极差</translation>
+    </message>
+    <message>
+        <source>Effective length</source>
+        <translation>有效长度</translation>
+    </message>
+    <message>
+        <source>Wear</source>
+        <translation>磨损</translation>
+    </message>
+    <message>
+        <source>Interpolation period</source>
+        <translation>插补周期</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>组</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>轴</translation>
+    </message>
+    <message>
+        <source>Delay</source>
+        <translation>延迟时间</translation>
+    </message>
+    <message>
+        <source>Position at zero feed</source>
+        <translation>零进给时的位置</translation>
+    </message>
+    <message>
+        <source>Lag [cycles]</source>
+        <translation>滞后 [周期]</translation>
+    </message>
+    <message>
+        <source>Compensation lag [cycles]</source>
+        <translation>补偿滞后 [周期]</translation>
+    </message>
+    <message>
+        <source>Residual (2σ)</source>
+        <translation>残差 (2σ)</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>进给率</translation>
+    </message>
+    <message>
+        <source>Mean deviation</source>
+        <translation>平均偏差</translation>
+    </message>
+    <message>
+        <source>Fitted deviation</source>
+        <translation>拟合偏差</translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation>极差</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>测得值</translation>
+    </message>
+    <message>
+        <source>Axis X</source>
+        <translation>轴线 X</translation>
+    </message>
+    <message>
+        <source>Axis Y</source>
+        <translation>轴线 Y</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>角度</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>点号</translation>
+    </message>
+    <message>
+        <source>Deviation</source>
+        <translation>偏差</translation>
+    </message>
+    <message>
+        <source>Direct deviation</source>
+        <translation>直接偏差</translation>
+    </message>
+    <message>
+        <source>System error</source>
+        <translation>系统误差</translation>
+    </message>
+    <message>
+        <source>C-axis uncertainty</source>
+        <translation>C 轴不确定度</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>公差</translation>
+    </message>
+    <message>
+        <source>Test part (on the machine)</source>
+        <translation>被测零件（机上）</translation>
+    </message>
+    <message>
+        <source>pasted</source>
+        <translation>粘贴</translation>
+    </message>
+    <message>
+        <source>deg</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>rad</source>
+        <translation>rad</translation>
+    </message>
+    <message>
+        <source>%1: statistics</source>
+        <extracomment>%1 a section of the report, e.g. Points</extracomment>
+        <translation>%1：统计</translation>
+    </message>
+    <message>
+        <source>%1: the %2 largest of %4 by |%3|</source>
+        <extracomment>%1 a section (Points), %2 how many rows, %3 the column, %4 how many in all</extracomment>
+        <translation>%1：%4 个中 |%3| 最大的 %2 个</translation>
+    </message>
+    <message>
+        <source>No warnings.</source>
+        <translation>无警告。</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>警示</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>提示</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 the severity (Error, Warning, Note), %2 the warning&apos;s title</extracomment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Out of tol.</source>
+        <translation>超差</translation>
+    </message>
+    <message>
+        <source>identified</source>
+        <translation>已识别</translation>
+    </message>
+    <message>
+        <source>not identified</source>
+        <translation>未识别</translation>
+    </message>
+</context>
+<context>
     <name>UncertaintyBudget</name>
     <message>
         <source>Scan wait of the skip input</source>

@@ -16,6 +16,8 @@ namespace probecycle::ui {
 
 // Rows of "title: message", coloured by severity; an "all clear" line when empty.
 class WarningList : public QWidget {
+    Q_OBJECT
+
   public:
     explicit WarningList(QWidget* parent = nullptr);
 
@@ -30,6 +32,7 @@ class WarningList : public QWidget {
 
     QStringList codes() const;
     QStringList texts() const;
+    const std::vector<Item>& items() const { return items_; }
 
   private:
     QVBoxLayout* layout_{nullptr};

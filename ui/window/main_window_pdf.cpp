@@ -15,7 +15,9 @@
 #include "ui/common/parameter_info.h"
 #include "ui/common/pdf_report.h"
 #include "ui/common/plot_view.h"
+#include "ui/common/report_tables.h"
 #include "ui/common/text_format.h"
+#include "ui/common/warning_list.h"
 #include "ui/comparison/comparison_tab.h"
 #include "ui/cycle/cycle_charts.h"
 #include "ui/cycle/optimise_panel.h"
@@ -29,61 +31,6 @@
 namespace probecycle::ui {
 
 namespace {
-
-// One CSV line's fields (RFC 4180 quoting, as the reports write them).
-QStringList csv_fields(const QString& line) {
-    QStringList fields;
-    QString field;
-    bool quoted = false;
-    for (qsizetype i = 0; i < line.size(); ++i) {
-        const QChar c = line[i];
-        if (quoted) {
-            if (c == QLatin1Char('"') && i + 1 < line.size() && line[i + 1] == QLatin1Char('"')) {
-                field += c;
-                ++i;
-            } else if (c == QLatin1Char('"')) {
-                quoted = false;
-            } else {
-                field += c;
-            }
-        } else if (c == QLatin1Char('"')) {
-            quoted = true;
-        } else if (c == QLatin1Char(',')) {
-            fields.append(field);
-            field.clear();
-        } else {
-            field += c;
-        }
-    }
-    fields.append(field);
-    return fields;
-}
-
-// A tab's CSV report as the PDF's tables: a "# name" line heads a section, a
-// "# key,value" line is a paragraph, the rows up to a blank line a table.
-void add_csv(PdfReport& report, const QString& csv) {
-    QList<QStringList> rows;
-    const auto flush = [&] {
-        report.add_table(rows);
-        rows.clear();
-    };
-    for (const QString& line : csv.split(QLatin1Char('\n'))) {
-        if (line.trimmed().isEmpty()) {
-            flush();
-        } else if (line.startsWith(QLatin1Char('#'))) {
-            flush();
-            const QString text = line.mid(1).trimmed();
-            if (text.contains(QLatin1Char(','))) {
-                report.add_paragraph(csv_fields(text).join(QStringLiteral(": ")));
-            } else {
-                report.add_heading(text);
-            }
-        } else {
-            rows.append(csv_fields(line));
-        }
-    }
-    flush();
-}
 
 // A scenario key's value as the editors show it (unit, digits, the word
 // for 0 where 0 means something).
@@ -172,7 +119,11 @@ QByteArray MainWindow::pdf_report_bytes() {
                     .arg(QLocale().toString(static_cast<qulonglong>(points)))
                     .arg(kReportLargestRows));
         }
-        add_csv(report, QString::fromStdString(*csv));
+        std::vector<WarningList::Item> warnings;
+        for (const WarningList* list : tab->findChildren<WarningList*>()) {
+            warnings.insert(warnings.end(), list->items().begin(), list->items().end());
+        }
+        add_report_csv(report, QString::fromStdString(*csv), warnings);
         return report.render();
     }
 

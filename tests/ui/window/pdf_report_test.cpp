@@ -242,10 +242,28 @@ TEST(PdfReport, ALabTabReportsItsOwnResults) {
     const QString path = dir.filePath(QStringLiteral("latency.pdf"));
     ASSERT_TRUE(window->export_pdf_report(path)) << window->last_error().toStdString();
     const QString text = squeezed(pdf_text(path));
-    // The fit's figures, as its CSV report names them.
-    EXPECT_TRUE(text.contains(squeezed(QStringLiteral("delay_s")))) << text.toStdString();
+    // The fit's figures under the words a reader reads (the CSV's keys are
+    // for machines), the tab's warnings as the tab shows them.
+    EXPECT_TRUE(text.contains(squeezed(QStringLiteral("Delay [s]")))) << text.toStdString();
+    EXPECT_FALSE(text.contains(squeezed(QStringLiteral("delay_s")))) << text.toStdString();
+    EXPECT_FALSE(text.contains(squeezed(QStringLiteral("code,severity"))));
     EXPECT_FALSE(text.contains(squeezed(QStringLiteral("No results yet"))));
     EXPECT_GE(pdf_pages(path), 2);
+
+    // In Russian: the tables' words and numbers too.
+    window->set_language(QStringLiteral("ru"));
+    QCoreApplication::processEvents();
+    const QString ru = dir.filePath(QStringLiteral("latency_ru.pdf"));
+    ASSERT_TRUE(window->export_pdf_report(ru)) << window->last_error().toStdString();
+    const QString ru_text = squeezed(pdf_text(ru));
+    EXPECT_TRUE(ru_text.contains(squeezed(QStringLiteral("Время задержки [с]"))))
+        << ru_text.toStdString();
+    EXPECT_TRUE(ru_text.contains(squeezed(QStringLiteral("Группа")))) << ru_text.toStdString();
+    for (const char* english : {"Delay", "group", "interpolation_period", "0.00"}) {
+        EXPECT_FALSE(ru_text.contains(squeezed(QLatin1String(english)))) << english;
+    }
+    window->set_language(QStringLiteral("en"));
+    apply_language(QStringLiteral("en"));
 }
 
 // 10 000 ring points: a report of a few pages (their statistics and the
@@ -275,7 +293,7 @@ TEST(PdfReport, ALabTabSummarisesManyPoints) {
     const QString text = squeezed(pdf_text(path));
     EXPECT_TRUE(text.contains(squeezed(QStringLiteral("10,000 points: the tables give their"))))
         << text.left(2000).toStdString();
-    EXPECT_TRUE(text.contains(squeezed(QStringLiteral("points summary"))));
+    EXPECT_TRUE(text.contains(squeezed(QStringLiteral("Points: statistics"))));
 
     const QString report = dir.filePath(QStringLiteral("ring.csv"));
     ASSERT_TRUE(lab->export_report(report));
