@@ -238,7 +238,11 @@ const Dialect& grbl_dialect() {
 //   the previous move ended (Fanuc buffers the next block during a move,
 //   FS16i/18i/21i-TB "Notes on using custom macros"; Yaskawa waits). A read
 //   taken early can only miss this alarm, never raise a false one. The skip
-//   position is read right after the G31 as working Fanuc probing programs
+//   position is read right after the G31, with no non-buffered M code: G31
+//   stops the read-ahead until the skip block ends (Series 21i/210i-MB
+//   operator's manual B-63614EN/01 s.15.7.1 p.322, "M codes that are not
+//   buffered, G53, G31", example "N1 G31 X100.0 ; N2 #100=1"; the 30i/31i/32i
+//   manual B-63944EN/03 s.16.8 the same), as working Fanuc probing programs
 //   do (mojimould/mould_moji O919100.nc: IF[#5063LE...]GOTO800, #3000=141).
 // - A protected move is G31 to the move's end with the mirror of that
 //   check: the end kept in #101 as for a probe, then a jump to alarm 102
