@@ -146,13 +146,15 @@ void add_warnings(PdfReport& report, const std::vector<WarningList::Item>& warni
         return;
     }
     for (const WarningList::Item& item : warnings) {
-        const QString severity =
-            item.severity == Severity::error     ? QCoreApplication::translate("ReportWord", "Error")
-            : item.severity == Severity::warning ? QCoreApplication::translate("ReportWord", "Warning")
-                                                 : QCoreApplication::translate("ReportWord", "Note");
+        const QString severity = item.severity == Severity::error
+                                     ? QCoreApplication::translate("ReportWord", "Error")
+                                 : item.severity == Severity::warning
+                                     ? QCoreApplication::translate("ReportWord", "Warning")
+                                     : QCoreApplication::translate("ReportWord", "Note");
         //: %1 the severity (Error, Warning, Note), %2 the warning's title
-        report.add_item(QCoreApplication::translate("ReportWord", "%1: %2").arg(severity, item.title),
-                        item.message);
+        report.add_item(
+            QCoreApplication::translate("ReportWord", "%1: %2").arg(severity, item.title),
+            item.message);
     }
 }
 
@@ -184,7 +186,6 @@ QStringList fields(const QString& line) {
     fields.append(field);
     return fields;
 }
-
 
 }  // namespace
 

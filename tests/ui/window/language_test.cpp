@@ -289,20 +289,27 @@ TEST_F(WindowLanguageTest, EveryTabShowsItsTextsWholeInEveryLanguageAndSize) {
     }
 }
 
+// A window started in `code` at `size`, shown and laid out, as at start.
+std::unique_ptr<MainWindow> started_window(const char* code, QSize size) {
+    apply_language(QLatin1String(code));
+    MainWindowOptions options;
+    options.persistent = false;
+    options.show_dialogs = false;
+    auto window = std::make_unique<MainWindow>(options);
+    window->resize(size);
+    window->show();
+    for (int i = 0; i < 4; ++i) QApplication::processEvents();
+    return window;
+}
+
 // A tab shown for the first time after the window started lays its charts
 // out at their real size: no axis title drawn small (in a real X window a
 // tab hidden at start once drew them at about 5 pixels; offscreen too).
 TEST(WindowFirstShow, EveryTabDrawsReadableAxisTitlesInEveryLanguageAndSize) {
     for (const char* code : {"en", "zh_CN", "ru"}) {
         for (const QSize size : {QSize(1280, 800), QSize(1920, 1080)}) {
-            apply_language(QLatin1String(code));
-            MainWindowOptions options;
-            options.persistent = false;
-            options.show_dialogs = false;
-            MainWindow window(options);
-            window.resize(size);
-            window.show();
-            for (int i = 0; i < 4; ++i) QApplication::processEvents();
+            const std::unique_ptr<MainWindow> started = started_window(code, size);
+            MainWindow& window = *started;
             auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("tabs"));
             for (int t = 0; t < tabs->count(); ++t) {
                 tabs->setCurrentIndex(t);
@@ -333,14 +340,8 @@ TEST(WindowFirstShow, EveryTabDrawsReadableAxisTitlesInEveryLanguageAndSize) {
 TEST(WindowFirstShow, TheParameterPanelShowsEveryEditorAt1920x1080InEveryLanguage) {
     for (const char* code : {"en", "zh_CN", "ru"}) {
         for (const QSize size : {QSize(1280, 800), QSize(1920, 1080)}) {
-            apply_language(QLatin1String(code));
-            MainWindowOptions options;
-            options.persistent = false;
-            options.show_dialogs = false;
-            MainWindow window(options);
-            window.resize(size);
-            window.show();
-            for (int i = 0; i < 4; ++i) QApplication::processEvents();
+            const std::unique_ptr<MainWindow> started = started_window(code, size);
+            MainWindow& window = *started;
             auto* panel = window.findChild<QWidget*>(QStringLiteral("parameters"));
             ASSERT_NE(panel, nullptr);
             auto* scroll = qobject_cast<QScrollArea*>(panel->parentWidget()->parentWidget());

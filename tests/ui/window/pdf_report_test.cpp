@@ -69,10 +69,16 @@ QString first_page_text(const QString& path) {
                 QStringLiteral("-l"), QStringLiteral("1"), path, QStringLiteral("-")});
 }
 
-// The pages the pictures start on, in order (pdfimages -list's first column,
-// each picture counted once, by its object).
-QList<int> pdf_image_pages(const QString& path) {
-    QList<int> pages;
+// The pictures in the PDF (pdfimages -list), each with the page it starts
+// on and its "width x height" in pixels. A picture is listed once per page
+// that draws any of it (a page clips the one before its top): each is
+// counted once, by its object.
+struct PdfImage {
+    int page{0};
+    QString size;
+};
+QList<PdfImage> pdf_images(const QString& path) {
+    QList<PdfImage> images;
     QStringList objects;
     const QStringList lines =
         run(QStringLiteral("pdfimages"), {QStringLiteral("-list"), path}).split(QLatin1Char('\n'));
@@ -81,29 +87,22 @@ QList<int> pdf_image_pages(const QString& path) {
         if (fields.size() > 10 && fields[2] == QLatin1String("image") &&
             !objects.contains(fields[10])) {
             objects << fields[10];
-            pages << fields[0].toInt();
+            images.append({fields[0].toInt(), fields[3] + QLatin1Char('x') + fields[4]});
         }
     }
-    return pages;
+    return images;
 }
 
-// The pictures in the PDF, "width x height" in pixels each (pdfimages
-// -list). A picture is listed once per page that draws any of it (a page
-// clips the one before its top): each is counted once, by its object.
 QStringList pdf_image_sizes(const QString& path) {
     QStringList sizes;
-    QStringList objects;
-    const QStringList lines =
-        run(QStringLiteral("pdfimages"), {QStringLiteral("-list"), path}).split(QLatin1Char('\n'));
-    for (const QString& line : lines.mid(2)) {
-        const QStringList fields = line.simplified().split(QLatin1Char(' '));
-        if (fields.size() > 10 && fields[2] == QLatin1String("image") &&
-            !objects.contains(fields[10])) {
-            objects << fields[10];
-            sizes << fields[3] + QLatin1Char('x') + fields[4];
-        }
-    }
+    for (const PdfImage& image : pdf_images(path)) sizes << image.size;
     return sizes;
+}
+
+QList<int> pdf_image_pages(const QString& path) {
+    QList<int> pages;
+    for (const PdfImage& image : pdf_images(path)) pages << image.page;
+    return pages;
 }
 
 int pdf_pages(const QString& path) {
