@@ -623,7 +623,13 @@ void MainWindow::save_settings(bool with_scenario) const {
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
-    settings.setValue(QStringLiteral("window/splitter"), main_splitter_->saveState());
+    // The panel's width only when the user chose it: otherwise it follows
+    // the window's at the next start too (fit_panel_width).
+    if (panel_sized_by_user_) {
+        settings.setValue(QStringLiteral("window/splitter"), main_splitter_->saveState());
+    } else {
+        settings.remove(QStringLiteral("window/splitter"));
+    }
     settings.setValue(QStringLiteral("window/right_splitter"), right_splitter_->saveState());
     settings.setValue(QStringLiteral("files/recent"), recent_files_);
     settings.setValue(QStringLiteral("files/last_dir"), remembered_folder());

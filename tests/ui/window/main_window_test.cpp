@@ -32,6 +32,7 @@
 #include "core/program/program_writer.h"
 #include "ui/common/language.h"
 #include "ui/common/plot_view.h"
+#include "ui/cycle/parameter_panel.h"
 #include "ui/lab/calibration_tab.h"
 #include "ui/lab/latency_tab.h"
 #include "ui/program/program_dialog.h"
@@ -1156,6 +1157,43 @@ TEST(MainWindowSettingsTest, DiscardedUntitledEditsDoNotComeBack) {
     }
     MainWindow second(options);
     EXPECT_EQ(scenario_to_json(second.scenario()), scenario_to_json(Scenario{}));
+    QSettings().clear();
+}
+
+// The parameter panel's width follows the window's size at every start
+// (two columns at 1920x1080, one at 1280x800) until the user drags the
+// divider; from then on the width they chose comes back.
+TEST(MainWindowSettingsTest, ThePanelsWidthFollowsTheWindowUntilTheUserSetsIt) {
+    QSettings().clear();
+    MainWindowOptions options;
+    options.show_dialogs = false;
+    options.unsaved_answer = UnsavedAnswer::discard;
+    const auto panel_width = [](MainWindow& window) {
+        return window.findChild<QSplitter*>(QStringLiteral("main-splitter"))->sizes().value(0);
+    };
+    {
+        MainWindow first(options);
+        first.resize(1920, 1080);
+        first.show();
+        QCoreApplication::processEvents();
+        EXPECT_GT(panel_width(first), ParameterPanel::two_column_width());
+        EXPECT_TRUE(first.close());
+    }
+    {
+        MainWindow second(options);  // remembered 1920x1080, made smaller
+        second.resize(1280, 800);
+        second.show();
+        QCoreApplication::processEvents();
+        EXPECT_EQ(panel_width(second), ParameterPanel::one_column_width());
+        auto* splitter = second.findChild<QSplitter*>(QStringLiteral("main-splitter"));
+        splitter->setSizes({400, splitter->width() - 400});
+        emit splitter->splitterMoved(400, 1);  // as a drag of the divider says
+        EXPECT_TRUE(second.close());
+    }
+    MainWindow third(options);
+    third.show();
+    QCoreApplication::processEvents();
+    EXPECT_EQ(panel_width(third), 400);
     QSettings().clear();
 }
 
