@@ -808,61 +808,78 @@ constexpr double kMeaningfulSaving = 1e-3;
 // relaxed by 10 %. The rapid (which also times the lifts) and the repeat
 // limit (the key's range) are named by where the best setting lies.
 //
-// The searches of a scenario of their own are independent: start() hands
-// them to a TaskGroup, while the caller goes on with the optimiser it has
-// (the uncertainty bound's check, the Pareto front); finish() waits and reads
-// their results in a fixed order, so the result does not depend on which
-// thread ran what.
+// The searches of a scenario of their own are independent: those that need
+// nothing of the best setting start before it is found
+// (start_independent()), the others once it is (start_dependent()), each on
+// a TaskGroup while the caller goes on with the optimiser it has (the best
+// setting, the uncertainty bound's check, the Pareto front). finish() waits
+// and compares their times in a fixed order, so the result does not depend
+// on which thread ran what.
 class BindingChecks {
   public:
-    BindingChecks(const Scenario& scenario, const CycleModel& model, const Candidate& best,
-                  double bound_mm, double fraction)
-        : scenario_(scenario),
-          model_(model),
-          best_(best),
-          bound_mm_(bound_mm),
-          fraction_(fraction),
-          faster_than_(best.cycle_time_s * (1.0 - kMeaningfulSaving)) {}
+    BindingChecks(const Scenario& scenario, const CycleModel& model, double bound_mm,
+                  double fraction)
+        : scenario_(scenario), model_(model), bound_mm_(bound_mm), fraction_(fraction) {}
 
-    void start(Optimiser& optimiser) {
+    // The overtravel fraction, the probe's maximum feed and the part position
+    // uncertainty behind the start rule, each relaxed.
+    void start_independent() {
         const Scenario& scenario = scenario_;
         if (fraction_ < kMaxOvertravelFraction) {
-            later(overtravel_, scenario, std::min(kMaxOvertravelFraction, fraction_ * kRelax));
+            later(overtravel_s_, scenario, std::min(kMaxOvertravelFraction, fraction_ * kRelax));
         }
         if (scenario.probe.max_feed_mm_min > 0.0) {
             Scenario changed = scenario;
             changed.probe.max_feed_mm_min *= kRelax;
-            later(probe_max_feed_, changed, fraction_);
+            later(probe_max_feed_s_, changed, fraction_);
         }
         // The start rule: the part position uncertainty lengthens the start,
-        // or a bore's size caps the feed (not relaxed: the feature is the
-        // part's); then the shortest start, relaxed as the part's
-        // uncertainty is, when the part's does not bind.
-        tasks_.run([this] { start_ = start_binds(); });
+        // or a bore's size caps the feed (not relaxed: the feature is the part's).
+        if (scenario.cycle.part_position_uncertainty_mm > 0.0) {
+            Scenario changed = scenario;
+            changed.cycle.part_position_uncertainty_mm /= kRelax;
+            later(part_position_s_, changed, fraction_);
+        }
+    }
+
+    // The shortest start and the slowest feed, relaxed where the best
+    // setting presses against them.
+    void start_dependent(Optimiser& optimiser, const Candidate& best) {
+        const Scenario& scenario = scenario_;
+        const Settings& b = best.settings;
+        // The shortest start, relaxed as the part's uncertainty is (it binds
+        // only when the part's does not; searched anyway, side by side).
+        if (scenario.cycle.min_start_mm > 0.0 &&
+            b.approach_mm <= approach_up(scenario.cycle.min_start_mm) + 1e-9) {
+            Scenario changed = scenario;
+            changed.cycle.min_start_mm /= kRelax;
+            later(min_start_s_, changed, fraction_);
+        }
         // The slowest feed: lower, a tight target might need fewer repeats.
         const Search& s = optimiser.search();
-        const Settings& b = best_.settings;
         const double slowest = b.strategy == Strategy::two_touch
                                    ? std::min(b.probe_feed_mm_min, b.measure_feed_mm_min)
                                    : b.probe_feed_mm_min;
         if (slowest <= s.min_feed() * (1.0 + 1e-9) && s.min_feed() > kMinFeed_mm_min) {
             Scenario changed = scenario;
             changed.cycle.min_feed_mm_min = std::max(kMinFeed_mm_min, s.min_feed() / kRelax);
-            later(min_feed_, changed, fraction_);
+            later(min_feed_s_, changed, fraction_);
         }
     }
 
-    std::vector<Requirement> finish(Optimiser& optimiser) {
+    std::vector<Requirement> finish(Optimiser& optimiser, const Candidate& best) {
         const Scenario& scenario = scenario_;
+        const double faster_than = best.cycle_time_s * (1.0 - kMeaningfulSaving);
         std::vector<Requirement> binding;
         const bool uncertainty =
-            std::isfinite(bound_mm_) && faster(optimiser, scenario, bound_mm_ * kRelax, fraction_);
+            std::isfinite(bound_mm_) &&
+            relaxed_time(optimiser, scenario, bound_mm_ * kRelax, fraction_) < faster_than;
         tasks_.wait();
         if (uncertainty) binding.push_back(uncertainty_requirement(scenario));
-        if (overtravel_) binding.push_back(Requirement::overtravel_fraction);
-        if (probe_max_feed_) binding.push_back(Requirement::probe_max_feed);
+        if (overtravel_s_ < faster_than) binding.push_back(Requirement::overtravel_fraction);
+        if (probe_max_feed_s_ < faster_than) binding.push_back(Requirement::probe_max_feed);
         Search& s = optimiser.search();
-        const Settings& b = best_.settings;
+        const Settings& b = best.settings;
         const bool two = b.strategy == Strategy::two_touch;
         const double top =
             two ? std::max(b.probe_feed_mm_min, b.measure_feed_mm_min) : b.probe_feed_mm_min;
@@ -870,9 +887,10 @@ class BindingChecks {
                                scenario.probe.max_feed_mm_min <= scenario.machine.rapid_feed_mm_min;
         if (on_bound(top, s.cap_mm_min()) && !probe_cap)
             binding.push_back(Requirement::machine_rapid);
-        if (min_feed_) binding.push_back(Requirement::min_feed);
-        if (start_ || (on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()) &&
-                       s.start_feed_mm_min() < s.cap_mm_min()))
+        if (min_feed_s_ < faster_than) binding.push_back(Requirement::min_feed);
+        const bool start = part_position_s_ < faster_than || min_start_s_ < faster_than;
+        if (start || (on_bound(b.probe_feed_mm_min, s.start_feed_mm_min()) &&
+                      s.start_feed_mm_min() < s.cap_mm_min()))
             binding.push_back(Requirement::start_distance);
         if (b.repeats == kMaxRepeats && std::isfinite(bound_mm_))
             binding.push_back(Requirement::repeats_limit);
@@ -880,49 +898,31 @@ class BindingChecks {
     }
 
   private:
-    bool faster(Optimiser& other, const Scenario& changed, double bound, double relaxed_fraction) {
+    // The fastest time with a requirement relaxed; infinite when none meets them.
+    static double relaxed_time(Optimiser& other, const Scenario& changed, double bound,
+                               double relaxed_fraction) {
         try {
-            return fastest_rounded(other, changed, bound, relaxed_fraction).best.cycle_time_s <
-                   faster_than_;
+            return fastest_rounded(other, changed, bound, relaxed_fraction).best.cycle_time_s;
         } catch (const InputError&) {
-            return false;
+            return kInf;
         }
     }
-    bool faster_with(const Scenario& changed, double relaxed_fraction) {
-        Optimiser other(changed, model_, relaxed_fraction);
-        return faster(other, changed, bound_mm_, relaxed_fraction);
-    }
-    void later(bool& result, const Scenario& changed, double relaxed_fraction) {
+    void later(double& result, const Scenario& changed, double relaxed_fraction) {
         tasks_.run([this, &result, changed, relaxed_fraction] {
-            result = faster_with(changed, relaxed_fraction);
+            Optimiser other(changed, model_, relaxed_fraction);
+            result = relaxed_time(other, changed, bound_mm_, relaxed_fraction);
         });
-    }
-    bool start_binds() {
-        const Scenario& scenario = scenario_;
-        if (scenario.cycle.part_position_uncertainty_mm > 0.0) {
-            Scenario changed = scenario;
-            changed.cycle.part_position_uncertainty_mm /= kRelax;
-            if (faster_with(changed, fraction_)) return true;
-        }
-        if (scenario.cycle.min_start_mm > 0.0 &&
-            best_.settings.approach_mm <= approach_up(scenario.cycle.min_start_mm) + 1e-9) {
-            Scenario changed = scenario;
-            changed.cycle.min_start_mm /= kRelax;
-            return faster_with(changed, fraction_);
-        }
-        return false;
     }
 
     const Scenario& scenario_;
     const CycleModel& model_;
-    const Candidate& best_;
     double bound_mm_;
     double fraction_;
-    double faster_than_;
-    bool overtravel_{false};
-    bool probe_max_feed_{false};
-    bool start_{false};
-    bool min_feed_{false};
+    double overtravel_s_{kInf};
+    double probe_max_feed_s_{kInf};
+    double part_position_s_{kInf};
+    double min_start_s_{kInf};
+    double min_feed_s_{kInf};
     TaskGroup tasks_;  // last: destroyed (its tasks waited for) first
 };
 
@@ -968,13 +968,14 @@ OptimiseResult optimise(const Scenario& given, const OptimiseRequirements& requi
     result.uncertainty_bound_mm = bound;
     result.current_meets_requirements = unmet_requirements(given, current, fraction, bound).empty();
 
+    BindingChecks checks(scenario, model, bound, fraction);
+    checks.start_independent();
     Optimiser optimiser(scenario, model, fraction);
     const Core core = fastest_rounded(optimiser, scenario, bound, fraction);
     result.best = core.best;
     result.best.settings.position_feed_mm_min = scenario.cycle.position_feed_mm_min;
     result.saved_s = result.current.cycle_time_s - result.best.cycle_time_s;
-    BindingChecks checks(scenario, model, result.best, bound, fraction);
-    checks.start(optimiser);
+    checks.start_dependent(optimiser, result.best);
 
     const Cycle& c = scenario.cycle;
     if (c.parts_per_year > 0.0) {
@@ -1025,7 +1026,7 @@ OptimiseResult optimise(const Scenario& given, const OptimiseRequirements& requi
         }
     }
 
-    result.binding = checks.finish(optimiser);
+    result.binding = checks.finish(optimiser, result.best);
 
     if (requirements.advice) {
         const bool uncertainty_binds =
