@@ -536,16 +536,24 @@ struct PlotView::Impl {
         }
     }
 
-    // Every text the chart draws, as plain text.
-    QStringList drawn_texts() const {
-        QStringList out;
+    // Every text item the chart draws (axis labels and titles, its title).
+    std::vector<const QGraphicsTextItem*> drawn_text_items() const {
+        std::vector<const QGraphicsTextItem*> out;
         const QGraphicsScene* scene = chart->scene();
         if (scene == nullptr) return out;
         for (QGraphicsItem* item : scene->items()) {
             const auto* text = dynamic_cast<const QGraphicsTextItem*>(item);
-            if (text == nullptr || !text->isVisible() || !chart->isAncestorOf(text)) continue;
-            out << plain(text->toPlainText());
+            if (text != nullptr && text->isVisible() && chart->isAncestorOf(text)) {
+                out.push_back(text);
+            }
         }
+        return out;
+    }
+
+    // Every text the chart draws, as plain text.
+    QStringList drawn_texts() const {
+        QStringList out;
+        for (const QGraphicsTextItem* text : drawn_text_items()) out << plain(text->toPlainText());
         return out;
     }
 
@@ -553,12 +561,8 @@ struct PlotView::Impl {
     // the view cuts them off (an axis squeezed narrower than its labels).
     QStringList texts_past_edges() const {
         QStringList out;
-        const QGraphicsScene* scene = chart->scene();
-        if (scene == nullptr) return out;
         const QRectF bounds = chart->geometry();
-        for (QGraphicsItem* item : scene->items()) {
-            const auto* text = dynamic_cast<const QGraphicsTextItem*>(item);
-            if (text == nullptr || !text->isVisible() || !chart->isAncestorOf(text)) continue;
+        for (const QGraphicsTextItem* text : drawn_text_items()) {
             const double margin = text->document()->documentMargin();
             const QRectF drawn = text->sceneBoundingRect().adjusted(margin, 0.0, -margin, 0.0);
             if (drawn.left() < bounds.left() - 0.5 || drawn.right() > bounds.right() + 0.5) {

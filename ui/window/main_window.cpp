@@ -116,6 +116,18 @@ QStringList changed_keys(const Scenario& before, const Scenario& after) {
     return out;
 }
 
+// A divider whose place follows the window (the panel's width, the warnings
+// pane's height) until the user drags it: kept for the next start only then,
+// so an untouched one follows the window there too.
+void save_chosen_split(QSettings& settings, const QString& key, const QSplitter& splitter,
+                       bool chosen) {
+    if (chosen) {
+        settings.setValue(key, splitter.saveState());
+    } else {
+        settings.remove(key);
+    }
+}
+
 }  // namespace
 
 MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
@@ -180,10 +192,9 @@ void MainWindow::build_ui() {
             [this](const QString& code) { apply_fix_for(code); });
     connect(warnings_, &WarningsPanel::counts_changed, this, &MainWindow::update_warning_counts);
     warnings_scroll_ = new QScrollArea;
-    auto* warnings_scroll = warnings_scroll_;
-    warnings_scroll->setWidget(warnings_);
-    warnings_scroll->setWidgetResizable(true);
-    warnings_scroll->setFrameShape(QFrame::NoFrame);
+    warnings_scroll_->setWidget(warnings_);
+    warnings_scroll_->setWidgetResizable(true);
+    warnings_scroll_->setFrameShape(QFrame::NoFrame);
     warnings_title_ = new QLabel;
     warnings_title_->setObjectName(QStringLiteral("warnings-title"));
     QFont bold = warnings_title_->font();
@@ -195,7 +206,7 @@ void MainWindow::build_ui() {
     warnings_layout->setContentsMargins(0, 0, 0, 0);
     warnings_layout->setSpacing(2);
     warnings_layout->addWidget(warnings_title_);
-    warnings_layout->addWidget(warnings_scroll, 1);
+    warnings_layout->addWidget(warnings_scroll_, 1);
 
     right_splitter_ = new QSplitter(Qt::Vertical);
     right_splitter_->setChildrenCollapsible(false);
@@ -623,14 +634,10 @@ void MainWindow::save_settings(bool with_scenario) const {
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
-    // The panel's width only when the user chose it: otherwise it follows
-    // the window's at the next start too (fit_panel_width).
-    if (panel_sized_by_user_) {
-        settings.setValue(QStringLiteral("window/splitter"), main_splitter_->saveState());
-    } else {
-        settings.remove(QStringLiteral("window/splitter"));
-    }
-    settings.setValue(QStringLiteral("window/right_splitter"), right_splitter_->saveState());
+    save_chosen_split(settings, QStringLiteral("window/splitter"), *main_splitter_,
+                      panel_sized_by_user_);
+    save_chosen_split(settings, QStringLiteral("window/right_splitter"), *right_splitter_,
+                      warnings_sized_by_user_);
     settings.setValue(QStringLiteral("files/recent"), recent_files_);
     settings.setValue(QStringLiteral("files/last_dir"), remembered_folder());
     settings.setValue(QStringLiteral("view/language"), language_choice_);

@@ -1178,6 +1178,10 @@ TEST(MainWindowSettingsTest, ThePanelsWidthFollowsTheWindowUntilTheUserSetsIt) {
         QCoreApplication::processEvents();
         EXPECT_GT(panel_width(first), ParameterPanel::two_column_width());
         EXPECT_TRUE(first.close());
+        // Neither divider was dragged: neither is kept (the warnings pane's
+        // height follows its warnings at the next start too).
+        EXPECT_FALSE(QSettings().contains(QStringLiteral("window/splitter")));
+        EXPECT_FALSE(QSettings().contains(QStringLiteral("window/right_splitter")));
     }
     {
         MainWindow second(options);  // remembered 1920x1080, made smaller
