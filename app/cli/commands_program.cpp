@@ -49,7 +49,7 @@ CLI::Validator axis_check() {
 void add_common(CLI::App& cmd, ProgramArgs& args) {
     add_scenario_args(cmd, args.scenario);
     cmd.add_option("--dialect", args.dialect, "The control's G-code: " + dialect_names())
-        ->type_name("linuxcnc|grbl|fanuc")
+        ->type_name(dialect_names("|"))
         ->required()
         ->check(dialect_check());
     cmd.add_option("--out", args.out, "Write the program to FILE (atomically; default stdout)")
@@ -164,9 +164,10 @@ void add_ring(CLI::App& program) {
     add_number(*cmd, "--centre-tolerance-mm", args->tolerance,
                "How far off the gauge centre the probe may start (default 1)", "MM");
     cmd->add_option("--orient-180", args->orient_180,
-                    "fanuc: your control's command that turns the spindle to 180 deg, as your "
-                    "manual gives it (e.g. \"M19 R180.\"); required there, ProbeCycle does not "
-                    "guess it. Other dialects: the operator turns the spindle at a pause")
+                    "fanuc, haas, mitsubishi: your control's command that turns the spindle to "
+                    "180 deg, as your manual gives it (e.g. \"M19 R180.\"); required there, "
+                    "ProbeCycle does not guess it. Other dialects: the operator turns the "
+                    "spindle at a pause")
         ->type_name("\"BLOCK\"");
     cmd->callback([args] {
         RingPlanOptions options;
@@ -227,10 +228,11 @@ void add_import(CLI::App& app) {
         "program's as the feature's result (size, centre, uncertainty, tolerance)");
     cmd->add_option("LOG", args->log,
                     "LinuxCNC: probecycle_log.txt (or the PROBEOPEN file); grbl: the sender's "
-                    "console saved to a file; fanuc: the program's DPRNT output as captured")
+                    "console saved to a file; fanuc, haas: the program's DPRNT output as captured; "
+                    "mitsubishi: the common variables #500-#999 as a list of '#n value' lines")
         ->required();
     cmd->add_option("--dialect", args->dialect, "The control: " + dialect_names())
-        ->type_name("linuxcnc|grbl|fanuc")
+        ->type_name(dialect_names("|"))
         ->required()
         ->check(dialect_check());
     cmd->add_option("--plan", args->plan, "The plan file 'program --plan' wrote with the program")

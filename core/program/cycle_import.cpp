@@ -60,9 +60,9 @@ std::string signed_mm(double value) {
 }  // namespace
 
 double logged_result_tolerance_mm(DialectId dialect) {
-    // Half a printed digit from each of up to four touches' rounding and the
-    // result's own, with room: 1e-5 mm for 6 decimals, 2e-4 for 4.
-    return dialect == DialectId::fanuc ? 2e-4 : 1e-5;
+    // The dialect's (Dialect::result_tolerance_mm): 1e-5 mm for LinuxCNC's 6
+    // decimals, 2e-4 for DPRNT's 4.
+    return probecycle::dialect(dialect).result_tolerance_mm;
 }
 
 CycleImport import_cycle_log(const ProbingPlan& plan, DialectId dialect, std::string_view text) {

@@ -200,11 +200,13 @@ const Dialect& grbl_dialect() {
         .result_notes = {"grbl has no variables or arithmetic: the program computes nothing and",
                          "checks no tolerance. probecycle import computes the feature's result",
                          "(and the tolerance check) from the console's [PRB:] lines."},
+        .log_format = LogFormat::grbl_console,
     };
     return dialect;
 }
 
-// Fanuc-type macro B: Fanuc, and Haas with the macro option. Checked against
+// Fanuc-type macro B (Fanuc, and the controls that follow it; Haas has its
+// own dialect below, this one with its look-ahead limit). Checked against
 // (each passage re-read in the source named):
 // - G31: Fanuc Series 15i/150i-MA Operator's Manual p.564 ("G31 IP_ ;
 //   One-shot G code ... If an external skip signal is input during the
@@ -294,7 +296,7 @@ const Dialect& fanuc_dialect() {
     static const Dialect dialect{
         .id = DialectId::fanuc,
         .name = "fanuc",
-        .title = "Fanuc-type macro B, Fanuc and Haas",
+        .title = "Fanuc macro B",
         .extension = "nc",
         .comment_open = "(",
         .comment_close = ")",
@@ -349,6 +351,163 @@ const Dialect& fanuc_dialect() {
         .tolerance_stop = {"PCLOS", "#3000=103(SIZE OUT OF TOLERANCE)"},
         .result_notes = {"DPRNT prints them as RESULT S size X centre Y centre D deviation T flag;",
                          "the import reads that line and checks it against the touches."},
+        .log_format = LogFormat::dprnt,
+        .result_tolerance_mm = 2e-4,  // 4 printed decimals
+        .orient_from_user = true,
+    };
+    return dialect;
+}
+
+// Haas (mill control with the macro option): the Fanuc-type program above,
+// whose G31, #5061-#5066, DPRNT and #nnnn[44] formats are Haas's own texts
+// (cited there), with the control's look-ahead limited before every read of
+// a position:
+// - Haas Mill Operator's Manual 96-8000 rev R (June 2007), "Macros", p.84:
+//   "Lookahead is an issue of great importance to the macro programmer ...
+//   This includes the interpretation of macro variables", and "G103 P1 can
+//   be used to limit lookahead to 1 blocks", its example padding with empty
+//   blocks after the move. A Haas does not wait for a move to end before it
+//   reads #5041 or #5061 in a later block, so the program starts with
+//   G103 P1 and puts three empty blocks (";", Haas's end of block) between a
+//   move and the next read of a position: one block of look-ahead reaches
+//   only an empty block while the move runs. Production Haas macros do the
+//   same (versabuilt/Gcode r2c/haas/legacy/9001.nc, "Disable lookahead,
+//   needs several empty lines after": G103 P1 and empty ";" blocks; "G103
+//   P0 (Enable lookahead)" at the end, as this program ends).
+// Not confirmed, so the header asks the user to prove it: how many empty
+// blocks the control needs (three is more than the manual's one block of
+// look-ahead; G103 P1 slows the program by a block's time per block, which
+// the model leaves out); where DPRNT output goes (the Haas's serial port, or
+// a file or a network share the control's settings choose).
+const Dialect& haas_dialect() {
+    static const Dialect dialect = [] {
+        Dialect d = fanuc_dialect();
+        d.id = DialectId::haas;
+        d.name = "haas";
+        d.title = "Haas";
+        d.open_record = {"G103 P1", "POPEN", "DPRNT[PROBECYCLE*PLAN*{id_letters}*{KIND}]"};
+        d.settle = {";", ";", ";"};
+        d.end = {"G103 P0", "G90", "M30"};
+        d.record_notes = {
+            "Needs the control's macro option.",
+            "Positions: DPRNT prints a line PROBECYCLE PLAN, one line TOUCH n X x Y y Z z",
+            "per recorded touch (skip positions #5061-#5063, work coordinates) and",
+            "PROBECYCLE END. Send DPRNT where you can catch it (the serial port, or the file",
+            "or network share your control's settings choose) and import that output.",
+            "Uses the common variables #101 and #102. Program number O1300: renumber it if",
+            "your control has one.",
+            "A probe that does not trigger stops with alarm 101 PROBE DID NOT TRIGGER.",
+            "Look-ahead: G103 P1 limits it to one block, and three empty blocks stand between",
+            "every move and the next read of a position (Haas manual 96-8000, Macros). Prove",
+            "it out: run the program once with the probe clear of the part; its first probing",
+            "move must stop with alarm 101."};
+        return d;
+    }();
+    return dialect;
+}
+
+// Mitsubishi M70/M80 (M700V/M70V programming manual, chapter 15, "Skip
+// function"; ../shared/domain.md, "Controls' probing words"):
+// - G31 X.. F.. follows G90/G91 (incremental allowed); "with no trigger the
+//   block ends at its target with no alarm": the program checks each probe
+//   itself as the Fanuc-type one does (the end point kept in #101, a jump
+//   when the skip position is that end); a skip signal already on at the
+//   start ends the block at once, which the same check cannot tell from a
+//   touch, as on every control. G31 P.. is a mask over the skip inputs, so
+//   no P word.
+// - The manual's own example reads the skip position after a dwell, the
+//   "machine stop check": "G31 X100. F100 ; G04 ; #101=#5061 ;". So a G04
+//   stands before every read of a position (settle), the current position
+//   #5041-#5043 too.
+// - The user macro's words the program uses (IF[...]GOTOn, ABS[ ], the
+//   comparisons EQ LT LE GE, [ ] and + - /, common variables) are those of
+//   the M700V manual, s.13.5 "User macro specifications" (its conditional
+//   expressions list EQ NE GT GE LT LE).
+// Not confirmed, so not relied on: #3000 user alarms and DPRNT on Mitsubishi
+// (domain.md: "not confirmed for Mitsubishi"). So the program stops at M00
+// with its reason in a comment on the same block (the block the control
+// shows), and ends with M30 at cycle start; and the record is the common
+// variables #500-#999, which stay after the program ends: #500-#503 the
+// plan's id (four groups of 4 hex digits, each as a number 0-65535), #504
+// the program's state (0 running, 1 done, 101 no trigger, 102 obstructed,
+// 103 out of tolerance), #505 the touches kept, #506-#510 a cycle's result
+// (S X Y D T), and from #520 X, Y and Z of each recorded touch. The user
+// outputs the common variables (the control's data output screen) or copies
+// them from the variable screen, and imports that list. Also not confirmed:
+// #5041-#5043 as the current position in work coordinates (as on Fanuc);
+// that #500-#999 are all present (some controls have fewer without an
+// option); the text of the control's variable output file (the import
+// reads "#n value", "#n=value" and "n value" lines and ignores the rest).
+// The header says to prove each out.
+const Dialect& mitsubishi_dialect() {
+    static const Dialect dialect{
+        .id = DialectId::mitsubishi,
+        .name = "mitsubishi",
+        .title = "Mitsubishi M70/M80",
+        .extension = "nc",
+        .comment_open = "(",
+        .comment_close = ")",
+        .plain_comments = true,
+        .program_start = {"%", "O1300 (PROBECYCLE)"},
+        .modes = "G21 G40 G80 G91 G94",
+        .probe_word = "G31",
+        .rapid_word = "G0",
+        .feed_word = "G1",
+        .pause_message = "",
+        .pause_word = "M00",
+        .open_record = {"#500={id_1}", "#501={id_2}", "#502={id_3}", "#503={id_4}", "#504=0",
+                        "#505=0"},
+        .before_probe = "#101={current}{distance}",
+        .after_probe = "IF[ABS[{skip}-#101]LT0.050]GOTO9001",
+        .settle = {"G04"},
+        .current_position = {"#5041", "#5042", "#5043"},
+        .skip_position = {"#5061", "#5062", "#5063"},
+        .guard_word = "G31",
+        .before_guard = "#101={current}{distance}",
+        .after_guard = {"IF[ABS[{skip}-#101]GE0.050]GOTO9002"},
+        .after_recorded_probe = {"{touch_x}=#5061", "{touch_y}=#5062", "{touch_z}=#5063",
+                                 "#505={n}"},
+        .close_record = {"#504=1"},
+        .end = {"G90", "M30"},
+        .after_end = {"N9001", "#504=101", "G90", "M00 (PROBE DID NOT TRIGGER)", "M30"},
+        .guard_alarm = {"N9002", "#504=102", "G90", "M00 (PROBE PATH OBSTRUCTED)", "M30"},
+        .file_end = {"%"},
+        .record_notes =
+            {"Positions: the program keeps them in common variables, which stay after it",
+             "ends: #500-#503 the plan, #504 its state (1 done, 101 no trigger, 102",
+             "obstructed, 103 out of tolerance), #505 the touches kept, and X Y Z of each",
+             "touch, three variables each from #520 on (touch 1 #520-#522, touch 2",
+             "#523-#525 ...). Output the common variables to a file, or copy them from the",
+             "variable screen as lines #n value, and import that list. Uses #101 too.",
+             "Program number O1300: renumber it if your control has one.",
+             "A probe that does not trigger ends at its target with no alarm on this control:",
+             "the program checks it and stops at M00 PROBE DID NOT TRIGGER (cycle start ends",
+             "the program).",
+             "NOT CONFIRMED for Mitsubishi, prove it out before a touch: #5041-#5043 read as",
+             "the current position in work coordinates after G04 (run the program once with",
+             "the probe clear of the part: its first probing move must stop at PROBE DID NOT",
+             "TRIGGER); that your control has common variables #500 to the last one this",
+             "program uses. #3000 alarms and DPRNT are not used: they are not confirmed for",
+             "this control."},
+        .guard_notes =
+            {"Protected moves are G31 to the end of the move: when the skip position is not",
+             "that end, the probe touched something, and the program stops at M00 PROBE PATH",
+             "OBSTRUCTED."},
+        .result_record = {"#506={size}", "#507={centre_x}", "#508={centre_y}", "#509={deviation}",
+                          "#510={flag}"},
+        .tolerance_check = {"{flag}=0", "IF[ABS[{deviation}]LE{tolerance}]GOTO9003", "{flag}=1",
+                            "N9003"},
+        .out_of_tolerance = {"{stop}"},
+        .tolerance_stop = {"IF[{flag}EQ0]GOTO9004", "#504=103", "G90",
+                           "M00 (SIZE OUT OF TOLERANCE)", "M30", "N9004"},
+        .result_notes = {"The program keeps them in #506-#510 (S X Y D T) as well; the import",
+                         "reads them and checks them against the touches."},
+        .log_format = LogFormat::common_variables,
+        // A copied list may hold 3 decimals: half a digit of four touches and
+        // the result, with room.
+        .result_tolerance_mm = 3e-3,
+        .first_touch_variable = 520,
+        .last_variable = 999,
         .orient_from_user = true,
     };
     return dialect;
@@ -362,20 +521,40 @@ const Dialect& dialect(DialectId id) {
             return grbl_dialect();
         case DialectId::fanuc:
             return fanuc_dialect();
+        case DialectId::haas:
+            return haas_dialect();
+        case DialectId::mitsubishi:
+            return mitsubishi_dialect();
     }
     return linuxcnc_dialect();
 }
 
+const std::array<DialectId, 5>& all_dialects() {
+    static constexpr std::array<DialectId, 5> kAll = {DialectId::linuxcnc, DialectId::grbl,
+                                                      DialectId::fanuc, DialectId::haas,
+                                                      DialectId::mitsubishi};
+    return kAll;
+}
+
 std::optional<DialectId> dialect_from_string(std::string_view word) {
-    for (DialectId id : {DialectId::linuxcnc, DialectId::grbl, DialectId::fanuc}) {
+    for (const DialectId id : all_dialects()) {
         if (word == dialect(id).name) return id;
     }
     return std::nullopt;
 }
 
-std::string dialect_names() {
-    return std::string(linuxcnc_dialect().name) + ", " + grbl_dialect().name + ", " +
-           fanuc_dialect().name;
+std::string dialect_names(std::string_view separator) {
+    std::string names;
+    for (const DialectId id : all_dialects()) {
+        if (!names.empty()) names += separator;
+        names += dialect(id).name;
+    }
+    return names;
+}
+
+std::size_t max_recorded_touches(const Dialect& dialect) {
+    if (dialect.first_touch_variable == 0) return 0;
+    return static_cast<std::size_t>(dialect.last_variable - dialect.first_touch_variable + 1) / 3;
 }
 
 std::string id_letters(std::string_view hex_id) {

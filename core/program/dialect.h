@@ -8,6 +8,7 @@
 // is left out (docs/programs.md).
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,7 +16,13 @@
 
 namespace probecycle {
 
-enum class DialectId { linuxcnc, grbl, fanuc };
+enum class DialectId { linuxcnc, grbl, fanuc, haas, mitsubishi };
+
+// How the control's record of the touches comes back (machine_log.h):
+// LinuxCNC's LOG or PROBEOPEN file, a grbl sender's console, the
+// Fanuc-type DPRNT output, or the common variables the program stores the
+// touches in (a list of "#n value" lines).
+enum class LogFormat { linuxcnc_log, grbl_console, dprnt, common_variables };
 
 struct Dialect {
     DialectId id{DialectId::linuxcnc};
@@ -50,6 +57,12 @@ struct Dialect {
     // goes on without an alarm when the probe does not trigger checks here.
     const char* before_probe;
     const char* after_probe;
+    // Lines before every read of a position ({current} in before_probe and
+    // before_guard, {skip} in after_probe and after_guard): what makes the
+    // control read it only once the move before it has ended (Haas's empty
+    // blocks under G103 P1, Mitsubishi's G04); empty where the control
+    // waits by itself.
+    std::vector<const char*> settle{};
     // The variables {current} and {skip} stand for, per axis X, Y, Z.
     std::array<const char*, 3> current_position{};
     std::array<const char*, 3> skip_position{};
@@ -61,7 +74,9 @@ struct Dialect {
     const char* guard_word;
     const char* before_guard;
     std::vector<const char*> after_guard;
-    // Lines after each recorded probe ({n}: its number, from 1).
+    // Lines after each recorded probe ({n}: its number, from 1; {touch_x},
+    // {touch_y}, {touch_z}: the variables it is stored in, from
+    // first_touch_variable on, three per touch).
     std::vector<const char*> after_recorded_probe;
     // Lines before the end that close the record.
     std::vector<const char*> close_record;
@@ -93,6 +108,15 @@ struct Dialect {
     std::vector<const char*> tolerance_stop{};
     // Header lines of a cycle program: where its result goes.
     std::vector<const char*> result_notes{};
+    // Where the record comes back, and how close a result the program
+    // computed must come to the import's (half a printed digit of each of up
+    // to four touches and of the result, with room).
+    LogFormat log_format{LogFormat::linuxcnc_log};
+    double result_tolerance_mm{1e-5};
+    // A control whose record is its common variables: the first of the
+    // touches' variables and the last variable it may use (0: none).
+    int first_touch_variable{0};
+    int last_variable{0};
     // No portable word turns the spindle to an angle: the ring program
     // needs the user's command for 180 deg (ProgramOptions).
     bool orient_from_user{false};
@@ -101,11 +125,18 @@ struct Dialect {
 const Dialect& linuxcnc_dialect();
 const Dialect& grbl_dialect();
 const Dialect& fanuc_dialect();
+const Dialect& haas_dialect();
+const Dialect& mitsubishi_dialect();
 const Dialect& dialect(DialectId id);
+// Every dialect, in the order the CLI and the window list them.
+const std::array<DialectId, 5>& all_dialects();
 // By the CLI's word; nullopt when unknown.
 std::optional<DialectId> dialect_from_string(std::string_view word);
-// "linuxcnc, grbl, fanuc"
-std::string dialect_names();
+// "linuxcnc, grbl, fanuc, haas, mitsubishi"; with "|": the CLI's type name.
+std::string dialect_names(std::string_view separator = ", ");
+// The most recorded touches a plan may have in the dialect (a control
+// that keeps them in variables has a fixed number); 0: no limit.
+std::size_t max_recorded_touches(const Dialect& dialect);
 
 // The plan's id (16 hex digits) in letters, 0 -> A ... f -> P: a DPRNT text
 // holds letters only (Haas: "any character from A to Z" and + - / * space).

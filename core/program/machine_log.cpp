@@ -1,6 +1,7 @@
 #include "core/program/machine_log.h"
 
 #include <cmath>
+#include <map>
 #include <optional>
 #include <utility>
 
@@ -568,6 +569,157 @@ std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const 
 
 namespace {
 
+// "#n value", "#n=value" or "n value": a common variable's number and its
+// text; nullopt for any other line.
+std::optional<std::pair<int, std::string_view>> variable_line(std::string_view line) {
+    std::size_t at = 0;
+    if (at < line.size() && line[at] == '#') ++at;
+    const std::size_t digits = at;
+    while (at < line.size() && line[at] >= '0' && line[at] <= '9') ++at;
+    if (at == digits || at - digits > 5) return std::nullopt;
+    const int number = std::stoi(std::string(line.substr(digits, at - digits)));
+    const std::size_t after = at;
+    while (at < line.size() && (line[at] == ' ' || line[at] == '\t')) ++at;
+    if (at < line.size() && line[at] == '=') ++at;
+    if (at == after) return std::nullopt;  // "#5201" is not "#520 1"
+    return std::pair{number, trimmed(line.substr(at))};
+}
+
+}  // namespace
+
+std::vector<RecordedPosition> read_variable_positions(std::string_view text,
+                                                      const ProbingPlan& plan,
+                                                      const Dialect& dialect,
+                                                      LoggedResult* result) {
+    // The record's variables (dialect.cpp, mitsubishi_dialect): the plan in
+    // #500-#503, the state in #504, the count in #505, a cycle's result in
+    // #506-#510, the touches from first_touch_variable.
+    constexpr int kPlan = 500;
+    constexpr int kState = 504;
+    constexpr int kCount = 505;
+    constexpr int kResult = 506;
+    std::map<int, std::pair<std::size_t, double>> values;
+    for (const auto& [number, raw] : dprnt_lines_of(text)) {
+        const std::optional<std::pair<int, std::string_view>> variable =
+            variable_line(trimmed(raw));
+        if (!variable || variable->first < kPlan || variable->first > dialect.last_variable) {
+            continue;
+        }
+        // A vacant variable (no number after it) is as if not listed.
+        const std::optional<double> value = parse_decimal(variable->second);
+        if (!value || std::abs(*value) > kMaxCoordinate_mm) continue;
+        const auto [it, added] = values.emplace(variable->first, std::pair{number, *value});
+        if (!added && it->second.second != *value) {
+            throw CsvError(
+                number, "",
+                log_message(
+                    "log_variable_twice",
+                    QT_TRANSLATE_NOOP("MachineLog",
+                                      "#%1 is listed again with another value (first on "
+                                      "line %2): the list holds more than one output; "
+                                      "nothing imported"),
+                    {arg("variable", ArgKind::integer, variable->first),
+                     arg("line", ArgKind::integer, static_cast<double>(it->second.first))}));
+        }
+    }
+    const auto missing = [&](int variable, std::size_t line) {
+        throw CsvError(
+            line, "",
+            log_message("log_variable_missing",
+                        QT_TRANSLATE_NOOP("MachineLog",
+                                          "no value of #%1 in the list: list every common "
+                                          "variable from #500 to #%2 that the program set; "
+                                          "nothing imported"),
+                        {arg("variable", ArgKind::integer, variable),
+                         arg("last", ArgKind::integer, dialect.last_variable)}));
+    };
+    std::string id;
+    for (int part = 0; part < 4; ++part) {
+        const auto it = values.find(kPlan + part);
+        if (it == values.end()) {
+            throw CsvError(0, "",
+                           log_message("log_variables_no_plan",
+                                       QT_TRANSLATE_NOOP(
+                                           "MachineLog",
+                                           "no values of #500 to #503, where the program keeps its "
+                                           "plan: is this the list of common variables after a "
+                                           "ProbeCycle program? Nothing imported")));
+        }
+        const double group = it->second.second;
+        if (group < 0.0 || group > 65535.0 || group != std::floor(group)) {
+            bad_line(it->second.first, format_number(group), "a whole number from 0 to 65535");
+        }
+        static constexpr const char* kHex = "0123456789abcdef";
+        const auto bits = static_cast<unsigned>(group);
+        for (int shift = 12; shift >= 0; shift -= 4) id += kHex[(bits >> shift) & 0xfU];
+    }
+    if (id != plan_id(plan)) plan_mismatch(values.at(kPlan).first, id, plan_id(plan));
+    const auto state = values.find(kState);
+    if (state == values.end()) missing(kState, values.at(kPlan).first);
+    const std::size_t state_line = state->second.first;
+    const double state_value = state->second.second;
+    if (state_value == 101.0 || state_value == 102.0) {
+        throw CsvError(
+            state_line, "",
+            state_value == 101.0
+                ? log_message("log_variables_no_trigger",
+                              QT_TRANSLATE_NOOP("MachineLog",
+                                                "#504 is 101: a probe did not trigger and the "
+                                                "program stopped at PROBE DID NOT TRIGGER; "
+                                                "nothing imported"))
+                : log_message("log_variables_obstructed",
+                              QT_TRANSLATE_NOOP("MachineLog",
+                                                "#504 is 102: the probe touched something during "
+                                                "a protected move and the program stopped at "
+                                                "PROBE PATH OBSTRUCTED; nothing imported")));
+    }
+    if (state_value != 1.0 && state_value != 103.0) {
+        throw CsvError(
+            state_line, "",
+            log_message("log_variables_unfinished",
+                        QT_TRANSLATE_NOOP("MachineLog",
+                                          "#504 is %1: the program did not end (1 when it ends, "
+                                          "103 when it stops out of tolerance); nothing imported"),
+                        {text_arg("state", format_number(state_value))}));
+    }
+    const auto count = values.find(kCount);
+    if (count == values.end()) missing(kCount, state_line);
+    const double touches = count->second.second;
+    if (touches < 0.0 || touches != std::floor(touches) ||
+        touches > static_cast<double>(max_recorded_touches(dialect))) {
+        bad_line(count->second.first, format_number(touches),
+                 "the number of touches the program kept");
+    }
+    std::vector<RecordedPosition> positions;
+    for (int n = 0; n < static_cast<int>(touches); ++n) {
+        RecordedPosition position;
+        for (int axis = 0; axis < 3; ++axis) {
+            const int variable = dialect.first_touch_variable + 3 * n + axis;
+            const auto it = values.find(variable);
+            if (it == values.end()) missing(variable, count->second.first);
+            if (axis == 0) position.line = it->second.first;
+            position.xyz[static_cast<std::size_t>(axis)] = it->second.second;
+        }
+        positions.push_back(position);
+    }
+    if (result != nullptr && plan.kind == ProgramKind::cycle) {
+        for (int i = 0; i < 5; ++i) {
+            const auto it = values.find(kResult + i);
+            if (it == values.end()) missing(kResult + i, state_line);
+            result->values[static_cast<std::size_t>(i)] = it->second.second;
+        }
+        result->line = values.at(kResult).first;
+        if (state_value == 103.0) {
+            result->out_of_tolerance_line = state_line;
+        } else if (result->values[4] == 1.0) {
+            result->out_of_tolerance_line = values.at(kResult + 4).first;
+        }
+    }
+    return positions;
+}
+
+namespace {
+
 void refuse_cycle_plan(const ProbingPlan& plan) {
     if (plan.kind == ProgramKind::cycle) {
         throw InputError(log_message(
@@ -582,13 +734,17 @@ void refuse_cycle_plan(const ProbingPlan& plan) {
 // LinuxCNC's "probecycle ..." LOG lines, grbl's "[PRB:" reports, the
 // Fanuc-type DPRNT's "PROBECYCLE ..." lines (upper case).
 bool is_signature_line(DialectId id, std::string_view line) {
-    switch (id) {
-        case DialectId::linuxcnc:
+    switch (dialect(id).log_format) {
+        case LogFormat::linuxcnc_log:
             return line.substr(0, 11) == "probecycle ";
-        case DialectId::grbl:
+        case LogFormat::grbl_console:
             return line.find("[PRB:") != std::string_view::npos;
-        case DialectId::fanuc:
+        case LogFormat::dprnt:
             return line.find("PROBECYCLE ") != std::string_view::npos;
+        case LogFormat::common_variables: {
+            const std::optional<std::pair<int, std::string_view>> variable = variable_line(line);
+            return variable && variable->first == 500;
+        }
     }
     return false;
 }
@@ -602,8 +758,12 @@ void check_dialect(DialectId chosen, std::string_view text) {
     for (const auto& [number, raw] : lines_of(text)) {
         const std::string_view line = trimmed(raw);
         if (is_signature_line(chosen, line)) return;
-        for (const DialectId id : {DialectId::linuxcnc, DialectId::grbl, DialectId::fanuc}) {
-            if (id != chosen && !other && is_signature_line(id, line)) other = {number, id};
+        for (const DialectId id : all_dialects()) {
+            // (Haas writes the Fanuc-type DPRNT: a log of either reads as both.)
+            if (dialect(id).log_format != dialect(chosen).log_format && !other &&
+                is_signature_line(id, line)) {
+                other = {number, id};
+            }
         }
     }
     if (!other) return;
@@ -623,13 +783,18 @@ std::vector<RecordedPosition> read_positions(const ProbingPlan& plan, DialectId 
                                              std::string_view text, bool& every_probe,
                                              LoggedResult* result = nullptr) {
     check_dialect(dialect, text);
-    if (dialect == DialectId::grbl) {
-        every_probe = true;
-        return read_grbl_positions(text, plan);
-    }
-    if (dialect == DialectId::fanuc) {
-        every_probe = false;
-        return read_fanuc_positions(text, plan, result);
+    switch (probecycle::dialect(dialect).log_format) {
+        case LogFormat::grbl_console:
+            every_probe = true;
+            return read_grbl_positions(text, plan);
+        case LogFormat::dprnt:
+            every_probe = false;
+            return read_fanuc_positions(text, plan, result);
+        case LogFormat::common_variables:
+            every_probe = false;
+            return read_variable_positions(text, plan, probecycle::dialect(dialect), result);
+        case LogFormat::linuxcnc_log:
+            break;
     }
     std::vector<RecordedPosition> positions = read_linuxcnc_positions(text, plan, result);
     // The LOG file's first line that is not blank opens with "probecycle";

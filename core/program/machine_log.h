@@ -67,6 +67,20 @@ std::vector<RecordedPosition> read_grbl_positions(std::string_view text, const P
 std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan,
                                                    LoggedResult* result = nullptr);
 
+// Mitsubishi: the common variables the program kept (dialect.cpp), as a
+// list of "#n value", "#n=value" or "n value" lines from the control's
+// variable output or copied from its variable screen; other lines, vacant
+// variables and variables outside #500 to the dialect's last are ignored.
+// The plan in #500-#503 must be `plan`'s; the state #504 must be 1 (done)
+// or 103 (stopped out of tolerance), else a CsvError says why the program
+// stopped; #505 touches from dialect.first_touch_variable on, X Y Z each.
+// A cycle program's result #506-#510 (S X Y D T) goes to `result` when
+// given. A variable listed twice with two values is a CsvError.
+std::vector<RecordedPosition> read_variable_positions(std::string_view text,
+                                                      const ProbingPlan& plan,
+                                                      const Dialect& dialect,
+                                                      LoggedResult* result = nullptr);
+
 // The positions of the plan's recorded touches, in order, from `positions`:
 // every probe and protected move of the plan in order (`every_probe`) or its
 // recorded touches only. Throws CsvError naming the line: a missing or an

@@ -311,7 +311,9 @@ std::vector<std::string> result_lines(const ResultSpec& spec, const Dialect& dia
             if (std::string_view(line) != "{stop}") {
                 lines.push_back(with_result_variables(line));
             } else if (spec.tolerance_action == ToleranceAction::stop) {
-                for (const char* stop : dialect.tolerance_stop) lines.emplace_back(stop);
+                for (const char* stop : dialect.tolerance_stop) {
+                    lines.push_back(with_result_variables(stop));
+                }
             }
         }
     }
@@ -352,6 +354,12 @@ class Writer {
     // {distance}, {label}).
     void probe_check(const char* pattern, const ProgramStep& step, std::size_t label = 0) {
         if (*pattern == '\0') return;
+        // A read of a position waits for the move before it (Dialect::settle).
+        const std::string_view text_view(pattern);
+        if (text_view.find("{current}") != std::string_view::npos ||
+            text_view.find("{skip}") != std::string_view::npos) {
+            for (const char* settle : d_.settle) line(settle);
+        }
         const std::size_t axis = axis_index(step.axis);
         std::string distance = program_number(step.direction * step.distance_mm);
         if (distance[0] != '-') distance.insert(distance.begin(), '+');
@@ -386,6 +394,19 @@ std::string program_feed(double feed_mm_min) {
 
 void check_program_options(const ProbingPlan& plan, const Dialect& dialect,
                            const ProgramOptions& options) {
+    const std::size_t most = max_recorded_touches(dialect);
+    if (most > 0 && plan.recorded().size() > most) {
+        throw InputError(program_message(
+            "program_too_many_touches",
+            QT_TRANSLATE_NOOP("Program",
+                              "the plan records %1 touches; a %2 program keeps at most %3 (three "
+                              "common variables each, #%4 to #%5): use fewer feeds or repeats"),
+            {arg("touches", ArgKind::integer, static_cast<double>(plan.recorded().size())),
+             text_arg("dialect", dialect.name),
+             arg("most", ArgKind::integer, static_cast<double>(most)),
+             arg("first", ArgKind::integer, dialect.first_touch_variable),
+             arg("last", ArgKind::integer, dialect.last_variable)}));
+    }
     if (!dialect.orient_from_user) return;
     double orientation = 0.0;
     bool turns = false;
@@ -425,6 +446,23 @@ void check_program_options(const ProbingPlan& plan, const Dialect& dialect,
                               "letters, digits, spaces and . + - # [ ] ="),
             {text_arg("key", kOrientOption), text_arg("command", command.substr(0, 80))}));
     }
+}
+
+// A line after a recorded touch: {n} its number, {touch_x} {touch_y}
+// {touch_z} the variables it is kept in.
+std::string touch_line(const char* pattern, const Dialect& dialect, std::size_t n) {
+    std::string text = replaced(pattern, "{n}", std::to_string(n));
+    if (dialect.first_touch_variable == 0) return text;
+    const int first = dialect.first_touch_variable + 3 * (static_cast<int>(n) - 1);
+    for (int axis = 0; axis < 3; ++axis) {
+        std::string name("{touch_");
+        name += "xyz"[axis];
+        name += '}';
+        std::string variable("#");  // (appended: see side_variable)
+        variable += std::to_string(first + axis);
+        text = replaced(std::move(text), name, variable);
+    }
+    return text;
 }
 
 // The plan's signature in grbl's own reports (plan_signature, plan.h),
@@ -472,11 +510,10 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
     const bool rapids = std::any_of(plan.steps.begin(), plan.steps.end(), [](const ProgramStep& s) {
         return s.kind == StepKind::move && s.feed_mm_min == 0.0;
     });
-    w.comment_block(
-        std::string(rapids ? kProveWithRapids : kProveAtFeed) +
-        "Every move is incremental (G91) from where the probe stands when the program\n"
-        "starts or a pause ends. A probing move that does not trigger stops the program\n"
-        "with an alarm.");
+    w.comment_block(std::string(rapids ? kProveWithRapids : kProveAtFeed) +
+                    "Every move is incremental (G91) from where the probe stands when the program\n"
+                    "starts or a pause ends. A probing move that does not trigger stops the\n"
+                    "program.");
     for (const char* note : dialect.record_notes) w.comment(note);
     const bool guards = plan.has_guards();
     if (guards) {
@@ -492,10 +529,15 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
     std::string kind_upper = to_string(plan.kind);
     for (char& c : kind_upper) c = static_cast<char>(c - 'a' + 'A');
     for (const char* open : dialect.open_record) {
-        w.line(
-            replaced(replaced(replaced(replaced(open, "{id}", id), "{id_letters}", id_letters(id)),
-                              "{kind}", to_string(plan.kind)),
-                     "{KIND}", kind_upper));
+        std::string text = replaced(open, "{id}", id);
+        text = replaced(std::move(text), "{id_letters}", id_letters(id));
+        for (std::size_t part = 0; part < 4; ++part) {
+            // The id in four numbers of 4 hex digits each (0-65535).
+            text = replaced(std::move(text), "{id_" + std::to_string(part + 1) + "}",
+                            std::to_string(std::stoul(id.substr(4 * part, 4), nullptr, 16)));
+        }
+        text = replaced(std::move(text), "{kind}", to_string(plan.kind));
+        w.line(replaced(std::move(text), "{KIND}", kind_upper));
     }
     std::size_t recorded = 0;
     std::size_t guard_count = 0;
@@ -537,7 +579,7 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                 w.probe_check(dialect.after_probe, step);
                 if (step.recorded) {
                     for (const char* after : dialect.after_recorded_probe) {
-                        w.line(replaced(after, "{n}", std::to_string(recorded)));
+                        w.line(touch_line(after, dialect, recorded));
                     }
                 }
                 if (step.recorded && computes) {

@@ -740,6 +740,30 @@
         <source>the console is from another plan (its signature reads %1, this plan&apos;s is %2): give the plan the program was made from; nothing imported</source>
         <translation>консоль от другого плана (её подпись — %1, подпись этого плана — %2): укажите план, по которому создана программа; ничего не импортировано</translation>
     </message>
+    <message>
+        <source>#%1 is listed again with another value (first on line %2): the list holds more than one output; nothing imported</source>
+        <translation>#%1 указана снова с другим значением (впервые в строке %2): в списке больше одного вывода; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>no value of #%1 in the list: list every common variable from #500 to #%2 that the program set; nothing imported</source>
+        <translation>в списке нет значения #%1: перечислите все общие переменные от #500 до #%2, заданные программой; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>no values of #500 to #503, where the program keeps its plan: is this the list of common variables after a ProbeCycle program? Nothing imported</source>
+        <translation>нет значений #500–#503, где программа хранит свой план: это список общих переменных после программы ProbeCycle? Ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>#504 is 101: a probe did not trigger and the program stopped at PROBE DID NOT TRIGGER; nothing imported</source>
+        <translation>#504 равна 101: щуп не сработал, и программа остановилась на PROBE DID NOT TRIGGER; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>#504 is 102: the probe touched something during a protected move and the program stopped at PROBE PATH OBSTRUCTED; nothing imported</source>
+        <translation>#504 равна 102: щуп коснулся чего-то при защищённом перемещении, и программа остановилась на PROBE PATH OBSTRUCTED; ничего не импортировано</translation>
+    </message>
+    <message>
+        <source>#504 is %1: the program did not end (1 when it ends, 103 when it stops out of tolerance); nothing imported</source>
+        <translation>#504 равна %1: программа не завершилась (1 — при завершении, 103 — при остановке из-за выхода за допуск); ничего не импортировано</translation>
+    </message>
 </context>
 <context>
     <name>Optimise</name>
@@ -1537,6 +1561,10 @@
     <message>
         <source>at %1 and up to %4 % feed override the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed (or cycle.feed_override_max_pct) or check the scenario</source>
         <translation>при %1 и коррекции подачи до %4 % перебег по модели %2 — на пределе щупа %3 или выше: уменьшите подачу (или cycle.feed_override_max_pct) или проверьте сценарий</translation>
+    </message>
+    <message>
+        <source>the plan records %1 touches; a %2 program keeps at most %3 (three common variables each, #%4 to #%5): use fewer feeds or repeats</source>
+        <translation>план записывает касаний: %1; программа %2 хранит не больше %3 (по три общие переменные на касание, от #%4 до #%5): уменьшите число подач или повторов</translation>
     </message>
 </context>
 <context>
@@ -3420,6 +3448,14 @@
     <message>
         <source>Logs (*.txt *.log);;All files (*)</source>
         <translation>Журналы (*.txt *.log);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>The program&apos;s DPRNT output as the control sent it (a serial terminal, a memory card or a file): the lines from PROBECYCLE PLAN on.</source>
+        <translation>Вывод DPRNT программы в том виде, в каком его передала стойка (последовательный терминал, карта памяти или файл): строки начиная с PROBECYCLE PLAN.</translation>
+    </message>
+    <message>
+        <source>The common variables #500 to #999 after the program ended, as the control outputs them or copied from its variable screen: one line &quot;#n value&quot; each.</source>
+        <translation>Общие переменные #500–#999 после завершения программы, как их выводит стойка или как они скопированы с экрана переменных: по одной строке «#n значение».</translation>
     </message>
 </context>
 <context>

@@ -740,6 +740,30 @@
         <source>the console is from another plan (its signature reads %1, this plan&apos;s is %2): give the plan the program was made from; nothing imported</source>
         <translation>控制台输出来自另一个计划（其签名为 %1，本计划为 %2）：请提供生成该程序所用的计划；未导入任何内容</translation>
     </message>
+    <message>
+        <source>#%1 is listed again with another value (first on line %2): the list holds more than one output; nothing imported</source>
+        <translation>#%1 再次出现且值不同（首次在第 %2 行）：列表包含多次输出；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>no value of #%1 in the list: list every common variable from #500 to #%2 that the program set; nothing imported</source>
+        <translation>列表中没有 #%1 的值：请列出程序设置的 #500 至 #%2 的全部公共变量；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>no values of #500 to #503, where the program keeps its plan: is this the list of common variables after a ProbeCycle program? Nothing imported</source>
+        <translation>没有 #500 至 #503 的值（程序在其中保存计划）：这是 ProbeCycle 程序运行后的公共变量列表吗？未导入任何内容</translation>
+    </message>
+    <message>
+        <source>#504 is 101: a probe did not trigger and the program stopped at PROBE DID NOT TRIGGER; nothing imported</source>
+        <translation>#504 为 101：测头未触发，程序停在 PROBE DID NOT TRIGGER；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>#504 is 102: the probe touched something during a protected move and the program stopped at PROBE PATH OBSTRUCTED; nothing imported</source>
+        <translation>#504 为 102：测头在受保护移动中碰到了物体，程序停在 PROBE PATH OBSTRUCTED；未导入任何内容</translation>
+    </message>
+    <message>
+        <source>#504 is %1: the program did not end (1 when it ends, 103 when it stops out of tolerance); nothing imported</source>
+        <translation>#504 为 %1：程序未结束（结束时为 1，超差停止时为 103）；未导入任何内容</translation>
+    </message>
 </context>
 <context>
     <name>Optimise</name>
@@ -1537,6 +1561,10 @@
     <message>
         <source>at %1 and up to %4 % feed override the model&apos;s overtravel is %2, at or over the probe&apos;s limit %3: lower the feed (or cycle.feed_override_max_pct) or check the scenario</source>
         <translation>在 %1 及最高 %4 % 进给倍率下，模型的过行程为 %2，达到或超过测头极限 %3：请降低进给（或 cycle.feed_override_max_pct）或检查场景</translation>
+    </message>
+    <message>
+        <source>the plan records %1 touches; a %2 program keeps at most %3 (three common variables each, #%4 to #%5): use fewer feeds or repeats</source>
+        <translation>该计划记录 %1 次触碰；%2 程序最多保存 %3 次（每次三个公共变量，#%4 至 #%5）：请减少进给或重复次数</translation>
     </message>
 </context>
 <context>
@@ -3420,6 +3448,14 @@
     <message>
         <source>Logs (*.txt *.log);;All files (*)</source>
         <translation>日志 (*.txt *.log);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>The program&apos;s DPRNT output as the control sent it (a serial terminal, a memory card or a file): the lines from PROBECYCLE PLAN on.</source>
+        <translation>控制系统发出的程序 DPRNT 输出（串口终端、存储卡或文件）：从 PROBECYCLE PLAN 开始的各行。</translation>
+    </message>
+    <message>
+        <source>The common variables #500 to #999 after the program ended, as the control outputs them or copied from its variable screen: one line &quot;#n value&quot; each.</source>
+        <translation>程序结束后的公共变量 #500 至 #999，由控制系统输出或从其变量画面抄录：每行一个“#n 值”。</translation>
     </message>
 </context>
 <context>

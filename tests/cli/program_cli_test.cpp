@@ -24,7 +24,7 @@ CliRun run_on_golden_day(const std::string& arguments) {
 
 TEST(ProgramCli, WritesTheGoldenProgramAndItsPlan) {
     const TempDir dir;
-    for (const std::string dialect : {"linuxcnc", "grbl", "fanuc"}) {
+    for (const std::string dialect : {"linuxcnc", "grbl", "fanuc", "haas", "mitsubishi"}) {
         const std::string suffix = "_" + dialect + (dialect == "linuxcnc" ? ".ngc" : ".nc");
         const CliRun r = run_on_golden_day("program delay --dialect " + dialect +
                                            " --axis X+ --feeds 30,300,2000 --repeats 2 --plan " +

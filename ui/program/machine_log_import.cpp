@@ -227,6 +227,12 @@ void MachineLogDialog::retranslate() {
         : chosen == DialectId::grbl
             ? tr("The sender's console saved to a file: grbl answers [PRB:x,y,z:1] after each "
                  "probe (set $13=0 for mm).")
+        : chosen == DialectId::fanuc || chosen == DialectId::haas
+            ? tr("The program's DPRNT output as the control sent it (a serial terminal, a memory "
+                 "card or a file): the lines from PROBECYCLE PLAN on.")
+        : chosen == DialectId::mitsubishi
+            ? tr("The common variables #500 to #999 after the program ended, as the control "
+                 "outputs them or copied from its variable screen: one line \"#n value\" each.")
             : QString());
     plan_label_->setText(tr("Plan"));
     plan_path_->setPlaceholderText(tr("NAME.plan.json, saved with the program"));

@@ -47,14 +47,8 @@ QString feed_text(double feed_mm_min) {
 }  // namespace
 
 std::vector<DialectId> program_dialects() {
-    // dialect_names() is the core's list ("linuxcnc, grbl"), the CLI's too.
-    std::vector<DialectId> out;
-    const QStringList names =
-        QString::fromStdString(dialect_names()).split(QLatin1Char(','), Qt::SkipEmptyParts);
-    for (const QString& name : names) {
-        if (const auto id = dialect_from_string(name.trimmed().toStdString())) out.push_back(*id);
-    }
-    return out;
+    // The core's list, in the CLI's order.
+    return {all_dialects().begin(), all_dialects().end()};
 }
 
 QString plan_path_for(const QString& program_path) {

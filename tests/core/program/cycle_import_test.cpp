@@ -153,6 +153,53 @@ TEST(CycleImport, FanucDprntResultIsReadAndChecked) {
     EXPECT_EQ(line_of([&] { import_cycle_log(plan, DialectId::fanuc, wrong); }), 7u);
 }
 
+// Mitsubishi's common variables: the plan, the state, the touches and the
+// program's own result in #506-#510, read and checked.
+std::string mitsubishi_list(const ProbingPlan& plan, const Touches& touches, double state,
+                            const std::array<double, 5>& result) {
+    const std::string id = plan_id(plan);
+    std::string list;
+    const auto add = [&list](int variable, double value) {
+        char line[64];
+        std::snprintf(line, sizeof line, "#%d = %.4f\n", variable, value);
+        list += line;
+    };
+    for (int part = 0; part < 4; ++part) {
+        add(500 + part, static_cast<double>(std::stoul(id.substr(4 * part, 4), nullptr, 16)));
+    }
+    add(504, state);
+    add(505, static_cast<double>(touches.size()));
+    for (int i = 0; i < 5; ++i) add(506 + i, result[static_cast<std::size_t>(i)]);
+    for (std::size_t t = 0; t < touches.size(); ++t) {
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            add(520 + static_cast<int>(3 * t + axis), touches[t][axis]);
+        }
+    }
+    return list;
+}
+
+TEST(CycleImport, MitsubishiVariablesResultIsReadAndChecked) {
+    const ProbingPlan plan = bore_plan(0.003, ToleranceAction::stop);
+    const std::array<double, 5> result = {50.004, 0.004, 0.008, 0.004, 1.0};
+    const CycleImport stopped =
+        import_cycle_log(plan, DialectId::mitsubishi, mitsubishi_list(plan, kBore, 103, result));
+    EXPECT_NEAR(stopped.result.size_mm, 50.004, 1e-9);
+    EXPECT_TRUE(stopped.result.out_of_tolerance);
+    EXPECT_EQ(stopped.logged.line, 7u);                   // #506
+    EXPECT_EQ(stopped.logged.out_of_tolerance_line, 5u);  // #504 = 103
+    // The flag alone (the program went on): named at #510.
+    const CycleImport flagged =
+        import_cycle_log(plan, DialectId::mitsubishi, mitsubishi_list(plan, kBore, 1, result));
+    EXPECT_EQ(flagged.logged.out_of_tolerance_line, 11u);
+    // A result the touches do not give: named at #506.
+    EXPECT_EQ(line_of([&] {
+                  import_cycle_log(
+                      plan, DialectId::mitsubishi,
+                      mitsubishi_list(plan, kBore, 1, {50.014, 0.004, 0.008, 0.014, 1}));
+              }),
+              7u);
+}
+
 TEST(CycleImport, GrblConsoleGivesTheResultTheProgramCannotCompute) {
     // A web along X, 10 mm with a 2 mm ball: the console reports every probe
     // and protected move, in the plan's order.

@@ -577,8 +577,13 @@ std::string dprnt(const std::string& body, const std::map<int, double>& variable
 // #101=, IF[...]GOTO9001, #102= and DPRNT run as the control runs them; the
 // output goes out as a Haas serial port sends it (DC2 at POPEN, DC4 at PCLOS)
 // with `ending` after each line.
+// Mitsubishi's program runs here too: its G04 and Haas's ";" and G103 do
+// nothing on the simulator, any "#n=" assignment of a number, a variable or
+// the current position plus a distance is kept, and an M00 with its reason
+// stops; `kept` receives the variables at the end.
 std::string simulate_fanuc(const std::string& program, const Scenario& scenario, double surface_mm,
-                           double start_mm, unsigned seed, bool noise, const std::string& ending) {
+                           double start_mm, unsigned seed, bool noise, const std::string& ending,
+                           std::map<int, double>* kept = nullptr) {
     SimulatedProbe machine(scenario, surface_mm, seed, noise);
     std::vector<std::string> lines;
     std::istringstream in(program);
@@ -591,13 +596,22 @@ std::string simulate_fanuc(const std::string& program, const Scenario& scenario,
         const std::string& line = lines[i];
         if (line == "POPEN") output += '\x12';
         if (line == "PCLOS") output += '\x14';
-        if (line == "M30" || line.rfind("#3000=", 0) == 0) break;
+        if (line == "M30" || line.rfind("#3000=", 0) == 0 || line.rfind("M00 (", 0) == 0) break;
         if (line.rfind("DPRNT[", 0) == 0) {
             output += dprnt(line.substr(6, line.size() - 7), variables) + ending;
-        } else if (line.rfind("#101=#5043", 0) == 0) {
-            variables[101] = position + std::stod(line.substr(10));
-        } else if (line.rfind("#102=", 0) == 0) {
-            variables[102] = std::stod(line.substr(5));
+        } else if (line.rfind('#', 0) == 0) {
+            const std::size_t eq = line.find('=');
+            const std::string value = line.substr(eq + 1);
+            double number = 0.0;
+            if (value.rfind('#', 0) == 0) {
+                std::size_t digits = 0;
+                const int source = std::stoi(value.substr(1), &digits);
+                number = source == 5043 ? position : variables.at(source);
+                if (1 + digits < value.size()) number += std::stod(value.substr(1 + digits));
+            } else {
+                number = std::stod(value);
+            }
+            variables[std::stoi(line.substr(1, eq - 1))] = number;
         } else if (line.rfind("IF[ABS[#5063-#101]LT0.050]GOTO9001", 0) == 0) {
             if (std::abs(variables[5063] - variables[101]) < 0.05) {
                 while (lines[i] != "N9001") ++i;
@@ -616,7 +630,33 @@ std::string simulate_fanuc(const std::string& program, const Scenario& scenario,
             ADD_FAILURE() << "the simulator moves Z only: " << line;
         }
     }
+    if (kept != nullptr) *kept = variables;
     return output;
+}
+
+// The common variables #500-#999 a Mitsubishi program kept, as a list of
+// "#n = value" lines with 4 decimals, each line ending in `ending`.
+std::string variable_list(const std::map<int, double>& variables, const std::string& ending) {
+    std::string list;
+    for (const auto& [number, value] : variables) {
+        if (number < 500 || number > 999) continue;
+        char line[64];
+        std::snprintf(line, sizeof line, "#%d = %.4f", number, value);
+        list += line + ending;
+    }
+    return list;
+}
+
+// The Mitsubishi program of `plan` on the simulated machine: its variable list.
+std::string simulate_mitsubishi(const ProbingPlan& plan, const Scenario& scenario,
+                                double surface_mm, double start_mm, unsigned seed, bool noise,
+                                const std::string& ending) {
+    const std::string program = write_program(plan, mitsubishi_dialect(), program_test::kDate);
+    std::map<int, double> variables;
+    EXPECT_EQ(
+        simulate_fanuc(program, scenario, surface_mm, start_mm, seed, noise, ending, &variables),
+        "");
+    return variable_list(variables, ending);
 }
 
 // Plan, program, the simulated machine, import, fit; `ending` ends each
@@ -629,9 +669,12 @@ DelayGroup round_trip(int repeats, bool noise, DialectId dialect_id = DialectId:
     options.repeats = repeats;
     const ProbingPlan plan = make_delay_plan(scenario, options);
     const std::string program = write_program(plan, dialect(dialect_id), program_test::kDate);
-    const std::string log = dialect_id == DialectId::fanuc
-                                ? simulate_fanuc(program, scenario, -50.0, -43.0, 42, noise, ending)
-                                : simulate_grbl(program, scenario, -50.0, -43.0, 42, noise);
+    const std::string log =
+        dialect_id == DialectId::fanuc || dialect_id == DialectId::haas
+            ? simulate_fanuc(program, scenario, -50.0, -43.0, 42, noise, ending)
+        : dialect_id == DialectId::mitsubishi
+            ? simulate_mitsubishi(plan, scenario, -50.0, -43.0, 42, noise, ending)
+            : simulate_grbl(program, scenario, -50.0, -43.0, 42, noise);
     const std::vector<DelayTouch> touches =
         parse_delay_csv(import_machine_log(plan, dialect_id, log));
     // 30, 100, 300, 1000 and 2000 mm/min (the scenario's feed is among them).
@@ -651,6 +694,101 @@ TEST(MachineLog, FanucRoundTripGivesBackTheKnownDelay) {
     EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
     const DelayGroup noisy = round_trip(20, true, DialectId::fanuc, "\n\r\r");
     EXPECT_NEAR(noisy.delay_s, delay_s, 5e-4);
+}
+
+// Haas runs the Fanuc-type program with its look-ahead limited (empty
+// blocks, G103), and prints the same DPRNT lines: the same fit.
+TEST(MachineLog, HaasRoundTripGivesBackTheKnownDelay) {
+    const Scenario scenario;
+    const double delay_s = measurement_delay_s(scenario.machine, scenario.probe);
+    const DelayGroup exact = round_trip(5, false, DialectId::haas, "\r\n");
+    EXPECT_NEAR(exact.delay_s, delay_s, 5e-6);
+    EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
+}
+
+// Mitsubishi keeps the touches in common variables; their list, at 4
+// decimals, fits as closely as DPRNT's output.
+TEST(MachineLog, MitsubishiRoundTripGivesBackTheKnownDelay) {
+    const Scenario scenario;
+    const double delay_s = measurement_delay_s(scenario.machine, scenario.probe);
+    const DelayGroup exact = round_trip(5, false, DialectId::mitsubishi, "\r\n");
+    EXPECT_NEAR(exact.delay_s, delay_s, 5e-6);
+    EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
+    const DelayGroup noisy = round_trip(20, true, DialectId::mitsubishi, "\n");
+    EXPECT_NEAR(noisy.delay_s, delay_s, 5e-4);
+}
+
+// The list as a control outputs it or a user copies it: "#n = v", "#n=v"
+// and "n v" lines, other lines, vacant variables, the same line twice: the
+// same table. A broken list names its line.
+TEST(MachineLog, MitsubishiVariableListsInEveryFormAndBrokenOnes) {
+    const Scenario scenario;
+    const ProbingPlan plan = small_delay_plan();
+    const std::string list = simulate_mitsubishi(plan, scenario, -50.0, -43.0, 42, false, "\n");
+    const std::string expected = import_machine_log(plan, DialectId::mitsubishi, list);
+    EXPECT_EQ(parse_delay_csv(expected).size(), 4u);
+    std::string compact;
+    std::string bare;
+    std::istringstream lines(list);
+    for (std::string line; std::getline(lines, line);) {
+        const std::size_t eq = line.find(" = ");
+        compact += line.substr(0, eq) + "=" + line.substr(eq + 3) + "\r\n";
+        bare += line.substr(1, eq - 1) + "  " + line.substr(eq + 3) + "\n";
+    }
+    EXPECT_EQ(import_machine_log(plan, DialectId::mitsubishi, compact), expected);
+    EXPECT_EQ(import_machine_log(plan, DialectId::mitsubishi, bare), expected);
+    const std::string framed = "COMMON VARIABLES\n#100 = 3.0\n#599 =\n#600 = ****\n" + list +
+                               list.substr(0, list.find('\n') + 1) + "#1000 = 1\n";
+    EXPECT_EQ(import_machine_log(plan, DialectId::mitsubishi, framed), expected);
+
+    const auto line_with = [&](const std::string& text, const std::string& start) {
+        std::size_t number = 1;
+        for (std::size_t at = 0; at < text.find(start); ++at) number += text[at] == '\n';
+        return static_cast<int>(number);
+    };
+    const auto import = [&plan](const std::string& text) {
+        import_machine_log(plan, DialectId::mitsubishi, text);
+    };
+    // Another plan's id in #500-#503: named at #500.
+    std::string other = list;
+    const std::size_t units = other.find('.', other.find("#501 = ")) - 1;  // stays 0-65535
+    other[units] = other[units] == '0' ? '1' : '0';
+    EXPECT_EQ(line_of([&] { import(other); }), line_with(other, "#500 ="));
+    // A variable listed twice with two values: the second line.
+    const std::string twice = list + "#521 = 7.0000\n";
+    EXPECT_EQ(line_of([&] { import(twice); }), line_with(twice, "#521 = 7"));
+    // A touch's variable missing.
+    std::string missing = list;
+    missing.erase(missing.find("#524 ="),
+                  missing.find('\n', missing.find("#524 =")) + 1 - missing.find("#524 ="));
+    EXPECT_THROW(import(missing), CsvError);
+    // The program did not end, or stopped: named at #504.
+    for (const char* state : {"0.0000", "101.0000", "102.0000", "7.0000"}) {
+        std::string stopped = list;
+        const std::size_t at = stopped.find("#504 = ") + 7;
+        stopped.replace(at, stopped.find('\n', at) - at, state);
+        EXPECT_EQ(line_of([&] { import(stopped); }), line_with(stopped, "#504 =")) << state;
+    }
+    // Not a variable list at all.
+    EXPECT_EQ(line_of([&] { import("PROBECYCLE PLAN ABC DELAY\n"); }), 1);
+    EXPECT_THROW(import("nothing here\n"), CsvError);
+}
+
+TEST(MachineLog, MitsubishiProbeThatDoesNotTriggerStopsTheProgramAndTheImport) {
+    const Scenario scenario;
+    const ProbingPlan plan = small_delay_plan();
+    // The surface 30 mm away: the locating touch finds nothing, the check
+    // jumps to the stop, which keeps 101 in #504.
+    const std::string list = simulate_mitsubishi(plan, scenario, -80.0, -50.0, 42, false, "\n");
+    EXPECT_NE(list.find("#504 = 101.0000\n"), std::string::npos) << list;
+    EXPECT_NE(list.find("#505 = 0.0000\n"), std::string::npos) << list;
+    try {
+        import_machine_log(plan, DialectId::mitsubishi, list);
+        ADD_FAILURE() << "imported";
+    } catch (const CsvError& e) {
+        EXPECT_NE(std::string(e.what()).find("PROBE DID NOT TRIGGER"), std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(MachineLog, FanucProbeThatDoesNotTriggerStopsTheProgramAndTheImport) {

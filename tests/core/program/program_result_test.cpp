@@ -133,8 +133,9 @@ struct ProgramRun {
 };
 
 // Runs the program's macro lines; the recorded touches' skip positions are
-// `touches`, in order (a touch's number from the LinuxCNC LOG line or the
-// Fanuc-type #102).
+// `touches`, in order (a touch's number from the LinuxCNC LOG line, the
+// Fanuc-type #102 or Mitsubishi's #505, 0 before the first). A stop is an abort, an alarm or a
+// Mitsubishi M00 with its reason.
 ProgramRun run_program(const std::string& program,
                        const std::vector<std::array<double, 3>>& touches) {
     std::vector<std::string> lines;
@@ -146,8 +147,8 @@ ProgramRun run_program(const std::string& program,
         const std::string line = without_spaces(raw);
         if (raw.rfind("(LOG,probecycle touch ", 0) == 0) {
             run.macro.skip = touches.at(std::stoul(raw.substr(22)) - 1);
-        } else if (line.rfind("(ABORT,", 0) == 0 || line.rfind("#3000=", 0) == 0 || line == "M2" ||
-                   line == "M30") {
+        } else if (line.rfind("(ABORT,", 0) == 0 || line.rfind("#3000=", 0) == 0 ||
+                   line.rfind("M00(", 0) == 0 || line == "M2" || line == "M30") {
             run.stopped = line != "M2" && line != "M30";
             if (!run.stopped) break;
         } else if (line.rfind('#', 0) == 0 && line.find('=') != std::string::npos) {
@@ -155,7 +156,10 @@ ProgramRun run_program(const std::string& program,
             const int n = std::stoi(line.substr(1, eq - 1));
             const double value = run.macro.eval(line.substr(eq + 1));
             run.macro.vars[n] = value;
-            if (n == 102) run.macro.skip = touches.at(static_cast<std::size_t>(value) - 1);
+            // The touch's number: the Fanuc-type #102, Mitsubishi's count #505.
+            if ((n == 102 || n == 505) && value > 0.0) {
+                run.macro.skip = touches.at(static_cast<std::size_t>(value) - 1);
+            }
         } else if (line.rfind("IF[", 0) == 0) {
             const std::size_t go = line.rfind("GOTO");
             const std::string target = line.substr(go + 4);
@@ -205,7 +209,8 @@ TEST(ProgramResult, EveryComputingDialectComputesWhatTheImportComputes) {
     for (const auto& [name, plan] : program_test::golden_plans()) {
         const std::optional<ResultSpec> spec = result_spec(plan);
         if (!spec) continue;
-        for (const Dialect* d : {&linuxcnc_dialect(), &fanuc_dialect()}) {
+        for (const Dialect* d :
+             {&linuxcnc_dialect(), &fanuc_dialect(), &haas_dialect(), &mitsubishi_dialect()}) {
             const std::string program =
                 write_program(plan, *d, program_test::kDate, program_test::golden_options());
             for (int k = 0; k < 50; ++k) {

@@ -33,7 +33,8 @@ std::string read_file(const std::string& path) {
 
 TEST(ProgramGolden, EveryProgramInEveryDialect) {
     for (const auto& [name, plan] : program_test::golden_plans()) {
-        for (const Dialect* d : {&linuxcnc_dialect(), &grbl_dialect(), &fanuc_dialect()}) {
+        for (const DialectId id : all_dialects()) {
+            const Dialect* d = &dialect(id);
             const std::string file = "program_" + name + "_" + d->name + "." + d->extension;
             const std::string text =
                 write_program(plan, *d, program_test::kDate, program_test::golden_options());
@@ -50,7 +51,8 @@ TEST(ProgramGolden, EveryProgramInEveryDialect) {
 // feed), rapid override where the program has rapids (retracts, lifts).
 TEST(ProgramWriter, TheHeaderNamesTheOverridesItsMovesObey) {
     for (const auto& [name, plan] : program_test::golden_plans()) {
-        for (const Dialect* d : {&linuxcnc_dialect(), &grbl_dialect(), &fanuc_dialect()}) {
+        for (const DialectId id : all_dialects()) {
+            const Dialect* d = &dialect(id);
             SCOPED_TRACE(name + " " + d->name);
             std::string text =
                 write_program(plan, *d, program_test::kDate, program_test::golden_options());
@@ -160,7 +162,8 @@ TEST(ProgramWriter, ProtectedMovesInEveryDialect) {
         << fanuc;
 
     // A plan without protected moves has neither the notes nor the branch.
-    for (const Dialect* d : {&linuxcnc_dialect(), &grbl_dialect(), &fanuc_dialect()}) {
+    for (const DialectId id : all_dialects()) {
+        const Dialect* d = &dialect(id);
         const std::string text =
             write_program(program_test::golden_plans()[2].plan, *d, program_test::kDate);
         EXPECT_EQ(text.find("rotected moves"), std::string::npos) << d->name;
@@ -228,6 +231,29 @@ TEST(ProgramWriter, FanucChecksEveryProbeAndPrintsLettersOnly) {
         EXPECT_LT(text.find("\nM30\nN9001\n"), text.find("#3000=101(PROBE DID NOT TRIGGER)"));
         EXPECT_EQ(text.substr(text.size() - 2), "%\n");
     }
+}
+
+// Mitsubishi keeps three common variables per touch, #520 to #999: a plan
+// with more touches than fit is refused, naming the limit.
+TEST(ProgramWriter, MitsubishiRefusesMoreTouchesThanItsVariablesHold) {
+    EXPECT_EQ(max_recorded_touches(mitsubishi_dialect()), 160u);
+    EXPECT_EQ(max_recorded_touches(fanuc_dialect()), 0u);
+    DelayPlanOptions options;
+    options.feeds_mm_min = {30, 100, 300, 1000, 2000};
+    options.repeats = 32;  // 160 touches: the most
+    EXPECT_NO_THROW(write_program(make_delay_plan(Scenario{}, options), mitsubishi_dialect(),
+                                  program_test::kDate));
+    options.repeats = 33;
+    const ProbingPlan plan = make_delay_plan(Scenario{}, options);
+    try {
+        write_program(plan, mitsubishi_dialect(), program_test::kDate);
+        ADD_FAILURE() << "written";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("165 touches"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("#520 to #999"), std::string::npos) << e.what();
+    }
+    // The other dialects keep no touches in variables.
+    EXPECT_NO_THROW(write_program(plan, haas_dialect(), program_test::kDate));
 }
 
 TEST(ProgramWriter, FanucRingNeedsTheUsersOrientCommand) {

@@ -41,8 +41,8 @@
 ; move runs at a feed, none at the rapid), with the probe clear of the
 ; part, and check every move against your machine before a touch.
 ; Every move is incremental (G91) from where the probe stands when the program
-; starts or a pause ends. A probing move that does not trigger stops the program
-; with an alarm.
+; starts or a pause ends. A probing move that does not trigger stops the
+; program.
 ; Positions: grbl answers [PRB:x,y,z:1] after each probe (machine
 ; positions; set $13=0 for mm). Save the sender's console to a file and
 ; import that file.
