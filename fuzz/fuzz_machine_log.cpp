@@ -1,9 +1,9 @@
 // A control's log (docs/programs.md), imported for a plan. The first
-// byte picks the plan and the dialect: '0' to '9' and 'a' to 'e' (slots 0
-// to 14; every other byte picks one, modulo 15) stand for plan (slot / 5:
+// byte picks the plan and the dialect: '0' to '9' and 'a' to 'h' (slots 0
+// to 17; every other byte picks one, modulo 18) stand for plan (slot / 6:
 // delay, ring, cycle, each from the default scenario and options) and
-// dialect (slot % 5: linuxcnc, grbl, fanuc, haas, mitsubishi); the rest is
-// the log. Any log is refused with a CsvError (an
+// dialect (slot % 6: linuxcnc, grbl, fanuc, haas, mitsubishi, siemens); the
+// rest is the log. Any log is refused with a CsvError (an
 // InputError for the cycle plan, which has no lab table), or gives the lab's
 // CSV that parse_delay_csv / parse_ring_csv read back: one row per recorded
 // touch of the plan, in order, with its axis, direction and feed (delay) or
@@ -15,10 +15,10 @@
 // (import_cycle_log): a finite feature result, or a CsvError.
 //
 // The seeds (fuzz/seeds/machine_log/, named for their first byte) are logs of
-// these plans in each format. The LinuxCNC LOG files, the DPRNT outputs and
-// the Mitsubishi variable lists carry the plan's id, as `probecycle-cli program delay|ring|cycle`
-// writes it with the default scenario and options: a change to those plans makes the ids stale (the
-// import then stops at the id), and the seeds need the new ids.
+// these plans in each format. The LinuxCNC LOG files, the DPRNT outputs, the
+// Mitsubishi variable lists and the Siemens WRITE files carry the plan's id, as `probecycle-cli
+// program delay|ring|cycle` writes it with the default scenario and options: a change to those
+// plans makes the ids stale (the import then stops at the id), and the seeds need the new ids.
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -111,12 +111,12 @@ void check_cycle_import(const ProbingPlan& plan, DialectId dialect, std::string_
     }
 }
 
-// The first byte's slot, 0 to 14: '0'-'9' and 'a'-'e' as hex digits, any
-// other byte modulo 15.
+// The first byte's slot, 0 to 17: '0'-'9' and 'a'-'h' as digits, any other
+// byte modulo 18.
 unsigned slot(std::uint8_t byte) {
     if (byte >= '0' && byte <= '9') return byte - '0';
-    if (byte >= 'a' && byte <= 'e') return byte - 'a' + 10u;
-    return byte % 15u;
+    if (byte >= 'a' && byte <= 'h') return byte - 'a' + 10u;
+    return byte % 18u;
 }
 
 }  // namespace
@@ -124,8 +124,8 @@ unsigned slot(std::uint8_t byte) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0) return 0;
     const unsigned pick = slot(data[0]);
-    const ProbingPlan& plan = plans()[pick / 5];
-    const DialectId dialect = all_dialects()[pick % 5];
+    const ProbingPlan& plan = plans()[pick / 6];
+    const DialectId dialect = all_dialects()[pick % 6];
     const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
     if (plan.kind == ProgramKind::cycle) {
         check_recorded(plan, dialect, text);

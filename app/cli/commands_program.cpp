@@ -25,6 +25,7 @@ struct ProgramArgs {
     std::string dialect;
     std::string out;
     std::string plan;
+    std::string probe_input{"1"};
 };
 
 CLI::Validator dialect_check() {
@@ -58,6 +59,17 @@ void add_common(CLI::App& cmd, ProgramArgs& args) {
                    "Also write the plan the program follows to FILE.json (atomically): the "
                    "import needs it")
         ->type_name("FILE.json");
+    cmd.add_option("--probe-input", args.probe_input,
+                   "siemens: the probe's input in MEAS=: 1 or 2, negative for a probe whose "
+                   "signal falls when it triggers (default 1); the other dialects have none")
+        ->type_name("1|-1|2|-2")
+        ->check(CLI::Validator(
+            [](std::string& word) {
+                return word == "1" || word == "-1" || word == "2" || word == "-2"
+                           ? std::string()
+                           : "got '" + word + "'; allowed: 1, -1, 2, -2";
+            },
+            ""));
 }
 
 // A plan's refusal in the options' words: "feeds: ..." reads "--feeds: ...".
@@ -75,8 +87,8 @@ std::string in_option_words(std::string text) {
 
 // Runs `make` on the scenario; an option the plan refuses is a usage error.
 template <typename Make>
-void write_plan_and_program(const ProgramArgs& args, Make make,
-                            const ProgramOptions& options = {}) {
+void write_plan_and_program(const ProgramArgs& args, Make make, ProgramOptions options = {}) {
+    options.probe_input = std::stoi(args.probe_input);  // checked: 1, -1, 2 or -2
     const Scenario scenario = load_scenario(args.scenario);
     ProbingPlan plan;
     std::string program;
@@ -164,7 +176,8 @@ void add_ring(CLI::App& program) {
     add_number(*cmd, "--centre-tolerance-mm", args->tolerance,
                "How far off the gauge centre the probe may start (default 1)", "MM");
     cmd->add_option("--orient-180", args->orient_180,
-                    "fanuc, haas, mitsubishi: your control's command that turns the spindle to "
+                    "fanuc, haas, mitsubishi, siemens: your control's command that turns the "
+                    "spindle to "
                     "180 deg, as your manual gives it (e.g. \"M19 R180.\"); required there, "
                     "ProbeCycle does not guess it. Other dialects: the operator turns the "
                     "spindle at a pause")
@@ -176,7 +189,7 @@ void add_ring(CLI::App& program) {
         options.centre_tolerance_mm = args->tolerance.value_or(options.centre_tolerance_mm);
         write_plan_and_program(
             args->common, [&](const Scenario& s) { return make_ring_plan(s, options); },
-            ProgramOptions{args->orient_180});
+            ProgramOptions{args->orient_180, 1});
     });
 }
 
@@ -229,7 +242,8 @@ void add_import(CLI::App& app) {
     cmd->add_option("LOG", args->log,
                     "LinuxCNC: probecycle_log.txt (or the PROBEOPEN file); grbl: the sender's "
                     "console saved to a file; fanuc, haas: the program's DPRNT output as captured; "
-                    "mitsubishi: the common variables #500-#999 as a list of '#n value' lines")
+                    "mitsubishi: the common variables #500-#999 as a list of '#n value' lines; "
+                    "siemens: the file PROBECYCLE_LOG the program's WRITE appends to")
         ->required();
     cmd->add_option("--dialect", args->dialect, "The control: " + dialect_names())
         ->type_name(dialect_names("|"))
@@ -274,9 +288,9 @@ void add_import(CLI::App& app) {
 }  // namespace
 
 void add_program_commands(CLI::App& app) {
-    CLI::App* program = app.add_subcommand(
-        "program",
-        "A probing program for your control (LinuxCNC, grbl, Fanuc-type macro B) and its plan");
+    CLI::App* program = app.add_subcommand("program",
+                                           "A probing program for your control (LinuxCNC, grbl, "
+                                           "Fanuc, Haas, Mitsubishi, Siemens) and its plan");
     program->require_subcommand(1);
     add_delay(*program);
     add_ring(*program);

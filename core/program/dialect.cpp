@@ -89,11 +89,11 @@ const Dialect& linuxcnc_dialect() {
         .pause_word = "M0",
         .open_record = {"(PROBEOPEN probecycle_probes.txt)", "(LOGOPEN,probecycle_log.txt)",
                         "(LOG,probecycle plan {id} {kind})"},
-        .before_probe = "",
-        .after_probe = "",
+        .before_probe = {},
+        .after_probe = {},
         .skip_position = {"#5061", "#5062", "#5063"},
         .guard_word = "G38.3",
-        .before_guard = "",
+        .before_guard = {},
         .after_guard = {"o{label} if [#5070 EQ 1]",
                         "(ABORT,probecycle: the probe touched something during a protected move: "
                         "the path is obstructed)",
@@ -177,10 +177,10 @@ const Dialect& grbl_dialect() {
         .pause_message = "",
         .pause_word = "M0",
         .open_record = {},
-        .before_probe = "",
-        .after_probe = "",
+        .before_probe = {},
+        .after_probe = {},
         .guard_word = "G38.3",
-        .before_guard = "",
+        .before_guard = {},
         .after_guard = {},
         .after_recorded_probe = {},
         .close_record = {},
@@ -309,12 +309,12 @@ const Dialect& fanuc_dialect() {
         .pause_message = "",
         .pause_word = "M00",
         .open_record = {"POPEN", "DPRNT[PROBECYCLE*PLAN*{id_letters}*{KIND}]"},
-        .before_probe = "#101={current}{distance}",
-        .after_probe = "IF[ABS[{skip}-#101]LT0.050]GOTO9001",
+        .before_probe = {"#101={current}{distance}"},
+        .after_probe = {"IF[ABS[{skip}-#101]LT0.050]GOTO9001"},
         .current_position = {"#5041", "#5042", "#5043"},
         .skip_position = {"#5061", "#5062", "#5063"},
         .guard_word = "G31",
-        .before_guard = "#101={current}{distance}",
+        .before_guard = {"#101={current}{distance}"},
         .after_guard = {"IF[ABS[{skip}-#101]GE0.050]GOTO9002"},
         .after_recorded_probe = {"#102={n}",
                                  "DPRNT[TOUCH#102[40]*X#5061[44]*Y#5062[44]*Z#5063[44]]"},
@@ -457,13 +457,13 @@ const Dialect& mitsubishi_dialect() {
         .pause_word = "M00",
         .open_record = {"#500={id_1}", "#501={id_2}", "#502={id_3}", "#503={id_4}", "#504=0",
                         "#505=0"},
-        .before_probe = "#101={current}{distance}",
-        .after_probe = "IF[ABS[{skip}-#101]LT0.050]GOTO9001",
+        .before_probe = {"#101={current}{distance}"},
+        .after_probe = {"IF[ABS[{skip}-#101]LT0.050]GOTO9001"},
         .settle = {"G04"},
         .current_position = {"#5041", "#5042", "#5043"},
         .skip_position = {"#5061", "#5062", "#5063"},
         .guard_word = "G31",
-        .before_guard = "#101={current}{distance}",
+        .before_guard = {"#101={current}{distance}"},
         .after_guard = {"IF[ABS[{skip}-#101]GE0.050]GOTO9002"},
         .after_recorded_probe = {"{touch_x}=#5061", "{touch_y}=#5062", "{touch_z}=#5063",
                                  "#505={n}"},
@@ -513,6 +513,124 @@ const Dialect& mitsubishi_dialect() {
     return dialect;
 }
 
+// Siemens SINUMERIK 840D sl and ONE (../shared/domain.md, "Controls' probing
+// words", which gives the sources):
+// - MEAS=1 G1 X=... F...: a measuring move with probe 1 on its rising edge
+//   (-1 the falling edge, 2 and -2 probe 2), which stops the move at the
+//   trigger and deletes the distance to go (Job Planning manual PM 03/2006,
+//   s.5.7). Every production use found (Autodesk's "Siemens SINUMERIK 840D
+//   Inspection" post) programs an absolute target, then STOPRE, then reads
+//   $AA_MW[axis] (the trip in workpiece coordinates) and tests $A_PROBE[n]
+//   (<> 1 after a measuring move: no point taken; == 1 after a positioning
+//   move: the path is obstructed), and stops with MSG("...") and M0. MEAS
+//   under G91 is confirmed nowhere, so each measuring and protected move is
+//   one absolute block: STOPRE, the start $AA_IW[axis] (the current position
+//   in workpiece coordinates) plus the move into R1, "MEAS=n G90 G1 X=R1
+//   F..", and G91 again on the next block; the probe input is the user's
+//   (ProgramOptions::probe_input, the CLI's --probe-input).
+// - WRITE(error, "file", text) appends a line to a file (SINUMERIK ONE NC
+//   programming 12/2019, p.566); text joined with << and each number as
+//   SPRINT("%12.4F", value) (840D sl 10/2015): 4 decimals, 0.1 um. The error
+//   variable is an INT, defined first in the program (DEF INT PC_ERROR), and
+//   checked after each WRITE: a failed write stops the program.
+// - No SETAL: its user range of alarm numbers was not confirmed. A stop is
+//   MSG with the reason and M0; cycle start then ends the program (M30).
+// - The result in R60-R68 (R parameters R0-R99 are the standard set), with
+//   ( ) and ABS( ), the comparisons <= == and jumps "IF ... GOTOF label"
+//   to a label on its own line ("LABEL:").
+// Not confirmed, so the header asks the user to prove it: that $A_PROBE[n]
+// still reads 1 after the axis stopped on a trigger (the stylus is still
+// deflected by the overtravel; a probe that springs free reads as no
+// trigger, the safe side); where the WRITE file lands and its name's type
+// (the program's directory on the NC); the text SPRINT gives for a number.
+// The import reads the lines of the last run in the file (WRITE appends).
+const Dialect& siemens_dialect() {
+    static const Dialect dialect{
+        .id = DialectId::siemens,
+        .name = "siemens",
+        .title = "Siemens 840D sl / ONE",
+        .extension = "mpf",
+        .comment_open = ";",
+        .comment_close = "",
+        // Definitions come before the first block that runs.
+        .program_start = {"DEF INT PC_ERROR"},
+        .modes = "G71 G40 G91 G94",
+        .probe_word = "G1",
+        .rapid_word = "G0",
+        .feed_word = "G1",
+        .pause_message = "MSG(\"{text}\")",
+        .pause_word = "M0",
+        .open_record =
+            {"WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"PROBECYCLE PLAN {id_letters} {KIND}\")",
+             "IF PC_ERROR<>0 GOTOF WRITE_FAILED"},
+        .before_probe = {"STOPRE", "R1={current}{distance}"},
+        .after_probe = {"G91", "STOPRE", "IF $A_PROBE[{probe}]<>1 GOTOF NO_TRIGGER"},
+        .current_position = {"$AA_IW[X]", "$AA_IW[Y]", "$AA_IW[Z]"},
+        .skip_position = {"$AA_MW[X]", "$AA_MW[Y]", "$AA_MW[Z]"},
+        .guard_word = "G1",
+        .before_guard = {"STOPRE", "R1={current}{distance}"},
+        .after_guard = {"G91", "STOPRE", "IF $A_PROBE[{probe}]==1 GOTOF OBSTRUCTED"},
+        .probe_move = "MEAS={input} G90 {word} {axis}=R1 F{feed}",
+        .probe_input_from_user = true,
+        .after_recorded_probe =
+            {"WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"TOUCH {n} X\"<<SPRINT(\"%12.4F\",{x})<<\" "
+             "Y\"<<SPRINT(\"%12.4F\",{y})<<\" Z\"<<SPRINT(\"%12.4F\",{z}))",
+             "IF PC_ERROR<>0 GOTOF WRITE_FAILED"},
+        .close_record = {"WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"PROBECYCLE END\")",
+                         "IF PC_ERROR<>0 GOTOF WRITE_FAILED"},
+        .end = {"G90", "M30"},
+        .after_end = {"NO_TRIGGER:", "WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"PROBECYCLE NO TRIGGER\")",
+                      "MSG(\"PROBECYCLE: PROBE DID NOT TRIGGER\")", "G90", "M0", "M30",
+                      "WRITE_FAILED:", "MSG(\"PROBECYCLE: WRITE TO PROBECYCLE_LOG FAILED\")", "G90",
+                      "M0", "M30"},
+        .guard_alarm = {"OBSTRUCTED:",
+                        "WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"PROBECYCLE OBSTRUCTED\")",
+                        "MSG(\"PROBECYCLE: PROBE PATH OBSTRUCTED\")", "G90", "M0", "M30"},
+        .file_end = {},
+        .record_notes =
+            {"Positions: WRITE appends to the file PROBECYCLE_LOG a line PROBECYCLE PLAN, one",
+             "line TOUCH n X x Y y Z z per recorded touch ($AA_MW of the probing axis, $AA_IW",
+             "of the others, workpiece coordinates) and PROBECYCLE END. Import that file: the",
+             "import reads its last run. Uses R1 and the INT PC_ERROR; a failed WRITE stops",
+             "the program.",
+             "Measuring moves: STOPRE, the target from $AA_IW into R1, MEAS=n G90 G1 to it,",
+             "G91 again (MEAS under G91 is not confirmed). The probe input n is the one this",
+             "program was written for: MEAS and $A_PROBE below use it.",
+             "A probe that does not trigger ($A_PROBE not 1 after STOPRE) stops with the",
+             "message PROBECYCLE: PROBE DID NOT TRIGGER (M0; cycle start ends the program).",
+             "NOT CONFIRMED, prove it out before a touch: that $A_PROBE still reads 1 once",
+             "the axis has stopped on a trigger (run one touch at reduced feed override and",
+             "check the file gets its TOUCH line); where your control keeps PROBECYCLE_LOG.",
+             "Check MD13220 (a probe delay the control subtracts) before a delay test."},
+        .guard_notes =
+            {"Protected moves are measuring moves to the end of the move: when $A_PROBE",
+             "reads 1 after one, the probe touched something, and the program stops with",
+             "the message PROBECYCLE: PROBE PATH OBSTRUCTED."},
+        .result_record =
+            {"WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"RESULT S\"<<SPRINT(\"%12.4F\",{size})<<\" "
+             "X\"<<SPRINT(\"%12.4F\",{centre_x})<<\" Y\"<<SPRINT(\"%12.4F\",{centre_y})<<\" "
+             "D\"<<SPRINT(\"%12.4F\",{deviation})<<\" T\"<<SPRINT(\"%12.4F\",{flag}))",
+             "IF PC_ERROR<>0 GOTOF WRITE_FAILED"},
+        .tolerance_check = {"{flag}=0", "IF ABS({deviation})<={tolerance} GOTOF TOLERANCE_CHECKED",
+                            "{flag}=1", "TOLERANCE_CHECKED:"},
+        .out_of_tolerance = {"IF {flag}==0 GOTOF TOLERANCE_DONE",
+                             "WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"PROBECYCLE OUT OF TOLERANCE\")",
+                             "{stop}", "TOLERANCE_DONE:"},
+        .tolerance_stop = {"MSG(\"PROBECYCLE: SIZE OUT OF TOLERANCE\")", "G90", "M0", "M30"},
+        .result_notes = {"WRITE appends them to PROBECYCLE_LOG as RESULT S size X centre Y centre",
+                         "D deviation T flag; the import reads that line and checks it against",
+                         "the touches."},
+        .variable_prefix = "R",
+        .first_result_variable = 60,
+        .group_open = '(',
+        .group_close = ')',
+        .log_format = LogFormat::write_file,
+        .result_tolerance_mm = 2e-4,  // 4 decimals, as DPRNT's
+        .orient_from_user = true,
+    };
+    return dialect;
+}
+
 const Dialect& dialect(DialectId id) {
     switch (id) {
         case DialectId::linuxcnc:
@@ -525,14 +643,16 @@ const Dialect& dialect(DialectId id) {
             return haas_dialect();
         case DialectId::mitsubishi:
             return mitsubishi_dialect();
+        case DialectId::siemens:
+            return siemens_dialect();
     }
     return linuxcnc_dialect();
 }
 
-const std::array<DialectId, 5>& all_dialects() {
-    static constexpr std::array<DialectId, 5> kAll = {DialectId::linuxcnc, DialectId::grbl,
-                                                      DialectId::fanuc, DialectId::haas,
-                                                      DialectId::mitsubishi};
+const std::array<DialectId, 6>& all_dialects() {
+    static constexpr std::array<DialectId, 6> kAll = {DialectId::linuxcnc,   DialectId::grbl,
+                                                      DialectId::fanuc,      DialectId::haas,
+                                                      DialectId::mitsubishi, DialectId::siemens};
     return kAll;
 }
 

@@ -16,13 +16,15 @@
 
 namespace probecycle {
 
-enum class DialectId { linuxcnc, grbl, fanuc, haas, mitsubishi };
+enum class DialectId { linuxcnc, grbl, fanuc, haas, mitsubishi, siemens };
 
 // How the control's record of the touches comes back (machine_log.h):
 // LinuxCNC's LOG or PROBEOPEN file, a grbl sender's console, the
-// Fanuc-type DPRNT output, or the common variables the program stores the
-// touches in (a list of "#n value" lines).
-enum class LogFormat { linuxcnc_log, grbl_console, dprnt, common_variables };
+// Fanuc-type DPRNT output, the common variables the program stores the
+// touches in (a list of "#n value" lines), or the file a Siemens program
+// appends its lines to with WRITE (the DPRNT lines' words; the last run in
+// the file counts).
+enum class LogFormat { linuxcnc_log, grbl_console, dprnt, common_variables, write_file };
 
 struct Dialect {
     DialectId id{DialectId::linuxcnc};
@@ -51,12 +53,13 @@ struct Dialect {
     // id, {id_letters}: the id in the letters of id_letters(), {kind}: delay,
     // ring or cycle, {KIND}: the same in upper case).
     std::vector<const char*> open_record;
-    // A line before and after every probing move ({current}: the variable of
+    // Lines before and after every probing move ({current}: the variable of
     // the probing axis's current position, {skip}: of its skip position,
-    // {distance}: the signed move, "+12.000"); empty: none. A control that
+    // {distance}: the signed move, "+12.000"; {input} and {probe}: the probe
+    // input of ProgramOptions and its number); empty: none. A control that
     // goes on without an alarm when the probe does not trigger checks here.
-    const char* before_probe;
-    const char* after_probe;
+    std::vector<const char*> before_probe;
+    std::vector<const char*> after_probe;
     // Lines before every read of a position ({current} in before_probe and
     // before_guard, {skip} in after_probe and after_guard): what makes the
     // control read it only once the move before it has ended (Haas's empty
@@ -72,8 +75,15 @@ struct Dialect {
     // own, 1000 + its count from 1): a trigger means the path is obstructed,
     // and the lines after stop the program where the control can branch.
     const char* guard_word;
-    const char* before_guard;
+    std::vector<const char*> before_guard;
     std::vector<const char*> after_guard;
+    // The probing or protected move itself ({word}: probe_word or guard_word,
+    // {axis}, {distance}, {feed}, {input}); nullptr: "{word}
+    // {axis}{distance} F{feed}", incremental.
+    const char* probe_move{nullptr};
+    // Whether the probing moves name the probe's input (Siemens's MEAS=1,
+    // -1, 2, -2): ProgramOptions::probe_input.
+    bool probe_input_from_user{false};
     // Lines after each recorded probe ({n}: its number, from 1; {touch_x},
     // {touch_y}, {touch_z}: the variables it is stored in, from
     // first_touch_variable on, three per touch).
@@ -96,8 +106,10 @@ struct Dialect {
     std::vector<const char*> guard_notes;
     // A cycle plan's result (feature_result.h), in a control that computes
     // (macro variables and arithmetic); empty where it cannot (the import
-    // computes it). The variables are the writer's, the same in every such
-    // dialect ({size}, {centre_x}, {centre_y}, {deviation}, {flag}). The log
+    // computes it). The variables are the writer's ({size}, {centre_x},
+    // {centre_y}, {deviation}, {flag}: variable_prefix and a number from
+    // first_result_variable on, "#110" or "R60", in expressions grouped with
+    // group_open and group_close). The log
     // line(s) of the result; the lines that set {flag} to 1 when
     // |{deviation}| > {tolerance}; the lines that report a set flag, where a
     // line "{stop}" stands for tolerance_stop when the plan stops out of
@@ -108,6 +120,10 @@ struct Dialect {
     std::vector<const char*> tolerance_stop{};
     // Header lines of a cycle program: where its result goes.
     std::vector<const char*> result_notes{};
+    const char* variable_prefix{"#"};
+    int first_result_variable{110};
+    char group_open{'['};
+    char group_close{']'};
     // Where the record comes back, and how close a result the program
     // computed must come to the import's (half a printed digit of each of up
     // to four touches and of the result, with room).
@@ -127,12 +143,14 @@ const Dialect& grbl_dialect();
 const Dialect& fanuc_dialect();
 const Dialect& haas_dialect();
 const Dialect& mitsubishi_dialect();
+const Dialect& siemens_dialect();
 const Dialect& dialect(DialectId id);
 // Every dialect, in the order the CLI and the window list them.
-const std::array<DialectId, 5>& all_dialects();
+const std::array<DialectId, 6>& all_dialects();
 // By the CLI's word; nullopt when unknown.
 std::optional<DialectId> dialect_from_string(std::string_view word);
-// "linuxcnc, grbl, fanuc, haas, mitsubishi"; with "|": the CLI's type name.
+// "linuxcnc, grbl, fanuc, haas, mitsubishi, siemens"; with "|": the CLI's
+// type name.
 std::string dialect_names(std::string_view separator = ", ");
 // The most recorded touches a plan may have in the dialect (a control
 // that keeps them in variables has a fixed number); 0: no limit.

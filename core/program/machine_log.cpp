@@ -464,11 +464,24 @@ std::string plan_from_letters(std::string_view letters) {
 }  // namespace
 
 std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan,
-                                                   LoggedResult* result) {
+                                                   LoggedResult* result, bool last_run) {
     constexpr const char* kTouchLine = "'TOUCH n X x Y y Z z'";
+    const std::vector<std::pair<std::size_t, std::string_view>> lines = dprnt_lines_of(text);
+    // A file the program appends to holds every run: the last PLAN line on.
+    std::size_t first_line = 0;
+    if (last_run) {
+        for (const auto& [number, raw] : lines) {
+            const std::string line = dprnt_text(raw);
+            const std::vector<std::string_view> words = words_of(line, ' ');
+            if (words.size() >= 2 && words[0] == "PROBECYCLE" && words[1] == "PLAN") {
+                first_line = number;
+            }
+        }
+    }
     std::vector<RecordedPosition> positions;
     bool plan_line = false;
-    for (const auto& [number, raw] : dprnt_lines_of(text)) {
+    for (const auto& [number, raw] : lines) {
+        if (number < first_line) continue;
         const std::string line = dprnt_text(raw);
         const std::vector<std::string_view> words = words_of(line, ' ');
         if (words.empty()) continue;
@@ -740,6 +753,7 @@ bool is_signature_line(DialectId id, std::string_view line) {
         case LogFormat::grbl_console:
             return line.find("[PRB:") != std::string_view::npos;
         case LogFormat::dprnt:
+        case LogFormat::write_file:
             return line.find("PROBECYCLE ") != std::string_view::npos;
         case LogFormat::common_variables: {
             const std::optional<std::pair<int, std::string_view>> variable = variable_line(line);
@@ -788,8 +802,11 @@ std::vector<RecordedPosition> read_positions(const ProbingPlan& plan, DialectId 
             every_probe = true;
             return read_grbl_positions(text, plan);
         case LogFormat::dprnt:
+        case LogFormat::write_file:
             every_probe = false;
-            return read_fanuc_positions(text, plan, result);
+            return read_fanuc_positions(
+                text, plan, result,
+                probecycle::dialect(dialect).log_format == LogFormat::write_file);
         case LogFormat::common_variables:
             every_probe = false;
             return read_variable_positions(text, plan, probecycle::dialect(dialect), result);

@@ -64,8 +64,12 @@ std::vector<RecordedPosition> read_grbl_positions(std::string_view text, const P
 // the same channel) are ignored.
 // A cycle program's "RESULT ..." line (after the PLAN line) and "PROBECYCLE
 // OUT OF TOLERANCE" go to `result` when given.
+// Siemens's WRITE file holds the same lines, the last run after the earlier
+// ones (WRITE appends): with `last_run`, the lines before the last
+// "PROBECYCLE PLAN" line are ignored.
 std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan,
-                                                   LoggedResult* result = nullptr);
+                                                   LoggedResult* result = nullptr,
+                                                   bool last_run = false);
 
 // Mitsubishi: the common variables the program kept (dialect.cpp), as a
 // list of "#n value", "#n=value" or "n value" lines from the control's

@@ -46,6 +46,7 @@ std::string plain_comment(std::string_view text) {
 // The option that gives the spindle's 180 deg block, as the CLI names it (the
 // window shows its own field's label in its place).
 constexpr const char* kOrientOption = "--orient-180";
+constexpr const char* kProbeInputOption = "--probe-input";
 
 bool is_orient_command_char(char c) {
     return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
@@ -160,23 +161,36 @@ std::optional<double> next_orientation(const ProbingPlan& plan, std::size_t at) 
 
 // A cycle's result (feature_result.h) in the variables of a control that
 // computes, the same numbers in every such dialect (docs/programs.md, "What
-// the cycle program measures"): #110-#113 the mean stylus-centre coordinate of each
-// side, #114 the size (a surface: its position), #115 and #116 the centre's
-// X and Y, #117 the deviation from the nominal size, #118 1 when out of
-// tolerance.
-constexpr int kFirstSideVariable = 110;
-constexpr const char* kSizeVariable = "#114";
-constexpr std::array<const char*, 2> kCentreVariables = {"#115", "#116"};
-constexpr const char* kDeviationVariable = "#117";
-constexpr const char* kFlagVariable = "#118";
+// the cycle program measures"), from the dialect's first result variable on
+// (#110, or Siemens's R60): +0 to +3 the mean stylus-centre coordinate of
+// each side, +4 the size (a surface: its position), +5 and +6 the centre's X
+// and Y, +7 the deviation from the nominal size, +8 1 when out of tolerance.
+struct ResultVariables {
+    explicit ResultVariables(const Dialect& dialect)
+        : d(dialect), size(name(4)), centre{name(5), name(6)}, deviation(name(7)), flag(name(8)) {}
+    std::string side(std::size_t s) const { return name(static_cast<int>(s)); }
+    // An expression the writer built with [ ] as the dialect groups it.
+    std::string grouped(std::string text) const {
+        for (char& c : text) {
+            if (c == '[') c = d.group_open;
+            if (c == ']') c = d.group_close;
+        }
+        return text;
+    }
+    std::string name(int offset) const {
+        // (Appended: g++ 12 warns falsely of an overlapping memcpy in
+        // "#" + std::to_string(n).)
+        std::string text(d.variable_prefix);
+        text += std::to_string(d.first_result_variable + offset);
+        return text;
+    }
 
-std::string side_variable(std::size_t side) {
-    // (Appended: g++ 12 warns falsely of an overlapping memcpy in
-    // "#" + std::to_string(n).)
-    std::string name("#");
-    name += std::to_string(kFirstSideVariable + static_cast<int>(side));
-    return name;
-}
+    const Dialect& d;
+    std::string size;
+    std::array<std::string, 2> centre;
+    std::string deviation;
+    std::string flag;
+};
 
 // A constant in a result's expression: 4 decimals (0.1 um), signed.
 std::string signed_constant(double value) {
@@ -185,16 +199,17 @@ std::string signed_constant(double value) {
     return text;
 }
 
-std::string with_result_variables(std::string text) {
-    text = replaced(std::move(text), "{size}", kSizeVariable);
-    text = replaced(std::move(text), "{centre_x}", kCentreVariables[0]);
-    text = replaced(std::move(text), "{centre_y}", kCentreVariables[1]);
-    text = replaced(std::move(text), "{deviation}", kDeviationVariable);
-    return replaced(std::move(text), "{flag}", kFlagVariable);
+std::string with_result_variables(std::string text, const ResultVariables& v) {
+    text = replaced(std::move(text), "{size}", v.size);
+    text = replaced(std::move(text), "{centre_x}", v.centre[0]);
+    text = replaced(std::move(text), "{centre_y}", v.centre[1]);
+    text = replaced(std::move(text), "{deviation}", v.deviation);
+    return replaced(std::move(text), "{flag}", v.flag);
 }
 
 // The header's lines on the result: what each variable holds.
 std::vector<std::string> result_header(const ResultSpec& spec, const Dialect& dialect) {
+    const ResultVariables v(dialect);
     std::vector<std::string> lines;
     if (dialect.result_record.empty()) {
         for (const char* note : dialect.result_notes) lines.emplace_back(note);
@@ -209,29 +224,26 @@ std::vector<std::string> result_header(const ResultSpec& spec, const Dialect& di
             : std::string("between stylus centres (ball diameter 0)");
     lines.emplace_back("Result, computed by the program from the recorded touches:");
     const std::string side_range =
-        spec.sides.size() > 1 ? side_variable(0) + "-" + side_variable(spec.sides.size() - 1)
-                              : side_variable(0);
+        spec.sides.size() > 1 ? v.side(0) + "-" + v.side(spec.sides.size() - 1) : v.side(0);
     lines.push_back(side_range + " the mean stylus-centre coordinate of the side" +
                     (spec.sides.size() > 1 ? "s " : " ") + sides + ",");
-    lines.push_back(std::string(kSizeVariable) + " the " + size_name(spec.feature) + " " + ball +
-                    ",");
+    lines.push_back(v.size + " the " + size_name(spec.feature) + " " + ball + ",");
     if (spec.feature == Feature::surface) {
-        lines.push_back(std::string(kCentreVariables[0]) + ", " + kCentreVariables[1] + ", " +
-                        kDeviationVariable + " and " + kFlagVariable +
+        lines.push_back(v.centre[0] + ", " + v.centre[1] + ", " + v.deviation + " and " + v.flag +
                         " 0 (a surface has no size).");
     } else {
-        lines.push_back(std::string(kCentreVariables[0]) + " and " + kCentreVariables[1] +
+        lines.push_back(v.centre[0] + " and " + v.centre[1] +
                         " its centre in X and Y (0 along an axis not measured),");
-        lines.push_back(std::string(kDeviationVariable) + " its deviation from the nominal " +
+        lines.push_back(v.deviation + " its deviation from the nominal " +
                         program_number(spec.nominal_size_mm()) + " mm,");
         if (spec.checks_tolerance()) {
-            lines.push_back(std::string(kFlagVariable) + " 1 when that is over +-" +
+            lines.push_back(v.flag + " 1 when that is over +-" +
                             program_number(spec.size_tolerance_mm) + " mm, else 0; out of");
             lines.emplace_back(spec.tolerance_action == ToleranceAction::stop
-                                   ? "tolerance the program logs it and stops with an alarm."
+                                   ? "tolerance the program logs it and stops."
                                    : "tolerance the program logs it and goes on.");
         } else {
-            lines.push_back(std::string(kFlagVariable) + " 0 (no tolerance check).");
+            lines.push_back(v.flag + " 0 (no tolerance check).");
         }
     }
     for (const char* note : dialect.result_notes) lines.emplace_back(note);
@@ -241,16 +253,16 @@ std::vector<std::string> result_header(const ResultSpec& spec, const Dialect& di
 // After the last touch: the sides' means, the result, the tolerance check
 // and the log line.
 std::vector<std::string> result_lines(const ResultSpec& spec, const Dialect& dialect) {
+    const ResultVariables v(dialect);
     std::vector<std::string> lines;
     std::vector<int> count(spec.sides.size(), 0);
     for (const std::size_t side : spec.touch_side) ++count[side];
     for (std::size_t s = 0; s < spec.sides.size(); ++s) {
         if (count[s] > 1) {
-            lines.push_back(side_variable(s) + "=[" + side_variable(s) + "/" +
-                            std::to_string(count[s]) + "]");
+            lines.push_back(v.side(s) + "=[" + v.side(s) + "/" + std::to_string(count[s]) + "]");
         }
     }
-    const std::string p0 = side_variable(0);
+    const std::string p0 = v.side(0);
     const double ball = spec.ball_diameter_mm;
     // The ball enlarges what is measured inside (a pocket, a bore) and
     // shrinks what is measured outside (a web, a boss).
@@ -259,60 +271,61 @@ std::vector<std::string> result_lines(const ResultSpec& spec, const Dialect& dia
                     : signed_constant(spec.feature == Feature::surface
                                           ? spec.sides[0].direction * 0.5 * ball
                                           : size_with_ball_mm(spec.feature, 0.0, ball));
-    const std::string size = std::string(kSizeVariable) + "=";
+    const std::string size = v.size + "=";
     switch (spec.feature) {
         case Feature::surface:
             lines.push_back(size + (ball == 0.0 ? p0 : "[" + p0 + with_ball + "]"));
-            lines.push_back(std::string(kCentreVariables[0]) + "=0");
-            lines.push_back(std::string(kCentreVariables[1]) + "=0");
+            lines.push_back(v.centre[0] + "=0");
+            lines.push_back(v.centre[1] + "=0");
             break;
         case Feature::pocket:
         case Feature::web: {
-            const std::string p1 = side_variable(1);
+            const std::string p1 = v.side(1);
             const std::size_t axis = spec.sides[0].axis == 'X' ? 0 : 1;
             lines.push_back(size + "[" + p0 + "-" + p1 + with_ball + "]");
-            lines.push_back(std::string(kCentreVariables[axis]) + "=[[" + p0 + "+" + p1 + "]/2]");
-            lines.push_back(std::string(kCentreVariables[1 - axis]) + "=0");
+            lines.push_back(v.centre[axis] + "=[[" + p0 + "+" + p1 + "]/2]");
+            lines.push_back(v.centre[1 - axis] + "=0");
             break;
         }
         case Feature::bore:
         case Feature::boss: {
-            const std::string p1 = side_variable(1);
-            const std::string p2 = side_variable(2);
-            const std::string p3 = side_variable(3);
+            const std::string p1 = v.side(1);
+            const std::string p2 = v.side(2);
+            const std::string p3 = v.side(3);
             lines.push_back(size + "[[" + p0 + "-" + p1 + "+" + p2 + "-" + p3 + "]/2" + with_ball +
                             "]");
-            lines.push_back(std::string(kCentreVariables[0]) + "=[[" + p0 + "+" + p1 + "]/2]");
-            lines.push_back(std::string(kCentreVariables[1]) + "=[[" + p2 + "+" + p3 + "]/2]");
+            lines.push_back(v.centre[0] + "=[[" + p0 + "+" + p1 + "]/2]");
+            lines.push_back(v.centre[1] + "=[[" + p2 + "+" + p3 + "]/2]");
             break;
         }
     }
-    std::string deviation = std::string(kDeviationVariable) + "=";
+    std::string deviation = v.deviation + "=";
     if (spec.feature == Feature::surface) {
         deviation += "0";
     } else {
         deviation += "[";
-        deviation += kSizeVariable;
+        deviation += v.size;
         deviation += signed_constant(-spec.nominal_size_mm());
         deviation += "]";
     }
     lines.push_back(deviation);
+    for (std::string& line : lines) line = v.grouped(std::move(line));
     const std::string tolerance = format_decimals(spec.size_tolerance_mm, 4);
     if (spec.checks_tolerance()) {
         for (const char* line : dialect.tolerance_check) {
-            lines.push_back(replaced(with_result_variables(line), "{tolerance}", tolerance));
+            lines.push_back(replaced(with_result_variables(line, v), "{tolerance}", tolerance));
         }
     } else {
-        lines.push_back(std::string(kFlagVariable) + "=0");
+        lines.push_back(v.flag + "=0");
     }
-    for (const char* line : dialect.result_record) lines.push_back(with_result_variables(line));
+    for (const char* line : dialect.result_record) lines.push_back(with_result_variables(line, v));
     if (spec.checks_tolerance()) {
         for (const char* line : dialect.out_of_tolerance) {
             if (std::string_view(line) != "{stop}") {
-                lines.push_back(with_result_variables(line));
+                lines.push_back(with_result_variables(line, v));
             } else if (spec.tolerance_action == ToleranceAction::stop) {
                 for (const char* stop : dialect.tolerance_stop) {
-                    lines.push_back(with_result_variables(stop));
+                    lines.push_back(with_result_variables(stop, v));
                 }
             }
         }
@@ -322,7 +335,8 @@ std::vector<std::string> result_lines(const ResultSpec& spec, const Dialect& dia
 
 class Writer {
   public:
-    explicit Writer(const Dialect& dialect) : d_(dialect) {}
+    Writer(const Dialect& dialect, const ProgramOptions& options)
+        : d_(dialect), options_(options) {}
     const Dialect& dialect() const { return d_; }
 
     void line(const std::string& text) { out_ += text + "\n"; }
@@ -350,32 +364,82 @@ class Writer {
         words.insert(words.begin(), step.axis);
         return words;
     }
-    // A probe's or protected move's check line ({current}, {skip},
-    // {distance}, {label}).
-    void probe_check(const char* pattern, const ProgramStep& step, std::size_t label = 0) {
-        if (*pattern == '\0') return;
-        // A read of a position waits for the move before it (Dialect::settle).
-        const std::string_view text_view(pattern);
-        if (text_view.find("{current}") != std::string_view::npos ||
-            text_view.find("{skip}") != std::string_view::npos) {
-            for (const char* settle : d_.settle) line(settle);
+    // A probing or protected move: the dialect's probe_move, or move_line.
+    void probe_move(const char* word, const ProgramStep& step) {
+        if (d_.probe_move == nullptr) {
+            line(move_line(word, step));
+            return;
         }
+        std::string text = replaced(d_.probe_move, "{word}", word);
+        text = replaced(std::move(text), "{axis}", std::string(1, step.axis));
+        text = replaced(std::move(text), "{feed}", program_feed(step.feed_mm_min));
+        line(with_step(std::move(text), step));
+    }
+    // A probe's or protected move's lines ({current}, {skip}, {distance},
+    // {label}, {input}, {probe}, {n}, {x} {y} {z}, {touch_x} {touch_y}
+    // {touch_z}), after the dialect's settle lines where one reads a position.
+    void probe_lines(const std::vector<const char*>& patterns, const ProgramStep& step,
+                     std::size_t label = 0, std::size_t touch = 0) {
+        bool settled = false;
+        for (const char* pattern : patterns) {
+            const std::string_view text_view(pattern);
+            if (!settled && (text_view.find("{current}") != std::string_view::npos ||
+                             text_view.find("{skip}") != std::string_view::npos)) {
+                for (const char* settle : d_.settle) line(settle);
+                settled = true;
+            }
+            std::string text = replaced(pattern, "{label}", std::to_string(label));
+            if (touch > 0) text = touch_variables(std::move(text), touch);
+            line(with_step(std::move(text), step));
+        }
+    }
+    const std::string& text() const { return out_; }
+
+  private:
+    // {current}, {skip}, {distance}, {input}, {probe}, and {x} {y} {z}: the
+    // probing axis's skip position, the other axes' current positions.
+    std::string with_step(std::string text, const ProgramStep& step) const {
         const std::size_t axis = axis_index(step.axis);
         std::string distance = program_number(step.direction * step.distance_mm);
         if (distance[0] != '-') distance.insert(distance.begin(), '+');
-        std::string text = replaced(pattern, "{label}", std::to_string(label));
+        const auto position = [&](std::size_t a) {
+            return std::string(a == axis ? d_.skip_position.at(a) : d_.current_position.at(a));
+        };
+        for (std::size_t a = 0; a < 3; ++a) {
+            std::string name("{");
+            name += "xyz"[a];
+            name += '}';
+            if (text.find(name) != std::string::npos) text = replaced(text, name, position(a));
+        }
         if (text.find("{current}") != std::string::npos) {
             text = replaced(text, "{current}", d_.current_position.at(axis));
         }
         if (text.find("{skip}") != std::string::npos) {
             text = replaced(text, "{skip}", d_.skip_position.at(axis));
         }
-        line(replaced(text, "{distance}", distance));
+        text = replaced(std::move(text), "{input}", std::to_string(options_.probe_input));
+        text = replaced(std::move(text), "{probe}", std::to_string(std::abs(options_.probe_input)));
+        return replaced(std::move(text), "{distance}", distance);
     }
-    const std::string& text() const { return out_; }
+    // {n}: the recorded touch's number; {touch_x} {touch_y} {touch_z}: the
+    // variables it is kept in.
+    std::string touch_variables(std::string text, std::size_t n) const {
+        text = replaced(std::move(text), "{n}", std::to_string(n));
+        if (d_.first_touch_variable == 0) return text;
+        const int first = d_.first_touch_variable + 3 * (static_cast<int>(n) - 1);
+        for (int axis = 0; axis < 3; ++axis) {
+            std::string name("{touch_");
+            name += "xyz"[axis];
+            name += '}';
+            std::string variable("#");  // (appended: see ResultVariables::name)
+            variable += std::to_string(first + axis);
+            text = replaced(std::move(text), name, variable);
+        }
+        return text;
+    }
 
-  private:
     const Dialect& d_;
+    const ProgramOptions& options_;
     std::string out_;
 };
 
@@ -406,6 +470,16 @@ void check_program_options(const ProbingPlan& plan, const Dialect& dialect,
              arg("most", ArgKind::integer, static_cast<double>(most)),
              arg("first", ArgKind::integer, dialect.first_touch_variable),
              arg("last", ArgKind::integer, dialect.last_variable)}));
+    }
+    if (dialect.probe_input_from_user && options.probe_input != 1 && options.probe_input != -1 &&
+        options.probe_input != 2 && options.probe_input != -2) {
+        throw InputError(program_message(
+            "program_probe_input",
+            QT_TRANSLATE_NOOP("Program",
+                              "%1: got %2; allowed: 1 or 2 (the probe's input), negative for a "
+                              "probe whose signal falls when it triggers: 1, -1, 2, -2"),
+            {text_arg("key", kProbeInputOption),
+             text_arg("input", std::to_string(options.probe_input))}));
     }
     if (!dialect.orient_from_user) return;
     double orientation = 0.0;
@@ -448,23 +522,6 @@ void check_program_options(const ProbingPlan& plan, const Dialect& dialect,
     }
 }
 
-// A line after a recorded touch: {n} its number, {touch_x} {touch_y}
-// {touch_z} the variables it is kept in.
-std::string touch_line(const char* pattern, const Dialect& dialect, std::size_t n) {
-    std::string text = replaced(pattern, "{n}", std::to_string(n));
-    if (dialect.first_touch_variable == 0) return text;
-    const int first = dialect.first_touch_variable + 3 * (static_cast<int>(n) - 1);
-    for (int axis = 0; axis < 3; ++axis) {
-        std::string name("{touch_");
-        name += "xyz"[axis];
-        name += '}';
-        std::string variable("#");  // (appended: see side_variable)
-        variable += std::to_string(first + axis);
-        text = replaced(std::move(text), name, variable);
-    }
-    return text;
-}
-
 // The plan's signature in grbl's own reports (plan_signature, plan.h),
 // before the first move: the import reads it back from the [PRB:] lines.
 void write_grbl_signature(Writer& w, const ProbingPlan& plan, const std::string& id) {
@@ -495,7 +552,7 @@ void write_grbl_signature(Writer& w, const ProbingPlan& plan, const std::string&
 std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const std::string& date,
                           const ProgramOptions& options) {
     check_program_options(plan, dialect, options);
-    Writer w(dialect);
+    Writer w(dialect, options);
     const std::string id = plan_id(plan);
     for (const char* start : dialect.program_start) w.line(start);
     w.comment_block(std::string("ProbeCycle program for ") + dialect.title + ": " +
@@ -574,26 +631,23 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                 } else {
                     w.comment(step.text);
                 }
-                w.probe_check(dialect.before_probe, step);
-                w.line(w.move_line(dialect.probe_word, step));
-                w.probe_check(dialect.after_probe, step);
-                if (step.recorded) {
-                    for (const char* after : dialect.after_recorded_probe) {
-                        w.line(touch_line(after, dialect, recorded));
-                    }
-                }
+                w.probe_lines(dialect.before_probe, step);
+                w.probe_move(dialect.probe_word, step);
+                w.probe_lines(dialect.after_probe, step);
+                if (step.recorded) w.probe_lines(dialect.after_recorded_probe, step, 0, recorded);
                 if (step.recorded && computes) {
                     // The side's sum of its touches' skip positions.
                     const std::size_t side = spec->touch_side[recorded - 1];
                     const std::string skip = dialect.skip_position.at(axis_index(step.axis));
-                    const std::string variable = side_variable(side);
+                    const ResultVariables v(dialect);
+                    const std::string variable = v.side(side);
                     std::string sum = variable + "=";
                     if (side_started[side]) {
-                        sum += "[";
+                        sum += dialect.group_open;
                         sum += variable;
                         sum += "+";
                         sum += skip;
-                        sum += "]";
+                        sum += dialect.group_close;
                     } else {
                         sum += skip;
                     }
@@ -605,9 +659,9 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                 // A number of the move's own: LinuxCNC's o-word of its branch.
                 const std::size_t label = 1000 + ++guard_count;
                 w.comment(step.text);
-                w.probe_check(dialect.before_guard, step, label);
-                w.line(w.move_line(dialect.guard_word, step));
-                for (const char* after : dialect.after_guard) w.probe_check(after, step, label);
+                w.probe_lines(dialect.before_guard, step, label);
+                w.probe_move(dialect.guard_word, step);
+                w.probe_lines(dialect.after_guard, step, label);
                 break;
             }
             case StepKind::move:

@@ -22,11 +22,16 @@ struct ProgramOptions {
     // word does that on every control of the dialect. One line of upper-case
     // letters, digits, spaces and . + - # [ ] =.
     std::string orient_180_command;
+    // The probe's input in a dialect with probe_input_from_user (Siemens's
+    // MEAS=): 1 or 2, negative for a probe whose signal falls when it
+    // triggers.
+    int probe_input{1};
 };
 
 // Throws InputError (naming the option) when `options` cannot serve the plan
-// in the dialect: the ring program without the orient command, or a command
-// with other characters.
+// in the dialect: the ring program without the orient command, a command
+// with other characters, a probe input other than 1, -1, 2, -2; or when the
+// plan records more touches than the dialect can keep.
 void check_program_options(const ProbingPlan& plan, const Dialect& dialect,
                            const ProgramOptions& options);
 

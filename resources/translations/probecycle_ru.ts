@@ -1566,6 +1566,10 @@
         <source>the plan records %1 touches; a %2 program keeps at most %3 (three common variables each, #%4 to #%5): use fewer feeds or repeats</source>
         <translation>план записывает касаний: %1; программа %2 хранит не больше %3 (по три общие переменные на касание, от #%4 до #%5): уменьшите число подач или повторов</translation>
     </message>
+    <message>
+        <source>%1: got %2; allowed: 1 or 2 (the probe&apos;s input), negative for a probe whose signal falls when it triggers: 1, -1, 2, -2</source>
+        <translation>%1: получено %2; допустимо: 1 или 2 (вход щупа), со знаком минус для щупа, сигнал которого спадает при срабатывании: 1, -1, 2, -2</translation>
+    </message>
 </context>
 <context>
     <name>ReportWord</name>
@@ -2368,8 +2372,8 @@
         <translation>Касаний: %1, разброс %2</translation>
     </message>
     <message>
-        <source>The ring-gauge calibration as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
-        <translation>Калибровка по установочному кольцу как программа для вашей ЧПУ (LinuxCNC, grbl) вместе с планом, который нужен для импорта её журнала.</translation>
+        <source>The ring-gauge calibration as a program for your control (LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens), with the plan that the import of its log needs.</source>
+        <translation>Калибровка по установочному кольцу как программа для вашей ЧПУ (LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens) вместе с планом, который нужен для импорта её журнала.</translation>
     </message>
     <message>
         <source>What the control recorded while it ran the program, read with the program&apos;s plan into the points and fitted.</source>
@@ -3180,8 +3184,8 @@
         <translation>Экспорт отчёта о задержке</translation>
     </message>
     <message>
-        <source>The delay-stability test as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
-        <translation>Испытание стабильности задержки как программа для вашей ЧПУ (LinuxCNC, grbl) вместе с планом, который нужен для импорта её журнала.</translation>
+        <source>The delay-stability test as a program for your control (LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens), with the plan that the import of its log needs.</source>
+        <translation>Испытание стабильности задержки как программа для вашей ЧПУ (LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens) вместе с планом, который нужен для импорта её журнала.</translation>
     </message>
     <message>
         <source>What the control recorded while it ran the program, read with the program&apos;s plan into the touches and fitted.</source>
@@ -3456,6 +3460,10 @@
     <message>
         <source>The common variables #500 to #999 after the program ended, as the control outputs them or copied from its variable screen: one line &quot;#n value&quot; each.</source>
         <translation>Общие переменные #500–#999 после завершения программы, как их выводит стойка или как они скопированы с экрана переменных: по одной строке «#n значение».</translation>
+    </message>
+    <message>
+        <source>The file PROBECYCLE_LOG that the program&apos;s WRITE appends to, copied from the control: its last run is read.</source>
+        <translation>Файл PROBECYCLE_LOG, в который дописывает WRITE программы, скопированный со стойки: читается его последний прогон.</translation>
     </message>
 </context>
 <context>
@@ -3938,8 +3946,8 @@
         <translation>Программа для &amp;ЧПУ…</translation>
     </message>
     <message>
-        <source>The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), with the values set here</source>
-        <translation>Цикл как программа измерения для вашей ЧПУ (LinuxCNC, grbl, типа Fanuc) со значениями, заданными здесь</translation>
+        <source>The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens), with the values set here</source>
+        <translation>Цикл как программа измерения для вашей ЧПУ (LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens) со значениями, заданными здесь</translation>
     </message>
     <message>
         <source>&amp;LinuxCNC INI…</source>
@@ -4365,6 +4373,30 @@
     <message>
         <source>The scenario&apos;s cycle on its feature, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe starts at the feature&apos;s centre (over it for a boss or web) and every move toward the part is protected: a touch on the way is an obstruction. Every move is incremental from where the probe stands. Prove it out at reduced feed override (a boss&apos;s or web&apos;s lifts are rapids: reduced rapid override too) with the probe clear of the part.</source>
         <translation>Цикл сценария на его элементе в виде простых измерительных перемещений: его стратегия, подачи, отвод и начальное расстояние — значения, настроенные здесь, а не вызов цикла производителя. Датчик начинает в центре элемента (над ним — для бобышки или стенки), и каждое перемещение к детали защищённое: касание на пути означает препятствие. Каждое перемещение задано в приращениях от текущего положения датчика. Проверьте программу на пониженной коррекции подачи (подъёмы над бобышкой или стенкой идут ускоренным ходом: и на пониженной коррекции ускоренного хода), с датчиком вдали от детали.</translation>
+    </message>
+    <message>
+        <source>Probe input</source>
+        <translation>Вход щупа</translation>
+    </message>
+    <message>
+        <source>1, signal rises at the trigger</source>
+        <translation>1, сигнал нарастает при срабатывании</translation>
+    </message>
+    <message>
+        <source>1, signal falls at the trigger</source>
+        <translation>1, сигнал спадает при срабатывании</translation>
+    </message>
+    <message>
+        <source>2, signal rises at the trigger</source>
+        <translation>2, сигнал нарастает при срабатывании</translation>
+    </message>
+    <message>
+        <source>2, signal falls at the trigger</source>
+        <translation>2, сигнал спадает при срабатывании</translation>
+    </message>
+    <message>
+        <source>Which probe input the measuring moves use (Siemens: MEAS=1, -1, 2 or -2), as the machine&apos;s builder wired it; the CLI&apos;s --probe-input.</source>
+        <translation>Какой вход щупа используют измерительные перемещения (Siemens: MEAS=1, -1, 2 или -2), как его подключил производитель станка; в CLI — --probe-input.</translation>
     </message>
 </context>
 <context>

@@ -1566,6 +1566,10 @@
         <source>the plan records %1 touches; a %2 program keeps at most %3 (three common variables each, #%4 to #%5): use fewer feeds or repeats</source>
         <translation>该计划记录 %1 次触碰；%2 程序最多保存 %3 次（每次三个公共变量，#%4 至 #%5）：请减少进给或重复次数</translation>
     </message>
+    <message>
+        <source>%1: got %2; allowed: 1 or 2 (the probe&apos;s input), negative for a probe whose signal falls when it triggers: 1, -1, 2, -2</source>
+        <translation>%1：得到 %2；允许：1 或 2（测头输入），触发时信号下降的测头取负值：1、-1、2、-2</translation>
+    </message>
 </context>
 <context>
     <name>ReportWord</name>
@@ -2368,8 +2372,8 @@
         <translation>触测：%1 次，分散 %2</translation>
     </message>
     <message>
-        <source>The ring-gauge calibration as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
-        <translation>将环规标定生成为适用于您的数控系统（LinuxCNC、grbl）的程序，并附带导入其日志所需的计划。</translation>
+        <source>The ring-gauge calibration as a program for your control (LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens), with the plan that the import of its log needs.</source>
+        <translation>将环规标定生成为适用于您的数控系统（LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens）的程序，并附带导入其日志所需的计划。</translation>
     </message>
     <message>
         <source>What the control recorded while it ran the program, read with the program&apos;s plan into the points and fitted.</source>
@@ -3180,8 +3184,8 @@
         <translation>导出延迟拟合报告</translation>
     </message>
     <message>
-        <source>The delay-stability test as a program for your control (LinuxCNC, grbl), with the plan that the import of its log needs.</source>
-        <translation>将延迟稳定性测试生成为适用于您的数控系统（LinuxCNC、grbl）的程序，并附带导入其日志所需的计划。</translation>
+        <source>The delay-stability test as a program for your control (LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens), with the plan that the import of its log needs.</source>
+        <translation>将延迟稳定性测试生成为适用于您的数控系统（LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens）的程序，并附带导入其日志所需的计划。</translation>
     </message>
     <message>
         <source>What the control recorded while it ran the program, read with the program&apos;s plan into the touches and fitted.</source>
@@ -3456,6 +3460,10 @@
     <message>
         <source>The common variables #500 to #999 after the program ended, as the control outputs them or copied from its variable screen: one line &quot;#n value&quot; each.</source>
         <translation>程序结束后的公共变量 #500 至 #999，由控制系统输出或从其变量画面抄录：每行一个“#n 值”。</translation>
+    </message>
+    <message>
+        <source>The file PROBECYCLE_LOG that the program&apos;s WRITE appends to, copied from the control: its last run is read.</source>
+        <translation>程序的 WRITE 追加写入的文件 PROBECYCLE_LOG，从控制系统复制而来：读取其中最后一次运行。</translation>
     </message>
 </context>
 <context>
@@ -3938,8 +3946,8 @@
         <translation>生成数控程序(&amp;C)…</translation>
     </message>
     <message>
-        <source>The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), with the values set here</source>
-        <translation>将此循环生成为适用于您的数控系统（LinuxCNC、grbl、Fanuc 类）的测量程序，使用此处设定的值</translation>
+        <source>The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens), with the values set here</source>
+        <translation>将此循环生成为适用于您的数控系统（LinuxCNC, grbl, Fanuc, Haas, Mitsubishi, Siemens）的测量程序，使用此处设定的值</translation>
     </message>
     <message>
         <source>&amp;LinuxCNC INI…</source>
@@ -4365,6 +4373,30 @@
     <message>
         <source>The scenario&apos;s cycle on its feature, as plain probing moves: its strategy, feeds, backoff and start distance, the values you tuned here, not a maker&apos;s cycle call. The probe starts at the feature&apos;s centre (over it for a boss or web) and every move toward the part is protected: a touch on the way is an obstruction. Every move is incremental from where the probe stands. Prove it out at reduced feed override (a boss&apos;s or web&apos;s lifts are rapids: reduced rapid override too) with the probe clear of the part.</source>
         <translation>场景中对其特征的循环，以普通测量移动写出：其策略、进给率、回退距离和起始距离，即您在此调优的值，而非厂商的循环调用。测头从特征中心出发（圆柱或凸台则在其上方），每个朝向工件的移动都是保护移动：途中的触测即为障碍。每个移动都是从测头当前位置出发的增量移动。请在降低的进给倍率下（圆柱或凸台上方的抬起为快速移动：还需降低快速倍率）、测头远离工件时试运行。</translation>
+    </message>
+    <message>
+        <source>Probe input</source>
+        <translation>测头输入</translation>
+    </message>
+    <message>
+        <source>1, signal rises at the trigger</source>
+        <translation>1，触发时信号上升</translation>
+    </message>
+    <message>
+        <source>1, signal falls at the trigger</source>
+        <translation>1，触发时信号下降</translation>
+    </message>
+    <message>
+        <source>2, signal rises at the trigger</source>
+        <translation>2，触发时信号上升</translation>
+    </message>
+    <message>
+        <source>2, signal falls at the trigger</source>
+        <translation>2，触发时信号下降</translation>
+    </message>
+    <message>
+        <source>Which probe input the measuring moves use (Siemens: MEAS=1, -1, 2 or -2), as the machine&apos;s builder wired it; the CLI&apos;s --probe-input.</source>
+        <translation>测量移动使用哪个测头输入（Siemens：MEAS=1、-1、2 或 -2），按机床制造商的接线；对应 CLI 的 --probe-input。</translation>
     </message>
 </context>
 <context>

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/program/dialect.h"
 #include "tests/cli/cli_run.h"
 
 namespace probecycle::cli_test {
@@ -24,8 +25,9 @@ CliRun run_on_golden_day(const std::string& arguments) {
 
 TEST(ProgramCli, WritesTheGoldenProgramAndItsPlan) {
     const TempDir dir;
-    for (const std::string dialect : {"linuxcnc", "grbl", "fanuc", "haas", "mitsubishi"}) {
-        const std::string suffix = "_" + dialect + (dialect == "linuxcnc" ? ".ngc" : ".nc");
+    for (const DialectId id : all_dialects()) {
+        const std::string dialect = probecycle::dialect(id).name;
+        const std::string suffix = "_" + dialect + "." + probecycle::dialect(id).extension;
         const CliRun r = run_on_golden_day("program delay --dialect " + dialect +
                                            " --axis X+ --feeds 30,300,2000 --repeats 2 --plan " +
                                            quote((dir / "plan.json").string()) + " --out " +
@@ -211,8 +213,10 @@ TEST(ProgramCli, BadInputIsNamedWithWhatIsAllowed) {
         std::string arguments;
         std::string message;
     } cases[] = {
-        {"program delay --dialect siemens",
-         "--dialect: got 'siemens'; allowed: linuxcnc, grbl, fanuc"},
+        {"program delay --dialect heidenhain",
+         "--dialect: got 'heidenhain'; allowed: linuxcnc, grbl, fanuc, haas, mitsubishi, siemens"},
+        {"program delay --dialect siemens --probe-input 3",
+         "--probe-input: got '3'; allowed: 1, -1, 2, -2"},
         {"program delay --dialect grbl --axis A+", "--axis: got 'A+'; allowed: X+, X-, Y+"},
         {"program delay --dialect grbl --feeds 30,abc",
          "--feeds: got '30,abc'; allowed: numbers separated by commas, each from 1 to 100000 "

@@ -293,7 +293,8 @@ void CalibrationTab::retranslate() {
            "or a loose gauge."));
     input_->retranslate();
     input_->program_button()->setToolTip(
-        tr("The ring-gauge calibration as a program for your control (LinuxCNC, grbl), with the "
+        tr("The ring-gauge calibration as a program for your control (LinuxCNC, grbl, Fanuc, Haas, "
+           "Mitsubishi, Siemens), with the "
            "plan that the import of its log needs."));
     input_->log_button()->setToolTip(
         tr("What the control recorded while it ran the program, read with the program's plan "

@@ -230,6 +230,9 @@ void MachineLogDialog::retranslate() {
         : chosen == DialectId::fanuc || chosen == DialectId::haas
             ? tr("The program's DPRNT output as the control sent it (a serial terminal, a memory "
                  "card or a file): the lines from PROBECYCLE PLAN on.")
+        : chosen == DialectId::siemens
+            ? tr("The file PROBECYCLE_LOG that the program's WRITE appends to, copied from the "
+                 "control: its last run is read.")
         : chosen == DialectId::mitsubishi
             ? tr("The common variables #500 to #999 after the program ended, as the control "
                  "outputs them or copied from its variable screen: one line \"#n value\" each.")

@@ -76,6 +76,12 @@ ProgramDialog::ProgramDialog(ProgramKind kind, const Scenario& scenario, QWidget
     auto* form = new QFormLayout;
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     form->addRow(dialect_label_, dialect_);
+    probe_input_ = new QComboBox(this);
+    probe_input_->setObjectName(QStringLiteral("program-probe-input"));
+    for (const int input : {1, -1, 2, -2}) probe_input_->addItem(QString(), input);
+    probe_input_label_ = new QLabel(this);
+    probe_input_label_->setBuddy(probe_input_);
+    form->addRow(probe_input_label_, probe_input_);
     if (kind_ == ProgramKind::ring) {
         build_ring_options(form);
     } else if (kind_ == ProgramKind::cycle) {
@@ -132,6 +138,7 @@ ProgramDialog::ProgramDialog(ProgramKind kind, const Scenario& scenario, QWidget
     resize(1000, 640);
 
     connect(dialect_, &QComboBox::currentIndexChanged, this, &ProgramDialog::schedule_update);
+    connect(probe_input_, &QComboBox::currentIndexChanged, this, &ProgramDialog::schedule_update);
     connect(save_button_, &QPushButton::clicked, this, &ProgramDialog::save_dialog);
     connect(close_button_, &QPushButton::clicked, this, &QDialog::reject);
     retranslate();
@@ -318,6 +325,14 @@ void ProgramDialog::retranslate() {
         for (UnitSpinBox* box : {margin_, placement_}) box->retranslate();
     }
     dialect_label_->setText(tr("Control"));
+    probe_input_label_->setText(tr("Probe input"));
+    probe_input_->setItemText(0, tr("1, signal rises at the trigger"));
+    probe_input_->setItemText(1, tr("1, signal falls at the trigger"));
+    probe_input_->setItemText(2, tr("2, signal rises at the trigger"));
+    probe_input_->setItemText(3, tr("2, signal falls at the trigger"));
+    probe_input_->setToolTip(
+        tr("Which probe input the measuring moves use (Siemens: MEAS=1, -1, 2 or -2), as the "
+           "machine's builder wired it; the CLI's --probe-input."));
     dialect_->setToolTip(tr("The control's G-code dialect."));
     preview_label_->setText(tr("Program"));
     preview_->setPlaceholderText(tr("No program: the options are refused (see the message)."));
@@ -441,8 +456,12 @@ void ProgramDialog::update_now() {
             orient_->setEnabled(needed);
             orient_label_->setEnabled(needed);
         }
+        const bool input_needed = dialect(dialect_id()).probe_input_from_user;
+        probe_input_->setEnabled(input_needed);
+        probe_input_label_->setEnabled(input_needed);
         if (plan_) {
             ProgramOptions options;
+            options.probe_input = probe_input_->currentData().toInt();
             if (orient_ != nullptr && orient_->isEnabled()) {
                 options.orient_180_command = orient_->text().trimmed().toStdString();
             }
@@ -477,6 +496,7 @@ QString ProgramDialog::field_label(const std::string& key) const {
                                                       {"ball_diameter_mm", ball_label_},
                                                       {"centre_tolerance_mm", tolerance_label_},
                                                       {"--orient-180", orient_label_},
+                                                      {"--probe-input", probe_input_label_},
                                                       {"axis", axis_label_}};
     for (const auto& [name, label] : labels) {
         if (key == name && label) return label->text();

@@ -139,6 +139,10 @@ class ProgramDialog : public QDialog {
     // program needs it from the user (the Fanuc type; the CLI's --orient-180).
     QLabel* orient_label_{nullptr};
     QLineEdit* orient_{nullptr};
+    // The probe's input, for a dialect whose probing moves name it
+    // (Siemens's MEAS=; the CLI's --probe-input).
+    QLabel* probe_input_label_{nullptr};
+    QComboBox* probe_input_{nullptr};
 
     QLabel* preview_label_{nullptr};
     QPlainTextEdit* preview_{nullptr};

@@ -505,7 +505,8 @@ void MainWindow::retranslate() {
         tr("Customer, machine, part, author and notes for the top of the PDF report"));
     export_program_->setText(tr("Program for the &Control…"));
     export_program_->setToolTip(
-        tr("The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc-type), "
+        tr("The cycle as a probing program for your control (LinuxCNC, grbl, Fanuc, Haas, "
+           "Mitsubishi, Siemens), "
            "with the values set here"));
     import_linuxcnc_->setText(tr("&LinuxCNC INI…"));
     import_linuxcnc_->setToolTip(

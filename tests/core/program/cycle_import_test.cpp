@@ -200,6 +200,29 @@ TEST(CycleImport, MitsubishiVariablesResultIsReadAndChecked) {
               7u);
 }
 
+// Siemens's WRITE file: the DPRNT lines' words, SPRINT's padded numbers,
+// the last run of the file.
+TEST(CycleImport, SiemensWriteFileResultIsReadAndChecked) {
+    const ProbingPlan plan = bore_plan(0.003);
+    std::string run = "PROBECYCLE PLAN " + id_letters(plan_id(plan)) + " CYCLE\n";
+    for (std::size_t i = 0; i < kBore.size(); ++i) {
+        char line[160];
+        std::snprintf(line, sizeof line, "TOUCH %zu X%12.4f Y%12.4f Z%12.4f\n", i + 1, kBore[i][0],
+                      kBore[i][1], kBore[i][2]);
+        run += line;
+    }
+    run +=
+        "RESULT S     50.0040 X      0.0040 Y      0.0080 D      0.0040 T      1.0000\n"
+        "PROBECYCLE OUT OF TOLERANCE\nPROBECYCLE END\n";
+    const std::string earlier =
+        "PROBECYCLE PLAN " + id_letters(plan_id(plan)) + " CYCLE\nPROBECYCLE NO TRIGGER\n";
+    const CycleImport import = import_cycle_log(plan, DialectId::siemens, earlier + run);
+    EXPECT_NEAR(import.result.size_mm, 50.004, 1e-9);
+    EXPECT_TRUE(import.result.out_of_tolerance);
+    EXPECT_EQ(import.logged.line, 8u);
+    EXPECT_EQ(import.logged.out_of_tolerance_line, 9u);
+}
+
 TEST(CycleImport, GrblConsoleGivesTheResultTheProgramCannotCompute) {
     // A web along X, 10 mm with a 2 mm ball: the console reports every probe
     // and protected move, in the plan's order.

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -634,6 +635,76 @@ std::string simulate_fanuc(const std::string& program, const Scenario& scenario,
     return output;
 }
 
+// The Siemens program on the same simulated machine (along Z): STOPRE,
+// R1= from $AA_IW, the absolute MEAS block to R1, the $A_PROBE checks, the
+// moves, and WRITE's text (string literals, SPRINT("%12.4F", ...) of
+// $AA_MW and $AA_IW) appended to the file it returns, a line each.
+std::string simulate_siemens(const std::string& program, const Scenario& scenario,
+                             double surface_mm, double start_mm, unsigned seed, bool noise) {
+    SimulatedProbe machine(scenario, surface_mm, seed, noise);
+    std::vector<std::string> lines;
+    std::istringstream in(program);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    double position = start_mm;
+    double r1 = 0.0;
+    double trip = 0.0;
+    bool probe = false;
+    const auto value = [&](const std::string& name) {
+        if (name == "$AA_MW[Z]") return trip;
+        if (name == "$AA_IW[Z]") return position;
+        EXPECT_TRUE(name == "$AA_IW[X]" || name == "$AA_IW[Y]") << name;
+        return 0.0;
+    };
+    const auto jump = [&](std::size_t& i, const std::string& label) {
+        while (i < lines.size() && lines[i] != label + ":") ++i;
+        EXPECT_LT(i, lines.size()) << label;
+    };
+    std::string file;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string& line = lines[i];
+        if (line == "M30" || line.rfind("MSG(\"PROBECYCLE:", 0) == 0) break;
+        if (line.rfind("R1=$AA_IW[Z]", 0) == 0) {
+            r1 = position + std::stod(line.substr(12));
+        } else if (line.rfind("MEAS=1 G90 G1 Z=R1 F", 0) == 0) {
+            const double feed = std::stod(line.substr(20));
+            const std::optional<SimulatedProbe::Touch> touch =
+                machine.probe(position, r1 - position, feed);
+            probe = touch.has_value();
+            position = touch ? touch->stop_mm : r1;
+            if (touch) trip = touch->recorded_mm;
+        } else if (line == "IF $A_PROBE[1]<>1 GOTOF NO_TRIGGER") {
+            if (!probe) jump(i, "NO_TRIGGER");
+        } else if (line.rfind("WRITE(PC_ERROR,\"PROBECYCLE_LOG\",", 0) == 0) {
+            const std::string text = line.substr(32, line.size() - 33);
+            std::string out;
+            for (std::size_t at = 0; at < text.size();) {
+                if (text[at] == '"') {
+                    const std::size_t close = text.find('"', at + 1);
+                    out += text.substr(at + 1, close - at - 1);
+                    at = close + 1;
+                } else if (text.compare(at, 2, "<<") == 0) {
+                    at += 2;
+                } else {
+                    EXPECT_EQ(text.compare(at, 20, "SPRINT(\"%12.4F\",$AA_"), 0) << text.substr(at);
+                    const std::size_t close = text.find(')', at);
+                    char number[32];
+                    std::snprintf(number, sizeof number, "%12.4f",
+                                  value(text.substr(at + 16, close - at - 16)));
+                    out += number;
+                    at = close + 1;
+                }
+            }
+            file += out + "\n";
+        } else if (line.rfind("G0 Z", 0) == 0 || line.rfind("G1 Z", 0) == 0) {
+            position += std::stod(line.substr(4));
+        } else if (line.rfind("MEAS", 0) == 0 || line.rfind("G0 ", 0) == 0 ||
+                   line.rfind("G1 ", 0) == 0) {
+            ADD_FAILURE() << "the simulator moves Z only: " << line;
+        }
+    }
+    return file;
+}
+
 // The common variables #500-#999 a Mitsubishi program kept, as a list of
 // "#n = value" lines with 4 decimals, each line ending in `ending`.
 std::string variable_list(const std::map<int, double>& variables, const std::string& ending) {
@@ -674,6 +745,8 @@ DelayGroup round_trip(int repeats, bool noise, DialectId dialect_id = DialectId:
             ? simulate_fanuc(program, scenario, -50.0, -43.0, 42, noise, ending)
         : dialect_id == DialectId::mitsubishi
             ? simulate_mitsubishi(plan, scenario, -50.0, -43.0, 42, noise, ending)
+        : dialect_id == DialectId::siemens
+            ? simulate_siemens(program, scenario, -50.0, -43.0, 42, noise)
             : simulate_grbl(program, scenario, -50.0, -43.0, 42, noise);
     const std::vector<DelayTouch> touches =
         parse_delay_csv(import_machine_log(plan, dialect_id, log));
@@ -789,6 +862,44 @@ TEST(MachineLog, MitsubishiProbeThatDoesNotTriggerStopsTheProgramAndTheImport) {
         EXPECT_NE(std::string(e.what()).find("PROBE DID NOT TRIGGER"), std::string::npos)
             << e.what();
     }
+}
+
+// Siemens measures to absolute targets from $AA_IW and writes the trip
+// ($AA_MW) with 4 decimals: the same fit as DPRNT's.
+TEST(MachineLog, SiemensRoundTripGivesBackTheKnownDelay) {
+    const Scenario scenario;
+    const double delay_s = measurement_delay_s(scenario.machine, scenario.probe);
+    const DelayGroup exact = round_trip(5, false, DialectId::siemens);
+    EXPECT_NEAR(exact.delay_s, delay_s, 5e-6);
+    EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
+    const DelayGroup noisy = round_trip(20, true, DialectId::siemens);
+    EXPECT_NEAR(noisy.delay_s, delay_s, 5e-4);
+}
+
+// WRITE appends, so the file holds every run: the import reads the last one
+// (an earlier run that stopped, or another plan's, changes nothing), and a
+// last run that stopped is refused at its line.
+TEST(MachineLog, SiemensFileIsReadFromItsLastRun) {
+    const Scenario scenario;
+    const ProbingPlan plan = small_delay_plan();
+    const std::string program = write_program(plan, siemens_dialect(), program_test::kDate);
+    const std::string run = simulate_siemens(program, scenario, -50.0, -43.0, 42, false);
+    const std::string expected = import_machine_log(plan, DialectId::siemens, run);
+    EXPECT_EQ(parse_delay_csv(expected).size(), 4u);
+    const std::string stopped = simulate_siemens(program, scenario, -80.0, -50.0, 42, false);
+    EXPECT_EQ(stopped.find("TOUCH"), std::string::npos) << stopped;
+    EXPECT_NE(stopped.find("PROBECYCLE NO TRIGGER\n"), std::string::npos) << stopped;
+    DelayPlanOptions other_options;
+    other_options.feeds_mm_min = {100, 1000};
+    const std::string other =
+        simulate_siemens(write_program(make_delay_plan(scenario, other_options), siemens_dialect(),
+                                       program_test::kDate),
+                         scenario, -50.0, -43.0, 42, false);
+    EXPECT_EQ(import_machine_log(plan, DialectId::siemens, other + stopped + run), expected);
+    EXPECT_EQ(line_of([&] { import_machine_log(plan, DialectId::siemens, run + stopped); }),
+              static_cast<int>(std::count(run.begin(), run.end(), '\n')) + 2);
+    // A DPRNT reader of the same lines reads the whole file and finds two runs.
+    EXPECT_THROW(import_machine_log(plan, DialectId::fanuc, stopped + run), CsvError);
 }
 
 TEST(MachineLog, FanucProbeThatDoesNotTriggerStopsTheProgramAndTheImport) {

@@ -256,6 +256,40 @@ TEST(ProgramWriter, MitsubishiRefusesMoreTouchesThanItsVariablesHold) {
     EXPECT_NO_THROW(write_program(plan, haas_dialect(), program_test::kDate));
 }
 
+// Siemens measures to an absolute target from the start read after STOPRE,
+// with the probe input the user gives: MEAS=n and $A_PROBE[|n|].
+TEST(ProgramWriter, SiemensMeasuresToAbsoluteTargetsWithTheUsersProbeInput) {
+    const ProbingPlan plan = program_test::guarded_plan();
+    ProgramOptions options;
+    options.probe_input = -2;
+    const std::string text = write_program(plan, siemens_dialect(), program_test::kDate, options);
+    EXPECT_NE(
+        text.find("; touch 1: X+ at 2000 mm/min\n"
+                  "STOPRE\n"
+                  "R1=$AA_IW[X]+6.000\n"
+                  "MEAS=-2 G90 G1 X=R1 F2000\n"
+                  "G91\n"
+                  "STOPRE\n"
+                  "IF $A_PROBE[2]<>1 GOTOF NO_TRIGGER\n"
+                  "WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"TOUCH 1 X\"<<SPRINT(\"%12.4F\",$AA_MW[X])"
+                  "<<\" Y\"<<SPRINT(\"%12.4F\",$AA_IW[Y])<<\" Z\"<<SPRINT(\"%12.4F\",$AA_IW[Z]))\n"
+                  "IF PC_ERROR<>0 GOTOF WRITE_FAILED\n"),
+        std::string::npos)
+        << text;
+    EXPECT_NE(text.find("MEAS=-2 G90 G1 X=R1 F3000\nG91\nSTOPRE\n"
+                        "IF $A_PROBE[2]==1 GOTOF OBSTRUCTED\n"),
+              std::string::npos);
+    // The definition comes first, before any block that runs.
+    EXPECT_EQ(text.rfind("DEF INT PC_ERROR\n", 0), 0u);
+    for (const int bad : {0, 3, -3}) {
+        options.probe_input = bad;
+        EXPECT_THROW(write_program(plan, siemens_dialect(), program_test::kDate, options),
+                     InputError);
+        // The other dialects have no probe input to check.
+        EXPECT_NO_THROW(write_program(plan, fanuc_dialect(), program_test::kDate, options));
+    }
+}
+
 TEST(ProgramWriter, FanucRingNeedsTheUsersOrientCommand) {
     const ProbingPlan ring = program_test::golden_plans()[1].plan;
     EXPECT_THROW(write_program(ring, fanuc_dialect(), program_test::kDate), InputError);

@@ -115,6 +115,34 @@ TEST(ProgramDialog, ThePreviewIsTheCoresProgramInEveryDialect) {
     }
 }
 
+// The probe's input is asked only where the probing moves name it
+// (Siemens's MEAS=); the program is the core's with the input chosen.
+TEST(ProgramDialog, TheProbeInputServesTheDialectsThatNameIt) {
+    const Scenario scenario;
+    ProgramDialog delay(ProgramKind::delay, scenario);
+    delay.set_delay_options(small_delay_options());
+    auto* input = delay.findChild<QComboBox*>(QStringLiteral("program-probe-input"));
+    ASSERT_NE(input, nullptr);
+    ASSERT_EQ(input->count(), 4);
+    for (DialectId id : program_dialects()) {
+        SCOPED_TRACE(dialect(id).name);
+        delay.set_dialect(id);
+        delay.update_now();
+        EXPECT_EQ(input->isEnabled(), dialect(id).probe_input_from_user);
+    }
+    delay.set_dialect(DialectId::siemens);
+    input->setCurrentIndex(3);  // probe 2, signal falling
+    delay.update_now();
+    ProgramOptions options;
+    options.probe_input = -2;
+    EXPECT_EQ(delay.program_text().toStdString(),
+              write_program(make_delay_plan(scenario, small_delay_options()),
+                            dialect(DialectId::siemens), delay.date(), options));
+    EXPECT_NE(delay.program_text().indexOf(QStringLiteral("MEAS=-2 G90 G1 Z=R1")), -1);
+    EXPECT_NE(delay.program_text().indexOf(QStringLiteral("IF $A_PROBE[2]<>1 GOTOF NO_TRIGGER")),
+              -1);
+}
+
 TEST(ProgramDialog, TheTunedCycleIsTheCoresProgramInEveryDialect) {
     Scenario scenario;
     scenario.cycle.probe_feed_mm_min = 1500.0;
