@@ -4379,24 +4379,24 @@
         <translation>Вход щупа</translation>
     </message>
     <message>
-        <source>1, signal rises at the trigger</source>
-        <translation>1, сигнал нарастает при срабатывании</translation>
+        <source>1, rising edge</source>
+        <translation>1, передний фронт</translation>
     </message>
     <message>
-        <source>1, signal falls at the trigger</source>
-        <translation>1, сигнал спадает при срабатывании</translation>
+        <source>1, falling edge</source>
+        <translation>1, задний фронт</translation>
     </message>
     <message>
-        <source>2, signal rises at the trigger</source>
-        <translation>2, сигнал нарастает при срабатывании</translation>
+        <source>2, rising edge</source>
+        <translation>2, передний фронт</translation>
     </message>
     <message>
-        <source>2, signal falls at the trigger</source>
-        <translation>2, сигнал спадает при срабатывании</translation>
+        <source>2, falling edge</source>
+        <translation>2, задний фронт</translation>
     </message>
     <message>
-        <source>Which probe input the measuring moves use (Siemens: MEAS=1, -1, 2 or -2), as the machine&apos;s builder wired it; the CLI&apos;s --probe-input.</source>
-        <translation>Какой вход щупа используют измерительные перемещения (Siemens: MEAS=1, -1, 2 или -2), как его подключил производитель станка; в CLI — --probe-input.</translation>
+        <source>Which probe input the measuring moves use (Siemens: MEAS=1, -1, 2 or -2), as the machine&apos;s builder wired it: falling edge for a probe whose signal falls when it triggers; the CLI&apos;s --probe-input.</source>
+        <translation>Какой вход щупа используют измерительные перемещения (Siemens: MEAS=1, -1, 2 или -2), как его подключил производитель станка: задний фронт — для щупа, сигнал которого спадает при срабатывании; в CLI — --probe-input.</translation>
     </message>
 </context>
 <context>

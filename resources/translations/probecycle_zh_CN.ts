@@ -4379,24 +4379,24 @@
         <translation>测头输入</translation>
     </message>
     <message>
-        <source>1, signal rises at the trigger</source>
-        <translation>1，触发时信号上升</translation>
+        <source>1, rising edge</source>
+        <translation>1，上升沿</translation>
     </message>
     <message>
-        <source>1, signal falls at the trigger</source>
-        <translation>1，触发时信号下降</translation>
+        <source>1, falling edge</source>
+        <translation>1，下降沿</translation>
     </message>
     <message>
-        <source>2, signal rises at the trigger</source>
-        <translation>2，触发时信号上升</translation>
+        <source>2, rising edge</source>
+        <translation>2，上升沿</translation>
     </message>
     <message>
-        <source>2, signal falls at the trigger</source>
-        <translation>2，触发时信号下降</translation>
+        <source>2, falling edge</source>
+        <translation>2，下降沿</translation>
     </message>
     <message>
-        <source>Which probe input the measuring moves use (Siemens: MEAS=1, -1, 2 or -2), as the machine&apos;s builder wired it; the CLI&apos;s --probe-input.</source>
-        <translation>测量移动使用哪个测头输入（Siemens：MEAS=1、-1、2 或 -2），按机床制造商的接线；对应 CLI 的 --probe-input。</translation>
+        <source>Which probe input the measuring moves use (Siemens: MEAS=1, -1, 2 or -2), as the machine&apos;s builder wired it: falling edge for a probe whose signal falls when it triggers; the CLI&apos;s --probe-input.</source>
+        <translation>测量移动使用哪个测头输入（Siemens：MEAS=1、-1、2 或 -2），按机床制造商的接线：触发时信号下降的测头选下降沿；对应 CLI 的 --probe-input。</translation>
     </message>
 </context>
 <context>

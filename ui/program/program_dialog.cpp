@@ -326,13 +326,14 @@ void ProgramDialog::retranslate() {
     }
     dialect_label_->setText(tr("Control"));
     probe_input_label_->setText(tr("Probe input"));
-    probe_input_->setItemText(0, tr("1, signal rises at the trigger"));
-    probe_input_->setItemText(1, tr("1, signal falls at the trigger"));
-    probe_input_->setItemText(2, tr("2, signal rises at the trigger"));
-    probe_input_->setItemText(3, tr("2, signal falls at the trigger"));
+    probe_input_->setItemText(0, tr("1, rising edge"));
+    probe_input_->setItemText(1, tr("1, falling edge"));
+    probe_input_->setItemText(2, tr("2, rising edge"));
+    probe_input_->setItemText(3, tr("2, falling edge"));
     probe_input_->setToolTip(
         tr("Which probe input the measuring moves use (Siemens: MEAS=1, -1, 2 or -2), as the "
-           "machine's builder wired it; the CLI's --probe-input."));
+           "machine's builder wired it: falling edge for a probe whose signal falls when it "
+           "triggers; the CLI's --probe-input."));
     dialect_->setToolTip(tr("The control's G-code dialect."));
     preview_label_->setText(tr("Program"));
     preview_->setPlaceholderText(tr("No program: the options are refused (see the message)."));
