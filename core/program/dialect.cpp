@@ -440,76 +440,58 @@ const Dialect& haas_dialect() {
 // reads "#n value", "#n=value" and "n value" lines and ignores the rest).
 // The header says to prove each out.
 const Dialect& mitsubishi_dialect() {
-    static const Dialect dialect{
-        .id = DialectId::mitsubishi,
-        .name = "mitsubishi",
-        .title = "Mitsubishi M70/M80",
-        .extension = "nc",
-        .comment_open = "(",
-        .comment_close = ")",
-        .plain_comments = true,
-        .program_start = {"%", "O1300 (PROBECYCLE)"},
-        .modes = "G21 G40 G80 G91 G94",
-        .probe_word = "G31",
-        .rapid_word = "G0",
-        .feed_word = "G1",
-        .pause_message = "",
-        .pause_word = "M00",
-        .open_record = {"#500={id_1}", "#501={id_2}", "#502={id_3}", "#503={id_4}", "#504=0",
-                        "#505=0"},
-        .before_probe = {"#101={current}{distance}"},
-        .after_probe = {"IF[ABS[{skip}-#101]LT0.050]GOTO9001"},
-        .settle = {"G04"},
-        .current_position = {"#5041", "#5042", "#5043"},
-        .skip_position = {"#5061", "#5062", "#5063"},
-        .guard_word = "G31",
-        .before_guard = {"#101={current}{distance}"},
-        .after_guard = {"IF[ABS[{skip}-#101]GE0.050]GOTO9002"},
-        .after_recorded_probe = {"{touch_x}=#5061", "{touch_y}=#5062", "{touch_z}=#5063",
-                                 "#505={n}"},
-        .close_record = {"#504=1"},
-        .end = {"G90", "M30"},
-        .after_end = {"N9001", "#504=101", "G90", "M00 (PROBE DID NOT TRIGGER)", "M30"},
-        .guard_alarm = {"N9002", "#504=102", "G90", "M00 (PROBE PATH OBSTRUCTED)", "M30"},
-        .file_end = {"%"},
-        .record_notes =
-            {"Positions: the program keeps them in common variables, which stay after it",
-             "ends: #500-#503 the plan, #504 its state (1 done, 101 no trigger, 102",
-             "obstructed, 103 out of tolerance), #505 the touches kept, and X Y Z of each",
-             "touch, three variables each from #520 on (touch 1 #520-#522, touch 2",
-             "#523-#525 ...). Output the common variables to a file, or copy them from the",
-             "variable screen as lines #n value, and import that list. Uses #101 too.",
-             "Program number O1300: renumber it if your control has one.",
-             "A probe that does not trigger ends at its target with no alarm on this control:",
-             "the program checks it and stops at M00 PROBE DID NOT TRIGGER (cycle start ends",
-             "the program).",
-             "NOT CONFIRMED for Mitsubishi, prove it out before a touch: #5041-#5043 read as",
-             "the current position in work coordinates after G04 (run the program once with",
-             "the probe clear of the part: its first probing move must stop at PROBE DID NOT",
-             "TRIGGER); that your control has common variables #500 to the last one this",
-             "program uses. #3000 alarms and DPRNT are not used: they are not confirmed for",
-             "this control."},
-        .guard_notes =
-            {"Protected moves are G31 to the end of the move: when the skip position is not",
-             "that end, the probe touched something, and the program stops at M00 PROBE PATH",
-             "OBSTRUCTED."},
-        .result_record = {"#506={size}", "#507={centre_x}", "#508={centre_y}", "#509={deviation}",
-                          "#510={flag}"},
-        .tolerance_check = {"{flag}=0", "IF[ABS[{deviation}]LE{tolerance}]GOTO9003", "{flag}=1",
-                            "N9003"},
-        .out_of_tolerance = {"{stop}"},
-        .tolerance_stop = {"IF[{flag}EQ0]GOTO9004", "#504=103", "G90",
-                           "M00 (SIZE OUT OF TOLERANCE)", "M30", "N9004"},
-        .result_notes = {"The program keeps them in #506-#510 (S X Y D T) as well; the import",
-                         "reads them and checks them against the touches."},
-        .log_format = LogFormat::common_variables,
+    // The Fanuc-type program's words (G31, the checks on #5041-#5043 and
+    // #5061-#5063, IF[...]GOTOn, M00, M30), with the record and the stops
+    // above.
+    static const Dialect dialect = [] {
+        Dialect d = fanuc_dialect();
+        d.id = DialectId::mitsubishi;
+        d.name = "mitsubishi";
+        d.title = "Mitsubishi M70/M80";
+        d.open_record = {"#500={id_1}", "#501={id_2}", "#502={id_3}",
+                         "#503={id_4}", "#504=0",      "#505=0"};
+        d.settle = {"G04"};
+        d.after_recorded_probe = {"{touch_x}=#5061", "{touch_y}=#5062", "{touch_z}=#5063",
+                                  "#505={n}"};
+        d.close_record = {"#504=1"};
+        d.after_end = {"N9001", "#504=101", "G90", "M00 (PROBE DID NOT TRIGGER)", "M30"};
+        d.guard_alarm = {"N9002", "#504=102", "G90", "M00 (PROBE PATH OBSTRUCTED)", "M30"};
+        d.record_notes = {
+            "Positions: the program keeps them in common variables, which stay after it",
+            "ends: #500-#503 the plan, #504 its state (1 done, 101 no trigger, 102",
+            "obstructed, 103 out of tolerance), #505 the touches kept, and X Y Z of each",
+            "touch, three variables each from #520 on (touch 1 #520-#522, touch 2",
+            "#523-#525 ...). Output the common variables to a file, or copy them from the",
+            "variable screen as lines #n value, and import that list. Uses #101 too.",
+            "Program number O1300: renumber it if your control has one.",
+            "A probe that does not trigger ends at its target with no alarm on this control:",
+            "the program checks it and stops at M00 PROBE DID NOT TRIGGER (cycle start ends",
+            "the program).",
+            "NOT CONFIRMED for Mitsubishi, prove it out before a touch: #5041-#5043 read as",
+            "the current position in work coordinates after G04 (run the program once with",
+            "the probe clear of the part: its first probing move must stop at PROBE DID NOT",
+            "TRIGGER); that your control has common variables #500 to the last one this",
+            "program uses. #3000 alarms and DPRNT are not used: they are not confirmed for",
+            "this control."};
+        d.guard_notes = {
+            "Protected moves are G31 to the end of the move: when the skip position is not",
+            "that end, the probe touched something, and the program stops at M00 PROBE PATH",
+            "OBSTRUCTED."};
+        d.result_record = {"#506={size}", "#507={centre_x}", "#508={centre_y}", "#509={deviation}",
+                           "#510={flag}"};
+        d.out_of_tolerance = {"{stop}"};
+        d.tolerance_stop = {"IF[{flag}EQ0]GOTO9004",       "#504=103", "G90",
+                            "M00 (SIZE OUT OF TOLERANCE)", "M30",      "N9004"};
+        d.result_notes = {"The program keeps them in #506-#510 (S X Y D T) as well; the import",
+                          "reads them and checks them against the touches."};
+        d.log_format = LogFormat::common_variables;
         // A copied list may hold 3 decimals: half a digit of four touches and
         // the result, with room.
-        .result_tolerance_mm = 3e-3,
-        .first_touch_variable = 520,
-        .last_variable = 999,
-        .orient_from_user = true,
-    };
+        d.result_tolerance_mm = 3e-3;
+        d.first_touch_variable = 520;
+        d.last_variable = 999;
+        return d;
+    }();
     return dialect;
 }
 

@@ -757,38 +757,27 @@ DelayGroup round_trip(int repeats, bool noise, DialectId dialect_id = DialectId:
     return fit.groups.at(0);
 }
 
-TEST(MachineLog, FanucRoundTripGivesBackTheKnownDelay) {
+// The controls that record 4 decimals (0.1 um): the Fanuc-type DPRNT (a
+// Haas's too, with its look-ahead limited by empty blocks and G103),
+// Mitsubishi's common variables, Siemens's WRITE file. Without noise only
+// the 4 decimals stand between the delay and the fit: finer than grbl's
+// 1 um, so a tighter bound. The lines end as each control ends them.
+TEST(MachineLog, FourDecimalRecordsRoundTripToTheKnownDelay) {
     const Scenario scenario;
     const double delay_s = measurement_delay_s(scenario.machine, scenario.probe);
-    // Without noise only DPRNT's 4 decimals (0.1 um) stand between the delay
-    // and the fit: finer than grbl's 1 um, so a tighter bound.
-    const DelayGroup exact = round_trip(5, false, DialectId::fanuc, "\r");
-    EXPECT_NEAR(exact.delay_s, delay_s, 5e-6);
-    EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
-    const DelayGroup noisy = round_trip(20, true, DialectId::fanuc, "\n\r\r");
-    EXPECT_NEAR(noisy.delay_s, delay_s, 5e-4);
-}
-
-// Haas runs the Fanuc-type program with its look-ahead limited (empty
-// blocks, G103), and prints the same DPRNT lines: the same fit.
-TEST(MachineLog, HaasRoundTripGivesBackTheKnownDelay) {
-    const Scenario scenario;
-    const double delay_s = measurement_delay_s(scenario.machine, scenario.probe);
-    const DelayGroup exact = round_trip(5, false, DialectId::haas, "\r\n");
-    EXPECT_NEAR(exact.delay_s, delay_s, 5e-6);
-    EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
-}
-
-// Mitsubishi keeps the touches in common variables; their list, at 4
-// decimals, fits as closely as DPRNT's output.
-TEST(MachineLog, MitsubishiRoundTripGivesBackTheKnownDelay) {
-    const Scenario scenario;
-    const double delay_s = measurement_delay_s(scenario.machine, scenario.probe);
-    const DelayGroup exact = round_trip(5, false, DialectId::mitsubishi, "\r\n");
-    EXPECT_NEAR(exact.delay_s, delay_s, 5e-6);
-    EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
-    const DelayGroup noisy = round_trip(20, true, DialectId::mitsubishi, "\n");
-    EXPECT_NEAR(noisy.delay_s, delay_s, 5e-4);
+    const std::tuple<DialectId, const char*, const char*> cases[] = {
+        {DialectId::fanuc, "\r", "\n\r\r"},
+        {DialectId::haas, "\r\n", "\r"},
+        {DialectId::mitsubishi, "\r\n", "\n"},
+        {DialectId::siemens, "\n", "\n"}};
+    for (const auto& [id, ending, noisy_ending] : cases) {
+        SCOPED_TRACE(dialect(id).name);
+        const DelayGroup exact = round_trip(5, false, id, ending);
+        EXPECT_NEAR(exact.delay_s, delay_s, 5e-6);
+        EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
+        const DelayGroup noisy = round_trip(20, true, id, noisy_ending);
+        EXPECT_NEAR(noisy.delay_s, delay_s, 5e-4);
+    }
 }
 
 // The list as a control outputs it or a user copies it: "#n = v", "#n=v"
@@ -862,18 +851,6 @@ TEST(MachineLog, MitsubishiProbeThatDoesNotTriggerStopsTheProgramAndTheImport) {
         EXPECT_NE(std::string(e.what()).find("PROBE DID NOT TRIGGER"), std::string::npos)
             << e.what();
     }
-}
-
-// Siemens measures to absolute targets from $AA_IW and writes the trip
-// ($AA_MW) with 4 decimals: the same fit as DPRNT's.
-TEST(MachineLog, SiemensRoundTripGivesBackTheKnownDelay) {
-    const Scenario scenario;
-    const double delay_s = measurement_delay_s(scenario.machine, scenario.probe);
-    const DelayGroup exact = round_trip(5, false, DialectId::siemens);
-    EXPECT_NEAR(exact.delay_s, delay_s, 5e-6);
-    EXPECT_NEAR(exact.zero_speed_position_mm, -50.0 - scenario.probe.pretravel_mm, 0.0001);
-    const DelayGroup noisy = round_trip(20, true, DialectId::siemens);
-    EXPECT_NEAR(noisy.delay_s, delay_s, 5e-4);
 }
 
 // WRITE appends, so the file holds every run: the import reads the last one

@@ -9,11 +9,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
-#include <initializer_list>
 #include <vector>
 
 #include "core/program/program_writer.h"
@@ -160,8 +160,8 @@ ReadBack read_macro_b(const std::vector<std::string>& lines) {
             const bool probe = lines[check].find("GOTO9001") != std::string::npos;
             EXPECT_EQ(lines[check], joined({"IF[ABS[#506", var, "-#101]",
                                             probe ? "LT0.050]GOTO9001" : "GE0.050]GOTO9002"}));
-            back.moves.push_back({probe ? Motion::probe : Motion::guard, *w.axis,
-                                  std::stod(w.value), *w.feed});
+            back.moves.push_back(
+                {probe ? Motion::probe : Motion::guard, *w.axis, std::stod(w.value), *w.feed});
         } else if (line.rfind("G1 ", 0) == 0 || line.rfind("G0 ", 0) == 0) {
             back.moves.push_back({line[1] == '1' ? Motion::feed : Motion::rapid, *w.axis,
                                   std::stod(w.value), w.feed.value_or(0.0)});
@@ -203,7 +203,8 @@ ReadBack read_siemens(const std::vector<std::string>& lines) {
             back.recorded.push_back(n);
             // The moving axis's trip: the last MEAS block's axis.
             const std::string& axis = std::string(1, back.moves.back().axis);
-            EXPECT_NE(line.find(joined({"SPRINT(\"%12.4F\",$AA_MW[", axis, "])"})), std::string::npos)
+            EXPECT_NE(line.find(joined({"SPRINT(\"%12.4F\",$AA_MW[", axis, "])"})),
+                      std::string::npos)
                 << line;
         }
     }
@@ -273,8 +274,8 @@ std::string first_difference(const ProbingPlan& plan, const Dialect& d, const st
         if (got.motion != want.motion || got.axis != want.axis ||
             std::abs(got.distance_mm - want.distance_mm) > 0.0005 ||
             std::abs(got.feed_mm_min - want.feed_mm_min) > 0.05) {
-            return joined({"move ", std::to_string(i), ": ", describe(got), ", the plan's ",
-                           describe(want)});
+            return joined(
+                {"move ", std::to_string(i), ": ", describe(got), ", the plan's ", describe(want)});
         }
     }
     return "";
@@ -313,15 +314,17 @@ TEST(ProgramReadBack, AnEditedMoveIsFound) {
         EXPECT_NE(at, std::string::npos) << from;
         return text.replace(at, from.size(), to);
     };
-    EXPECT_NE(first_difference(plan, linuxcnc_dialect(),
-                               edited(linuxcnc_dialect(), "G38.2 X6.000 F2000", "G38.2 X6.100 F2000")),
-              "");
+    EXPECT_NE(
+        first_difference(plan, linuxcnc_dialect(),
+                         edited(linuxcnc_dialect(), "G38.2 X6.000 F2000", "G38.2 X6.100 F2000")),
+        "");
     EXPECT_NE(first_difference(plan, fanuc_dialect(),
                                edited(fanuc_dialect(), "G31 X6.000 F2000", "G31 X6.000 F200")),
               "");
-    EXPECT_NE(first_difference(plan, siemens_dialect(),
-                               edited(siemens_dialect(), "R1=$AA_IW[X]+6.000", "R1=$AA_IW[X]+6.500")),
-              "");
+    EXPECT_NE(
+        first_difference(plan, siemens_dialect(),
+                         edited(siemens_dialect(), "R1=$AA_IW[X]+6.000", "R1=$AA_IW[X]+6.500")),
+        "");
 }
 
 }  // namespace
