@@ -69,6 +69,9 @@ int run(int argc, char** argv) {
     app.get_formatter()->label("Usage", "usage");
     app.get_formatter()->column_width(34);
     app.footer(kFooter);
+    // The window's and the package's version string (CMakeLists.txt's project()).
+    app.set_version_flag("--version", "ProbeCycle " PROBECYCLE_VERSION,
+                         "Print the version (the package's) and exit");
     app.require_subcommand(1);
     cli::add_cycle_commands(app);
     cli::add_optimise_commands(app);
@@ -122,6 +125,8 @@ int run(int argc, char** argv) {
         return app.exit(e);  // the help on stdout, exit 0
     } catch (const CLI::CallForAllHelp& e) {
         return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);  // the version on stdout, exit 0
     } catch (const CLI::ParseError& e) {
         std::cerr << "probecycle-cli " << command << ": " << failure_text(e) << '\n';
     } catch (const ScenarioError& e) {

@@ -72,6 +72,15 @@ TEST(CliHelp, EveryCommandHasHelpOnStdoutAndExitsZero) {
     EXPECT_EQ(run_cli("help").exit_code, 0);
 }
 
+// The version the window prints (probecycle --version) and the package
+// carries: the project's.
+TEST(CliHelp, VersionIsThePackagesOnStdout) {
+    const CliRun run = run_cli("--version");
+    EXPECT_EQ(run.exit_code, 0);
+    EXPECT_EQ(run.out, "ProbeCycle " PROBECYCLE_VERSION "\n");
+    EXPECT_EQ(run.err, "");
+}
+
 // A page of docs/, up to the line `stop` (the whole page when `stop` is empty or
 // not there).
 std::string doc_page(const char* path, const std::string& stop = "") {
