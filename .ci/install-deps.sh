@@ -11,6 +11,7 @@ packages=(
   poppler-utils  # pdftotext and pdfinfo read the PDF report back in its tests
   clang clang-format clang-tidy libclang-rt-14-dev
   linuxcnc-uspace  # rs274, LinuxCNC's stand-alone interpreter, checks the generated programs (about 3 min to install)
+  lintian desktop-file-utils appstream  # the Debian package's checks (.ci/package.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

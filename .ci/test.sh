@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine and passes every test: formatting, the
-# full build with warnings as errors under ctest (offscreen), clang-tidy, the
+# full build with warnings as errors under ctest (offscreen), the Debian
+# package installed, run and removed (.ci/package.sh), clang-tidy, the
 # core and CLI tests again under AddressSanitizer and UndefinedBehaviorSanitizer,
 # and each libFuzzer target for a bounded time.
 set -euo pipefail
@@ -26,6 +27,9 @@ python3 tools/make_large_project.py "$large"
 PROBECYCLE_LARGE_PROJECT="$large/large.probecycle" \
   tools/bench_smoke.sh build-ci/bench/probecycle-ui-bench
 rm -rf "$large"
+
+# The Debian package: built, checked, installed, run and removed.
+bash .ci/package.sh build-ci
 
 tools/run_clang_tidy.sh build-ci
 

@@ -158,8 +158,11 @@ int main(int argc, char** argv) {
                        "needed."),
         QStringLiteral("FILE"));
     parser.addOptions({screenshot, scenario, size, language, time_startup, tab, report_pdf});
-    parser.addPositionalArgument(QStringLiteral("scenario"), QStringLiteral("Scenario to open."),
-                                 QStringLiteral("[SCENARIO.json]"));
+    parser.addPositionalArgument(
+        QStringLiteral("file"),
+        QStringLiteral("Scenario (.json) or project (.probecycle) to open: the desktop entry "
+                       "passes the file double-clicked."),
+        QStringLiteral("[SCENARIO.json|PROJECT.probecycle]"));
     parser.process(app);
 
     const bool reporting = parser.isSet(report_pdf);
