@@ -540,11 +540,10 @@ const Dialect& siemens_dialect() {
         .probe_word = "G1",
         .rapid_word = "G0",
         .feed_word = "G1",
-        .pause_message = "MSG(\"{text}\")",
+        .pause_message = R"(MSG("{text}"))",
         .pause_word = "M0",
-        .open_record =
-            {"WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"PROBECYCLE PLAN {id_letters} {KIND}\")",
-             "IF PC_ERROR<>0 GOTOF WRITE_FAILED"},
+        .open_record = {R"(WRITE(PC_ERROR,"PROBECYCLE_LOG","PROBECYCLE PLAN {id_letters} {KIND}"))",
+                        "IF PC_ERROR<>0 GOTOF WRITE_FAILED"},
         .before_probe = {"STOPRE", "R1={current}{distance}"},
         .after_probe = {"G91", "STOPRE", "IF $A_PROBE[{probe}]<>1 GOTOF NO_TRIGGER"},
         .current_position = {"$AA_IW[X]", "$AA_IW[Y]", "$AA_IW[Z]"},
@@ -555,19 +554,19 @@ const Dialect& siemens_dialect() {
         .probe_move = "MEAS={input} G90 {word} {axis}=R1 F{feed}",
         .probe_input_from_user = true,
         .after_recorded_probe =
-            {"WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"TOUCH {n} X\"<<SPRINT(\"%12.4F\",{x})<<\" "
-             "Y\"<<SPRINT(\"%12.4F\",{y})<<\" Z\"<<SPRINT(\"%12.4F\",{z}))",
+            {R"(WRITE(PC_ERROR,"PROBECYCLE_LOG","TOUCH {n} X"<<SPRINT("%12.4F",{x})<<" )"
+             R"(Y"<<SPRINT("%12.4F",{y})<<" Z"<<SPRINT("%12.4F",{z})))",
              "IF PC_ERROR<>0 GOTOF WRITE_FAILED"},
-        .close_record = {"WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"PROBECYCLE END\")",
+        .close_record = {R"(WRITE(PC_ERROR,"PROBECYCLE_LOG","PROBECYCLE END"))",
                          "IF PC_ERROR<>0 GOTOF WRITE_FAILED"},
         .end = {"G90", "M30"},
-        .after_end = {"NO_TRIGGER:", "WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"PROBECYCLE NO TRIGGER\")",
-                      "MSG(\"PROBECYCLE: PROBE DID NOT TRIGGER\")", "G90", "M0", "M30",
-                      "WRITE_FAILED:", "MSG(\"PROBECYCLE: WRITE TO PROBECYCLE_LOG FAILED\")", "G90",
-                      "M0", "M30"},
+        .after_end = {"NO_TRIGGER:", R"(WRITE(PC_ERROR,"PROBECYCLE_LOG","PROBECYCLE NO TRIGGER"))",
+                      R"(MSG("PROBECYCLE: PROBE DID NOT TRIGGER"))", "G90", "M0", "M30",
+                      "WRITE_FAILED:", R"(MSG("PROBECYCLE: WRITE TO PROBECYCLE_LOG FAILED"))",
+                      "G90", "M0", "M30"},
         .guard_alarm = {"OBSTRUCTED:",
-                        "WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"PROBECYCLE OBSTRUCTED\")",
-                        "MSG(\"PROBECYCLE: PROBE PATH OBSTRUCTED\")", "G90", "M0", "M30"},
+                        R"(WRITE(PC_ERROR,"PROBECYCLE_LOG","PROBECYCLE OBSTRUCTED"))",
+                        R"(MSG("PROBECYCLE: PROBE PATH OBSTRUCTED"))", "G90", "M0", "M30"},
         .file_end = {},
         .record_notes =
             {"Positions: WRITE appends to the file PROBECYCLE_LOG a line PROBECYCLE PLAN, one",
@@ -589,16 +588,16 @@ const Dialect& siemens_dialect() {
              "reads 1 after one, the probe touched something, and the program stops with",
              "the message PROBECYCLE: PROBE PATH OBSTRUCTED."},
         .result_record =
-            {"WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"RESULT S\"<<SPRINT(\"%12.4F\",{size})<<\" "
-             "X\"<<SPRINT(\"%12.4F\",{centre_x})<<\" Y\"<<SPRINT(\"%12.4F\",{centre_y})<<\" "
-             "D\"<<SPRINT(\"%12.4F\",{deviation})<<\" T\"<<SPRINT(\"%12.4F\",{flag}))",
+            {R"(WRITE(PC_ERROR,"PROBECYCLE_LOG","RESULT S"<<SPRINT("%12.4F",{size})<<" )"
+             R"(X"<<SPRINT("%12.4F",{centre_x})<<" Y"<<SPRINT("%12.4F",{centre_y})<<" )"
+             R"(D"<<SPRINT("%12.4F",{deviation})<<" T"<<SPRINT("%12.4F",{flag})))",
              "IF PC_ERROR<>0 GOTOF WRITE_FAILED"},
         .tolerance_check = {"{flag}=0", "IF ABS({deviation})<={tolerance} GOTOF TOLERANCE_CHECKED",
                             "{flag}=1", "TOLERANCE_CHECKED:"},
         .out_of_tolerance = {"IF {flag}==0 GOTOF TOLERANCE_DONE",
-                             "WRITE(PC_ERROR,\"PROBECYCLE_LOG\",\"PROBECYCLE OUT OF TOLERANCE\")",
+                             R"(WRITE(PC_ERROR,"PROBECYCLE_LOG","PROBECYCLE OUT OF TOLERANCE"))",
                              "{stop}", "TOLERANCE_DONE:"},
-        .tolerance_stop = {"MSG(\"PROBECYCLE: SIZE OUT OF TOLERANCE\")", "G90", "M0", "M30"},
+        .tolerance_stop = {R"(MSG("PROBECYCLE: SIZE OUT OF TOLERANCE"))", "G90", "M0", "M30"},
         .result_notes = {"WRITE appends them to PROBECYCLE_LOG as RESULT S size X centre Y centre",
                          "D deviation T flag; the import reads that line and checks it against",
                          "the touches."},
