@@ -290,6 +290,10 @@ void MainWindow::build_ui() {
     setCentralWidget(tabs_);
 
     statusBar();  // file and preset messages
+    // A message's whole text (show_status_text) goes with the message.
+    connect(statusBar(), &QStatusBar::messageChanged, this, [this](const QString& message) {
+        if (message.isEmpty()) statusBar()->setToolTip(QString());
+    });
     resize(1280, 800);
 }
 
@@ -558,9 +562,7 @@ void MainWindow::changeEvent(QEvent* event) {
             const auto* command = static_cast<const ScenarioCommand*>(undo_->command(i));
             const_cast<ScenarioCommand*>(command)->retranslate();
         }
-        if (status_.make && !statusBar()->currentMessage().isEmpty()) {
-            statusBar()->showMessage(status_.make(), status_.timeout_ms);
-        }
+        if (status_.make && !statusBar()->currentMessage().isEmpty()) show_status_text();
         retranslate();
         if (recompute_count_ > 0) schedule_recompute();  // texts built from numbers
     }
@@ -1112,7 +1114,26 @@ QString MainWindow::preset_name(const QString& resource_path) {
 
 void MainWindow::show_status(std::function<QString()> make, int timeout_ms) {
     status_ = {std::move(make), timeout_ms};
-    statusBar()->showMessage(status_.make(), timeout_ms);
+    show_status_text();
+}
+
+void MainWindow::show_status_text() {
+    QStatusBar* bar = statusBar();
+    const QString text = status_.make();
+    // QStatusBar draws a message a few pixels in from its left edge and
+    // stops short of its size grip.
+    const int grip = bar->isSizeGripEnabled()
+                         ? bar->style()->pixelMetric(QStyle::PM_SizeGripSize, nullptr, bar)
+                         : 0;
+    const int room = std::max(0, bar->width() - grip - 24);
+    const QString fitted = bar->fontMetrics().elidedText(text, Qt::ElideRight, room);
+    bar->setToolTip(fitted == text ? QString() : text);
+    bar->showMessage(fitted, status_.timeout_ms);
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event) {
+    QMainWindow::resizeEvent(event);
+    if (status_.make && !statusBar()->currentMessage().isEmpty()) show_status_text();
 }
 
 void MainWindow::remember_recent(const QString& path) {

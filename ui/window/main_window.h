@@ -183,6 +183,7 @@ class MainWindow : public QMainWindow {
   protected:
     void closeEvent(QCloseEvent* event) override;
     void changeEvent(QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
@@ -207,6 +208,10 @@ class MainWindow : public QMainWindow {
     std::optional<std::string> read_or_report(const QString& path, const char* title);
     // A status bar message that is built again after a language switch.
     void show_status(std::function<QString()> make, int timeout_ms);
+    // The message as status_ makes it, cut with an ellipsis to the bar's
+    // width (a long one would be cut at the window's edge), with the whole
+    // text as the bar's tooltip.
+    void show_status_text();
     static QString preset_name(const QString& resource_path);
     void remember_recent(const QString& path);
     void update_title();

@@ -900,6 +900,34 @@ TEST_F(MainWindowTest, APresetSaysWhatItOverwrote) {
     EXPECT_DOUBLE_EQ(window_->scenario().machine.controller_latency_s, 0.0123);
 }
 
+// A message longer than the status bar (a preset that changes many keys,
+// in a narrow window) is cut with an ellipsis inside the bar, not at the
+// window's edge, and its whole text is the bar's tooltip; in a window wide
+// enough it is whole, with no tooltip.
+TEST_F(MainWindowTest, ALongStatusMessageIsCutToTheBarAndWholeInItsTooltip) {
+    window_->resize(1024, 700);
+    settle();
+    ASSERT_TRUE(
+        window_->apply_preset(QStringLiteral(":/presets/machine_linear_after_interpolation.json")));
+    settle();
+    QStatusBar* bar = window_->statusBar();
+    const QString shown = bar->currentMessage();
+    const QString whole = bar->toolTip();
+    ASSERT_FALSE(whole.isEmpty()) << shown.toStdString();
+    EXPECT_LE(bar->fontMetrics().horizontalAdvance(shown), bar->width());
+    EXPECT_TRUE(shown.endsWith(QChar(0x2026))) << shown.toStdString();
+    EXPECT_TRUE(whole.startsWith(shown.chopped(1))) << whole.toStdString();
+    const QStringList changes = window_->last_preset_changes();
+    ASSERT_GT(changes.size(), 1);
+    for (const QString& change : changes) {
+        EXPECT_TRUE(whole.contains(change)) << change.toStdString();
+    }
+    window_->resize(bar->fontMetrics().horizontalAdvance(whole) + 200, 700);
+    settle();
+    EXPECT_EQ(bar->currentMessage(), whole);
+    EXPECT_TRUE(bar->toolTip().isEmpty());
+}
+
 TEST_F(MainWindowTest, EveryPresetLoadsAndChangesOnlyItsKeys) {
     for (const char* preset : kPresets) {
         const Cycle cycle_before = window_->scenario().cycle;
