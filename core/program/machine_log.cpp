@@ -466,12 +466,14 @@ std::string plan_from_letters(std::string_view letters) {
 std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const ProbingPlan& plan,
                                                    LoggedResult* result, bool last_run) {
     constexpr const char* kTouchLine = "'TOUCH n X x Y y Z z'";
-    const std::vector<std::pair<std::size_t, std::string_view>> lines = dprnt_lines_of(text);
+    // Each line's text once, for the scan below and the reading.
+    std::vector<std::pair<std::size_t, std::string>> lines;
+    for (const auto& [number, raw] : dprnt_lines_of(text))
+        lines.emplace_back(number, dprnt_text(raw));
     // A file the program appends to holds every run: the last PLAN line on.
     std::size_t first_line = 0;
     if (last_run) {
-        for (const auto& [number, raw] : lines) {
-            const std::string line = dprnt_text(raw);
+        for (const auto& [number, line] : lines) {
             const std::vector<std::string_view> words = words_of(line, ' ');
             if (words.size() >= 2 && words[0] == "PROBECYCLE" && words[1] == "PLAN") {
                 first_line = number;
@@ -480,9 +482,8 @@ std::vector<RecordedPosition> read_fanuc_positions(std::string_view text, const 
     }
     std::vector<RecordedPosition> positions;
     bool plan_line = false;
-    for (const auto& [number, raw] : lines) {
+    for (const auto& [number, line] : lines) {
         if (number < first_line) continue;
-        const std::string line = dprnt_text(raw);
         const std::vector<std::string_view> words = words_of(line, ' ');
         if (words.empty()) continue;
         if (words[0] == "PROBECYCLE") {
@@ -797,19 +798,18 @@ std::vector<RecordedPosition> read_positions(const ProbingPlan& plan, DialectId 
                                              std::string_view text, bool& every_probe,
                                              LoggedResult* result = nullptr) {
     check_dialect(dialect, text);
-    switch (probecycle::dialect(dialect).log_format) {
+    const Dialect& d = probecycle::dialect(dialect);
+    switch (d.log_format) {
         case LogFormat::grbl_console:
             every_probe = true;
             return read_grbl_positions(text, plan);
         case LogFormat::dprnt:
         case LogFormat::write_file:
             every_probe = false;
-            return read_fanuc_positions(
-                text, plan, result,
-                probecycle::dialect(dialect).log_format == LogFormat::write_file);
+            return read_fanuc_positions(text, plan, result, d.log_format == LogFormat::write_file);
         case LogFormat::common_variables:
             every_probe = false;
-            return read_variable_positions(text, plan, probecycle::dialect(dialect), result);
+            return read_variable_positions(text, plan, d, result);
         case LogFormat::linuxcnc_log:
             break;
     }
