@@ -552,7 +552,6 @@ const Dialect& siemens_dialect() {
         .before_guard = {"STOPRE", "R1={current}{distance}"},
         .after_guard = {"G91", "STOPRE", "IF $A_PROBE[{probe}]==1 GOTOF OBSTRUCTED"},
         .probe_move = "MEAS={input} G90 {word} {axis}=R1 F{feed}",
-        .probe_input_from_user = true,
         .after_recorded_probe =
             {R"(WRITE(PC_ERROR,"PROBECYCLE_LOG","TOUCH {n} X"<<SPRINT("%12.4F",{x})<<" )"
              R"(Y"<<SPRINT("%12.4F",{y})<<" Z"<<SPRINT("%12.4F",{z})))",
@@ -651,6 +650,11 @@ std::string dialect_names(std::string_view separator) {
         names += dialect(id).name;
     }
     return names;
+}
+
+bool names_probe_input(const Dialect& dialect) {
+    return dialect.probe_move != nullptr &&
+           std::string_view(dialect.probe_move).find("{input}") != std::string_view::npos;
 }
 
 std::size_t max_recorded_touches(const Dialect& dialect) {

@@ -78,12 +78,10 @@ struct Dialect {
     std::vector<const char*> before_guard;
     std::vector<const char*> after_guard;
     // The probing or protected move itself ({word}: probe_word or guard_word,
-    // {axis}, {distance}, {feed}, {input}); nullptr: "{word}
+    // {axis}, {distance}, {feed}, {input}: the probe's input, Siemens's
+    // MEAS=1, -1, 2, -2, from ProgramOptions::probe_input); nullptr: "{word}
     // {axis}{distance} F{feed}", incremental.
     const char* probe_move{nullptr};
-    // Whether the probing moves name the probe's input (Siemens's MEAS=1,
-    // -1, 2, -2): ProgramOptions::probe_input.
-    bool probe_input_from_user{false};
     // Lines after each recorded probe ({n}: its number, from 1; {touch_x},
     // {touch_y}, {touch_z}: the variables it is stored in, from
     // first_touch_variable on, three per touch).
@@ -152,6 +150,9 @@ std::optional<DialectId> dialect_from_string(std::string_view word);
 // "linuxcnc, grbl, fanuc, haas, mitsubishi, siemens"; with "|": the CLI's
 // type name.
 std::string dialect_names(std::string_view separator = ", ");
+// Whether the dialect's probing moves name the probe's input ({input} in
+// probe_move): ProgramOptions::probe_input is then the user's to give.
+bool names_probe_input(const Dialect& dialect);
 // The most recorded touches a plan may have in the dialect (a control
 // that keeps them in variables has a fixed number); 0: no limit.
 std::size_t max_recorded_touches(const Dialect& dialect);

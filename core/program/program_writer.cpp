@@ -471,7 +471,7 @@ void check_program_options(const ProbingPlan& plan, const Dialect& dialect,
              arg("first", ArgKind::integer, dialect.first_touch_variable),
              arg("last", ArgKind::integer, dialect.last_variable)}));
     }
-    if (dialect.probe_input_from_user && options.probe_input != 1 && options.probe_input != -1 &&
+    if (names_probe_input(dialect) && options.probe_input != 1 && options.probe_input != -1 &&
         options.probe_input != 2 && options.probe_input != -2) {
         throw InputError(program_message(
             "program_probe_input",
@@ -578,6 +578,7 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
     }
     const std::optional<ResultSpec> spec = result_spec(plan);
     const bool computes = spec && !dialect.result_record.empty();
+    const ResultVariables results(dialect);
     std::vector<bool> side_started(spec ? spec->sides.size() : 0, false);
     if (spec) {
         for (const std::string& note : result_header(*spec, dialect)) w.comment(note);
@@ -639,8 +640,7 @@ std::string write_program(const ProbingPlan& plan, const Dialect& dialect, const
                     // The side's sum of its touches' skip positions.
                     const std::size_t side = spec->touch_side[recorded - 1];
                     const std::string skip = dialect.skip_position.at(axis_index(step.axis));
-                    const ResultVariables v(dialect);
-                    const std::string variable = v.side(side);
+                    const std::string variable = results.side(side);
                     std::string sum = variable + "=";
                     if (side_started[side]) {
                         sum += dialect.group_open;

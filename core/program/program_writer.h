@@ -22,7 +22,7 @@ struct ProgramOptions {
     // word does that on every control of the dialect. One line of upper-case
     // letters, digits, spaces and . + - # [ ] =.
     std::string orient_180_command;
-    // The probe's input in a dialect with probe_input_from_user (Siemens's
+    // The probe's input in a dialect whose probing moves name it (Siemens's
     // MEAS=): 1 or 2, negative for a probe whose signal falls when it
     // triggers.
     int probe_input{1};

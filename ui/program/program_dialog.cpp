@@ -457,7 +457,7 @@ void ProgramDialog::update_now() {
             orient_->setEnabled(needed);
             orient_label_->setEnabled(needed);
         }
-        const bool input_needed = dialect(dialect_id()).probe_input_from_user;
+        const bool input_needed = names_probe_input(dialect(dialect_id()));
         probe_input_->setEnabled(input_needed);
         probe_input_label_->setEnabled(input_needed);
         if (plan_) {

@@ -128,7 +128,7 @@ TEST(ProgramDialog, TheProbeInputServesTheDialectsThatNameIt) {
         SCOPED_TRACE(dialect(id).name);
         delay.set_dialect(id);
         delay.update_now();
-        EXPECT_EQ(input->isEnabled(), dialect(id).probe_input_from_user);
+        EXPECT_EQ(input->isEnabled(), names_probe_input(dialect(id)));
     }
     delay.set_dialect(DialectId::siemens);
     input->setCurrentIndex(3);  // probe 2, signal falling
