@@ -12,6 +12,7 @@ packages=(
   clang clang-format clang-tidy libclang-rt-14-dev
   linuxcnc-uspace  # rs274, LinuxCNC's stand-alone interpreter, checks the generated programs (about 3 min to install)
   lintian desktop-file-utils appstream  # the Debian package's checks (.ci/package.sh)
+  file man-db  # CPack's dependency scan runs file; the package check reads the man pages with man
 )
 missing=()
 for p in "${packages[@]}"; do
