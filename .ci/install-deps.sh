@@ -13,6 +13,7 @@ packages=(
   linuxcnc-uspace  # rs274, LinuxCNC's stand-alone interpreter, checks the generated programs (about 3 min to install)
   lintian desktop-file-utils appstream  # the Debian package's checks (.ci/package.sh)
   file man-db  # CPack's dependency scan runs file; the package check reads the man pages with man
+  mingw-w64 wine wine64  # the core and the CLI cross-built for Windows, their tests run under Wine (.ci/windows.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

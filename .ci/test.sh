@@ -3,6 +3,7 @@
 # full build with warnings as errors under ctest (offscreen), the Debian
 # package installed, run and removed (.ci/package.sh), clang-tidy, the
 # core and CLI tests again under AddressSanitizer and UndefinedBehaviorSanitizer,
+# the core and CLI built for Windows and tested under Wine (.ci/windows.sh),
 # and each libFuzzer target for a bounded time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -38,6 +39,9 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPROBECYCLE_SANITIZE=ON \
 cmake --build build-sanitize -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1:halt_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build-sanitize --output-on-failure -j"$jobs"
+
+# The core and the CLI for Windows: cross-built with mingw-w64, tested under wine64.
+bash .ci/windows.sh build-windows
 
 # Fuzzing: clang with libFuzzer, ASan and UBSan; 20 s a target (docs/building.md:
 # longer runs).

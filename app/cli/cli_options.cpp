@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <iostream>
 
 #include "core/common/file_io.h"
@@ -133,7 +132,7 @@ Scenario load_scenario(const ScenarioArgs& args) {
 ReportHeader report_header_of(const std::string& input, const std::string& fallback) {
     ReportHeader header;
     header.date = report_date();
-    header.subject = input.empty() ? fallback : std::filesystem::path(input).filename().string();
+    header.subject = input.empty() ? fallback : utf8_from_path(path_from_utf8(input).filename());
     return header;
 }
 

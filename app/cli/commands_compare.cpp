@@ -2,7 +2,6 @@
 // simulate. Every input file is read and checked before anything is written;
 // errors name the file, the line and the column.
 
-#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -175,8 +174,6 @@ void add_simulate(CLI::App& compare) {
         options.omm_noise_mm = args->noise.value_or(0.0);
         options.cmm_noise_mm = args->cmm_noise.value_or(0.0);
         const ComparisonDataSet data = simulate_comparison(options);
-        namespace fs = std::filesystem;
-        const fs::path dir(args->out);
         const ComparisonInput& in = data.input;
         std::vector<ComparisonExampleFile> files = comparison_example_files(data);
         files.push_back({"simulation.json", simulation_json(data, options).dump(2) + "\n"});
@@ -189,9 +186,9 @@ void add_simulate(CLI::App& compare) {
             written.push_back(file.name);
         }
         write_folder_atomically(args->out, set);
-        const std::string d = dir.string() + "/";
+        const std::string d = args->out + "/";
         nlohmann::ordered_json out = simulation_json(data, options);
-        out["folder"] = dir.string();
+        out["folder"] = args->out;
         out["files"] = written;
         out["run"] = "probecycle-cli compare run --plan " + d + "plan.csv --reference-cmm " + d +
                      "reference_cmm.csv --test-omm " + d + "test_omm.csv --reference-omm " + d +

@@ -8,9 +8,19 @@
 #include <exception>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
-#ifndef _WIN32
+#ifdef _WIN32
+#ifndef WIN32_LEAN_AND_MEAN
+#define WIN32_LEAN_AND_MEAN
+#endif
+#include <windows.h>
+// After windows.h, which it needs:
+#include <fcntl.h>
+#include <io.h>
+#include <shellapi.h>
+#else
 #include <fcntl.h>
 #include <unistd.h>
 #endif
@@ -60,12 +70,54 @@ std::string failure_text(const CLI::Error& e) {
     return text;
 }
 
+// The words after the program's name, as UTF-8. On Windows argv is in the
+// system's code page, where a Chinese or Russian path is lost: the words are
+// taken from the wide command line instead (CommandLineToArgvW, Microsoft's
+// Win32 reference), parsed by the same rules as the C runtime's argv.
+std::vector<std::string> arguments(int argc, char** argv) {
+#ifdef _WIN32
+    int count = 0;
+    wchar_t** wide = ::CommandLineToArgvW(::GetCommandLineW(), &count);
+    if (wide != nullptr) {
+        std::vector<std::string> words;
+        for (int i = 1; i < count; ++i) {
+            const int bytes =
+                ::WideCharToMultiByte(CP_UTF8, 0, wide[i], -1, nullptr, 0, nullptr, nullptr);
+            std::string word(static_cast<std::size_t>(bytes > 0 ? bytes - 1 : 0), '\0');
+            if (bytes > 1) {
+                ::WideCharToMultiByte(CP_UTF8, 0, wide[i], -1, word.data(), bytes, nullptr,
+                                      nullptr);
+            }
+            words.push_back(std::move(word));
+        }
+        ::LocalFree(wide);
+        return words;
+    }
+#endif
+    return {argv + 1, argv + argc};
+}
+
+// On Windows: standard output and error carry the bytes as written, "\n"
+// line ends as on Linux (text mode would make every one "\r\n", and a
+// report piped to a file would differ from the one --out writes); the
+// console shows UTF-8 as UTF-8.
+void binary_standard_streams() {
+#ifdef _WIN32
+    _setmode(_fileno(stdout), _O_BINARY);
+    _setmode(_fileno(stderr), _O_BINARY);
+    ::SetConsoleOutputCP(CP_UTF8);
+#endif
+}
+
 int run(int argc, char** argv) {
     using namespace probecycle;
     CLI::App app(
         "probecycle-cli: cycle time, overtravel and uncertainty of touch-trigger probing "
         "cycles on CNC machine tools, and the calibration and latency lab.",
         "probecycle-cli");
+    // On Windows CLI11 would take a word starting with '/' as an option
+    // ("/o"); a path such as "/data/ring.csv" is a path there too.
+    app.allow_windows_style_options(false);
     app.get_formatter()->label("Usage", "usage");
     app.get_formatter()->column_width(34);
     app.footer(kFooter);
@@ -81,7 +133,7 @@ int run(int argc, char** argv) {
     cli::add_program_commands(app);
     cli::add_machine_commands(app);
 
-    std::vector<std::string> args(argv + 1, argv + argc);
+    std::vector<std::string> args = arguments(argc, argv);
     if (args.empty()) {
         std::cerr << app.help();
         return 2;
@@ -169,6 +221,7 @@ bool standard_output_written() {
 
 int main(int argc, char** argv) {
     hold_closed_standard_streams();
+    binary_standard_streams();
     int status = 2;
     try {
         status = run(argc, argv);

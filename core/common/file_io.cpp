@@ -1,25 +1,48 @@
 #include "core/common/file_io.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <random>
 #include <system_error>
 #include <utility>
 #include <vector>
 
+#include "core/common/platform_file.h"
+
 namespace probecycle {
+
+namespace fs = std::filesystem;
+
+std::filesystem::path path_from_utf8(std::string_view utf8) {
+    // fs::path(std::string) takes the narrow text in the system's code page,
+    // which on Windows is not UTF-8; from char8_t it is UTF-8 everywhere.
+    return {std::u8string(utf8.begin(), utf8.end())};
+}
+
+std::string utf8_from_path(const std::filesystem::path& path) {
+    const std::u8string text = path.u8string();
+    return {text.begin(), text.end()};
+}
+
+bool is_windows_device_name(std::string_view file_name) {
+    // Windows takes CON, PRN, AUX, NUL, COM1-9 and LPT1-9 as devices in any
+    // folder, whatever the extension and case ("nul.csv", "Com1.txt"), and
+    // ignores trailing dots and spaces ("CON ."). Microsoft's "Naming Files,
+    // Paths, and Namespaces".
+    std::string stem(file_name.substr(0, file_name.find('.')));
+    while (!stem.empty() && (stem.back() == ' ' || stem.back() == '.')) stem.pop_back();
+    for (char& c : stem) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (stem == "CON" || stem == "PRN" || stem == "AUX" || stem == "NUL") return true;
+    return stem.size() == 4 && (stem.compare(0, 3, "COM") == 0 || stem.compare(0, 3, "LPT") == 0) &&
+           stem[3] >= '1' && stem[3] <= '9';
+}
 
 namespace {
 
@@ -38,16 +61,16 @@ Message reason(const char* code, const char* text) {
     return make_message(code, "FileError", text);
 }
 
-// The system's own words for an errno value (not translated: they come from
-// the C library).
-Message system_reason(int error_number) {
+// The system's own words for an error (not translated: they come from the C
+// library or Windows).
+Message system_reason(const std::error_code& error) {
     Message m = reason("system_error", "%1");
-    m.args = {text_arg("system_error", std::strerror(error_number))};
+    m.args = {text_arg("system_error", error.message())};
     return m;
 }
 
-Message not_regular(const struct stat& st) {
-    if (S_ISDIR(st.st_mode)) {
+Message not_regular(fs::file_type type) {
+    if (type == fs::file_type::directory) {
         return reason("is_a_directory", QT_TRANSLATE_NOOP("FileError", "it is a directory"));
     }
     return reason("not_a_regular_file",
@@ -83,11 +106,14 @@ Message too_large(std::optional<std::uintmax_t> size_bytes, std::size_t max_byte
     throw FileError(FileError::Action::write, path, why);
 }
 
+[[noreturn]] void fail_read(const std::string& path, const Message& why) {
+    throw FileError(FileError::Action::read, path, why);
+}
+
 // Where a link leads, hop by hop, to a path that is not a link (at most
 // kMaxLinkHops, as the kernel's own limit), or nullopt for a loop.
 constexpr int kMaxLinkHops = 40;
-std::optional<std::filesystem::path> end_of_links(const std::filesystem::path& start) {
-    namespace fs = std::filesystem;
+std::optional<fs::path> end_of_links(const fs::path& start) {
     fs::path at = start;
     for (int hop = 0; hop < kMaxLinkHops; ++hop) {
         std::error_code ec;
@@ -99,46 +125,57 @@ std::optional<std::filesystem::path> end_of_links(const std::filesystem::path& s
     return std::nullopt;
 }
 
+bool writable(fs::perms perms) {
+    constexpr fs::perms any_write =
+        fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+    return (perms & any_write) != fs::perms::none;
+}
+
 // Where the bytes go: the target of a symbolic link (so the link survives
 // the rename), an existing regular file, or a new path. Anything else is
 // refused, so a device, a FIFO or a directory is never replaced, nor a file
 // its owner made read-only.
-std::string write_target(const std::string& path_given) {
-    struct stat link {};
-    if (::lstat(path_given.c_str(), &link) != 0) {
-        if (errno == ENOENT) return path_given;  // a new file
-        fail_write(path_given, system_reason(errno));
+fs::path write_target(const std::string& given) {
+    fs::path path_given = path_from_utf8(given);
+#ifdef _WIN32
+    if (is_windows_device_name(utf8_from_path(path_given.filename()))) {
+        fail_write(given, reason("device_name",
+                                 QT_TRANSLATE_NOOP("FileError",
+                                                   "its name is a Windows device's (CON, PRN, "
+                                                   "AUX, NUL, COM1-9, LPT1-9, with any "
+                                                   "extension); give another name")));
     }
-    std::string path = path_given;
-    if (S_ISLNK(link.st_mode)) {
-        char* resolved = ::realpath(path_given.c_str(), nullptr);
-        if (resolved == nullptr) {
-            if (errno != ENOENT) fail_write(path_given, system_reason(errno));
+#endif
+    std::error_code ec;
+    const fs::file_status link = fs::symlink_status(path_given, ec);
+    if (!fs::exists(link) && ec == std::errc::no_such_file_or_directory) return path_given;  // new
+    if (ec) fail_write(given, system_reason(ec));
+    fs::path path = path_given;
+    if (fs::is_symlink(link)) {
+        path = fs::canonical(path_given, ec);
+        if (ec) {
+            if (ec != std::errc::no_such_file_or_directory) fail_write(given, system_reason(ec));
             // A link (or a chain of links) to a file that does not exist yet:
             // write it where the last link points, when that folder exists,
             // keeping every link.
-            const std::optional<std::filesystem::path> where = end_of_links(path_given);
-            std::error_code ec;
-            if (!where || !std::filesystem::is_directory(where->parent_path().empty()
-                                                             ? std::filesystem::path(".")
-                                                             : where->parent_path(),
-                                                         ec)) {
-                fail_write(path_given,
-                           reason("dangling_link",
-                                  QT_TRANSLATE_NOOP("FileError",
-                                                    "it is a symbolic link to a folder that "
-                                                    "does not exist")));
+            const std::optional<fs::path> where = end_of_links(path_given);
+            std::error_code dir_ec;
+            if (!where ||
+                !fs::is_directory(
+                    where->parent_path().empty() ? fs::path(".") : where->parent_path(), dir_ec)) {
+                fail_write(given, reason("dangling_link",
+                                         QT_TRANSLATE_NOOP("FileError",
+                                                           "it is a symbolic link to a folder that "
+                                                           "does not exist")));
             }
-            return where->string();
+            return *where;
         }
-        path = resolved;
-        std::free(resolved);
     }
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0) {
-        if (!S_ISREG(st.st_mode)) fail_write(path_given, not_regular(st));
-        if ((st.st_mode & 0222) == 0) {
-            fail_write(path_given,
+    const fs::file_status st = fs::status(path, ec);
+    if (!ec && fs::exists(st)) {
+        if (!fs::is_regular_file(st)) fail_write(given, not_regular(st.type()));
+        if (!writable(st.permissions())) {
+            fail_write(given,
                        reason("read_only", QT_TRANSLATE_NOOP("FileError",
                                                              "it is read-only; ProbeCycle does "
                                                              "not replace a protected file")));
@@ -147,15 +184,20 @@ std::string write_target(const std::string& path_given) {
     return path;
 }
 
-// The longest file name most file systems take (NAME_MAX on Linux).
+// The longest file name most file systems take (NAME_MAX on Linux, 255
+// UTF-16 units on NTFS), in bytes.
 constexpr std::size_t kMaxNameBytes = 255;
-constexpr std::size_t kTempSuffixBytes = 6;  // mkstemp's XXXXXX
+constexpr std::size_t kTempSuffixBytes = 6;  // random letters and digits
 
 // The start of a temporary file's name for `base`: hidden, and short enough
-// that the whole name fits even when `base` itself is as long as a name can be.
+// that the whole name fits even when `base` itself is as long as a name can
+// be. A cut never splits a UTF-8 character.
 std::string temp_prefix(const std::string& base, const char* kind = ".tmp-") {
     const std::string_view tail = kind;
-    const std::size_t room = kMaxNameBytes - 1 - tail.size() - kTempSuffixBytes;
+    std::size_t room = std::min(base.size(), kMaxNameBytes - 1 - tail.size() - kTempSuffixBytes);
+    while (room > 0 && room < base.size() &&
+           (static_cast<unsigned char>(base[room]) & 0xC0) == 0x80)
+        --room;
     std::string prefix(1, '.');
     prefix.append(base, 0, room);
     prefix.append(tail);
@@ -163,7 +205,6 @@ std::string temp_prefix(const std::string& base, const char* kind = ".tmp-") {
 }
 
 bool is_temp_name(const std::string& name, const std::string& prefix) {
-    // mkstemp replaces XXXXXX with six letters or digits.
     if (name.size() != prefix.size() + kTempSuffixBytes ||
         name.compare(0, prefix.size(), prefix) != 0)
         return false;
@@ -174,15 +215,27 @@ bool is_temp_name(const std::string& name, const std::string& prefix) {
     return true;
 }
 
+// `prefix` and six random letters or digits: a name for a temporary file or
+// folder, to be created exclusively (a name taken is tried again).
+std::string temp_name(const std::string& prefix) {
+    static constexpr std::string_view kChars =
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+    thread_local std::mt19937_64 random{std::random_device{}()};
+    std::uniform_int_distribution<std::size_t> pick(0, kChars.size() - 1);
+    std::string name = prefix;
+    for (std::size_t i = 0; i < kTempSuffixBytes; ++i) name += kChars[pick(random)];
+    return name;
+}
+constexpr int kTempNameTries = 100;
+
 // Temporary files (or folders) of this writer for `base` that a killed write
 // left: of our naming and not touched for a minute (a concurrent write's is
 // younger). Best effort: what cannot be removed stays.
-void remove_stale_temps(const std::string& dir, const std::string& prefix, bool folders = false) {
-    namespace fs = std::filesystem;
+void remove_stale_temps(const fs::path& dir, const std::string& prefix, bool folders = false) {
     const auto cutoff = fs::file_time_type::clock::now() - std::chrono::minutes(1);
     std::error_code ec;
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::string name = it->path().filename().string();
+        const std::string name = utf8_from_path(it->path().filename());
         if (!is_temp_name(name, prefix)) continue;
         std::error_code entry_ec;
         if (it->is_symlink(entry_ec)) continue;
@@ -192,77 +245,87 @@ void remove_stale_temps(const std::string& dir, const std::string& prefix, bool 
     }
 }
 
-std::pair<std::string, std::string> split_path(const std::string& path) {
-    const std::size_t slash = path.find_last_of('/');
-    if (slash == std::string::npos) return {".", path};
-    return {slash == 0 ? "/" : path.substr(0, slash), path.substr(slash + 1)};
+// The folder a path is in ("." for a bare name) and its last part.
+std::pair<fs::path, std::string> split_path(const fs::path& path) {
+    const fs::path parent = path.parent_path();
+    return {parent.empty() ? fs::path(".") : parent, utf8_from_path(path.filename())};
 }
 
 // The folder could not take a new file: say which folder.
-Message folder_reason(const std::string& dir, int error_number) {
-    if (error_number != EACCES && error_number != EPERM && error_number != EROFS)
-        return system_reason(error_number);
+Message folder_reason(const fs::path& dir, const std::error_code& error) {
+    if (error != std::errc::permission_denied && error != std::errc::operation_not_permitted &&
+        error != std::errc::read_only_file_system)
+        return system_reason(error);
     Message m = reason("folder_not_writable",
                        QT_TRANSLATE_NOOP("FileError", "the folder %1 cannot be written to (%2)"));
-    m.args = {text_arg("folder", dir), text_arg("system_error", std::strerror(error_number))};
+    m.args = {text_arg("folder", utf8_from_path(dir)), text_arg("system_error", error.message())};
     return m;
 }
 
 // A file written completely beside its target, not yet renamed into place.
 struct Prepared {
-    std::string given;   // as the caller named it, for messages
-    std::string target;  // where the rename puts it
-    std::string temp;
+    std::string given;  // as the caller named it, for messages
+    fs::path target;    // where the rename puts it
+    fs::path temp;
 };
-
-// False when a write failed (errno says why).
-bool write_all(int fd, std::string_view contents) {
-    const char* data = contents.data();
-    std::size_t left = contents.size();
-    while (left > 0) {
-        const ssize_t n = ::write(fd, data, left);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        data += n;
-        left -= static_cast<std::size_t>(n);
-    }
-    return true;
-}
 
 // The complete file in a temporary beside `target`, flushed to the disk,
 // with the mode of the file it will replace (or 0644).
-Prepared prepare(const std::string& given, const std::string& target, std::string_view contents) {
-    mode_t mode = 0644;
-    struct stat existing {};
-    if (::stat(target.c_str(), &existing) == 0) mode = existing.st_mode & 07777;
+Prepared prepare(const std::string& given, const fs::path& target, std::string_view contents) {
+    unsigned mode = 0644;
+    std::error_code ec;
+    const fs::file_status existing = fs::status(target, ec);
+    if (!ec && fs::exists(existing)) mode = static_cast<unsigned>(existing.permissions()) & 07777;
     const auto [dir, base] = split_path(target);
-    std::string temp = dir + "/" + temp_prefix(base) + "XXXXXX";
-    const int fd = ::mkstemp(temp.data());
-    if (fd < 0) fail_write(given, folder_reason(dir, errno));
-    bool ok = write_all(fd, contents);
-    const int saved_errno = ok ? 0 : errno;
-    ok = ok && ::fsync(fd) == 0;
-    ok = (::close(fd) == 0) && ok;
-    // mkstemp makes the file 0600: give it the old file's mode, or 0644.
-    ok = ok && ::chmod(temp.c_str(), mode) == 0;
-    if (!ok) {
-        const int err = saved_errno != 0 ? saved_errno : errno;
-        ::unlink(temp.c_str());
-        fail_write(given, system_reason(err != 0 ? err : EIO));
+    const std::string prefix = temp_prefix(base);
+    for (int attempt = 0; attempt < kTempNameTries; ++attempt) {
+        const fs::path temp = dir / path_from_utf8(temp_name(prefix));
+        std::error_code error;
+        switch (platform::write_new_file(temp, contents, mode, error)) {
+            case platform::NewFile::written:
+                return {given, target, temp};
+            case platform::NewFile::exists:
+                continue;
+            case platform::NewFile::failed:
+                fail_write(given, folder_reason(dir, error));
+        }
     }
-    return {given, target, temp};
+    fail_write(given, system_reason(std::make_error_code(std::errc::file_exists)));
 }
 
 // Two outputs that name one file (the same path, or through a link).
-bool same_file(const std::string& a, const std::string& b) {
+bool same_file(const fs::path& a, const fs::path& b) {
     std::error_code ec;
-    const auto canonical_a = std::filesystem::weakly_canonical(a, ec);
-    const auto canonical_b = std::filesystem::weakly_canonical(b, ec);
+    const auto canonical_a = fs::weakly_canonical(a, ec);
+    const auto canonical_b = fs::weakly_canonical(b, ec);
     return a == b || (!ec && canonical_a == canonical_b);
 }
 
-void unlink_all(const std::vector<Prepared>& prepared) {
-    for (const Prepared& p : prepared) ::unlink(p.temp.c_str());
+void remove_all_temps(const std::vector<Prepared>& prepared) {
+    std::error_code ignored;
+    for (const Prepared& p : prepared) fs::remove(p.temp, ignored);
+}
+
+// An empty folder of a new name `prefix`XXXXXX in `parent`.
+fs::path make_temp_folder(const std::string& given, const fs::path& parent,
+                          const std::string& prefix) {
+    for (int attempt = 0; attempt < kTempNameTries; ++attempt) {
+        fs::path temp = parent / path_from_utf8(temp_name(prefix));
+        std::error_code ec;
+        if (fs::create_directory(temp, ec)) return temp;
+        if (ec) fail_write(given, folder_reason(parent, ec));
+    }
+    fail_write(given, system_reason(std::make_error_code(std::errc::file_exists)));
+}
+
+// A free name beside `folder`'s for the old folder during a swap (Windows).
+fs::path aside_name(const fs::path& parent, const std::string& prefix) {
+    for (int attempt = 0; attempt < kTempNameTries; ++attempt) {
+        fs::path aside = parent / path_from_utf8(temp_name(prefix));
+        std::error_code ec;
+        if (!fs::exists(fs::symlink_status(aside, ec))) return aside;
+    }
+    return parent / path_from_utf8(temp_name(prefix));
 }
 
 }  // namespace
@@ -278,7 +341,7 @@ Message FileError::to_message() const {
 }
 
 void write_files_atomically(const std::vector<OutputFile>& files) {
-    std::vector<std::string> targets;
+    std::vector<fs::path> targets;
     for (const OutputFile& file : files) {
         targets.push_back(write_target(file.path));
         for (std::size_t i = 0; i + 1 < targets.size(); ++i) {
@@ -299,15 +362,15 @@ void write_files_atomically(const std::vector<OutputFile>& files) {
             prepared.push_back(prepare(files[i].path, targets[i], files[i].contents));
         }
     } catch (...) {
-        unlink_all(prepared);
+        remove_all_temps(prepared);
         throw;
     }
     // Every file is complete: now the renames, each atomic.
     for (std::size_t i = 0; i < prepared.size(); ++i) {
-        if (std::rename(prepared[i].temp.c_str(), prepared[i].target.c_str()) != 0) {
-            const int err = errno;
-            unlink_all({prepared.begin() + static_cast<std::ptrdiff_t>(i), prepared.end()});
-            fail_write(prepared[i].given, system_reason(err));
+        const std::error_code error = platform::replace_file(prepared[i].temp, prepared[i].target);
+        if (error) {
+            remove_all_temps({prepared.begin() + static_cast<std::ptrdiff_t>(i), prepared.end()});
+            fail_write(prepared[i].given, system_reason(error));
         }
     }
     for (const Prepared& p : prepared) {
@@ -322,15 +385,16 @@ void write_file_atomically(const std::string& path, std::string_view contents) {
 
 void write_folder_atomically(const std::string& folder_given,
                              const std::vector<OutputFile>& files) {
-    namespace fs = std::filesystem;
     // The folder as it stands: a link to a folder is followed (the link stays).
     std::error_code ec;
-    std::string folder = folder_given;
-    while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
+    std::string trimmed = folder_given;
+    while (trimmed.size() > 1 && (trimmed.back() == '/' || trimmed.back() == '\\'))
+        trimmed.pop_back();
+    fs::path folder = path_from_utf8(trimmed);
     if (fs::is_symlink(fs::symlink_status(folder, ec))) {
         const fs::path resolved = fs::canonical(folder, ec);
-        if (ec) fail_write(folder_given, system_reason(ec.value()));
-        folder = resolved.string();
+        if (ec) fail_write(folder_given, system_reason(ec));
+        folder = resolved;
     }
     const fs::file_status status = fs::status(folder, ec);
     const bool exists = fs::exists(status);
@@ -347,14 +411,14 @@ void write_folder_atomically(const std::string& folder_given,
         std::string others;
         int count = 0;
         for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-            const std::string name = it->path().filename().string();
+            const std::string name = utf8_from_path(it->path().filename());
             const bool ours = std::any_of(files.begin(), files.end(),
                                           [&](const OutputFile& f) { return f.path == name; });
             std::error_code entry_ec;
             if (ours && it->is_regular_file(entry_ec) && !it->is_symlink(entry_ec)) continue;
             if (++count <= 3) others += (others.empty() ? "" : ", ") + name;
         }
-        if (ec) fail_write(folder_given, folder_reason(folder, ec.value()));
+        if (ec) fail_write(folder_given, folder_reason(folder, ec));
         if (count > 0) {
             if (count > 3) others += ", ...";
             Message m = reason("folder_holds_other_files",
@@ -372,55 +436,52 @@ void write_folder_atomically(const std::string& folder_given,
                    reason("no_parent_folder",
                           QT_TRANSLATE_NOOP("FileError", "its parent folder does not exist")));
     }
-    std::string temp = parent + "/" + temp_prefix(base, ".new-") + "XXXXXX";
-    if (::mkdtemp(temp.data()) == nullptr) fail_write(folder_given, folder_reason(parent, errno));
+    const fs::path temp = make_temp_folder(folder_given, parent, temp_prefix(base, ".new-"));
+    const fs::path aside = aside_name(parent, temp_prefix(base, ".old-"));
     try {
         std::vector<OutputFile> inside;
         inside.reserve(files.size());
-        for (const OutputFile& f : files) inside.push_back({temp + "/" + f.path, f.contents});
+        for (const OutputFile& f : files)
+            inside.push_back({utf8_from_path(temp / path_from_utf8(f.path)), f.contents});
         write_files_atomically(inside);
-        ::chmod(temp.c_str(), 0755);
-        if (!exists) {
-            if (std::rename(temp.c_str(), folder.c_str()) != 0)
-                fail_write(folder_given, system_reason(errno));
-        } else {
-            // The new folder and the old swap places in one step: a reader
-            // sees the old set or the new, never a mix. The old then goes.
-            if (::renameat2(AT_FDCWD, temp.c_str(), AT_FDCWD, folder.c_str(), RENAME_EXCHANGE) != 0)
-                fail_write(folder_given, system_reason(errno));
-        }
+        fs::permissions(temp, fs::perms(0755), ec);
+        const std::error_code error = exists ? platform::exchange_folders(temp, folder, aside)
+                                             : platform::replace_file(temp, folder);
+        if (error) fail_write(folder_given, system_reason(error));
     } catch (...) {
         fs::remove_all(temp, ec);
         throw;
     }
-    fs::remove_all(temp, ec);  // the old set, after an exchange
+    // The old set: at the temporary's name after a swap in one step, aside
+    // after a swap in two.
+    fs::remove_all(temp, ec);
+    fs::remove_all(aside, ec);
     remove_stale_temps(parent, temp_prefix(base, ".new-"), true);
+    remove_stale_temps(parent, temp_prefix(base, ".old-"), true);
 }
 
-std::string read_text_file(const std::string& path, std::size_t max_bytes) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) {
-        throw FileError(FileError::Action::read, path, system_reason(errno));
-    }
-    if (S_ISDIR(st.st_mode)) throw FileError(FileError::Action::read, path, not_regular(st));
-    if (S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) > max_bytes) {
-        throw FileError(FileError::Action::read, path,
-                        too_large(static_cast<std::uintmax_t>(st.st_size), max_bytes));
+std::string read_text_file(const std::string& given, std::size_t max_bytes) {
+    const fs::path path = path_from_utf8(given);
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
+    if (ec) fail_read(given, system_reason(ec));  // "No such file or directory" among them
+    if (fs::is_directory(st)) fail_read(given, not_regular(st.type()));
+    if (fs::is_regular_file(st)) {
+        const std::uintmax_t size = fs::file_size(path, ec);
+        if (!ec && size > max_bytes) fail_read(given, too_large(size, max_bytes));
     }
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError(FileError::Action::read, path, system_reason(errno));
+    if (!in) fail_read(given, system_reason(std::error_code(errno, std::generic_category())));
     // Read at most one byte over the limit, so a pipe or a device cannot make
     // the text grow without bound.
     std::string text;
-    char buffer[65536];
+    std::array<char, 65536> buffer{};
     while (in && text.size() <= max_bytes) {
-        in.read(buffer, sizeof buffer);
-        text.append(buffer, static_cast<std::size_t>(in.gcount()));
+        in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+        text.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
     }
-    if (in.bad()) throw FileError(FileError::Action::read, path, system_reason(EIO));
-    if (text.size() > max_bytes) {
-        throw FileError(FileError::Action::read, path, too_large(std::nullopt, max_bytes));
-    }
+    if (in.bad()) fail_read(given, system_reason(std::make_error_code(std::errc::io_error)));
+    if (text.size() > max_bytes) fail_read(given, too_large(std::nullopt, max_bytes));
     return text;
 }
 

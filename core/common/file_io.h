@@ -6,6 +6,7 @@
 // read_text_file, with one size limit.
 
 #include <cstddef>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -69,11 +70,25 @@ void write_files_atomically(const std::vector<OutputFile>& files);
 // A set of files as one folder (`compare simulate --out`); each file's path
 // is its name in the folder. The set is built in a temporary folder beside
 // `folder` and renamed into place, or swapped with the existing folder in
-// one step, so a reader sees the old set or the new, never a mix. An existing
+// one step, so a reader sees the old set or the new, never a mix. (Windows
+// has no such swap: the old folder is renamed aside and the new one in, so
+// a reader between the two renames finds no folder, never a mix either.) An existing
 // folder is replaced only when it holds nothing but files of the set's names
 // (an earlier set) or nothing at all; otherwise refused, naming what else it
 // holds. A symbolic link to a folder is followed.
 void write_folder_atomically(const std::string& folder, const std::vector<OutputFile>& files);
+
+// A path given as UTF-8 text (as the CLI and the window pass every path) for
+// std::filesystem, and back. On Windows a std::string path would be read in
+// the system's code page, and a Chinese or Russian folder name lost.
+std::filesystem::path path_from_utf8(std::string_view utf8);
+std::string utf8_from_path(const std::filesystem::path& path);
+
+// A file name Windows takes for a device in any folder: CON, PRN, AUX, NUL,
+// COM1-9 or LPT1-9, with any extension and in any case ("nul.csv"). On
+// Windows the writers refuse such a name (writing there would go to the
+// device); elsewhere it is an ordinary name.
+bool is_windows_device_name(std::string_view file_name);
 
 // Whole file as text, at most `max_bytes`. A directory or a larger file is
 // refused. Pipes and devices are read (a scenario may come from a pipe).

@@ -602,6 +602,10 @@
         <source>the folder holds %1 entries other than the files this command writes (%2); give a new or empty folder</source>
         <translation>в папке есть другие записи, кроме файлов этой команды (%1: %2); укажите новую или пустую папку</translation>
     </message>
+    <message>
+        <source>its name is a Windows device&apos;s (CON, PRN, AUX, NUL, COM1-9, LPT1-9, with any extension); give another name</source>
+        <translation>это имя устройства Windows (CON, PRN, AUX, NUL, COM1-9, LPT1-9, с любым расширением); дайте другое имя</translation>
+    </message>
 </context>
 <context>
     <name>LinuxCncIni</name>

@@ -602,6 +602,10 @@
         <source>the folder holds %1 entries other than the files this command writes (%2); give a new or empty folder</source>
         <translation>该文件夹中除本命令写入的文件外还有 %1 个条目（%2）；请指定新的或空的文件夹</translation>
     </message>
+    <message>
+        <source>its name is a Windows device&apos;s (CON, PRN, AUX, NUL, COM1-9, LPT1-9, with any extension); give another name</source>
+        <translation>该名称是 Windows 设备名（CON、PRN、AUX、NUL、COM1-9、LPT1-9，扩展名不限）；请换一个名称</translation>
+    </message>
 </context>
 <context>
     <name>LinuxCncIni</name>

@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <algorithm>
 
 #include <cmath>
@@ -10,11 +9,13 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/common/file_io.h"
 #include "core/cycle/cycle_report.h"
 #include "core/cycle/scenario.h"
 #include "core/cycle/sweep.h"
@@ -70,7 +71,7 @@ class CycleCli : public testing::Test {
         std::string name = testing::UnitTest::GetInstance()->current_test_info()->name();
         std::replace(name.begin(), name.end(), '/', '_');
         dir_ = fs::temp_directory_path() /
-               ("probecycle_cli_test_" + std::to_string(::getpid()) + "_" + name);
+               ("probecycle_cli_test_" + std::to_string(std::random_device{}()) + "_" + name);
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
@@ -110,10 +111,30 @@ TEST_F(CycleCli, DefaultsAreAcceptedByEvaluate) {
     const CliRun defaults = run({"defaults"});
     ASSERT_EQ(defaults.exit_code, 0) << defaults;
     const fs::path file = dir_ / "defaults.json";
-    std::ofstream(file) << defaults.out;
+    std::ofstream(file, std::ios::binary) << defaults.out;
     const json from_file = run_json({"evaluate", file.string()});
     const json built_in = run_json({"evaluate"});
     EXPECT_EQ(from_file, built_in);
+}
+
+// A Chinese or Russian user's folders, in a path given on the command line
+// (on Windows the CLI takes its words from the wide command line, not the
+// code page's argv) and in the messages naming them.
+TEST_F(CycleCli, PathsInChineseAndRussianAreReadWrittenAndNamed) {
+    const std::string folder =
+        utf8_from_path(dir_) +
+        "/\u6d4b\u91cf \u0418\u0437\u043c\u0435\u0440\u0435\u043d\u0438\u044f";
+    ASSERT_TRUE(fs::create_directory(path_from_utf8(folder)));
+    const std::string scenario =
+        folder + "/\u5b54_\u043e\u0442\u0432\u0435\u0440\u0441\u0442\u0438\u0435.json";
+    write_file_atomically(scenario, run({"defaults"}).out);
+    const std::string report = folder + "/\u62a5\u544a.csv";
+    const CliRun r = run({"report", scenario, "--csv", report});
+    ASSERT_EQ(r.exit_code, 0) << r;
+    EXPECT_EQ(read_text_file(report).rfind("# ProbeCycle", 0), 0u) << read_text_file(report);
+    const CliRun missing = run({"evaluate", folder + "/\u65e0.json"});
+    EXPECT_EQ(missing.exit_code, 2);
+    EXPECT_NE(missing.err.find(folder + "/\u65e0.json"), std::string::npos) << missing;
 }
 
 // ---------------------------------------------------------------------------
@@ -422,7 +443,7 @@ TEST_F(CycleCli, SweepCsvWritesTheFile) {
     EXPECT_TRUE(to_file.out.empty()) << to_file;
     EXPECT_FALSE(to_file.err.empty());
     // Replaces an existing file.
-    std::ofstream(file) << "old";
+    std::ofstream(file, std::ios::binary) << "old";
     ASSERT_EQ(
         run({"sweep", "--from", "100", "--to", "2000", "--step", "50", "--csv", file.string()})
             .exit_code,
@@ -433,7 +454,7 @@ TEST_F(CycleCli, SweepCsvWritesTheFile) {
 // `report` writes the window's CSV report: the core's csv_report of the scenario.
 TEST_F(CycleCli, ReportIsTheCoreCsvReportOnStdoutOrInAFile) {
     // The golden file's day (golden_test.cpp).
-    ::setenv("SOURCE_DATE_EPOCH", "1764115200", 1);
+    cli_test::set_env("SOURCE_DATE_EPOCH", "1764115200");
     const CliRun printed = run({"report", "--set", "cycle.feature=bore"});
     ASSERT_EQ(printed.exit_code, 0) << printed;
     EXPECT_EQ(printed.out, slurp(data_file("golden/report_feature_bore.csv")));
@@ -443,7 +464,7 @@ TEST_F(CycleCli, ReportIsTheCoreCsvReportOnStdoutOrInAFile) {
     EXPECT_TRUE(written.out.empty()) << written;
     EXPECT_EQ(slurp(file), printed.out);
     EXPECT_EQ(run({"report", "--set", "cycle.feature=sphere"}).exit_code, 2);
-    ::unsetenv("SOURCE_DATE_EPOCH");
+    cli_test::set_env("SOURCE_DATE_EPOCH", nullptr);
 }
 
 // The report opens with its title, today's date, the version and
@@ -473,7 +494,7 @@ TEST_F(CycleCli, FailedSweepLeavesAnExistingFileUntouched) {
         {"--set", "machine.scan_period_s=nan", "--from", "100", "--to", "1000", "--step", "100"},
     };
     for (const std::vector<std::string>& extra : bad) {
-        std::ofstream(file) << "old content\n";
+        std::ofstream(file, std::ios::binary) << "old content\n";
         std::vector<std::string> args = {"sweep"};
         args.insert(args.end(), extra.begin(), extra.end());
         args.insert(args.end(), {"--csv", file.string()});

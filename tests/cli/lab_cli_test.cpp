@@ -2,7 +2,6 @@
 // stdout, stderr and exit status, and the files it writes or must not write.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
@@ -80,9 +79,9 @@ TEST(LabCalibrateRing, ExactFileGivesTheKnownAnswers) {
 // Runs a command with --report FILE on the golden files' day (golden_test.cpp)
 // and returns the report ("" when the command failed).
 std::string report_on_golden_day(const std::string& arguments, const fs::path& report) {
-    ::setenv("SOURCE_DATE_EPOCH", "1764115200", 1);
+    cli_test::set_env("SOURCE_DATE_EPOCH", "1764115200");
     const CliRun run = cli_test::run(arguments + " --report " + cli_test::quote(report.string()));
-    ::unsetenv("SOURCE_DATE_EPOCH");
+    cli_test::set_env("SOURCE_DATE_EPOCH", nullptr);
     EXPECT_EQ(run.exit_code, 0) << run.err;
     return run.exit_code == 0 ? cli_test::read(report) : std::string();
 }

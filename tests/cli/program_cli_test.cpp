@@ -17,9 +17,9 @@ namespace {
 
 // On the golden files' day, 2026-01-15 (tests/core/program/program_test_plans.h).
 CliRun run_on_golden_day(const std::string& arguments) {
-    ::setenv("SOURCE_DATE_EPOCH", "1768435200", 1);
+    cli_test::set_env("SOURCE_DATE_EPOCH", "1768435200");
     CliRun result = run(arguments);
-    ::unsetenv("SOURCE_DATE_EPOCH");
+    cli_test::set_env("SOURCE_DATE_EPOCH", nullptr);
     return result;
 }
 

@@ -1,7 +1,6 @@
 #include "ui/common/file_write.h"
 
 #include <QDir>
-#include <QFile>
 #include <QFileInfo>
 #include <QStandardPaths>
 #include <string_view>
@@ -11,10 +10,14 @@
 
 namespace probecycle::ui {
 
+std::string core_path(const QString& path) {
+    return path.toStdString();  // UTF-8
+}
+
 bool write_file(const QString& path, const QByteArray& bytes, QString& error) {
     try {
         write_file_atomically(
-            QFile::encodeName(path).toStdString(),
+            core_path(path),
             std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
     } catch (const FileError& e) {
         error = translate(e.reason());

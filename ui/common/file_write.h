@@ -7,8 +7,14 @@
 
 #include <QByteArray>
 #include <QString>
+#include <string>
 
 namespace probecycle::ui {
+
+// A path for the core's file functions, which take UTF-8 on every platform
+// (core/common/file_io.h). QFile::encodeName would give the system's code
+// page on Windows, where a Chinese or Russian folder name would be lost.
+std::string core_path(const QString& path);
 
 // False on failure, with `error` the reason in the interface language.
 bool write_file(const QString& path, const QByteArray& bytes, QString& error);

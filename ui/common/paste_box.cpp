@@ -8,6 +8,7 @@
 #include <QTextCursor>
 
 #include "core/common/file_io.h"
+#include "ui/common/file_write.h"
 #include "ui/common/text_format.h"
 
 namespace probecycle::ui {
@@ -34,7 +35,7 @@ std::optional<QString> import_csv_into(QPlainTextEdit* editor, const QString& pa
     // in bad_alloc) and the same reasons, translated.
     std::string bytes;
     try {
-        bytes = read_text_file(QFile::encodeName(path).toStdString());
+        bytes = read_text_file(core_path(path));
     } catch (const FileError& e) {
         error = [name = QFileInfo(path).fileName(), reason = e.reason()] {
             return tr_paste(

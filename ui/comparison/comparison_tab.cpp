@@ -3,7 +3,6 @@
 #include <QAbstractTableModel>
 #include <QDir>
 #include <QEvent>
-#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -91,9 +90,10 @@ std::optional<FileStamp> stamp_of(const std::string& path) {
     FileStamp stamp{path};
     if (path.empty()) return stamp;
     std::error_code error;
-    stamp.modified = std::filesystem::last_write_time(path, error);
+    const std::filesystem::path file = path_from_utf8(path);
+    stamp.modified = std::filesystem::last_write_time(file, error);
     if (error) return std::nullopt;
-    stamp.size = std::filesystem::file_size(path, error);
+    stamp.size = std::filesystem::file_size(file, error);
     if (error) return std::nullopt;
     return stamp;
 }
@@ -558,9 +558,7 @@ bool ComparisonTab::run() {
 }
 
 ComparisonInput ComparisonTab::read_files() {
-    const auto path = [this](InputFile which) {
-        return QFile::encodeName(file(which)).toStdString();
-    };
+    const auto path = [this](InputFile which) { return core_path(file(which)); };
     const ComparisonFiles files{path(InputFile::plan),     path(InputFile::reference_cmm),
                                 path(InputFile::test_omm), path(InputFile::reference_omm),
                                 path(InputFile::block_c0), path(InputFile::block_c180)};
@@ -623,9 +621,7 @@ bool ComparisonTab::simulate_example(const QString& folder) {
     try {
         for (const ComparisonExampleFile& f : files) {
             write_file_atomically(
-                QFile::encodeName(dir + QLatin1Char('/') + QString::fromStdString(f.name))
-                    .toStdString(),
-                f.text);
+                core_path(dir + QLatin1Char('/') + QString::fromStdString(f.name)), f.text);
         }
     } catch (const std::exception& e) {
         set_error(error_text(e));
@@ -659,7 +655,7 @@ bool ComparisonTab::export_report(const QString& path, ReportRows rows) {
     const std::optional<std::string> csv = report_csv(rows);
     if (!csv) return false;
     try {
-        write_file_atomically(QFile::encodeName(path).toStdString(), *csv);
+        write_file_atomically(core_path(path), *csv);
     } catch (const std::exception&) {
         show_live_error(export_status_,
                         [this, error = current_error_text()] { return last_error_ = error(); });
@@ -674,8 +670,7 @@ ComparisonProject ComparisonTab::settings(const QString& base_folder) const {
     const QDir base(base_folder);
     const auto stored = [&](const QString& file) {
         if (file.isEmpty()) return std::string();
-        return QFile::encodeName(base_folder.isEmpty() ? file : base.relativeFilePath(file))
-            .toStdString();
+        return core_path(base_folder.isEmpty() ? file : base.relativeFilePath(file));
     };
     ComparisonProject project;
     project.plan = stored(file(InputFile::plan));
@@ -695,7 +690,7 @@ bool ComparisonTab::restore(const ComparisonProject& project, const QString& bas
     const QDir base(base_folder);
     const auto absolute = [&](const std::string& file) {
         if (file.empty()) return QString();
-        const QString name = QFile::decodeName(file.c_str());
+        const QString name = QString::fromStdString(file);  // UTF-8, as core_path() gives
         return base_folder.isEmpty() ? name : QDir::cleanPath(base.absoluteFilePath(name));
     };
     set_file(InputFile::plan, absolute(project.plan));
@@ -721,8 +716,7 @@ bool ComparisonTab::restore(const ComparisonProject& project, const QString& bas
 bool ComparisonTab::save_project(const QString& path) {
     const QString folder = QFileInfo(path).absolutePath();
     try {
-        write_file_atomically(QFile::encodeName(path).toStdString(),
-                              comparison_project_json(settings(folder)));
+        write_file_atomically(core_path(path), comparison_project_json(settings(folder)));
     } catch (const std::exception& e) {
         set_error(error_text(e));
         return false;
@@ -734,7 +728,7 @@ bool ComparisonTab::save_project(const QString& path) {
 bool ComparisonTab::open_project(const QString& path) {
     ComparisonProject project;
     try {
-        project = parse_comparison_project(read_text_file(QFile::encodeName(path).toStdString()));
+        project = parse_comparison_project(read_text_file(core_path(path)));
     } catch (const FileError& e) {
         set_error(error_text(e));
         return false;

@@ -47,7 +47,7 @@ QString kind_title(ProgramKind kind) {
 
 // A file's text by core's reader (the CLI's size limit and reasons).
 std::string read_file(const QString& path) {
-    return read_text_file(QFile::encodeName(path).toStdString());
+    return read_text_file(core_path(path));
 }
 
 }  // namespace

@@ -597,7 +597,7 @@ void MainWindow::restore_settings() {
             current_file = file;
         } else if (!file.isEmpty()) {
             // Edits were discarded at the last quit: the file as saved.
-            const std::string text = read_text_file(QFile::encodeName(file).toStdString());
+            const std::string text = read_text_file(core_path(file));
             if (is_project_text(text)) {
                 const Project project = parse_project(text);
                 scenario = project.scenario;
@@ -831,7 +831,7 @@ bool MainWindow::new_scenario() {
 
 std::optional<std::string> MainWindow::read_or_report(const QString& path, const char* title) {
     try {
-        return read_text_file(QFile::encodeName(path).toStdString());
+        return read_text_file(core_path(path));
     } catch (const FileError& e) {
         report_error(title, tr("%1 could not be read: %2")
                                 .arg(QDir::toNativeSeparators(path), translate(e.reason())));
@@ -876,7 +876,7 @@ bool MainWindow::open_scenario(const QString& path) {
 bool MainWindow::open_asking(const QString& path) {
     std::string text;
     try {
-        text = read_text_file(QFile::encodeName(path).toStdString());
+        text = read_text_file(core_path(path));
     } catch (const FileError&) {
         return open_scenario(path);  // says why it cannot be read, and changes nothing
     }

@@ -22,31 +22,44 @@ TEST(ReportHeader, TitleDateVersionAndSubjectAsCommentLines) {
     EXPECT_FALSE(program_version().empty());
 }
 
+// Sets SOURCE_DATE_EPOCH, or removes it for nullptr.
+void set_epoch(const char* value) {
+#ifdef _WIN32
+    _putenv_s("SOURCE_DATE_EPOCH", value != nullptr ? value : "");  // "" removes it
+#else
+    if (value != nullptr) {
+        ::setenv("SOURCE_DATE_EPOCH", value, 1);
+    } else {
+        ::unsetenv("SOURCE_DATE_EPOCH");
+    }
+#endif
+}
+
 // The date is today's, or SOURCE_DATE_EPOCH's, so that tests and reproducible
 // runs write the same bytes.
 TEST(ReportHeader, DateIsTodayOrThatOfSourceDateEpoch) {
     const char* before = std::getenv("SOURCE_DATE_EPOCH");
     const std::optional<std::string> saved =
         before != nullptr ? std::optional<std::string>(before) : std::nullopt;
-    ::setenv("SOURCE_DATE_EPOCH", "1764115200", 1);
+    set_epoch("1764115200");
     EXPECT_EQ(report_date(), "2025-11-26");
-    ::setenv("SOURCE_DATE_EPOCH", "1764201599", 1);  // the last second of that day
+    set_epoch("1764201599");  // the last second of that day
     EXPECT_EQ(report_date(), "2025-11-26");
-    ::setenv("SOURCE_DATE_EPOCH", "0", 1);
+    set_epoch("0");
     EXPECT_EQ(report_date(), "1970-01-01");
-    ::unsetenv("SOURCE_DATE_EPOCH");
+    set_epoch(nullptr);
     const std::string today = report_date();
     ASSERT_EQ(today.size(), 10U) << today;
     EXPECT_EQ(today[4], '-');
     EXPECT_EQ(today[7], '-');
     EXPECT_GE(today, "2025-01-01");
     // Not a number of seconds: ignored, today's date.
-    ::setenv("SOURCE_DATE_EPOCH", "yesterday", 1);
+    set_epoch("yesterday");
     EXPECT_EQ(report_date(), today);
     if (saved) {
-        ::setenv("SOURCE_DATE_EPOCH", saved->c_str(), 1);
+        set_epoch(saved->c_str());
     } else {
-        ::unsetenv("SOURCE_DATE_EPOCH");
+        set_epoch(nullptr);
     }
 }
 

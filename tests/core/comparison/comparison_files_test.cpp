@@ -5,10 +5,10 @@
 #include "core/comparison/comparison_files.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 
 #include "core/common/csv_reader.h"
@@ -50,7 +50,7 @@ class ComparisonFilesTest : public testing::Test {
   protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               ("probecycle_comparison_files_test_" + std::to_string(::getpid()) + "_" +
+               ("probecycle_comparison_files_test_" + std::to_string(std::random_device{}()) + "_" +
                 testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);

@@ -1278,7 +1278,9 @@ TEST(DynamicsProperties, AFilterNeverShortensAMove) {
         const double with = block_time_s(s, distance, v);
         const double plan = block_time_s(ideal, distance, v);
         EXPECT_NEAR(plan, move_time_s(s.motion_limits(), distance, v), kTol);
-        EXPECT_GE(with, plan) << scenario_to_json(s) << distance << " at " << v;
+        // Within 1e-12 s: the last bits of exp() and pow() differ between C
+        // libraries (the Windows build's among them).
+        EXPECT_GE(with, plan - 1e-12) << scenario_to_json(s) << distance << " at " << v;
         const AxisKernel k(s.axis_dynamics());
         if (k.lag_count() == 0) {
             EXPECT_LE(with, plan + k.window_s() + 1e-12);

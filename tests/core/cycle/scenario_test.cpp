@@ -270,6 +270,15 @@ TEST(ScenarioJson, EmptyObjectIsTheDefaults) {
                          Scenario{});
 }
 
+TEST(ScenarioJson, WindowsLineEndsReadAsUnixOnes) {
+    Scenario changed;
+    changed.cycle.probe_feed_mm_min = 1234.0;
+    std::string text;
+    for (const char c : scenario_to_json(changed)) text += c == '\n' ? "\r\n" : std::string(1, c);
+    ASSERT_NE(text.find("\r\n"), std::string::npos);
+    EXPECT_EQ(scenario_to_json(scenario_from_json(text)), scenario_to_json(changed));
+}
+
 TEST(ScenarioJson, EveryKeyOptionalAndReadIntoItsField) {
     const Scenario s = scenario_from_json(R"({
         "machine": {"accel_model": "jerk_limited", "max_jerk_mm_s3": 50000, "latched_input": true,

@@ -539,5 +539,28 @@ TEST(DelayFitMessages, FileErrorsCarryTheirValues) {
     }
 }
 
+// The same text with Windows line ends.
+std::string with_crlf(const std::string& text) {
+    std::string out;
+    for (const char c : text) out += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    return out;
+}
+
+TEST(DelayCsv, WindowsLineEndsReadAsUnixOnes) {
+    const std::string text =
+        "# delay test\naxis,direction,feed_mm_min,measured_mm\nX,+1,100,10.0017\n"
+        "X,-1,2000,-9.966\n";
+    const std::vector<DelayTouch> unix_ends = parse_delay_csv(text);
+    const std::vector<DelayTouch> windows_ends = parse_delay_csv(with_crlf(text));
+    ASSERT_EQ(windows_ends.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(windows_ends[i].axis, unix_ends[i].axis);
+        EXPECT_EQ(windows_ends[i].direction, unix_ends[i].direction);
+        EXPECT_EQ(windows_ends[i].feed_mm_min, unix_ends[i].feed_mm_min);
+        EXPECT_EQ(windows_ends[i].measured_mm, unix_ends[i].measured_mm);
+        EXPECT_EQ(windows_ends[i].line, unix_ends[i].line);
+    }
+}
+
 }  // namespace
 }  // namespace probecycle

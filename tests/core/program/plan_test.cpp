@@ -34,6 +34,14 @@ TEST(ProbingPlan, FileReadsBackAsWritten) {
     }
 }
 
+TEST(ProbingPlan, AFileWithWindowsLineEndsReadsAsTheSamePlan) {
+    for (const auto& [name, plan] : program_test::golden_plans()) {
+        std::string text;
+        for (const char c : probing_plan_json(plan)) text += c == '\n' ? "\r\n" : std::string(1, c);
+        EXPECT_EQ(plan_id(parse_probing_plan(text)), plan_id(plan)) << name;
+    }
+}
+
 std::string first_error(const std::string& text) {
     try {
         parse_probing_plan(text);
