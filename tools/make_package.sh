@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-bash .ci/install-deps.sh
+bash .ci/install-deps.sh package
 cmake -S . -B build-package -DCMAKE_BUILD_TYPE=Release -DPROBECYCLE_BUILD_TESTS=OFF \
   -DPROBECYCLE_BUILD_BENCH=OFF >/dev/null
 cmake --build build-package -j"$(nproc)"

@@ -115,8 +115,9 @@ int run(int argc, char** argv) {
         "probecycle-cli: cycle time, overtravel and uncertainty of touch-trigger probing "
         "cycles on CNC machine tools, and the calibration and latency lab.",
         "probecycle-cli");
-    // On Windows CLI11 would take a word starting with '/' as an option
-    // ("/o"); a path such as "/data/ring.csv" is a path there too.
+    // On Windows CLI11 takes a word starting with '/' as an option ("/o";
+    // allow_windows_style_options_ is true there, CLI11 2.1's App.hpp); a
+    // path such as "/data/ring.csv" is a path there too.
     app.allow_windows_style_options(false);
     app.get_formatter()->label("Usage", "usage");
     app.get_formatter()->column_width(34);

@@ -115,6 +115,14 @@ TEST(ProjectFile, RoundTripKeepsEveryValue) {
     EXPECT_EQ(back.report, p.report);
 }
 
+TEST(ProjectFile, WindowsLineEndsReadAsUnixOnes) {
+    const std::string text = project_json(sample_project());
+    std::string crlf;
+    for (const char c : text) crlf += c == '\n' ? "\r\n" : std::string(1, c);
+    ASSERT_NE(crlf, text);
+    EXPECT_EQ(project_json(parse_project(crlf)), text);
+}
+
 // The report's title block is optional: files from before it open with
 // every field empty; a field that is not text is refused by its key.
 TEST(ProjectFile, TheReportDetailsAreOptionalTextKeyedUnderReport) {
