@@ -18,11 +18,12 @@ cleanup() {
 }
 trap cleanup EXIT
 start=$(date +%s)
-wine wineboot --init >/dev/null 2>&1
-# One Wine server for the whole run: by default it exits 3 s after its last
+# One Wine server for the whole run, started first (a second one for the
+# same prefix would refuse to start): by default it exits 3 s after its last
 # process, and a test starting just then lost its connection ("wine client
 # error: recvmsg: Connection reset by peer", seen once in a thousand tests).
 wineserver -p
+wine wineboot --init >/dev/null 2>&1
 
 cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=cmake/mingw-w64.cmake -DCMAKE_BUILD_TYPE=Release \
   -DPROBECYCLE_BUILD_UI=OFF -DPROBECYCLE_BUILD_BENCH=OFF -DPROBECYCLE_WARNINGS_AS_ERRORS=ON
