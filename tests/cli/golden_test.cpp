@@ -96,7 +96,7 @@ void expect_golden(const std::string& name, const std::string& got) {
     // otherwise than glibc, and a JSON output prints every double in full.
     // A comparison's deviations are differences of positions near 100 mm,
     // whose last bit is 1.4e-14 mm: there the numbers may differ by 1e-9
-    // relative plus 1e-12 (mm, rad) absolute, nothing else. (Seen: 3e-14 mm.)
+    // relative plus 1e-12 (mm, rad) absolute, nothing else. (Seen: 1e-13 mm.)
     if (want != got && fs::path(name).extension() == ".json" && same_json(want, got)) return;
 #endif
     EXPECT_TRUE(want == got) << name << " differs from its golden file; first difference at "
