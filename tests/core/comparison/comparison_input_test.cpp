@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/common/csv_reader.h"
+#include "tests/core/common/line_ends.h"
 
 namespace probecycle {
 namespace {
@@ -137,28 +138,21 @@ TEST(ComparisonInputTest, ReadsABlockAndRefusesAThinFaceOrAnUnknownFace) {
                  "face", "touches on face A: 1");
 }
 
-// The same text with Windows line ends.
-std::string with_crlf(const std::string& text) {
-    std::string out;
-    for (const char c : text) out += c == '\n' ? std::string("\r\n") : std::string(1, c);
-    return out;
-}
-
 TEST(ComparisonInputTest, WindowsLineEndsReadAsUnixOnes) {
     const std::vector<PlanPoint> plan = parse_plan(plan_text(20));
-    const std::vector<PlanPoint> plan_crlf = parse_plan(with_crlf(plan_text(20)));
+    const std::vector<PlanPoint> plan_crlf = parse_plan(test::with_crlf(plan_text(20)));
     ASSERT_EQ(plan_crlf.size(), plan.size());
     for (std::size_t i = 0; i < plan.size(); ++i) {
         EXPECT_EQ(plan_crlf[i].nominal, plan[i].nominal) << i;
         EXPECT_EQ(plan_crlf[i].normal, plan[i].normal) << i;
         EXPECT_EQ(plan_crlf[i].line, plan[i].line) << i;
     }
-    const std::vector<MeasuredPoint> points = parse_points(with_crlf(points_text(20)));
+    const std::vector<MeasuredPoint> points = parse_points(test::with_crlf(points_text(20)));
     ASSERT_EQ(points.size(), 20u);
     EXPECT_EQ(points.back().point, Eigen::Vector3d(29, 0, 1.5));
     const std::vector<BlockTouch> block =
-        parse_block(with_crlf("face,x_mm,y_mm,z_mm\nA,1,2,3\nA,1,3,3\nA,1,2,4\nB,4,5,6\n"
-                              "B,5,5,6\nB,4,5,7\nC,7,8,9\nC,8,8,9\nC,7,9,9\n"));
+        parse_block(test::with_crlf("face,x_mm,y_mm,z_mm\nA,1,2,3\nA,1,3,3\nA,1,2,4\nB,4,5,6\n"
+                                    "B,5,5,6\nB,4,5,7\nC,7,8,9\nC,8,8,9\nC,7,9,9\n"));
     ASSERT_EQ(block.size(), 9u);
     EXPECT_EQ(block[8].face, BlockFace::c);
     EXPECT_EQ(block[8].point, Eigen::Vector3d(7, 9, 9));

@@ -1,4 +1,5 @@
 #include "core/cycle/scenario.h"
+#include "tests/core/common/line_ends.h"
 
 #include <gtest/gtest.h>
 
@@ -273,8 +274,7 @@ TEST(ScenarioJson, EmptyObjectIsTheDefaults) {
 TEST(ScenarioJson, WindowsLineEndsReadAsUnixOnes) {
     Scenario changed;
     changed.cycle.probe_feed_mm_min = 1234.0;
-    std::string text;
-    for (const char c : scenario_to_json(changed)) text += c == '\n' ? "\r\n" : std::string(1, c);
+    const std::string text = test::with_crlf(scenario_to_json(changed));
     ASSERT_NE(text.find("\r\n"), std::string::npos);
     EXPECT_EQ(scenario_to_json(scenario_from_json(text)), scenario_to_json(changed));
 }

@@ -12,6 +12,7 @@
 #include "core/common/csv_reader.h"
 #include "core/common/input_error.h"
 #include "core/common/units.h"
+#include "tests/core/common/line_ends.h"
 #include "tests/core/common/message_checks.h"
 
 namespace probecycle {
@@ -539,19 +540,12 @@ TEST(DelayFitMessages, FileErrorsCarryTheirValues) {
     }
 }
 
-// The same text with Windows line ends.
-std::string with_crlf(const std::string& text) {
-    std::string out;
-    for (const char c : text) out += c == '\n' ? std::string("\r\n") : std::string(1, c);
-    return out;
-}
-
 TEST(DelayCsv, WindowsLineEndsReadAsUnixOnes) {
     const std::string text =
         "# delay test\naxis,direction,feed_mm_min,measured_mm\nX,+1,100,10.0017\n"
         "X,-1,2000,-9.966\n";
     const std::vector<DelayTouch> unix_ends = parse_delay_csv(text);
-    const std::vector<DelayTouch> windows_ends = parse_delay_csv(with_crlf(text));
+    const std::vector<DelayTouch> windows_ends = parse_delay_csv(test::with_crlf(text));
     ASSERT_EQ(windows_ends.size(), 2u);
     for (std::size_t i = 0; i < 2; ++i) {
         EXPECT_EQ(windows_ends[i].axis, unix_ends[i].axis);

@@ -13,6 +13,7 @@
 #include "core/common/input_error.h"
 #include "core/common/number_format.h"
 #include "core/cycle/cycle.h"
+#include "tests/core/common/line_ends.h"
 #include "tests/core/program/program_test_plans.h"
 
 namespace probecycle {
@@ -36,8 +37,7 @@ TEST(ProbingPlan, FileReadsBackAsWritten) {
 
 TEST(ProbingPlan, AFileWithWindowsLineEndsReadsAsTheSamePlan) {
     for (const auto& [name, plan] : program_test::golden_plans()) {
-        std::string text;
-        for (const char c : probing_plan_json(plan)) text += c == '\n' ? "\r\n" : std::string(1, c);
+        const std::string text = test::with_crlf(probing_plan_json(plan));
         EXPECT_EQ(plan_id(parse_probing_plan(text)), plan_id(plan)) << name;
     }
 }

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/common/file_io.h"
+#include "tests/core/common/line_ends.h"
 
 namespace probecycle {
 namespace {
@@ -117,8 +118,7 @@ TEST(ProjectFile, RoundTripKeepsEveryValue) {
 
 TEST(ProjectFile, WindowsLineEndsReadAsUnixOnes) {
     const std::string text = project_json(sample_project());
-    std::string crlf;
-    for (const char c : text) crlf += c == '\n' ? "\r\n" : std::string(1, c);
+    const std::string crlf = test::with_crlf(text);
     ASSERT_NE(crlf, text);
     EXPECT_EQ(project_json(parse_project(crlf)), text);
 }
